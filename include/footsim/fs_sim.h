@@ -1,0 +1,65 @@
+/* fs_sim.h: a foot built in ODE from its geometry, over a ground, and stepped.
+ *
+ * The geometry (fs_foot_geom) and the scenario are the constant model; everything that changes
+ * during a run lives in the ODE world that fs_sim_build creates. All memory is taken at build
+ * time: fs_sim_step allocates nothing (ODE's own step works in its preallocated arena).
+ *
+ * One step is a fixed sequence of stages: external loads, springs, collision (foot against
+ * ground only), the ODE step, and a check that the state is finite. */
+#ifndef FS_SIM_H
+#define FS_SIM_H
+
+#include "footsim/fs_scenario.h"
+#include "footsim/fs_spring.h"
+
+#include <ode/ode.h>
+
+enum { FS_MAX_CONTACTS = 64 };
+
+typedef struct fs_sim_options {
+    int with_ground;        /* 0: no ground (the stiffness probes) */
+    int hold_rear_foot;     /* 1: heel and talus kinematic, fixed where they are */
+} fs_sim_options;
+
+typedef struct fs_sim {
+    const fs_scenario *sc;
+    const fs_foot_geom *geom;
+    dWorldID world;
+    dSpaceID space;        /* the foot's shapes */
+    dGeomID ground;
+    dJointGroupID contact_group;
+    dBodyID body[FS_MAX_BODIES];
+    dJointID hinge[FS_MAX_HINGES];
+    dGeomID shape[FS_MAX_SPHERES + 1];
+    int nshapes;
+    fs_spring spring[FS_MAX_SPRINGS];
+    dVector3 ankle_local;  /* the load's point on the ankle body */
+    dVector3 down;         /* unit direction of the load and gravity */
+    dContact contact_template;
+    double time_s;
+    double load_N;         /* the load's weight; fs_sim_step ramps it in */
+    int contacts_now;      /* contact points in the last step */
+    long contacts_total, collision_tests;
+} fs_sim;
+
+/* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */
+fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err);
+void fs_sim_destroy(fs_sim *sim);
+
+/* Advances by the scenario's step; FS_NUMERICAL (with the body and time named) if the state
+ * is no longer finite. */
+fs_status fs_sim_step(fs_sim *sim, fs_error *err);
+
+/* The load's point (the ankle) in world coordinates now. */
+void fs_sim_ankle(const fs_sim *sim, double p[3]);
+
+/* Energy now: kinetic, gravitational (relative to z = 0) and stored in the springs, J. */
+double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, double *elastic);
+
+/* Fastest point speed of any body (COM speed plus angular speed times its size), m/s. */
+double fs_sim_max_speed(const fs_sim *sim);
+
+/* Joint angle of hinge i from the neutral pose, rad (positive: distal link turned up). */
+double fs_sim_hinge_angle(const fs_sim *sim, int i);
+
+#endif

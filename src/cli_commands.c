@@ -1,0 +1,203 @@
+/* cli_commands.c: the footsim subcommands. */
+#include "cli.h"
+
+#include "footsim/fs_analysis.h"
+#include "footsim/fs_output.h"
+#include "footsim/fs_run.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The stiffness model and ODE must agree this closely (issue 2's acceptance bound). */
+static const double STIFFNESS_TOLERANCE = 0.01;
+
+static int fail(const fs_error *err) { return cli_report(err->status, err->message); }
+
+/* ---- run -------------------------------------------------------------------------------------- */
+
+static int run_scenario(const char *path, const char *out, const char *const *set, int nset, fs_run_result *res,
+                        fs_scenario *sc)
+{
+    fs_error err;
+    if (fs_scenario_load(path, set, nset, sc, &err) != FS_OK)
+        return fail(&err);
+    char dir[FS_PATH_MAX + 64];
+    if (out)
+        snprintf(dir, sizeof dir, "%s", out);
+    else
+        snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
+    /* the folder must be writable before anything is simulated */
+    if (fs_make_dirs(dir, &err) != FS_OK)
+        return fail(&err);
+    if (fs_run(sc, res, &err) != FS_OK) {
+        fs_run_free(res);
+        return fail(&err);
+    }
+    fs_status s = fs_run_write(sc, res, dir, &err);
+    if (s != FS_OK) {
+        fs_run_free(res);
+        return fail(&err);
+    }
+    printf("%s: %s foot, %.1f kg at %.0f deg: ankle drop %.3f mm, settled after %.3f s (%s at t = %.3f s)\n"
+           "  results: %s/metrics.json, %s/trajectory.csv\n",
+           sc->name, sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", sc->def.load_kg, sc->def.tilt_deg,
+           res->ankle_drop_m * 1e3, res->settle_time_s, res->at_rest ? "at rest" : "stopped", res->end_time_s, dir,
+           dir);
+    return 0;
+}
+
+int cli_run(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_run_result res;
+    int s = run_scenario(a->input, a->out, a->set, a->nset, &res, &sc);
+    if (s == 0)
+        fs_run_free(&res);
+    return s;
+}
+
+/* ---- model ------------------------------------------------------------------------------------ */
+
+static int print_json(cJSON *root)
+{
+    char *text = cJSON_Print(root);
+    if (!text)
+        return cli_report(FS_IO, "out of memory");
+    puts(text);
+    free(text);
+    return 0;
+}
+
+int cli_model(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_error err;
+    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+        return fail(&err);
+    cJSON *root = fs_model_json(&sc, &err);
+    if (!root)
+        return fail(&err);
+    int s = 0;
+    if (a->json) {
+        s = print_json(root);
+    } else {
+        const fs_foot_geom *g = &sc.geom;
+        printf("%s: %s foot, %d bodies, %d hinges, %d springs, %d contact shapes, %.3f kg\n", a->input,
+               g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic", g->nbodies, g->nhinges, g->nsprings,
+               g->nspheres + g->has_box, g->total_mass_kg);
+        printf("ankle at (%.4f, %.4f, %.4f) m\n", g->ankle.x, g->ankle.y, g->ankle.z);
+        for (int i = 0; i < g->nbodies; i++)
+            printf("  body %-12s %.4f kg at (%.4f, %.4f, %.4f) m\n", g->body[i].name, g->body[i].mass_kg,
+                   g->body[i].com.x, g->body[i].com.y, g->body[i].com.z);
+        printf("'footsim model %s --json' gives every number.\n", a->input);
+    }
+    cJSON_Delete(root);
+    return s;
+}
+
+/* ---- stiffness -------------------------------------------------------------------------------- */
+
+static cJSON *mat_json(const double m[2][2])
+{
+    cJSON *rows = cJSON_CreateArray();
+    for (int r = 0; r < 2; r++)
+        cJSON_AddItemToArray(rows, cJSON_CreateDoubleArray(m[r], 2));
+    return rows;
+}
+
+static void print_mat_row(const char *label, const double m[2][2])
+{
+    printf("    %-22s [%9.4f %9.4f; %9.4f %9.4f]\n", label, m[0][0], m[0][1], m[1][0], m[1][1]);
+}
+
+int cli_stiffness(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_error err;
+    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+        return fail(&err);
+    if (sc.geom.kind != FS_FOOT_BIOMIMETIC)
+        return cli_report(FS_BAD_INPUT, "stiffness: the flat foot has no joints; give a biomimetic design");
+    fs_chain_stiffness k[FS_CHAINS];
+    fs_stiffness_analytic(&sc.geom, k);
+    if (fs_stiffness_measure(&sc, k, &err) != FS_OK)
+        return fail(&err);
+    double worst = 0;
+    for (int i = 0; i < FS_CHAINS; i++)
+        worst = fmax(worst, k[i].rel_diff);
+    fs_planar_result eq;
+    fs_planar_load load = {sc.design.design_load_kg * sc.def.gravity_m_per_s2, sc.def.gravity_m_per_s2, 0, 0};
+    if (fs_planar_equilibrium(&sc.design, &sc.geom, 2, &load, &eq, &err) != FS_OK)
+        return fail(&err);
+    if (a->json) {
+        cJSON *root = cJSON_CreateObject();
+        cJSON_AddStringToObject(root, "design", a->input);
+        cJSON_AddStringToObject(root, "units", "N m/rad; joints (midfoot, MTP); positive turns the distal link up");
+        cJSON *chains = cJSON_AddArrayToObject(root, "chains");
+        for (int i = 0; i < FS_CHAINS; i++) {
+            cJSON *c = cJSON_CreateObject();
+            cJSON_AddNumberToObject(c, "chain", i + 1);
+            cJSON_AddItemToObject(c, "analytic", mat_json((const double(*)[2])k[i].exact));
+            cJSON_AddItemToObject(c, "paper_eq4", mat_json((const double(*)[2])k[i].eq4));
+            cJSON_AddItemToObject(c, "measured", mat_json((const double(*)[2])k[i].measured));
+            cJSON_AddNumberToObject(c, "rel_diff", k[i].rel_diff);
+            cJSON_AddItemToArray(chains, c);
+        }
+        cJSON_AddNumberToObject(root, "max_rel_diff", worst);
+        cJSON_AddNumberToObject(root, "tolerance", STIFFNESS_TOLERANCE);
+        cJSON *st = cJSON_AddObjectToObject(root, "static_check");
+        cJSON_AddNumberToObject(st, "load_kg", sc.design.design_load_kg);
+        cJSON_AddBoolToObject(st, "converged", eq.converged);
+        cJSON_AddBoolToObject(st, "stable", eq.stable);
+        cJSON_AddNumberToObject(st, "ankle_drop_m", eq.ankle_drop_m);
+        cJSON_AddNumberToObject(st, "midfoot_rad", eq.midfoot_rad);
+        cJSON_AddNumberToObject(st, "mtp_rad", eq.mtp_rad);
+        cJSON_AddNumberToObject(st, "ball_clearance_m", eq.ball_clearance_m);
+        print_json(root);
+        cJSON_Delete(root);
+    } else {
+        printf("%s: joint stiffness per chain, N m/rad, joints (midfoot, MTP)\n", a->input);
+        for (int i = 0; i < FS_CHAINS; i++) {
+            printf("  chain %d (relative difference, measured against exact: %.2e)\n", i + 1, k[i].rel_diff);
+            print_mat_row("exact geometry", (const double(*)[2])k[i].exact);
+            print_mat_row("paper eq. 4 (on-axis)", (const double(*)[2])k[i].eq4);
+            print_mat_row("measured in ODE", (const double(*)[2])k[i].measured);
+        }
+        printf("largest relative difference %.2e (must be below %.0e): %s\n", worst, STIFFNESS_TOLERANCE,
+               worst <= STIFFNESS_TOLERANCE ? "agree" : "DISAGREE");
+        printf("static check of chain 3 under %.1f kg (planar model): %s, %s; ankle drop %.3f mm, midfoot %+.2f deg, "
+               "MTP %+.2f deg, ball %.2f mm above the ground\n",
+               sc.design.design_load_kg, eq.converged ? "equilibrium found" : "NO EQUILIBRIUM",
+               eq.stable ? "stable" : "UNSTABLE", eq.ankle_drop_m * 1e3, eq.midfoot_rad * 180 / M_PI,
+               eq.mtp_rad * 180 / M_PI, eq.ball_clearance_m * 1e3);
+    }
+    return worst <= STIFFNESS_TOLERANCE ? 0 : FS_EXPECTATION_FAILED;
+}
+
+/* ---- keys and demo ---------------------------------------------------------------------------- */
+
+int cli_keys(const cli_args *a)
+{
+    (void)a;
+    fs_config_print_keys(fs_design_keys, fs_design_nkeys, "Design files (scenarios/feet/*.ini)", stdout);
+    fs_config_print_keys(fs_scenario_keys, fs_scenario_nkeys, "Scenario files (scenarios/*.ini)", stdout);
+    return 0;
+}
+
+int cli_demo(const cli_args *a)
+{
+    (void)a;
+    static const char *scenarios[] = {"scenarios/static_load.ini", "scenarios/tilt10.ini"};
+    static fs_scenario sc;
+    for (int i = 0; i < 2; i++) {
+        fs_run_result res;
+        int s = run_scenario(scenarios[i], NULL, NULL, 0, &res, &sc);
+        if (s)
+            return s;
+        fs_run_free(&res);
+    }
+    cli_args st = {.command = "stiffness", .input = "scenarios/feet/biomimetic.ini"};
+    return cli_stiffness(&st);
+}

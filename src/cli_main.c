@@ -1,0 +1,130 @@
+/* cli_main.c: the footsim command: subcommands, --help, and argument checks. */
+#include "cli.h"
+
+#include "footsim/fs_error.h"
+
+#include <stdio.h>
+#include <string.h>
+
+typedef struct command {
+    const char *name;
+    int (*run)(const cli_args *);
+    const char *input;   /* what the positional argument is, or NULL when there is none */
+    const char *options; /* the options it takes, for checks and --help */
+    const char *help;
+} command;
+
+static const command commands[] = {
+    {"run", cli_run, "SCENARIO", "--out --set",
+     "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
+     "  (default DIR: results/runs/<scenario name>/)."},
+    {"model", cli_model, "DESIGN", "--json --set",
+     "Prints the built model in SI units and world coordinates: bodies, joints, springs, geoms."},
+    {"stiffness", cli_stiffness, "DESIGN", "--json --set",
+     "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
+     "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
+     "  Exit 1 when analytic and measured differ by more than 1 %."},
+    {"keys", cli_keys, NULL, "",
+     "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
+    {"demo", cli_demo, NULL, "",
+     "Runs the paper's first experiments (static load, 10 degree tilt) and the stiffness check,\n"
+     "  and says where the results went."},
+};
+enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
+
+static void usage(FILE *out)
+{
+    fprintf(out, "usage: footsim COMMAND [ARGS] [OPTIONS]\n\ncommands:\n");
+    for (int i = 0; i < NCOMMANDS; i++)
+        fprintf(out, "  %-10s %s %s\n", commands[i].name, commands[i].input ? commands[i].input : "",
+                commands[i].options);
+    fprintf(out, "\n'footsim COMMAND --help' says more. Exit status: 0 ok, 1 expectations failed, 2 bad input,\n"
+                 "3 numerical failure, 4 results could not be written.\n");
+}
+
+static void command_help(const command *c)
+{
+    printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
+    if (strstr(c->options, "--out"))
+        printf(" [--out DIR]");
+    if (strstr(c->options, "--json"))
+        printf(" [--json]");
+    if (strstr(c->options, "--set"))
+        printf(" [--set section.key=value]...");
+    printf("\n\n  %s\n", c->help);
+    if (strstr(c->options, "--set"))
+        printf("\n  --set overrides one value of the file (or, for a scenario, of its design) without editing\n"
+               "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
+}
+
+/* Parses argv after the command name into a, refusing what c does not take. */
+static int parse_args(const command *c, int argc, char **argv, cli_args *a)
+{
+    for (int i = 0; i < argc; i++) {
+        const char *arg = argv[i];
+        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) {
+            command_help(c);
+            return -1;
+        }
+        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set");
+        if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
+            fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
+                    *c->options ? c->options : "no options");
+            return 2;
+        }
+        if (takes_value && i + 1 >= argc) {
+            fprintf(stderr, "footsim %s: %s needs a value\n", c->name, arg);
+            return 2;
+        }
+        if (!strcmp(arg, "--out"))
+            a->out = argv[++i];
+        else if (!strcmp(arg, "--json"))
+            a->json = 1;
+        else if (!strcmp(arg, "--set")) {
+            if (a->nset == CLI_MAX_SET) {
+                fprintf(stderr, "footsim %s: at most %d --set options\n", c->name, CLI_MAX_SET);
+                return 2;
+            }
+            a->set[a->nset++] = argv[++i];
+        } else if (c->input && !a->input)
+            a->input = arg;
+        else {
+            fprintf(stderr, "footsim %s: unexpected argument '%s'; see 'footsim %s --help'\n", c->name, arg, c->name);
+            return 2;
+        }
+    }
+    if (c->input && !a->input) {
+        fprintf(stderr, "footsim %s: give a %s file; see 'footsim %s --help'\n", c->name, c->input, c->name);
+        return 2;
+    }
+    return 0;
+}
+
+int cli_report(int status, const char *message)
+{
+    fprintf(stderr, "footsim: %s\n", message);
+    return status;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage(argc < 2 ? stderr : stdout);
+        return argc < 2 ? FS_BAD_INPUT : 0;
+    }
+    for (int i = 0; i < NCOMMANDS; i++) {
+        if (strcmp(argv[1], commands[i].name))
+            continue;
+        cli_args a = {.command = commands[i].name};
+        int s = parse_args(&commands[i], argc - 2, argv + 2, &a);
+        if (s)
+            return s < 0 ? 0 : s;
+        fs_ode_init();
+        s = commands[i].run(&a);
+        fs_ode_close();
+        return s;
+    }
+    fprintf(stderr, "footsim: unknown command '%s'\n\n", argv[1]);
+    usage(stderr);
+    return FS_BAD_INPUT;
+}

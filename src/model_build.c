@@ -1,0 +1,259 @@
+/* model_build.c: the foot built in ODE from its geometry, and the step as named stages. */
+#include "footsim/fs_sim.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define DEG (M_PI / 180.0)
+
+/* Two materials in contact: friction as the geometric mean, stiffness and damping in series. */
+static double series(double a, double b) { return a > 0 && b > 0 ? a * b / (a + b) : 0; }
+
+static void contact_template(fs_sim *sim)
+{
+    const fs_scenario_def *s = &sim->sc->def;
+    const fs_design_def *d = &sim->sc->design;
+    double k = series(d->sole_stiffness_N_per_m, s->ground_stiffness_N_per_m);
+    double c = series(d->sole_damping_Ns_per_m, s->ground_damping_Ns_per_m);
+    double h = s->step_s;
+    dContact *ct = &sim->contact_template;
+    memset(ct, 0, sizeof *ct);
+    ct->surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
+    ct->surface.mu = sqrt(d->sole_mu * s->ground_mu);
+    ct->surface.soft_erp = h * k / (h * k + c);
+    ct->surface.soft_cfm = 1.0 / (h * k + c);
+}
+
+static void build_body(fs_sim *sim, int i)
+{
+    const fs_body_geom *g = &sim->geom->body[i];
+    dBodyID b = dBodyCreate(sim->world);
+    dMass m;
+    const double *I = g->inertia;
+    dMassSetParameters(&m, g->mass_kg, 0, 0, 0, I[0], I[4], I[8], I[1], I[2], I[5]);
+    dBodySetMass(b, &m);
+    dBodySetPosition(b, g->com.x, g->com.y, g->com.z);
+    sim->body[i] = b;
+}
+
+static void build_shapes(fs_sim *sim)
+{
+    const fs_foot_geom *g = sim->geom;
+    for (int i = 0; i < g->nspheres; i++) {
+        const fs_sphere_geom *s = &g->sphere[i];
+        dGeomID geom = dCreateSphere(sim->space, s->radius_m);
+        dGeomSetBody(geom, sim->body[s->body]);
+        const fs_vec3 c = g->body[s->body].com;
+        dGeomSetOffsetPosition(geom, s->centre.x - c.x, s->centre.y - c.y, s->centre.z - c.z);
+        sim->shape[sim->nshapes++] = geom;
+    }
+    if (g->has_box) {
+        dGeomID box = dCreateBox(sim->space, g->box_size.x, g->box_size.y, g->box_size.z);
+        dGeomSetBody(box, sim->body[0]);
+        const fs_vec3 c = g->body[0].com;
+        dGeomSetOffsetPosition(box, g->box_centre.x - c.x, g->box_centre.y - c.y, g->box_centre.z - c.z);
+        sim->shape[sim->nshapes++] = box;
+    }
+}
+
+static void build_joints(fs_sim *sim)
+{
+    const fs_foot_geom *g = sim->geom;
+    for (int i = 0; i < g->nhinges; i++) {
+        const fs_hinge_geom *h = &g->hinge[i];
+        dJointID j = dJointCreateHinge(sim->world, 0);
+        dJointAttach(j, sim->body[h->body1], sim->body[h->body2]);
+        dJointSetHingeAnchor(j, h->anchor.x, h->anchor.y, h->anchor.z);
+        dJointSetHingeAxis(j, h->axis.x, h->axis.y, h->axis.z);
+        sim->hinge[i] = j;
+    }
+    for (int i = 0; i < g->nsprings; i++) {
+        const fs_spring_geom *s = &g->spring[i];
+        double p1[3] = {s->p1.x, s->p1.y, s->p1.z}, p2[3] = {s->p2.x, s->p2.y, s->p2.z};
+        fs_spring_init(&sim->spring[i], sim->world, (fs_spring_impl)sim->sc->def.springs, sim->body[s->body1],
+                       sim->body[s->body2], p1, p2, s->k_N_per_m, s->c_Ns_per_m, s->rest_length_m);
+    }
+}
+
+fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
+{
+    (void)err;
+    fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
+    if (!opts)
+        opts = &normal;
+    memset(sim, 0, sizeof *sim);
+    sim->sc = sc;
+    sim->geom = &sc->geom;
+    const fs_scenario_def *s = &sc->def;
+    double tilt = s->tilt_deg * DEG;
+    sim->down[0] = -sin(tilt);
+    sim->down[2] = -cos(tilt);
+    sim->world = dWorldCreate();
+    dWorldSetGravity(sim->world, s->gravity_m_per_s2 * sim->down[0], 0, s->gravity_m_per_s2 * sim->down[2]);
+    dWorldSetQuickStepNumIterations(sim->world, s->iterations);
+    /* ODE's global ERP/CFM only touch hinges and contacts' defaults: keep joints stiff. */
+    dWorldSetERP(sim->world, 0.2);
+    dWorldSetCFM(sim->world, 1e-10);
+    sim->space = dSimpleSpaceCreate(0);
+    sim->contact_group = dJointGroupCreate(0);
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        build_body(sim, i);
+    build_shapes(sim);
+    build_joints(sim);
+    if (opts->with_ground)
+        sim->ground = dCreatePlane(0, 0, 0, 1, 0);
+    if (opts->hold_rear_foot && sim->geom->kind == FS_FOOT_BIOMIMETIC) {
+        dBodySetKinematic(sim->body[FS_BODY_HEEL]);
+        dBodySetKinematic(sim->body[FS_BODY_TALUS]);
+    }
+    const fs_vec3 a = sim->geom->ankle;
+    dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a.x, a.y, a.z, sim->ankle_local);
+    sim->load_N = s->load_kg * s->gravity_m_per_s2;
+    contact_template(sim);
+    return FS_OK;
+}
+
+void fs_sim_destroy(fs_sim *sim)
+{
+    if (sim->ground)
+        dGeomDestroy(sim->ground);
+    if (sim->space)
+        dSpaceDestroy(sim->space); /* destroys the shapes it holds */
+    if (sim->contact_group)
+        dJointGroupDestroy(sim->contact_group);
+    if (sim->world)
+        dWorldDestroy(sim->world);
+    memset(sim, 0, sizeof *sim);
+}
+
+void fs_sim_ankle(const fs_sim *sim, double p[3])
+{
+    dVector3 w;
+    dBodyGetRelPointPos(sim->body[sim->geom->ankle_body], sim->ankle_local[0], sim->ankle_local[1],
+                        sim->ankle_local[2], w);
+    memcpy(p, w, 3 * sizeof(double));
+}
+
+/* ---- the step ----------------------------------------------------------------------------- */
+
+static void on_near(void *data, dGeomID a, dGeomID b)
+{
+    fs_sim *sim = data;
+    int max = sim->sc->def.max_contacts;
+    dContactGeom found[FS_MAX_CONTACTS];
+    sim->collision_tests++;
+    int n = dCollide(a, b, max, found, sizeof found[0]);
+    for (int i = 0; i < n; i++) {
+        dContact ct = sim->contact_template;
+        ct.geom = found[i];
+        dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
+        dJointAttach(j, dGeomGetBody(a), dGeomGetBody(b));
+    }
+    sim->contacts_now += n;
+}
+
+static void apply_load(fs_sim *sim)
+{
+    const fs_scenario_def *s = &sim->sc->def;
+    double ramp = s->ramp_s > 0 && sim->time_s < s->ramp_s ? sim->time_s / s->ramp_s : 1.0;
+    double f = sim->load_N * ramp;
+    double p[3];
+    fs_sim_ankle(sim, p);
+    dBodyAddForceAtPos(sim->body[sim->geom->ankle_body], f * sim->down[0], f * sim->down[1], f * sim->down[2], p[0],
+                       p[1], p[2]);
+}
+
+static fs_status check_finite(const fs_sim *sim, fs_error *err)
+{
+    for (int i = 0; i < sim->geom->nbodies; i++) {
+        const dReal *p = dBodyGetPosition(sim->body[i]), *v = dBodyGetLinearVel(sim->body[i]);
+        const dReal *w = dBodyGetAngularVel(sim->body[i]);
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(p[k]) || !isfinite(v[k]) || !isfinite(w[k]))
+                return fs_fail(err, FS_NUMERICAL,
+                               "%s: body '%s' has a non-finite state at t = %.6f s; try a smaller step_s or "
+                               "springs = implicit",
+                               sim->sc->path, sim->geom->body[i].name, sim->time_s);
+    }
+    return FS_OK;
+}
+
+fs_status fs_sim_step(fs_sim *sim, fs_error *err)
+{
+    const fs_scenario_def *s = &sim->sc->def;
+    double h = s->step_s;
+    /* external loads */
+    apply_load(sim);
+    /* spring-dampers: soft rows set for h, or explicit forces */
+    for (int i = 0; i < sim->geom->nsprings; i++)
+        fs_spring_prepare(&sim->spring[i], h);
+    /* collision: the foot's shapes against the ground, nothing else */
+    sim->contacts_now = 0;
+    if (sim->ground)
+        dSpaceCollide2((dGeomID)sim->space, sim->ground, sim, on_near);
+    sim->contacts_total += sim->contacts_now;
+    /* the ODE step */
+    if (s->stepper == FS_STEPPER_QUICKSTEP)
+        dWorldQuickStep(sim->world, h);
+    else
+        dWorldStep(sim->world, h);
+    dJointGroupEmpty(sim->contact_group);
+    sim->time_s += h;
+    /* a finite state, or a clear stop */
+    return check_finite(sim, err);
+}
+
+/* ---- measurements ------------------------------------------------------------------------- */
+
+double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, double *elastic)
+{
+    double ke = 0, pe = 0, se = 0, g = sim->sc->def.gravity_m_per_s2;
+    for (int i = 0; i < sim->geom->nbodies; i++) {
+        dBodyID b = sim->body[i];
+        if (dBodyIsKinematic(b))
+            continue;
+        dMass m;
+        dBodyGetMass(b, &m);
+        const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b), *p = dBodyGetPosition(b);
+        const dReal *R = dBodyGetRotation(b);
+        /* world inertia R I R^T applied to w: rotate w into the body frame first */
+        double wb[3] = {0, 0, 0};
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                wb[r] += R[4 * c + r] * w[c];
+        double rot = 0;
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                rot += wb[r] * m.I[4 * r + c] * wb[c];
+        ke += 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.5 * rot;
+        pe -= m.mass * g * (p[0] * sim->down[0] + p[1] * sim->down[1] + p[2] * sim->down[2]);
+    }
+    for (int i = 0; i < sim->geom->nsprings; i++)
+        se += fs_spring_measure(&sim->spring[i]).energy_J;
+    if (kinetic)
+        *kinetic = ke;
+    if (potential)
+        *potential = pe;
+    if (elastic)
+        *elastic = se;
+    return ke + pe + se;
+}
+
+double fs_sim_max_speed(const fs_sim *sim)
+{
+    double vmax = 0;
+    for (int i = 0; i < sim->geom->nbodies; i++) {
+        const dReal *v = dBodyGetLinearVel(sim->body[i]), *w = dBodyGetAngularVel(sim->body[i]);
+        double size = 0.05; /* a bound on how far a foot body's points lie from its COM, m */
+        double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + size * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        vmax = fmax(vmax, speed);
+    }
+    return vmax;
+}
+
+double fs_sim_hinge_angle(const fs_sim *sim, int i)
+{
+    /* ODE's hinge angle turns body1 about the axis relative to body2; ours turns body2 (distal). */
+    return -dJointGetHingeAngle(sim->hinge[i]);
+}

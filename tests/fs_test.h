@@ -1,0 +1,53 @@
+/* fs_test.h: footsim's tiny test harness. Each test file defines TEST functions and lists them in
+ * FS_TEST_MAIN; the runner prints each failure with its file and line and ends with the line
+ * "N passed, N failed" that CI reads. */
+#ifndef FS_TEST_H
+#define FS_TEST_H
+
+#include <math.h>
+#include <stdio.h>
+
+static int fs_test_failures;
+
+#define CHECK(cond)                                                                          \
+    do {                                                                                     \
+        if (!(cond)) {                                                                       \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond);         \
+            fs_test_failures++;                                                              \
+        }                                                                                    \
+    } while (0)
+
+/* |actual - expected| <= tol, with all three printed on failure. */
+#define CHECK_NEAR(actual, expected, tol)                                                    \
+    do {                                                                                     \
+        double a_ = (actual), e_ = (expected), t_ = (tol);                                   \
+        if (!(fabs(a_ - e_) <= t_)) {                                                        \
+            fprintf(stderr, "%s:%d: %s = %.9g, expected %.9g within %.3g\n", __FILE__, __LINE__, \
+                    #actual, a_, e_, t_);                                                    \
+            fs_test_failures++;                                                              \
+        }                                                                                    \
+    } while (0)
+
+typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case;
+
+#define FS_TEST_MAIN(...)                                                                    \
+    int main(void)                                                                           \
+    {                                                                                        \
+        fs_test_case cases[] = {__VA_ARGS__};                                                \
+        int n = (int)(sizeof cases / sizeof cases[0]), passed = 0, failed = 0;               \
+        fs_ode_init();                                                                       \
+        for (int i = 0; i < n; i++) {                                                        \
+            int before = fs_test_failures;                                                   \
+            cases[i].fn();                                                                   \
+            int ok = fs_test_failures == before;                                             \
+            printf("%s %s\n", ok ? "ok  " : "FAIL", cases[i].name);                          \
+            ok ? passed++ : failed++;                                                        \
+        }                                                                                    \
+        fs_ode_close();                                                                      \
+        printf("%d passed, %d failed\n", passed, failed);                                    \
+        return failed ? 1 : 0;                                                               \
+    }
+
+#define TEST(fn) {#fn, fn}
+
+#endif

@@ -1,0 +1,19 @@
+#!/bin/sh
+# Installs footsim's Debian build dependencies when any is missing.
+# Run as root on Debian 12; otherwise it prints the apt-get line to run.
+set -eu
+pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev"
+missing=""
+for p in $pkgs; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+echo "footsim: installing missing packages:$missing" >&2
+if [ "$(id -u)" -ne 0 ] || ! command -v apt-get >/dev/null 2>&1; then
+  echo "footsim: cannot install as this user; run as root:" >&2
+  echo "  apt-get update && apt-get install -y$missing" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -q >/dev/null
+apt-get install -y -q $missing >/dev/null
