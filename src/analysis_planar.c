@@ -254,9 +254,9 @@ static void setup(planar *c, const fs_design_def *d, const fs_foot_geom *g, int 
     c->load = load->load_N / FS_CHAINS;
     c->frictionless = load->frictionless;
     c->nfree = c->frictionless ? 3 : 2;
-    c->gx = -gravity * sin(tilt);
+    c->gx = gravity * sin(tilt);
     c->gz = -gravity * cos(tilt);
-    c->down[0] = -sin(tilt);
+    c->down[0] = sin(tilt);
     c->down[1] = -cos(tilt);
 }
 

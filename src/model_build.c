@@ -76,6 +76,32 @@ static void build_joints(fs_sim *sim)
     }
 }
 
+/* How far each body's points (joints, spring anchors, shapes) lie from its COM. */
+static void body_reach(fs_sim *sim)
+{
+    const fs_foot_geom *g = sim->geom;
+    for (int i = 0; i < g->nhinges; i++) {
+        const fs_hinge_geom *h = &g->hinge[i];
+        for (int k = 0; k < 2; k++) {
+            int b = k ? h->body2 : h->body1;
+            sim->reach[b] = fmax(sim->reach[b], fs_norm(fs_sub(h->anchor, g->body[b].com)));
+        }
+    }
+    for (int i = 0; i < g->nsprings; i++) {
+        const fs_spring_geom *s = &g->spring[i];
+        sim->reach[s->body1] = fmax(sim->reach[s->body1], fs_norm(fs_sub(s->p1, g->body[s->body1].com)));
+        sim->reach[s->body2] = fmax(sim->reach[s->body2], fs_norm(fs_sub(s->p2, g->body[s->body2].com)));
+    }
+    for (int i = 0; i < g->nspheres; i++) {
+        const fs_sphere_geom *s = &g->sphere[i];
+        double r = fs_norm(fs_sub(s->centre, g->body[s->body].com)) + s->radius_m;
+        sim->reach[s->body] = fmax(sim->reach[s->body], r);
+    }
+    if (g->has_box)
+        sim->reach[0] = fmax(sim->reach[0], fs_norm(fs_sub(g->box_centre, g->body[0].com)) + 0.5 * fs_norm(g->box_size));
+    sim->reach[g->ankle_body] = fmax(sim->reach[g->ankle_body], fs_norm(fs_sub(g->ankle, g->body[g->ankle_body].com)));
+}
+
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
 {
     (void)err;
@@ -87,7 +113,7 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     sim->geom = &sc->geom;
     const fs_scenario_def *s = &sc->def;
     double tilt = s->tilt_deg * DEG;
-    sim->down[0] = -sin(tilt);
+    sim->down[0] = sin(tilt);
     sim->down[2] = -cos(tilt);
     sim->world = dWorldCreate();
     dWorldSetGravity(sim->world, s->gravity_m_per_s2 * sim->down[0], 0, s->gravity_m_per_s2 * sim->down[2]);
@@ -111,6 +137,7 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a.x, a.y, a.z, sim->ankle_local);
     sim->load_N = s->load_kg * s->gravity_m_per_s2;
     contact_template(sim);
+    body_reach(sim);
     return FS_OK;
 }
 
@@ -245,8 +272,8 @@ double fs_sim_max_speed(const fs_sim *sim)
     double vmax = 0;
     for (int i = 0; i < sim->geom->nbodies; i++) {
         const dReal *v = dBodyGetLinearVel(sim->body[i]), *w = dBodyGetAngularVel(sim->body[i]);
-        double size = 0.05; /* a bound on how far a foot body's points lie from its COM, m */
-        double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + size * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+                       sim->reach[i] * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
         vmax = fmax(vmax, speed);
     }
     return vmax;

@@ -33,6 +33,7 @@ typedef struct fs_sim {
     dGeomID shape[FS_MAX_SPHERES + 1];
     int nshapes;
     fs_spring spring[FS_MAX_SPRINGS];
+    double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
     dVector3 ankle_local;  /* the load's point on the ankle body */
     dVector3 down;         /* unit direction of the load and gravity */
     dContact contact_template;
@@ -56,7 +57,7 @@ void fs_sim_ankle(const fs_sim *sim, double p[3]);
 /* Energy now: kinetic, gravitational (relative to z = 0) and stored in the springs, J. */
 double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, double *elastic);
 
-/* Fastest point speed of any body (COM speed plus angular speed times its size), m/s. */
+/* A bound on the fastest point of any body: COM speed plus angular speed times its reach, m/s. */
 double fs_sim_max_speed(const fs_sim *sim);
 
 /* Joint angle of hinge i from the neutral pose, rad (positive: distal link turned up). */
