@@ -397,7 +397,20 @@ void fs_config_print_keys(const fs_key *schema, int nkeys, const char *title, vo
         const fs_key *k = &schema[i];
         char range[128];
         switch (k->type) {
-        case FS_KEY_CHOICE: snprintf(range, sizeof range, "%s", k->choices); break;
+        case FS_KEY_CHOICE: {
+            /* "a|b" would split a Markdown table cell */
+            size_t n = 0;
+            for (const char *c = k->choices; *c && n + 3 < sizeof range; c++) {
+                if (*c == '|') {
+                    memcpy(range + n, ", ", 2);
+                    n += 2;
+                } else {
+                    range[n++] = *c;
+                }
+            }
+            range[n] = 0;
+            break;
+        }
         case FS_KEY_PATH: snprintf(range, sizeof range, "existing file"); break;
         case FS_KEY_LIST:
             snprintf(range, sizeof range, "%d values in %s%g, %g]", k->count, (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[",
