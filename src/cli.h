@@ -12,7 +12,20 @@ typedef struct cli_args {
     int json;                       /* --json */
     const char *set[CLI_MAX_SET];   /* --set section.key=value, in order */
     int nset;
+    int frames;                     /* --frames: write DIR/frames/NNNNNN.png */
+    const char *fps, *size, *camera;/* --fps N, --size WxH, --camera NAME (as given; checked by the renderer) */
+    int video;                      /* --video: also DIR/video.mp4 */
 } cli_args;
+
+/* Frames of a run (cli_render.c). cli_frames_open checks the frame options and prepares the
+ * renderer before anything is simulated (exit 2 when they are wrong or no renderer is built in);
+ * it fills obs with the observer that draws each frame. cli_frames_close finishes (video). */
+typedef struct fs_run_observer fs_run_observer;
+typedef struct fs_scenario fs_scenario;
+typedef struct cli_frames cli_frames;
+int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
+                    fs_run_observer *obs);
+int cli_frames_close(cli_frames *frames, int ok);
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);

@@ -17,23 +17,36 @@ static int fail(const fs_error *err) { return cli_report(err->status, err->messa
 
 /* ---- run -------------------------------------------------------------------------------------- */
 
-static int run_scenario(const char *path, const char *out, const char *const *set, int nset, fs_run_result *res,
-                        fs_scenario *sc)
+static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
 {
     fs_error err;
-    if (fs_scenario_load(path, set, nset, sc, &err) != FS_OK)
+    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK)
         return fail(&err);
     char dir[FS_PATH_MAX + 64];
-    if (out)
-        snprintf(dir, sizeof dir, "%s", out);
+    if (a->out)
+        snprintf(dir, sizeof dir, "%s", a->out);
     else
         snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
-    /* the folder must be writable before anything is simulated */
+    /* the folder must be writable, and the frame options right, before anything is simulated */
     if (fs_make_dirs(dir, &err) != FS_OK)
         return fail(&err);
-    if (fs_run(sc, res, &err) != FS_OK) {
+    cli_frames *frames = NULL;
+    fs_run_observer observer, *obs = NULL;
+    if (a->frames) {
+        int fs = cli_frames_open(a, sc, dir, &frames, &observer);
+        if (fs)
+            return fs;
+        obs = &observer;
+    }
+    fs_status rs = fs_run(sc, obs, res, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK) : 0;
+    if (rs != FS_OK) {
         fs_run_free(res);
         return fail(&err);
+    }
+    if (fstatus) {
+        fs_run_free(res);
+        return fstatus;
     }
     fs_status s = fs_run_write(sc, res, dir, &err);
     if (s != FS_OK) {
@@ -52,7 +65,7 @@ int cli_run(const cli_args *a)
 {
     static fs_scenario sc;
     fs_run_result res;
-    int s = run_scenario(a->input, a->out, a->set, a->nset, &res, &sc);
+    int s = run_scenario(a, &res, &sc);
     if (s == 0)
         fs_run_free(&res);
     return s;
@@ -204,7 +217,8 @@ int cli_demo(const cli_args *a)
     static fs_scenario sc;
     for (int i = 0; i < 2; i++) {
         fs_run_result res;
-        int s = run_scenario(scenarios[i], NULL, NULL, 0, &res, &sc);
+        cli_args run = {.command = "run", .input = scenarios[i]};
+        int s = run_scenario(&run, &res, &sc);
         if (s)
             return s;
         fs_run_free(&res);

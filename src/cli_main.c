@@ -15,9 +15,12 @@ typedef struct command {
 } command;
 
 static const command commands[] = {
-    {"run", cli_run, "SCENARIO", "--out --set",
+    {"run", cli_run, "SCENARIO", "--out --set --frames --fps --size --camera --video",
      "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
-     "  (default DIR: results/runs/<scenario name>/)."},
+     "  (default DIR: results/runs/<scenario name>/).\n"
+     "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
+     "  (1280x720), seen by --camera side|front|three-quarter|follow (side); --video also encodes\n"
+     "  DIR/video.mp4 with ffmpeg."},
     {"model", cli_model, "DESIGN", "--json --set",
      "Prints the built model in SI units and world coordinates: bodies, joints, springs, geoms."},
     {"stiffness", cli_stiffness, "DESIGN", "--json --set",
@@ -49,6 +52,8 @@ static void command_help(const command *c)
         printf(" [--out DIR]");
     if (strstr(c->options, "--json"))
         printf(" [--json]");
+    if (strstr(c->options, "--frames"))
+        printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--video]]");
     if (strstr(c->options, "--set"))
         printf(" [--set section.key=value]...");
     printf("\n\n  %s\n", c->help);
@@ -66,7 +71,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             command_help(c);
             return -1;
         }
-        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set");
+        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
+                          !strcmp(arg, "--size") || !strcmp(arg, "--camera");
         if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
             fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
                     *c->options ? c->options : "no options");
@@ -80,6 +86,16 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->out = argv[++i];
         else if (!strcmp(arg, "--json"))
             a->json = 1;
+        else if (!strcmp(arg, "--frames"))
+            a->frames = 1;
+        else if (!strcmp(arg, "--video"))
+            a->video = a->frames = 1;
+        else if (!strcmp(arg, "--fps"))
+            a->fps = argv[++i];
+        else if (!strcmp(arg, "--size"))
+            a->size = argv[++i];
+        else if (!strcmp(arg, "--camera"))
+            a->camera = argv[++i];
         else if (!strcmp(arg, "--set")) {
             if (a->nset == CLI_MAX_SET) {
                 fprintf(stderr, "footsim %s: at most %d --set options\n", c->name, CLI_MAX_SET);

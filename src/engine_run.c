@@ -69,7 +69,12 @@ static void measure_end(fs_run_result *res, const fs_sim *sim)
     res->energy_end_J = fs_sim_energy(sim, NULL, NULL, NULL);
 }
 
-fs_status fs_run(const fs_scenario *sc, fs_run_result *res, fs_error *err)
+static fs_status observe(const fs_run_observer *obs, const fs_sim *sim, fs_error *err)
+{
+    return obs && obs->fn ? obs->fn(obs->user, sim, err) : FS_OK;
+}
+
+fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
     memset(res, 0, sizeof *res);
@@ -93,14 +98,20 @@ fs_status fs_run(const fs_scenario *sc, fs_run_result *res, fs_error *err)
     fs_sim_ankle(&sim, res->ankle_start_m);
     res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
     log_row(res, &sim);
+    long watch = obs ? lround(obs->interval_s / d->step_s) : 0;
+    if (watch < 1)
+        watch = 1;
+    s = observe(obs, &sim, err);
     double rest_since = -1;
     long step;
-    for (step = 1; step <= nsteps; step++) {
+    for (step = 1; s == FS_OK && step <= nsteps; step++) {
         s = fs_sim_step(&sim, err);
         if (s != FS_OK)
             break;
         if (step % every == 0)
             log_row(res, &sim);
+        if (obs && step % watch == 0 && (s = observe(obs, &sim, err)) != FS_OK)
+            break;
         /* at rest once every body is slow for rest_hold_s, after the load has fully risen */
         if (sim.time_s >= d->ramp_s && fs_sim_max_speed(&sim) < d->rest_speed_m_per_s) {
             if (rest_since < 0)
@@ -119,6 +130,8 @@ fs_status fs_run(const fs_scenario *sc, fs_run_result *res, fs_error *err)
             log_row(res, &sim);
         measure_end(res, &sim);
         res->settle_time_s = settle_time(res, d->settle_band_m);
+        if (obs && res->steps % watch != 0)
+            s = observe(obs, &sim, err);
     }
     fs_sim_destroy(&sim);
     return s;

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define DEG (M_PI / 180.0)
@@ -104,11 +105,13 @@ static void body_reach(fs_sim *sim)
 
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
 {
-    (void)err;
     fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
     if (!opts)
         opts = &normal;
     memset(sim, 0, sizeof *sim);
+    sim->feedback = calloc(FS_MAX_STEP_CONTACTS, sizeof *sim->feedback);
+    if (!sim->feedback)
+        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory", sc->path);
     sim->sc = sc;
     sim->geom = &sc->geom;
     const fs_scenario_def *s = &sc->def;
@@ -119,8 +122,11 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     dWorldSetGravity(sim->world, s->gravity_m_per_s2 * sim->down[0], 0, s->gravity_m_per_s2 * sim->down[2]);
     dWorldSetQuickStepNumIterations(sim->world, s->iterations);
     /* ODE's global ERP/CFM only touch hinges and contacts' defaults: keep joints stiff. */
-    dWorldSetERP(sim->world, 0.2);
-    dWorldSetCFM(sim->world, 1e-10);
+    dWorldSetERP(sim->world, s->joint_erp);
+    dWorldSetCFM(sim->world, s->joint_cfm);
+    /* Without a surface layer, a very stiff contact pushes a resting sphere out in one step and it
+     * loses contact (and friction) every few steps: the toes then creep. */
+    dWorldSetContactSurfaceLayer(sim->world, s->contact_layer_m);
     sim->space = dSimpleSpaceCreate(0);
     sim->contact_group = dJointGroupCreate(0);
     for (int i = 0; i < sim->geom->nbodies; i++)
@@ -151,6 +157,7 @@ void fs_sim_destroy(fs_sim *sim)
         dJointGroupDestroy(sim->contact_group);
     if (sim->world)
         dWorldDestroy(sim->world);
+    free(sim->feedback);
     memset(sim, 0, sizeof *sim);
 }
 
@@ -171,13 +178,15 @@ static void on_near(void *data, dGeomID a, dGeomID b)
     dContactGeom found[FS_MAX_CONTACTS];
     sim->collision_tests++;
     int n = dCollide(a, b, max, found, sizeof found[0]);
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
         dContact ct = sim->contact_template;
         ct.geom = found[i];
         dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
         dJointAttach(j, dGeomGetBody(a), dGeomGetBody(b));
+        dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
+        memcpy(sim->contact_pos[sim->contacts_now], found[i].pos, 3 * sizeof(double));
+        sim->contacts_now++;
     }
-    sim->contacts_now += n;
 }
 
 static void apply_load(fs_sim *sim)
@@ -277,6 +286,79 @@ double fs_sim_max_speed(const fs_sim *sim)
         vmax = fmax(vmax, speed);
     }
     return vmax;
+}
+
+void fs_sim_ground_force(const fs_sim *sim, double force[3])
+{
+    force[0] = force[1] = force[2] = 0;
+    for (int i = 0; i < sim->contacts_now; i++)
+        for (int k = 0; k < 3; k++)
+            force[k] += sim->feedback[i].f1[k];
+}
+
+static void copy3(double dst[3], const dReal *src)
+{
+    for (int k = 0; k < 3; k++)
+        dst[k] = src[k];
+}
+
+void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
+{
+    const fs_foot_geom *g = sim->geom;
+    memset(scene, 0, sizeof *scene);
+    scene->time_s = sim->time_s;
+    scene->scenario = sim->sc->name;
+    scene->foot = g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
+    scene->terrain = "flat";
+    /* the plane, as a 2 x 2 grid around the foot */
+    fs_sim *mut = (fs_sim *)sim;
+    memset(mut->ground_heights, 0, sizeof mut->ground_heights);
+    scene->ground = (fs_scene_ground){2, 2, -0.15, -0.15, 0.3, 0.3, sim->ground_heights, 1};
+    for (int i = 0; i < sim->nshapes && scene->nshapes < FS_SCENE_MAX_SHAPES; i++) {
+        dGeomID geom = sim->shape[i];
+        fs_scene_shape *s = &scene->shape[scene->nshapes++];
+        if (dGeomGetClass(geom) == dSphereClass) {
+            s->type = FS_SHAPE_SPHERE;
+            s->size[0] = dGeomSphereGetRadius(geom);
+        } else {
+            dVector3 l;
+            dGeomBoxGetLengths(geom, l);
+            s->type = FS_SHAPE_BOX;
+            copy3(s->size, l);
+        }
+        copy3(s->pos, dGeomGetPosition(geom));
+        dQuaternion q;
+        dGeomGetQuaternion(geom, q);
+        for (int k = 0; k < 4; k++)
+            s->quat[k] = q[k];
+        for (int b = 0; b < g->nbodies; b++)
+            if (sim->body[b] == dGeomGetBody(geom))
+                s->body = b;
+    }
+    /* links: each hinge to the next along the chain, drawn as the bodies' skeleton */
+    for (int i = 0; i < g->nhinges && scene->nlinks < FS_SCENE_MAX_SEGMENTS; i++) {
+        dVector3 a;
+        dJointGetHingeAnchor(sim->hinge[i], a);
+        const dReal *c = dBodyGetPosition(sim->body[g->hinge[i].body2]);
+        fs_scene_segment *seg = &scene->link[scene->nlinks++];
+        copy3(seg->p1, a);
+        copy3(seg->p2, c);
+    }
+    for (int i = 0; i < g->nsprings && i < FS_SCENE_MAX_SEGMENTS; i++) {
+        fs_scene_segment *seg = &scene->spring[scene->nsprings++];
+        fs_spring_anchors(&sim->spring[i], seg->p1, seg->p2);
+        seg->force_N = fs_spring_measure(&sim->spring[i]).force_N;
+    }
+    for (int i = 0; i < sim->contacts_now && i < FS_SCENE_MAX_CONTACTS; i++) {
+        fs_scene_contact *c = &scene->contact[scene->ncontacts++];
+        memcpy(c->pos, sim->contact_pos[i], sizeof c->pos);
+        copy3(c->force_N, sim->feedback[i].f1);
+    }
+    fs_sim_ankle(sim, scene->ankle);
+    const fs_scenario_def *s = &sim->sc->def;
+    double ramp = s->ramp_s > 0 && sim->time_s < s->ramp_s ? sim->time_s / s->ramp_s : 1.0;
+    for (int k = 0; k < 3; k++)
+        scene->load_N[k] = sim->load_N * ramp * sim->down[k];
 }
 
 double fs_sim_hinge_angle(const fs_sim *sim, int i)

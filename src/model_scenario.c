@@ -32,6 +32,10 @@ const fs_key fs_scenario_keys[] = {
     NUM("run", "rest_speed_m_per_s", rest_speed_m_per_s, 0, 10, 0, "m/s", "1e-4", "the run stops once every body is slower than this ..."),
     NUM("run", "rest_hold_s", rest_hold_s, 0, 100, 0, "s", "0.05", "... for this long after the load has risen"),
     NUM("run", "settle_band_m", settle_band_m, 0, 1, POS, "m", "1e-5", "settled once the ankle stays this close to its final height"),
+    NUM("run", "joint_erp", joint_erp, 0, 1, 0, "", "0.2", "error reduction of ODE's hinges and contacts' defaults"),
+    NUM("run", "joint_cfm", joint_cfm, 0, 1, 0, "", "1e-10", "constraint force mixing of ODE's hinges"),
+    NUM("run", "contact_layer_m", contact_layer_m, 0, 1e-3, 0, "m",
+        "1e-9", "depth ODE lets contacts sink before pushing back; keeps stiff contacts from chattering on and off"),
     {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "4", "contact points per foot shape against the ground"},
 };
 const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);

@@ -31,7 +31,7 @@ expect 2 "$tmp/nodesign.ini:2: design = 'nowhere.ini': no such file" -- run "$tm
 expect 2 "$tmp/dup.ini:5: \[run\] step_s is given twice" -- run "$tmp/dup.ini" --out "$tmp/o3"
 expect 2 "missing.ini: No such file" -- run missing.ini --out "$tmp/o4"
 expect 2 "--set springs.k_d2_N_per_m: k_d2_N_per_m = '0' is out of range" -- run scenarios/static_load.ini --set springs.k_d2_N_per_m=0 --out "$tmp/o5"
-expect 2 "unknown option --frames" -- run scenarios/static_load.ini --frames
+expect 2 "unknown option --frobnicate" -- run scenarios/static_load.ini --frobnicate
 expect 2 "give a SCENARIO file" -- run
 expect 2 "unknown command" -- sprint
 expect 2 "cannot create folder" -- run scenarios/static_load.ini --out /proc/footsim/out

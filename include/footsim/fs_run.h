@@ -29,7 +29,18 @@ typedef struct fs_run_result {
     double *rows;
 } fs_run_result;
 
-fs_status fs_run(const fs_scenario *sc, fs_run_result *res, fs_error *err);
+/* Something that watches a run, e.g. the renderer: fn is called with the state at t = 0, every
+ * interval_s of simulated time (rounded to whole steps) and at the end; a status other than
+ * FS_OK stops the run with that status (fn fills err). */
+typedef struct fs_sim fs_sim;
+typedef struct fs_run_observer {
+    double interval_s;
+    fs_status (*fn)(void *user, const fs_sim *sim, fs_error *err);
+    void *user;
+} fs_run_observer;
+
+/* obs may be NULL. */
+fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err);
 void fs_run_free(fs_run_result *res);
 
 /* Writes DIR/metrics.json and DIR/trajectory.csv (creating DIR and its parents). */

@@ -28,6 +28,8 @@ typedef struct fs_scenario_def {
     double rest_hold_s;        /* ... for this long, after the ramp: the run then stops */
     double settle_band_m;      /* settled once the ankle stays this close to its final height */
     int max_contacts;          /* per foot geom against the ground */
+    double joint_erp, joint_cfm; /* ODE's hinge error reduction and constraint force mixing */
+    double contact_layer_m;    /* ODE's contact surface layer */
 } fs_scenario_def;
 
 typedef struct fs_scenario {

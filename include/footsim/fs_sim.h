@@ -10,11 +10,12 @@
 #define FS_SIM_H
 
 #include "footsim/fs_scenario.h"
+#include "footsim/fs_scene.h"
 #include "footsim/fs_spring.h"
 
 #include <ode/ode.h>
 
-enum { FS_MAX_CONTACTS = 64 };
+enum { FS_MAX_CONTACTS = 64, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * FS_MAX_CONTACTS };
 
 typedef struct fs_sim_options {
     int with_ground;        /* 0: no ground (the stiffness probes) */
@@ -40,6 +41,9 @@ typedef struct fs_sim {
     double time_s;
     double load_N;         /* the load's weight; fs_sim_step ramps it in */
     int contacts_now;      /* contact points in the last step */
+    dJointFeedback *feedback; /* FS_MAX_STEP_CONTACTS, filled by the last step */
+    double contact_pos[FS_MAX_STEP_CONTACTS][3];
+    double ground_heights[4]; /* the plane as a 2 x 2 grid, for fs_sim_scene */
     long contacts_total, collision_tests;
 } fs_sim;
 
@@ -59,6 +63,13 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
 
 /* A bound on the fastest point of any body: COM speed plus angular speed times its reach, m/s. */
 double fs_sim_max_speed(const fs_sim *sim);
+
+/* The ground's total force on the foot during the last step, N. */
+void fs_sim_ground_force(const fs_sim *sim, double force[3]);
+
+/* Fills scene with the state now (shapes, links, springs with their forces, contacts with their
+ * forces, the load). */
+void fs_sim_scene(const fs_sim *sim, fs_scene *scene);
 
 /* Joint angle of hinge i from the neutral pose, rad (positive: distal link turned up). */
 double fs_sim_hinge_angle(const fs_sim *sim, int i);

@@ -1,0 +1,54 @@
+/* fs_scene.h: a snapshot of a running simulation as plain data, for anything that draws it.
+ *
+ * The core fills it (fs_sim_scene in fs_sim.h) and never draws; the renderer in render/ reads
+ * it and never touches ODE. Everything is in world coordinates (x forward, y left, z up), SI
+ * units. Pointers stay valid until the next fs_sim_scene call or the end of the simulation. */
+#ifndef FS_SCENE_H
+#define FS_SCENE_H
+
+enum { FS_SCENE_MAX_SHAPES = 16, FS_SCENE_MAX_SEGMENTS = 32, FS_SCENE_MAX_CONTACTS = 128 };
+
+typedef enum fs_shape_type { FS_SHAPE_SPHERE = 0, FS_SHAPE_BOX = 1 } fs_shape_type;
+
+typedef struct fs_scene_shape {
+    int type;           /* fs_shape_type */
+    double size[3];     /* sphere: radius in size[0]; box: edge lengths */
+    double pos[3];
+    double quat[4];     /* w, x, y, z */
+    int body;           /* index of the body it belongs to */
+} fs_scene_shape;
+
+/* A line between two points: a link (joint to joint) or a spring (force_N: tension positive). */
+typedef struct fs_scene_segment {
+    double p1[3], p2[3];
+    double force_N;
+} fs_scene_segment;
+
+typedef struct fs_scene_contact {
+    double pos[3];
+    double force_N[3];  /* on the foot, from the ground */
+} fs_scene_contact;
+
+/* The ground as heights on a regular grid: z = heights[j * nx + i] at (x0 + i dx, y0 + j dy).
+ * A flat or sloped plane comes as a coarse grid over the region the foot can reach. */
+typedef struct fs_scene_ground {
+    int nx, ny;
+    double x0, y0, dx, dy;
+    const double *heights;
+    int is_plane;
+} fs_scene_ground;
+
+typedef struct fs_scene {
+    double time_s;
+    const char *scenario, *foot, *terrain; /* names, for the overlay */
+    fs_scene_ground ground;
+    int nshapes, nlinks, nsprings, ncontacts;
+    fs_scene_shape shape[FS_SCENE_MAX_SHAPES];
+    fs_scene_segment link[FS_SCENE_MAX_SEGMENTS];
+    fs_scene_segment spring[FS_SCENE_MAX_SEGMENTS];
+    fs_scene_contact contact[FS_SCENE_MAX_CONTACTS];
+    double ankle[3];    /* the load's point */
+    double load_N[3];   /* the load acting there now */
+} fs_scene;
+
+#endif

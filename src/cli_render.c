@@ -1,0 +1,19 @@
+/* cli_render.c: frames of a run when footsim is built without the renderer (FS_RENDER=OFF). */
+#include "cli.h"
+
+#include "footsim/fs_error.h"
+
+int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
+                    fs_run_observer *obs)
+{
+    (void)a, (void)sc, (void)dir, (void)obs;
+    *frames = 0;
+    return cli_report(FS_BAD_INPUT, "--frames: this footsim was built without the renderer (FS_RENDER=OFF); "
+                                    "install libosmesa6-dev and libpng-dev and rebuild with -DFS_RENDER=ON");
+}
+
+int cli_frames_close(cli_frames *frames, int ok)
+{
+    (void)frames, (void)ok;
+    return 0;
+}
