@@ -207,6 +207,7 @@ int cli_keys(const cli_args *a)
     (void)a;
     fs_config_print_keys(fs_design_keys, fs_design_nkeys, "Design files (scenarios/feet/*.ini)", stdout);
     fs_config_print_keys(fs_scenario_keys, fs_scenario_nkeys, "Scenario files (scenarios/*.ini)", stdout);
+    fs_config_print_keys(fs_terrain_keys, fs_terrain_nkeys, "Terrain files (terrains/*.ini)", stdout);
     return 0;
 }
 

@@ -361,6 +361,10 @@ fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *
         const fs_key *k = &schema[i];
         fs_entry *e = find_entry(cfg, k->section, k->name);
         const char *value = e ? e->value : k->fallback;
+        if (!e && k->type == FS_KEY_PATH && !*k->fallback) {
+            ((char *)def + k->offset)[0] = 0; /* an optional file, not given */
+            continue;
+        }
         if (e) {
             e->used = 1;
             where_entry(cfg, e, where, sizeof where);

@@ -15,15 +15,85 @@ static void contact_template(fs_sim *sim)
 {
     const fs_scenario_def *s = &sim->sc->def;
     const fs_design_def *d = &sim->sc->design;
-    double k = series(d->sole_stiffness_N_per_m, s->ground_stiffness_N_per_m);
-    double c = series(d->sole_damping_Ns_per_m, s->ground_damping_Ns_per_m);
+    const fs_terrain_def *m = &sim->sc->terrain.def;
+    double k = series(d->sole_stiffness_N_per_m, m->stiffness_N_per_m);
+    double c = series(d->sole_damping_Ns_per_m, m->damping_Ns_per_m);
     double h = s->step_s;
     dContact *ct = &sim->contact_template;
     memset(ct, 0, sizeof *ct);
     ct->surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
-    ct->surface.mu = sqrt(d->sole_mu * s->ground_mu);
+    ct->surface.mu = sqrt(d->sole_mu * m->mu);
+    if (m->restitution > 0) {
+        ct->surface.mode |= dContactBounce;
+        ct->surface.bounce = m->restitution;
+        ct->surface.bounce_vel = 0.01; /* m/s: slower impacts do not bounce */
+    }
     ct->surface.soft_erp = h * k / (h * k + c);
     ct->surface.soft_cfm = 1.0 / (h * k + c);
+}
+
+/* ---- the start pose ------------------------------------------------------------------------ */
+
+static fs_vec3 turn(const fs_sim *sim, fs_vec3 v)
+{
+    const double *R = sim->R0;
+    return fs_v3(R[0] * v.x + R[1] * v.y + R[2] * v.z, R[3] * v.x + R[4] * v.y + R[5] * v.z,
+                 R[6] * v.x + R[7] * v.y + R[8] * v.z);
+}
+
+static fs_vec3 place(const fs_sim *sim, fs_vec3 p) { return fs_add(turn(sim, p), fs_v3(sim->t0[0], sim->t0[1], sim->t0[2])); }
+
+/* R0 = Rz(yaw) Ry(pitch) Rx(roll): toe down for positive pitch, left side up for positive roll. */
+static void start_rotation(const fs_scenario_def *s, double R[9])
+{
+    double y = s->yaw_deg * DEG, p = s->pitch_deg * DEG, r = s->roll_deg * DEG;
+    double cy = cos(y), sy = sin(y), cp = cos(p), sp = sin(p), cr = cos(r), sr = sin(r);
+    double M[9] = {cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr,
+                   sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr,
+                   -sp,     cp * sr,                cp * cr};
+    memcpy(R, M, sizeof M);
+}
+
+/* Highest terrain within the disc of radius r around (x, y), from nine samples. */
+static double terrain_top(const fs_terrain *t, double x, double y, double r)
+{
+    double top = fs_terrain_height(t, x, y);
+    for (int k = 0; k < 8; k++)
+        top = fmax(top, fs_terrain_height(t, x + r * cos(k * M_PI / 4), y + r * sin(k * M_PI / 4)));
+    return top;
+}
+
+/* The lift that puts the foot's lowest point drop_m above the terrain under it. */
+static double start_lift(const fs_sim *sim)
+{
+    const fs_foot_geom *g = sim->geom;
+    const fs_terrain *t = &sim->sc->terrain;
+    double lift = -INFINITY;
+    for (int i = 0; i < g->nspheres; i++) {
+        fs_vec3 c = place(sim, g->sphere[i].centre);
+        double r = g->sphere[i].radius_m;
+        lift = fmax(lift, terrain_top(t, c.x, c.y, r) - (c.z - r));
+    }
+    if (g->has_box) {
+        /* the plate's corners, and the terrain under it on a 2 mm grid */
+        double lowest = INFINITY, top = -INFINITY;
+        for (int k = 0; k < 8; k++) {
+            fs_vec3 corner = fs_v3(g->box_centre.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x,
+                                   g->box_centre.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y,
+                                   g->box_centre.z + ((k & 4) ? 0.5 : -0.5) * g->box_size.z);
+            lowest = fmin(lowest, place(sim, corner).z);
+        }
+        int nx = (int)ceil(g->box_size.x / 0.002) + 1, ny = (int)ceil(g->box_size.y / 0.002) + 1;
+        for (int i = 0; i < nx; i++)
+            for (int j = 0; j < ny; j++) {
+                fs_vec3 p = fs_v3(g->box_centre.x + (i / (double)(nx - 1) - 0.5) * g->box_size.x,
+                                  g->box_centre.y + (j / (double)(ny - 1) - 0.5) * g->box_size.y, 0);
+                p = place(sim, p);
+                top = fmax(top, fs_terrain_height(t, p.x, p.y));
+            }
+        lift = fmax(lift, top - lowest);
+    }
+    return lift + sim->sc->def.drop_m;
 }
 
 static void build_body(fs_sim *sim, int i)
@@ -34,7 +104,11 @@ static void build_body(fs_sim *sim, int i)
     const double *I = g->inertia;
     dMassSetParameters(&m, g->mass_kg, 0, 0, 0, I[0], I[4], I[8], I[1], I[2], I[5]);
     dBodySetMass(b, &m);
-    dBodySetPosition(b, g->com.x, g->com.y, g->com.z);
+    fs_vec3 p = place(sim, g->com);
+    dBodySetPosition(b, p.x, p.y, p.z);
+    const double *R = sim->R0;
+    dMatrix3 rot = {R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0};
+    dBodySetRotation(b, rot);
     sim->body[i] = b;
 }
 
@@ -65,13 +139,15 @@ static void build_joints(fs_sim *sim)
         const fs_hinge_geom *h = &g->hinge[i];
         dJointID j = dJointCreateHinge(sim->world, 0);
         dJointAttach(j, sim->body[h->body1], sim->body[h->body2]);
-        dJointSetHingeAnchor(j, h->anchor.x, h->anchor.y, h->anchor.z);
-        dJointSetHingeAxis(j, h->axis.x, h->axis.y, h->axis.z);
+        fs_vec3 a = place(sim, h->anchor), x = turn(sim, h->axis);
+        dJointSetHingeAnchor(j, a.x, a.y, a.z);
+        dJointSetHingeAxis(j, x.x, x.y, x.z);
         sim->hinge[i] = j;
     }
     for (int i = 0; i < g->nsprings; i++) {
         const fs_spring_geom *s = &g->spring[i];
-        double p1[3] = {s->p1.x, s->p1.y, s->p1.z}, p2[3] = {s->p2.x, s->p2.y, s->p2.z};
+        fs_vec3 a = place(sim, s->p1), b = place(sim, s->p2);
+        double p1[3] = {a.x, a.y, a.z}, p2[3] = {b.x, b.y, b.z};
         fs_spring_init(&sim->spring[i], sim->world, (fs_spring_impl)sim->sc->def.springs, sim->body[s->body1],
                        sim->body[s->body2], p1, p2, s->k_N_per_m, s->c_Ns_per_m, s->rest_length_m);
     }
@@ -103,6 +179,93 @@ static void body_reach(fs_sim *sim)
     sim->reach[g->ankle_body] = fmax(sim->reach[g->ankle_body], fs_norm(fs_sub(g->ankle, g->body[g->ankle_body].com)));
 }
 
+/* ---- the terrain ---------------------------------------------------------------------------- */
+
+static dReal heightfield_sample(void *user, int x, int z)
+{
+    const fs_terrain *t = user;
+    /* ODE's local z runs toward world -y: its row z is our row ny - 1 - z */
+    return t->z[(size_t)(t->ny - 1 - z) * t->nx + x];
+}
+
+static void build_heightfield(fs_sim *sim, const fs_terrain *t)
+{
+    double w = (t->nx - 1) * t->dx, d = (t->ny - 1) * t->dx;
+    sim->heightfield = dGeomHeightfieldDataCreate();
+    /* a thick base below the lowest sample, so nothing passes under the surface */
+    double thickness = 0.05 + (t->zmax - t->zmin);
+    dGeomHeightfieldDataBuildCallback(sim->heightfield, (void *)t, heightfield_sample, w, d, t->nx, t->ny, 1.0, 0.0,
+                                      thickness, 0);
+    dGeomHeightfieldDataSetBounds(sim->heightfield, t->zmin, t->zmax);
+    dGeomID hf = dCreateHeightfield(sim->ground, sim->heightfield, 1);
+    /* ODE's heightfield is y-up: turn its y to world z (and its z to world -y) */
+    dMatrix3 R = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0};
+    dGeomSetRotation(hf, R);
+    dGeomSetPosition(hf, t->x0 + 0.5 * w, t->y0 + 0.5 * d, 0);
+}
+
+/* Steps as boxes (sharp edges) on a plane at the lowest level. */
+static void build_steps(fs_sim *sim, const fs_terrain *t)
+{
+    const fs_terrain_def *d = &t->def;
+    const double far = 100.0; /* m: the steps' ends and sides reach beyond any trial */
+    int k = d->step_pattern == FS_STEPS_UP_DOWN ? 2 * d->step_count : d->step_count;
+    double base = d->step_pattern == FS_STEPS_DOWN ? -d->step_rise_m * d->step_count : 0;
+    dGeomID plane = dCreatePlane(sim->ground, 0, 0, 1, base);
+    (void)plane;
+    for (int i = -1; i <= k; i++) {
+        double x0 = i < 0 ? d->step_start_x_m - far : d->step_start_x_m + i * d->step_run_m;
+        double x1 = i < 0 ? d->step_start_x_m : i == k ? x0 + far : x0 + d->step_run_m;
+        double level = fs_terrain_height(t, 0.5 * (x0 + x1), 0);
+        if (level <= base)
+            continue;
+        double depth = level - base + 0.05;
+        dGeomID box = dCreateBox(sim->ground, x1 - x0, 2 * far, depth);
+        dGeomSetPosition(box, 0.5 * (x0 + x1), 0, level - 0.5 * depth);
+    }
+}
+
+static void build_ground(fs_sim *sim)
+{
+    const fs_terrain *t = &sim->sc->terrain;
+    sim->ground = dSimpleSpaceCreate(0);
+    switch (t->def.kind) {
+    case FS_TERRAIN_FLAT: dCreatePlane(sim->ground, 0, 0, 1, 0); break;
+    case FS_TERRAIN_SLOPE: {
+        double a = t->def.slope_deg * DEG;
+        dCreatePlane(sim->ground, -sin(a), 0, cos(a), 0);
+        break;
+    }
+    case FS_TERRAIN_STEPPED: build_steps(sim, t); break;
+    default: build_heightfield(sim, t);
+    }
+}
+
+/* The ground as a grid for fs_sim_scene: a heightfield's own samples, or the plane or steps
+ * sampled over the region around the foot. */
+static fs_status scene_ground(fs_sim *sim, fs_error *err)
+{
+    const fs_terrain *t = &sim->sc->terrain;
+    if (fs_terrain_is_heightfield(t) && t->z) {
+        sim->scene_ground = (fs_scene_ground){t->nx, t->ny, t->x0, t->y0, t->dx, t->dx, t->z, 0};
+        return FS_OK;
+    }
+    double box[4], m = sim->sc->def.region_margin_m + 0.05;
+    fs_scenario_footprint(sim->sc, box);
+    int steps = t->def.kind == FS_TERRAIN_STEPPED;
+    double dx = steps ? 0.001 : (box[1] - box[0] + 2 * m); /* steps need their edges sampled */
+    int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = steps ? 2 : 2;
+    double dy = box[3] - box[2] + 2 * m;
+    sim->ground_grid = malloc((size_t)nx * ny * sizeof *sim->ground_grid);
+    if (!sim->ground_grid)
+        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory", sim->sc->path);
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++)
+            sim->ground_grid[j * nx + i] = fs_terrain_height(t, box[0] - m + i * dx, box[2] - m + j * dy);
+    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid, !steps};
+    return FS_OK;
+}
+
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
 {
     fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
@@ -129,28 +292,36 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     dWorldSetContactSurfaceLayer(sim->world, s->contact_layer_m);
     sim->space = dSimpleSpaceCreate(0);
     sim->contact_group = dJointGroupCreate(0);
+    start_rotation(s, sim->R0);
+    sim->t0[0] = s->start_x_m;
+    sim->t0[1] = s->start_y_m;
+    sim->t0[2] = 0;
+    if (opts->with_ground) {
+        sim->t0[2] = start_lift(sim);
+        build_ground(sim);
+    }
     for (int i = 0; i < sim->geom->nbodies; i++)
         build_body(sim, i);
     build_shapes(sim);
     build_joints(sim);
-    if (opts->with_ground)
-        sim->ground = dCreatePlane(0, 0, 0, 1, 0);
     if (opts->hold_rear_foot && sim->geom->kind == FS_FOOT_BIOMIMETIC) {
         dBodySetKinematic(sim->body[FS_BODY_HEEL]);
         dBodySetKinematic(sim->body[FS_BODY_TALUS]);
     }
-    const fs_vec3 a = sim->geom->ankle;
+    const fs_vec3 a = place(sim, sim->geom->ankle);
     dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a.x, a.y, a.z, sim->ankle_local);
     sim->load_N = s->load_kg * s->gravity_m_per_s2;
     contact_template(sim);
     body_reach(sim);
-    return FS_OK;
+    return scene_ground(sim, err);
 }
 
 void fs_sim_destroy(fs_sim *sim)
 {
     if (sim->ground)
-        dGeomDestroy(sim->ground);
+        dSpaceDestroy(sim->ground);
+    if (sim->heightfield)
+        dGeomHeightfieldDataDestroy(sim->heightfield);
     if (sim->space)
         dSpaceDestroy(sim->space); /* destroys the shapes it holds */
     if (sim->contact_group)
@@ -158,6 +329,7 @@ void fs_sim_destroy(fs_sim *sim)
     if (sim->world)
         dWorldDestroy(sim->world);
     free(sim->feedback);
+    free(sim->ground_grid);
     memset(sim, 0, sizeof *sim);
 }
 
@@ -227,7 +399,7 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
     /* collision: the foot's shapes against the ground, nothing else */
     sim->contacts_now = 0;
     if (sim->ground)
-        dSpaceCollide2((dGeomID)sim->space, sim->ground, sim, on_near);
+        dSpaceCollide2((dGeomID)sim->space, (dGeomID)sim->ground, sim, on_near);
     sim->contacts_total += sim->contacts_now;
     /* the ODE step */
     if (s->stepper == FS_STEPPER_QUICKSTEP)
@@ -309,11 +481,8 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
     scene->time_s = sim->time_s;
     scene->scenario = sim->sc->name;
     scene->foot = g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
-    scene->terrain = "flat";
-    /* the plane, as a 2 x 2 grid around the foot */
-    fs_sim *mut = (fs_sim *)sim;
-    memset(mut->ground_heights, 0, sizeof mut->ground_heights);
-    scene->ground = (fs_scene_ground){2, 2, -0.15, -0.15, 0.3, 0.3, sim->ground_heights, 1};
+    scene->terrain = sim->sc->terrain.name;
+    scene->ground = sim->scene_ground;
     for (int i = 0; i < sim->nshapes && scene->nshapes < FS_SCENE_MAX_SHAPES; i++) {
         dGeomID geom = sim->shape[i];
         fs_scene_shape *s = &scene->shape[scene->nshapes++];

@@ -1,6 +1,7 @@
 /* model_scenario.c: the scenario schema and loading a scenario with its design. */
 #include "footsim/fs_scenario.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
@@ -13,10 +14,15 @@
 const fs_key fs_scenario_keys[] = {
     {"scenario", "design", FS_KEY_PATH, F(design_path), 0, 0, 0, 0, NULL, "", "feet/biomimetic.ini",
      "design file, relative to the scenario's folder"},
-    NUM("ground", "mu", ground_mu, 0, 10, 0, "", "1.0", "friction coefficient of the ground (combined with the sole's as sqrt(mu_sole mu_ground))"),
-    NUM("ground", "stiffness_N_per_m", ground_stiffness_N_per_m, 0, 1e12, POS, "N/m", "1e8",
-        "ground contact stiffness (in series with the sole's)"),
-    NUM("ground", "damping_Ns_per_m", ground_damping_Ns_per_m, 0, 1e9, 0, "N s/m", "2e4", "ground contact damping (in series with the sole's)"),
+    {"scenario", "terrain", FS_KEY_PATH, F(terrain_path), 0, 0, 0, 0, NULL, "", "",
+     "terrain file, relative to the scenario's folder; none: a flat plane of default material"},
+    NUM("start", "x_m", start_x_m, -100, 100, 0, "m", "0", "where the foot's heel contact starts"),
+    NUM("start", "y_m", start_y_m, -100, 100, 0, "m", "0", "where the foot's heel contact starts"),
+    NUM("start", "yaw_deg", yaw_deg, -180, 180, 0, "deg", "0", "the foot turned about z"),
+    NUM("start", "pitch_deg", pitch_deg, -45, 45, 0, "deg", "0", "the foot pitched, toe down positive"),
+    NUM("start", "roll_deg", roll_deg, -45, 45, 0, "deg", "0", "the foot rolled about x, left side up positive"),
+    NUM("start", "drop_m", drop_m, 0, 10, 0, "m", "0", "gap between the foot's lowest point and the highest terrain under it"),
+    NUM("start", "region_margin_m", region_margin_m, 0, 10, 0, "m", "0.05", "the heightfield covers the footprint plus this margin"),
     NUM("load", "mass_kg", load_kg, 0, 1e4, 0, "kg", "26", "mass whose weight acts vertically at the ankle (Table I)"),
     NUM("load", "tilt_deg", tilt_deg, -45, 45, 0, "deg", "0", "the foot tilted against the load: load and gravity turned about the lateral axis"),
     NUM("load", "ramp_s", ramp_s, 0, 100, 0, "s", "0.02", "the load rises linearly over this time"),
@@ -40,26 +46,14 @@ const fs_key fs_scenario_keys[] = {
 };
 const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);
 
-static int scenario_has_section(const char *assignment)
+static int has_section(const fs_key *keys, int n, const char *assignment)
 {
     const char *dot = strchr(assignment, '.');
-    size_t n = dot ? (size_t)(dot - assignment) : strlen(assignment);
-    for (int i = 0; i < fs_scenario_nkeys; i++)
-        if (strlen(fs_scenario_keys[i].section) == n && !strncmp(fs_scenario_keys[i].section, assignment, n))
+    size_t len = dot ? (size_t)(dot - assignment) : strlen(assignment);
+    for (int i = 0; i < n; i++)
+        if (strlen(keys[i].section) == len && !strncmp(keys[i].section, assignment, len))
             return 1;
     return 0;
-}
-
-void fs_split_overrides(const char *const *overrides, int n, const char **scen, int *nscen, const char **design,
-                        int *ndesign)
-{
-    *nscen = *ndesign = 0;
-    for (int i = 0; i < n; i++) {
-        if (scenario_has_section(overrides[i]))
-            scen[(*nscen)++] = overrides[i];
-        else
-            design[(*ndesign)++] = overrides[i];
-    }
 }
 
 static void base_name(const char *path, char *out, size_t size)
@@ -74,22 +68,41 @@ static void base_name(const char *path, char *out, size_t size)
     out[n] = 0;
 }
 
+/* Which of the three files an override belongs to: 0 scenario, 1 terrain, 2 design. */
+static int override_target(const char *assignment)
+{
+    if (has_section(fs_scenario_keys, fs_scenario_nkeys, assignment))
+        return 0;
+    return has_section(fs_terrain_keys, fs_terrain_nkeys, assignment) ? 1 : 2;
+}
+
+static fs_status crop_terrain(fs_scenario *sc, fs_error *err)
+{
+    double box[4];
+    fs_scenario_footprint(sc, box);
+    double m = sc->def.region_margin_m;
+    return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
+}
+
 fs_status fs_scenario_load(const char *path, const char *const *overrides, int noverrides, fs_scenario *sc,
                            fs_error *err)
 {
     enum { MAX_OVERRIDES = 256 };
     if (noverrides > MAX_OVERRIDES)
         return fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides", MAX_OVERRIDES);
-    const char *scen[MAX_OVERRIDES], *design[MAX_OVERRIDES];
-    int nscen, ndesign;
-    fs_split_overrides(overrides, noverrides, scen, &nscen, design, &ndesign);
+    const char *part[3][MAX_OVERRIDES];
+    int n[3] = {0, 0, 0};
+    for (int i = 0; i < noverrides; i++) {
+        int t = override_target(overrides[i]);
+        part[t][n[t]++] = overrides[i];
+    }
     memset(sc, 0, sizeof *sc);
     snprintf(sc->path, sizeof sc->path, "%s", path);
     base_name(path, sc->name, sizeof sc->name);
     fs_config cfg;
     fs_status s = fs_config_load(&cfg, path, err);
-    for (int i = 0; s == FS_OK && i < nscen; i++)
-        s = fs_config_override(&cfg, scen[i], err);
+    for (int i = 0; s == FS_OK && i < n[0]; i++)
+        s = fs_config_override(&cfg, part[0][i], err);
     if (s == FS_OK)
         s = fs_config_bind(&cfg, fs_scenario_keys, fs_scenario_nkeys, &sc->def, err);
     if (s == FS_OK && sc->def.log_interval_s < sc->def.step_s) {
@@ -100,8 +113,41 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     }
     fs_config_free(&cfg);
     if (s == FS_OK)
-        s = fs_design_load(sc->def.design_path, design, ndesign, &sc->design, &sc->geom, err);
+        s = fs_design_load(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, err);
+    if (s == FS_OK)
+        s = fs_terrain_load(sc->def.terrain_path, part[1], n[1], &sc->terrain, err);
+    if (s == FS_OK)
+        s = crop_terrain(sc, err);
     return s;
+}
+
+void fs_scenario_free(fs_scenario *sc) { fs_terrain_free(&sc->terrain); }
+
+void fs_scenario_footprint(const fs_scenario *sc, double box[4])
+{
+    const fs_foot_geom *g = &sc->geom;
+    double yaw = sc->def.yaw_deg * M_PI / 180, c = cos(yaw), s = sin(yaw);
+    box[0] = box[2] = INFINITY;
+    box[1] = box[3] = -INFINITY;
+    /* every contact shape's extent, turned by the yaw and moved to the start */
+    for (int i = 0; i < g->nspheres + 4 * g->has_box; i++) {
+        double x, y, r;
+        if (i < g->nspheres) {
+            x = g->sphere[i].centre.x;
+            y = g->sphere[i].centre.y;
+            r = g->sphere[i].radius_m;
+        } else {
+            int k = i - g->nspheres;
+            x = g->box_centre.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x;
+            y = g->box_centre.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y;
+            r = 0;
+        }
+        double wx = sc->def.start_x_m + c * x - s * y, wy = sc->def.start_y_m + s * x + c * y;
+        box[0] = fmin(box[0], wx - r);
+        box[1] = fmax(box[1], wx + r);
+        box[2] = fmin(box[2], wy - r);
+        box[3] = fmax(box[3], wy + r);
+    }
 }
 
 fs_status fs_scenario_for_design(const char *design_path, const char *const *overrides, int noverrides,
@@ -111,8 +157,10 @@ fs_status fs_scenario_for_design(const char *design_path, const char *const *ove
     snprintf(sc->path, sizeof sc->path, "%s", design_path);
     base_name(design_path, sc->name, sizeof sc->name);
     fs_config empty = {.path = "(scenario defaults)"};
-    /* Every key but the design path (the first) takes its default. */
+    /* Every key but the design path (the first) takes its default: a flat plane of default material. */
     fs_status s = fs_config_bind(&empty, fs_scenario_keys + 1, fs_scenario_nkeys - 1, &sc->def, err);
+    if (s == FS_OK)
+        s = fs_terrain_load("", NULL, 0, &sc->terrain, err);
     if (s != FS_OK)
         return s;
     snprintf(sc->def.design_path, sizeof sc->def.design_path, "%s", design_path);

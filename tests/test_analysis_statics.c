@@ -13,7 +13,7 @@
  * toes creep by 3 microns, which moves the ankle by 5e-7 m. */
 static const char *planar_overrides[] = {
     "chains.splay_deg=0,0,0,0,0", "chains.scale=1,1,1,1,1", "springs.d3_heel_spread=1",
-    "ground.stiffness_N_per_m=1e12", "sole.stiffness_N_per_m=1e12", "run.rest_speed_m_per_s=1e-7",
+    "material.stiffness_N_per_m=1e12", "sole.stiffness_N_per_m=1e12", "run.rest_speed_m_per_s=1e-7",
     "run.rest_hold_s=0.05", "run.duration_s=5", "load.ramp_s=0.5", NULL, NULL, /* the friction of ground and sole */
 };
 enum { NOVERRIDES = sizeof planar_overrides / sizeof planar_overrides[0] };
@@ -63,11 +63,11 @@ static void compare(const char *ground_mu, const char *sole_mu, int frictionless
 }
 
 /* The paper ignores ground friction: heel and toes slide. */
-static void deflection_on_frictionless_ground(void) { compare("ground.mu=0", "sole.mu=1", 1); }
+static void deflection_on_frictionless_ground(void) { compare("material.mu=0", "sole.mu=1", 1); }
 
 /* Friction high enough that nothing slips (the toes need about 4 times their normal force
  * sideways): heel and toes roll. */
-static void deflection_on_gripping_ground(void) { compare("ground.mu=10", "sole.mu=10", 0); }
+static void deflection_on_gripping_ground(void) { compare("material.mu=10", "sole.mu=10", 0); }
 
 /* The default design neither collapses nor inverts under its design load. */
 static void default_arch_holds_its_load(void)

@@ -51,7 +51,7 @@ static void built_foot_rests_on_heel_and_toes(void)
     for (int i = 0; i < 5000; i++)
         CHECK(fs_sim_step(&sim, &err) == FS_OK);
     const fs_foot_geom *g = &sc.geom;
-    double k = 1.0 / (1.0 / sc.design.sole_stiffness_N_per_m + 1.0 / sc.def.ground_stiffness_N_per_m);
+    double k = 1.0 / (1.0 / sc.design.sole_stiffness_N_per_m + 1.0 / sc.terrain.def.stiffness_N_per_m);
     double tol = g->total_mass_kg * sc.def.gravity_m_per_s2 / k + 1e-9;
     const char *touching[] = {"heel_medial", "heel_lateral", "toe1", "toe2", "toe3", "toe4", "toe5"};
     for (int i = 0; i < 7; i++) {

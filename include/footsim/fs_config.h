@@ -34,7 +34,8 @@ typedef enum fs_key_type {
     FS_KEY_INTEGER, /* int, in [min, max] */
     FS_KEY_LIST,    /* exactly `count` comma-separated doubles, each in range */
     FS_KEY_CHOICE,  /* one word of `choices` ("a|b|c"), stored as its int index */
-    FS_KEY_PATH     /* a path relative to the file's folder; must name an existing file */
+    FS_KEY_PATH     /* a path relative to the file's folder; must name an existing file (a key
+                       whose default is "" is optional: left out, it stays "") */
 } fs_key_type;
 
 enum { FS_KEY_OPEN_MIN = 1 };

@@ -2,19 +2,23 @@
  * how to integrate. fs_scenario_load reads and checks the file and the design it names, and
  * refuses anything wrong before any simulation starts.
  *
- * Overrides ("section.key=value") go to the scenario when it has that section and to the design
- * otherwise, so `--set springs.k_d1_N_per_m=9000` reaches the foot through the scenario. */
+ * Overrides ("section.key=value") go to the scenario, the terrain or the design, whichever has
+ * that section (their sections are distinct), so `--set springs.k_d1_N_per_m=9000` reaches the
+ * foot and `--set material.mu=0.5` the ground through the scenario. */
 #ifndef FS_SCENARIO_H
 #define FS_SCENARIO_H
 
 #include "footsim/fs_design.h"
+#include "footsim/fs_terrain.h"
 
 typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
 
 typedef struct fs_scenario_def {
     char design_path[FS_PATH_MAX];
-    double ground_mu;
-    double ground_stiffness_N_per_m, ground_damping_Ns_per_m;
+    char terrain_path[FS_PATH_MAX];
+    double start_x_m, start_y_m, yaw_deg, pitch_deg, roll_deg; /* where the foot starts */
+    double drop_m;             /* gap between the foot's lowest point and the terrain under it */
+    double region_margin_m;    /* the heightfield is cut to the footprint plus this margin */
     double load_kg;            /* applied vertically at the ankle */
     double tilt_deg;           /* the load and gravity turned about the lateral axis; positive
                                   tilts the foot toe-up relative to them */
@@ -38,6 +42,7 @@ typedef struct fs_scenario {
     fs_scenario_def def;
     fs_design_def design;
     fs_foot_geom geom;
+    fs_terrain terrain;        /* cut to the region the foot can reach */
 } fs_scenario;
 
 extern const fs_key fs_scenario_keys[];
@@ -50,9 +55,10 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
 fs_status fs_scenario_for_design(const char *design_path, const char *const *overrides, int noverrides,
                                  fs_scenario *sc, fs_error *err);
 
-/* Routes overrides: those whose section the scenario schema knows into *scen, the others into
- * *design (pointers into overrides); counts in *nscen, *ndesign. */
-void fs_split_overrides(const char *const *overrides, int n, const char **scen, int *nscen, const char **design,
-                        int *ndesign);
+/* Releases what a loaded scenario holds (its terrain's samples). */
+void fs_scenario_free(fs_scenario *sc);
+
+/* The rectangle [xmin, xmax] x [ymin, ymax] the foot covers at its start pose. */
+void fs_scenario_footprint(const fs_scenario *sc, double box[4]);
 
 #endif

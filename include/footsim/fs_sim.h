@@ -27,7 +27,9 @@ typedef struct fs_sim {
     const fs_foot_geom *geom;
     dWorldID world;
     dSpaceID space;        /* the foot's shapes */
-    dGeomID ground;
+    dSpaceID ground;       /* the terrain's shapes (plane, boxes or heightfield); NULL without ground */
+    dHeightfieldDataID heightfield;
+    double R0[9], t0[3];   /* the start pose: world = R0 * design + t0 */
     dJointGroupID contact_group;
     dBodyID body[FS_MAX_BODIES];
     dJointID hinge[FS_MAX_HINGES];
@@ -43,7 +45,8 @@ typedef struct fs_sim {
     int contacts_now;      /* contact points in the last step */
     dJointFeedback *feedback; /* FS_MAX_STEP_CONTACTS, filled by the last step */
     double contact_pos[FS_MAX_STEP_CONTACTS][3];
-    double ground_heights[4]; /* the plane as a 2 x 2 grid, for fs_sim_scene */
+    double *ground_grid;   /* planes and steps sampled for fs_sim_scene (heightfields use theirs) */
+    fs_scene_ground scene_ground;
     long contacts_total, collision_tests;
 } fs_sim;
 

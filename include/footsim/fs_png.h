@@ -1,0 +1,14 @@
+/* fs_png.h: grayscale PNG input (heightmaps) and RGB PNG output (terrain maps), with libpng.
+ * Reading refuses a file that is not a PNG or not grayscale; writing is atomic. */
+#ifndef FS_PNG_H
+#define FS_PNG_H
+
+#include "footsim/fs_error.h"
+
+/* Reads an 8- or 16-bit grayscale PNG; *values (malloc'd, w*h, row 0 first) are in [0, 1]. */
+fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, double **values, fs_error *err);
+
+/* Writes w*h RGB pixels (row 0 at the top) to path, whole or not at all. */
+fs_status fs_png_write_rgb(const char *path, int w, int h, const unsigned char *rgb, fs_error *err);
+
+#endif
