@@ -15,6 +15,9 @@ typedef struct cli_args {
     int frames;                     /* --frames: write DIR/frames/NNNNNN.png */
     const char *fps, *size, *camera;/* --fps N, --size WxH, --camera NAME (as given; checked by the renderer) */
     int video;                      /* --video: also DIR/video.mp4 */
+    const char *height_x, *height_y;/* --height X Y */
+    const char *png;                /* --png FILE */
+    const char *scenario;           /* --scenario FILE */
 } cli_args;
 
 /* Frames of a run (cli_render.c). cli_frames_open checks the frame options and prepares the
@@ -32,6 +35,7 @@ int cli_model(const cli_args *a);
 int cli_stiffness(const cli_args *a);
 int cli_keys(const cli_args *a);
 int cli_demo(const cli_args *a);
+int cli_terrain(const cli_args *a);
 
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);

@@ -27,6 +27,10 @@ static const command commands[] = {
      "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
      "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
      "  Exit 1 when analytic and measured differ by more than 1 %."},
+    {"terrain", cli_terrain, "TERRAIN", "--height --png --scenario --set",
+     "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
+     "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
+     "  --scenario S gives one); with neither, a summary."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "",
@@ -52,6 +56,8 @@ static void command_help(const command *c)
         printf(" [--out DIR]");
     if (strstr(c->options, "--json"))
         printf(" [--json]");
+    if (strstr(c->options, "--height"))
+        printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
     if (strstr(c->options, "--frames"))
         printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--video]]");
     if (strstr(c->options, "--set"))
@@ -72,7 +78,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             return -1;
         }
         int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
-                          !strcmp(arg, "--size") || !strcmp(arg, "--camera");
+                          !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
+                          !strcmp(arg, "--scenario") || !strcmp(arg, "--height");
         if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
             fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
                     *c->options ? c->options : "no options");
@@ -82,8 +89,19 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             fprintf(stderr, "footsim %s: %s needs a value\n", c->name, arg);
             return 2;
         }
+        if (!strcmp(arg, "--height") && i + 2 >= argc) {
+            fprintf(stderr, "footsim %s: --height needs two values, X and Y in metres\n", c->name);
+            return 2;
+        }
         if (!strcmp(arg, "--out"))
             a->out = argv[++i];
+        else if (!strcmp(arg, "--height")) {
+            a->height_x = argv[++i];
+            a->height_y = argv[++i];
+        } else if (!strcmp(arg, "--png"))
+            a->png = argv[++i];
+        else if (!strcmp(arg, "--scenario"))
+            a->scenario = argv[++i];
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--frames"))

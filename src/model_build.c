@@ -1,6 +1,8 @@
 /* model_build.c: the foot built in ODE from its geometry, and the step as named stages. */
 #include "footsim/fs_sim.h"
 
+#include "footsim/fs_ground.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,7 +77,8 @@ static double start_lift(const fs_sim *sim)
         lift = fmax(lift, terrain_top(t, c.x, c.y, r) - (c.z - r));
     }
     if (g->has_box) {
-        /* the plate's corners, and the terrain under it on a 2 mm grid */
+        /* the plate's corners, and the terrain under it finer than its lattice (the highest point of
+         * triangulated samples is a sample or on the edge) */
         double lowest = INFINITY, top = -INFINITY;
         for (int k = 0; k < 8; k++) {
             fs_vec3 corner = fs_v3(g->box_centre.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x,
@@ -83,7 +86,8 @@ static double start_lift(const fs_sim *sim)
                                    g->box_centre.z + ((k & 4) ? 0.5 : -0.5) * g->box_size.z);
             lowest = fmin(lowest, place(sim, corner).z);
         }
-        int nx = (int)ceil(g->box_size.x / 0.002) + 1, ny = (int)ceil(g->box_size.y / 0.002) + 1;
+        double spacing = fs_terrain_is_heightfield(t) && t->dx > 0 ? 0.5 * t->dx : 0.002;
+        int nx = (int)ceil(g->box_size.x / spacing) + 1, ny = (int)ceil(g->box_size.y / spacing) + 1;
         for (int i = 0; i < nx; i++)
             for (int j = 0; j < ny; j++) {
                 fs_vec3 p = fs_v3(g->box_centre.x + (i / (double)(nx - 1) - 0.5) * g->box_size.x,
@@ -179,68 +183,6 @@ static void body_reach(fs_sim *sim)
     sim->reach[g->ankle_body] = fmax(sim->reach[g->ankle_body], fs_norm(fs_sub(g->ankle, g->body[g->ankle_body].com)));
 }
 
-/* ---- the terrain ---------------------------------------------------------------------------- */
-
-static dReal heightfield_sample(void *user, int x, int z)
-{
-    const fs_terrain *t = user;
-    /* ODE's local z runs toward world -y: its row z is our row ny - 1 - z */
-    return t->z[(size_t)(t->ny - 1 - z) * t->nx + x];
-}
-
-static void build_heightfield(fs_sim *sim, const fs_terrain *t)
-{
-    double w = (t->nx - 1) * t->dx, d = (t->ny - 1) * t->dx;
-    sim->heightfield = dGeomHeightfieldDataCreate();
-    /* a thick base below the lowest sample, so nothing passes under the surface */
-    double thickness = 0.05 + (t->zmax - t->zmin);
-    dGeomHeightfieldDataBuildCallback(sim->heightfield, (void *)t, heightfield_sample, w, d, t->nx, t->ny, 1.0, 0.0,
-                                      thickness, 0);
-    dGeomHeightfieldDataSetBounds(sim->heightfield, t->zmin, t->zmax);
-    dGeomID hf = dCreateHeightfield(sim->ground, sim->heightfield, 1);
-    /* ODE's heightfield is y-up: turn its y to world z (and its z to world -y) */
-    dMatrix3 R = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0};
-    dGeomSetRotation(hf, R);
-    dGeomSetPosition(hf, t->x0 + 0.5 * w, t->y0 + 0.5 * d, 0);
-}
-
-/* Steps as boxes (sharp edges) on a plane at the lowest level. */
-static void build_steps(fs_sim *sim, const fs_terrain *t)
-{
-    const fs_terrain_def *d = &t->def;
-    const double far = 100.0; /* m: the steps' ends and sides reach beyond any trial */
-    int k = d->step_pattern == FS_STEPS_UP_DOWN ? 2 * d->step_count : d->step_count;
-    double base = d->step_pattern == FS_STEPS_DOWN ? -d->step_rise_m * d->step_count : 0;
-    dGeomID plane = dCreatePlane(sim->ground, 0, 0, 1, base);
-    (void)plane;
-    for (int i = -1; i <= k; i++) {
-        double x0 = i < 0 ? d->step_start_x_m - far : d->step_start_x_m + i * d->step_run_m;
-        double x1 = i < 0 ? d->step_start_x_m : i == k ? x0 + far : x0 + d->step_run_m;
-        double level = fs_terrain_height(t, 0.5 * (x0 + x1), 0);
-        if (level <= base)
-            continue;
-        double depth = level - base + 0.05;
-        dGeomID box = dCreateBox(sim->ground, x1 - x0, 2 * far, depth);
-        dGeomSetPosition(box, 0.5 * (x0 + x1), 0, level - 0.5 * depth);
-    }
-}
-
-static void build_ground(fs_sim *sim)
-{
-    const fs_terrain *t = &sim->sc->terrain;
-    sim->ground = dSimpleSpaceCreate(0);
-    switch (t->def.kind) {
-    case FS_TERRAIN_FLAT: dCreatePlane(sim->ground, 0, 0, 1, 0); break;
-    case FS_TERRAIN_SLOPE: {
-        double a = t->def.slope_deg * DEG;
-        dCreatePlane(sim->ground, -sin(a), 0, cos(a), 0);
-        break;
-    }
-    case FS_TERRAIN_STEPPED: build_steps(sim, t); break;
-    default: build_heightfield(sim, t);
-    }
-}
-
 /* The ground as a grid for fs_sim_scene: a heightfield's own samples, or the plane or steps
  * sampled over the region around the foot. */
 static fs_status scene_ground(fs_sim *sim, fs_error *err)
@@ -298,7 +240,12 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     sim->t0[2] = 0;
     if (opts->with_ground) {
         sim->t0[2] = start_lift(sim);
-        build_ground(sim);
+        /* a hash space: a heightfield comes as many tiles */
+        sim->ground = dHashSpaceCreate(0);
+        int ok;
+        sim->heightfield = fs_ground_build(sim->ground, &sc->terrain, s->tile_cells, &ok);
+        if (!ok)
+            return fs_fail(err, FS_BAD_INPUT, "%s: out of memory for the terrain", sc->path);
     }
     for (int i = 0; i < sim->geom->nbodies; i++)
         build_body(sim, i);
@@ -320,8 +267,7 @@ void fs_sim_destroy(fs_sim *sim)
 {
     if (sim->ground)
         dSpaceDestroy(sim->ground);
-    if (sim->heightfield)
-        dGeomHeightfieldDataDestroy(sim->heightfield);
+    fs_ground_destroy(sim->heightfield);
     if (sim->space)
         dSpaceDestroy(sim->space); /* destroys the shapes it holds */
     if (sim->contact_group)
@@ -343,21 +289,125 @@ void fs_sim_ankle(const fs_sim *sim, double p[3])
 
 /* ---- the step ----------------------------------------------------------------------------- */
 
-static void on_near(void *data, dGeomID a, dGeomID b)
+/* Contacts of one foot shape with all terrain geoms in one step. */
+typedef struct gathered {
+    fs_sim *sim;
+    int n;
+    dContactGeom c[FS_MAX_CONTACTS];
+} gathered;
+
+static void gather(void *data, dGeomID a, dGeomID b)
 {
-    fs_sim *sim = data;
-    int max = sim->sc->def.max_contacts;
-    dContactGeom found[FS_MAX_CONTACTS];
-    sim->collision_tests++;
-    int n = dCollide(a, b, max, found, sizeof found[0]);
-    for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
-        dContact ct = sim->contact_template;
-        ct.geom = found[i];
-        dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
-        dJointAttach(j, dGeomGetBody(a), dGeomGetBody(b));
-        dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
-        memcpy(sim->contact_pos[sim->contacts_now], found[i].pos, 3 * sizeof(double));
-        sim->contacts_now++;
+    gathered *g = data;
+    g->sim->collision_tests++;
+    if (g->n < FS_MAX_CONTACTS)
+        g->n += dCollide(a, b, FS_MAX_CONTACTS - g->n, g->c + g->n, sizeof g->c[0]);
+}
+
+static double distance2(const dContactGeom *a, const dContactGeom *b)
+{
+    double d = 0;
+    for (int k = 0; k < 3; k++)
+        d += (a->pos[k] - b->pos[k]) * (a->pos[k] - b->pos[k]);
+    return d;
+}
+
+/* Keeps at most max contacts: the same point found by two heightfield tiles (they share their
+ * edges) counts once, then the deepest, then each next the farthest from those kept, so the
+ * support the contacts give is spread like the real one. */
+static int select_contacts(gathered *g, int max, double merge_m)
+{
+    int n = 0;
+    for (int i = 0; i < g->n; i++) {
+        int twin = 0;
+        for (int k = 0; k < n && !twin; k++)
+            twin = distance2(&g->c[i], &g->c[k]) <= merge_m * merge_m;
+        if (!twin)
+            g->c[n++] = g->c[i];
+    }
+    if (n <= max)
+        return n;
+    for (int kept = 0; kept < max; kept++) {
+        int best = kept;
+        double score = -INFINITY;
+        for (int i = kept; i < n; i++) {
+            double s = g->c[i].depth;
+            if (kept > 0) {
+                s = INFINITY;
+                for (int k = 0; k < kept; k++)
+                    s = fmin(s, distance2(&g->c[i], &g->c[k]));
+            }
+            if (s > score)
+                score = s, best = i;
+        }
+        dContactGeom t = g->c[kept];
+        g->c[kept] = g->c[best];
+        g->c[best] = t;
+    }
+    return max;
+}
+
+/* ODE's box-heightfield test finds box corners below the surface, not the surface's vertices
+ * poking up through the box's faces: a flat sole sliding onto a rock would sink into it. This
+ * adds one contact per lattice vertex inside the box, pushing out through the nearer of its top
+ * and bottom faces. */
+static void box_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g)
+{
+    dVector3 l;
+    dGeomBoxGetLengths(box, l);
+    const dReal *R = dGeomGetRotation(box), *c = dGeomGetPosition(box);
+    double aabb[6];
+    dGeomGetAABB(box, aabb);
+    double hx = 0.5 * l[0], hy = 0.5 * l[1], hz = 0.5 * l[2];
+    long i0 = (long)floor((aabb[0] - t->x0) / t->dx), i1 = (long)ceil((aabb[1] - t->x0) / t->dx);
+    long j0 = (long)floor((aabb[2] - t->y0) / t->dx), j1 = (long)ceil((aabb[3] - t->y0) / t->dx);
+    for (long j = j0 > 0 ? j0 : 0; j <= j1 && j < t->ny; j++)
+        for (long i = i0 > 0 ? i0 : 0; i <= i1 && i < t->nx; i++) {
+            double z = t->z[(size_t)j * t->nx + i];
+            if (z < aabb[4])
+                continue;
+            double w[3] = {t->x0 + i * t->dx - c[0], t->y0 + j * t->dx - c[1], z - c[2]};
+            /* the vertex in the box's frame: R^T w (ODE's R is row-major, 4 columns) */
+            double p[3];
+            for (int k = 0; k < 3; k++)
+                p[k] = R[k] * w[0] + R[4 + k] * w[1] + R[8 + k] * w[2];
+            if (fabs(p[0]) > hx || fabs(p[1]) > hy || fabs(p[2]) > hz || g->n == FS_MAX_CONTACTS)
+                continue;
+            int up = p[2] > 0; /* nearer the top face: push the box down over it */
+            dContactGeom *ct = &g->c[g->n++];
+            memset(ct, 0, sizeof *ct);
+            for (int k = 0; k < 3; k++) {
+                ct->pos[k] = w[k] + c[k];
+                ct->normal[k] = (up ? -1 : 1) * R[4 * k + 2];
+            }
+            ct->depth = up ? hz - p[2] : p[2] + hz;
+            ct->g1 = box;
+        }
+}
+
+/* Collision: each foot shape against the terrain, nothing else; its contacts become joints. */
+static void collide(fs_sim *sim)
+{
+    const fs_terrain *t = &sim->sc->terrain;
+    double merge_m = fs_terrain_is_heightfield(t) ? 1e-3 * t->dx : 1e-9;
+    static gathered g; /* one per process: a step is not re-entrant */
+    for (int s = 0; s < sim->nshapes; s++) {
+        g.sim = sim;
+        g.n = 0;
+        dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, &g, gather);
+        if (t->z && dGeomGetClass(sim->shape[s]) == dBoxClass)
+            box_vertex_contacts(t, sim->shape[s], &g);
+        int n = select_contacts(&g, sim->sc->def.max_contacts, merge_m);
+        dBodyID body = dGeomGetBody(sim->shape[s]);
+        for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
+            dContact ct = sim->contact_template;
+            ct.geom = g.c[i];
+            dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
+            dJointAttach(j, body, 0);
+            dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
+            memcpy(sim->contact_pos[sim->contacts_now], g.c[i].pos, 3 * sizeof(double));
+            sim->contacts_now++;
+        }
     }
 }
 
@@ -399,7 +449,7 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
     /* collision: the foot's shapes against the ground, nothing else */
     sim->contacts_now = 0;
     if (sim->ground)
-        dSpaceCollide2((dGeomID)sim->space, (dGeomID)sim->ground, sim, on_near);
+        collide(sim);
     sim->contacts_total += sim->contacts_now;
     /* the ODE step */
     if (s->stepper == FS_STEPPER_QUICKSTEP)

@@ -42,7 +42,10 @@ const fs_key fs_scenario_keys[] = {
     NUM("run", "joint_cfm", joint_cfm, 0, 1, 0, "", "1e-10", "constraint force mixing of ODE's hinges"),
     NUM("run", "contact_layer_m", contact_layer_m, 0, 1e-3, 0, "m",
         "1e-9", "depth ODE lets contacts sink before pushing back; keeps stiff contacts from chattering on and off"),
-    {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "4", "contact points per foot shape against the ground"},
+    {"run", "tile_cells", FS_KEY_INTEGER, F(tile_cells), 2, 4096, 0, 0, NULL, "", "8",
+     "a heightfield is built as square tiles of this many cells a side (speed only)"},
+    {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "8",
+     "contact points kept per foot shape against the terrain (after merging duplicates)"},
 };
 const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);
 

@@ -231,11 +231,15 @@ double fs_terrain_height(const fs_terrain *t, double x, double y)
 {
     if (!fs_terrain_is_heightfield(t) || !t->z)
         return fs_terrain_function(t, x, y);
-    double fi = (x - t->x0) / t->dx, fj = (y - t->y0) / t->dx;
+    /* position on the world lattice first, so that every crop gives the same bits */
+    double ox, oy, dx;
+    lattice(t, &ox, &oy, &dx);
+    double gi = (x - ox) / dx, gj = (y - oy) / dx;
+    double fi = gi - t->i0, fj = gj - t->j0;
     if (fi < 0 || fj < 0 || fi > t->nx - 1 || fj > t->ny - 1)
         return fs_terrain_function(t, x, y);
     int i = (int)fmin(floor(fi), t->nx - 2), j = (int)fmin(floor(fj), t->ny - 2);
-    double fx = fi - i, fy = fj - j;
+    double fx = gi - (double)(t->i0 + i), fy = gj - (double)(t->j0 + j);
     const double *z = t->z + (size_t)j * t->nx + i;
     double z00 = z[0], z10 = z[1], z01 = z[t->nx], z11 = z[t->nx + 1];
     /* each cell is two triangles split along its rising diagonal, as ODE splits it */
@@ -265,6 +269,8 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
     free(t->z);
     t->nx = (int)(i1 - i0 + 1);
     t->ny = (int)(j1 - j0 + 1);
+    t->i0 = i0;
+    t->j0 = j0;
     t->x0 = ox + i0 * dx;
     t->y0 = oy + j0 * dx;
     t->dx = dx;
@@ -281,7 +287,7 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
     for (int j = 0; j < t->ny; j++)
         for (int i = 0; i < t->nx; i++) {
             double *z = &t->z[(size_t)j * t->nx + i];
-            *z += smooth_part(t, t->x0 + i * dx, t->y0 + j * dx);
+            *z += smooth_part(t, ox + (double)(i0 + i) * dx, oy + (double)(j0 + j) * dx);
             t->zmin = fmin(t->zmin, *z);
             t->zmax = fmax(t->zmax, *z);
         }

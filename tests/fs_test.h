@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static int fs_test_failures;
 
@@ -30,13 +31,16 @@ static int fs_test_failures;
 
 typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case;
 
+/* `test_x NAME` runs only the tests whose name contains NAME. */
 #define FS_TEST_MAIN(...)                                                                    \
-    int main(void)                                                                           \
+    int main(int argc, char **argv)                                                          \
     {                                                                                        \
         fs_test_case cases[] = {__VA_ARGS__};                                                \
         int n = (int)(sizeof cases / sizeof cases[0]), passed = 0, failed = 0;               \
         fs_ode_init();                                                                       \
         for (int i = 0; i < n; i++) {                                                        \
+            if (argc > 1 && !strstr(cases[i].name, argv[1]))                                 \
+                continue;                                                                    \
             int before = fs_test_failures;                                                   \
             cases[i].fn();                                                                   \
             int ok = fs_test_failures == before;                                             \

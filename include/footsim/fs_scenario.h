@@ -34,6 +34,7 @@ typedef struct fs_scenario_def {
     int max_contacts;          /* per foot geom against the ground */
     double joint_erp, joint_cfm; /* ODE's hinge error reduction and constraint force mixing */
     double contact_layer_m;    /* ODE's contact surface layer */
+    int tile_cells;            /* heightfield tiles' size, cells a side */
 } fs_scenario_def;
 
 typedef struct fs_scenario {

@@ -15,7 +15,7 @@
 
 #include <ode/ode.h>
 
-enum { FS_MAX_CONTACTS = 64, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * FS_MAX_CONTACTS };
+enum { FS_MAX_CONTACTS = 256, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * 64 };
 
 typedef struct fs_sim_options {
     int with_ground;        /* 0: no ground (the stiffness probes) */
@@ -28,7 +28,7 @@ typedef struct fs_sim {
     dWorldID world;
     dSpaceID space;        /* the foot's shapes */
     dSpaceID ground;       /* the terrain's shapes (plane, boxes or heightfield); NULL without ground */
-    dHeightfieldDataID heightfield;
+    struct fs_ground *heightfield; /* the heightfield tiles' data, or NULL */
     double R0[9], t0[3];   /* the start pose: world = R0 * design + t0 */
     dJointGroupID contact_group;
     dBodyID body[FS_MAX_BODIES];

@@ -49,6 +49,7 @@ typedef struct fs_terrain {
     double *img;
     /* the cropped lattice: nx * ny samples, z[j * nx + i] at (x0 + i dx, y0 + j dx) */
     int nx, ny;
+    long i0, j0;                    /* lattice index of sample (0, 0) */
     double x0, y0, dx;
     double *z;
     double zmin, zmax;
@@ -81,3 +82,10 @@ void fs_terrain_free(fs_terrain *t);
 int fs_terrain_has_section(const char *section, size_t len);
 
 #endif
+
+/* A shaded top-down picture of the surface over region [xmin, xmax, ymin, ymax]: heights as
+ * colours (low blue-green to high sand), lit from the north-west; when outline is not NULL, the
+ * rectangle [xmin, xmax, ymin, ymax] it gives is drawn in white (a footprint). rgb holds w*h*3
+ * bytes, row 0 at the largest y. Returns the lowest and highest height drawn in zrange. */
+void fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
+                    unsigned char *rgb, double zrange[2]);

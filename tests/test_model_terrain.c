@@ -1,0 +1,249 @@
+/* Tests of model_terrain.c and model_ground.c: every terrain lies where its height function says,
+ * nothing tunnels through it, the same seed gives the same ground, and bad files are refused. */
+#include "fs_test.h"
+
+#include "footsim/fs_ground.h"
+#include "footsim/fs_run.h"
+#include "footsim/fs_sim.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char *terrains[] = {"flat", "slope", "stepped", "rough", "simply_uneven", "complex_uneven", "heightmap",
+                                 "soft"};
+enum { NTERRAINS = sizeof terrains / sizeof terrains[0] };
+
+static void terrain_path(char *buf, size_t n, const char *name) { snprintf(buf, n, "terrains/%s.ini", name); }
+
+/* Where a sphere of radius r centred above (x, y) comes to rest on the surface: the lowest centre
+ * height that touches it, max over the disc of h(p) + sqrt(r^2 - |p - c|^2), sampled every r/40. */
+static double support_height(const fs_terrain *t, double x, double y, double r)
+{
+    double best = -INFINITY, step = r / 40;
+    for (double dx = -r; dx <= r; dx += step)
+        for (double dy = -r; dy <= r; dy += step) {
+            double d2 = dx * dx + dy * dy;
+            if (d2 <= r * r)
+                best = fmax(best, fs_terrain_height(t, x + dx, y + dy) + sqrt(r * r - d2));
+        }
+    return best;
+}
+
+typedef struct found_set { dContactGeom c[8]; int n; } found_set;
+
+static void on_near(void *data, dGeomID a, dGeomID b)
+{
+    found_set *f = data;
+    if (f->n < 8)
+        f->n += dCollide(a, b, 8 - f->n, f->c + f->n, sizeof f->c[0]);
+}
+
+/* A 5 mm sphere that cannot turn (so it stays where friction holds it) let go 2 mm above the
+ * surface at (x, y); returns where it settles. */
+static void drop_sphere(const fs_terrain *t, double x, double y, double out[3])
+{
+    const double r = 0.005, h = 1e-4;
+    dWorldID world = dWorldCreate();
+    dWorldSetGravity(world, 0, 0, -9.81);
+    dWorldSetContactSurfaceLayer(world, 1e-9);
+    dSpaceID ground = dHashSpaceCreate(0), space = dSimpleSpaceCreate(0);
+    int ok;
+    fs_ground *hf = fs_ground_build(ground, t, 8, &ok);
+    CHECK(ok);
+    dBodyID b = dBodyCreate(world);
+    dMass m;
+    dMassSetSphereTotal(&m, 0.01, r);
+    dBodySetMass(b, &m);
+    dBodySetMaxAngularSpeed(b, 0);
+    dBodySetPosition(b, x, y, support_height(t, x, y, r) + 0.002);
+    dGeomID g = dCreateSphere(space, r);
+    dGeomSetBody(g, b);
+    dJointGroupID contacts = dJointGroupCreate(0);
+    for (int step = 0; step < 8000; step++) {
+        found_set f = {.n = 0};
+        dSpaceCollide2(g, (dGeomID)ground, &f, on_near);
+        dContactGeom *found = f.c;
+        for (int k = 0; k < f.n; k++) {
+            dContact ct;
+            memset(&ct, 0, sizeof ct);
+            ct.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
+            ct.surface.mu = 1.0;
+            ct.surface.soft_erp = h * 1e8 / (h * 1e8 + 1e3);
+            ct.surface.soft_cfm = 1 / (h * 1e8 + 1e3);
+            ct.geom = found[k];
+            dJointAttach(dJointCreateContact(world, contacts, &ct), b, 0);
+        }
+        dWorldStep(world, h);
+        dJointGroupEmpty(contacts);
+    }
+    memcpy(out, dBodyGetPosition(b), 3 * sizeof(double));
+    dJointGroupDestroy(contacts);
+    dSpaceDestroy(space);
+    dSpaceDestroy(ground);
+    fs_ground_destroy(hf);
+    dWorldDestroy(world);
+}
+
+/* On every terrain, at lattice nodes, cell edges and diagonals, on step edges: the sphere rests
+ * where the height function says, within 0.5 mm (its weight sinks it about 1e-9 m). */
+static void spheres_rest_on_the_surface(void)
+{
+    const double pts[][2] = {{0, 0},          {0.01, 0.02},   {0.0305, -0.01}, {0.0335, 0.004}, {0.06, -0.015},
+                             {0.0705, 0.0105}, {0.0295, 0.01}, {0.07, 0.0},     {0.1105, 0.01},  {-0.0423, 0.0371}};
+    for (int i = 0; i < NTERRAINS; i++) {
+        char path[64];
+        terrain_path(path, sizeof path, terrains[i]);
+        static fs_terrain t;
+        fs_error err;
+        CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_OK);
+        CHECK(fs_terrain_crop(&t, -0.1, 0.2, -0.1, 0.1, &err) == FS_OK);
+        for (size_t p = 0; p < sizeof pts / sizeof pts[0]; p++) {
+            double c[3];
+            drop_sphere(&t, pts[p][0], pts[p][1], c);
+            double expect = support_height(&t, c[0], c[1], 0.005);
+            if (fabs(c[2] - expect) > 5e-4)
+                fprintf(stderr, "  %s at (%g, %g): rests at %.6f m, surface says %.6f m\n", terrains[i], pts[p][0],
+                        pts[p][1], c[2], expect);
+            CHECK_NEAR(c[2], expect, 5e-4);
+        }
+        fs_terrain_free(&t);
+    }
+}
+
+/* The lowest point of every contact shape, and of the flat sole's underside, against the
+ * surface under it: the deepest it went, m (positive: below the surface). */
+static double deepest(const fs_sim *sim)
+{
+    const fs_terrain *t = &sim->sc->terrain;
+    double worst = -INFINITY;
+    for (int i = 0; i < sim->nshapes; i++) {
+        dGeomID g = sim->shape[i];
+        const dReal *p = dGeomGetPosition(g);
+        if (dGeomGetClass(g) == dSphereClass) {
+            double r = dGeomSphereGetRadius(g);
+            worst = fmax(worst, fs_terrain_height(t, p[0], p[1]) - (p[2] - r));
+            continue;
+        }
+        dVector3 l, q;
+        dGeomBoxGetLengths(g, l);
+        for (int a = 0; a <= 20; a++)
+            for (int b = 0; b <= 10; b++) {
+                dGeomGetRelPointPos(g, (a / 20.0 - 0.5) * l[0], (b / 10.0 - 0.5) * l[1], -0.5 * l[2], q);
+                worst = fmax(worst, fs_terrain_height(t, q[0], q[1]) - q[2]);
+            }
+    }
+    return worst;
+}
+
+/* Both feet dropped from 0.5 m onto every terrain end with no shape more than 1 mm below it
+ * (soft ground gives way more than that during the impact, by design). */
+static void nothing_tunnels(void)
+{
+    for (int f = 0; f < 2; f++)
+        for (int i = 0; i < NTERRAINS; i++) {
+            char terrain[96], design[64];
+            snprintf(terrain, sizeof terrain, "scenario.terrain=../terrains/%s.ini", terrains[i]);
+            snprintf(design, sizeof design, "foot.kind=%s", f ? "flat" : "biomimetic");
+            const char *set[] = {terrain, design, "load.mass_kg=0", "start.drop_m=0.5", "start.x_m=-0.02",
+                                 "start.yaw_deg=7"};
+            static fs_scenario sc;
+            fs_error err;
+            CHECK(fs_scenario_load("scenarios/static_load.ini", set, 6, &sc, &err) == FS_OK);
+            fs_sim sim;
+            CHECK(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+            for (int step = 0; step < 7000; step++)
+                CHECK(fs_sim_step(&sim, &err) == FS_OK);
+            double worst = deepest(&sim);
+            if (worst > 1e-3)
+                fprintf(stderr, "  %s foot on %s: %.2f mm below the surface\n", f ? "flat" : "biomimetic", terrains[i],
+                        worst * 1e3);
+            CHECK(worst <= 1e-3);
+            /* and it did fall and land */
+            double a[3];
+            fs_sim_ankle(&sim, a);
+            CHECK(a[2] < 0.1 && sim.contacts_now > 0);
+            fs_sim_destroy(&sim);
+            fs_scenario_free(&sc);
+        }
+}
+
+/* The same seed gives the same samples wherever the heightfield is cut; another seed does not;
+ * a run on it repeats bit for bit. */
+static void same_seed_same_ground(void)
+{
+    static fs_terrain a, b, c;
+    fs_error err;
+    const char *seed2[] = {"rough.seed=2"};
+    CHECK(fs_terrain_load("terrains/complex_uneven.ini", NULL, 0, &a, &err) == FS_OK);
+    CHECK(fs_terrain_load("terrains/complex_uneven.ini", NULL, 0, &b, &err) == FS_OK);
+    CHECK(fs_terrain_load("terrains/complex_uneven.ini", seed2, 1, &c, &err) == FS_OK);
+    CHECK(fs_terrain_crop(&a, -0.05, 0.10, -0.04, 0.04, &err) == FS_OK);
+    CHECK(fs_terrain_crop(&b, 0.00, 0.15, -0.02, 0.06, &err) == FS_OK);
+    CHECK(fs_terrain_crop(&c, -0.05, 0.10, -0.04, 0.04, &err) == FS_OK);
+    int same = 1, differ = 0;
+    for (double x = 0.0; x <= 0.1; x += 0.0037)
+        for (double y = -0.02; y <= 0.04; y += 0.0041) {
+            double za = fs_terrain_height(&a, x, y), zb = fs_terrain_height(&b, x, y);
+            same &= memcmp(&za, &zb, sizeof za) == 0;
+            differ |= fs_terrain_height(&c, x, y) != za;
+        }
+    CHECK(same);
+    CHECK(differ);
+    fs_terrain_free(&a), fs_terrain_free(&b), fs_terrain_free(&c);
+    /* a run twice: the same trajectory to the last bit */
+    const char *set[] = {"scenario.terrain=../terrains/complex_uneven.ini", "start.drop_m=0.01"};
+    fs_run_result r[2];
+    for (int k = 0; k < 2; k++) {
+        static fs_scenario sc;
+        CHECK(fs_scenario_load("scenarios/static_load.ini", set, 2, &sc, &err) == FS_OK);
+        CHECK(fs_run(&sc, NULL, &r[k], &err) == FS_OK);
+        fs_scenario_free(&sc);
+    }
+    CHECK(r[0].nrows == r[1].nrows && r[0].nrows > 10);
+    CHECK(memcmp(r[0].rows, r[1].rows, (size_t)r[0].nrows * r[0].ncols * sizeof(double)) == 0);
+    fs_run_free(&r[0]), fs_run_free(&r[1]);
+}
+
+static char dir[64];
+
+static void refused(const char *text, int line, const char *words)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/terrain.ini", dir);
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+    static fs_terrain t;
+    fs_error err = {0};
+    CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
+    char prefix[160];
+    snprintf(prefix, sizeof prefix, "%s:%d: ", path, line);
+    if ((line > 0 && strncmp(err.message, prefix, strlen(prefix))) || !strstr(err.message, words))
+        fprintf(stderr, "  expected '%s...%s' in: %s\n", prefix, words, err.message), fs_test_failures++;
+}
+
+static void bad_terrain_files_are_refused(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/footsim-terrain-XXXXXX");
+    CHECK(mkdtemp(dir) != NULL);
+    char notpng[128];
+    snprintf(notpng, sizeof notpng, "%s/notpng.png", dir);
+    FILE *f = fopen(notpng, "w");
+    fputs("this is text\n", f);
+    fclose(f);
+    refused("[terrain]\nkind = rough\n[rough]\nresolution_m = -0.001\n", 4, "out of range");
+    refused("[terrain]\nkind = rough\n[rough]\nrms_m = nan\n", 4, "not a finite number");
+    refused("[terrain]\nkind = heightmap\n[heightmap]\nfile = missing.png\n", 4, "no such file");
+    refused("[terrain]\nkind = heightmap\n[heightmap]\nfile = notpng.png\n", 4, "is not a PNG image");
+    refused("[terrain]\nkind = heightmap\n", 0, "needs [heightmap] file");
+    refused("[terrain]\nkind = lava\n", 2, "allowed: flat|slope|stepped");
+    refused("[terrain]\nkind = complex_uneven\n[rocks]\nheight_min_m = 0.02\nheight_max_m = 0.01\n", 5,
+            "below height_min_m");
+    char cmd[96];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    CHECK(system(cmd) == 0);
+}
+
+FS_TEST_MAIN(TEST(spheres_rest_on_the_surface), TEST(nothing_tunnels), TEST(same_seed_same_ground),
+             TEST(bad_terrain_files_are_refused))
