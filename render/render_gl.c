@@ -342,19 +342,23 @@ static void draw_lines(fs_render *r, const fs_render_view *v, const fs_scene *sc
     for (int i = 0; i < scene->ncontacts; i++)
         glVertex3dv(scene->contact[i].pos);
     glEnd();
+    /* the ankle, where the load acts, on top of everything */
+    glDisable(GL_DEPTH_TEST);
     glPointSize(3.5f * lw);
     glBegin(GL_POINTS);
     glColor3fv(ANKLE_RGB);
     glVertex3dv(scene->ankle);
     glEnd();
+    glEnable(GL_DEPTH_TEST);
 }
 
 /* ---- a frame -------------------------------------------------------------------------------- */
 
-/* Light from above, ahead and to the left, fixed in the world; a soft ambient. */
+/* Light from above, ahead and to the right (the side the cameras see), fixed in the world; a soft
+ * ambient. */
 static void set_lighting(void)
 {
-    static const float dir[4] = {0.35f, 0.45f, 0.82f, 0}, diffuse[4] = {0.75f, 0.75f, 0.72f, 1},
+    static const float dir[4] = {0.35f, -0.45f, 0.82f, 0}, diffuse[4] = {0.75f, 0.75f, 0.72f, 1},
                        ambient[4] = {0.38f, 0.38f, 0.42f, 1};
     glLightfv(GL_LIGHT0, GL_POSITION, dir);
     glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);

@@ -119,8 +119,12 @@ void fs_render_view_fit(fs_render_view *v, fs_render_camera camera, const fs_sce
     box3 b = empty_box();
     for (int i = 0; i < n; i++)
         scene_extent(scenes[i], &b);
-    if (!(b.lo[0] <= b.hi[0])) /* nothing to frame: a 10 cm box around the origin */
+    /* nothing (or a single point) to frame: a 10 cm box around it */
+    if (!(b.lo[0] <= b.hi[0]))
         b = (box3){{-0.05, -0.05, 0}, {0.05, 0.05, 0.05}};
+    else if (fmax(b.hi[0] - b.lo[0], fmax(b.hi[1] - b.lo[1], b.hi[2] - b.lo[2])) < 1e-6)
+        for (int k = 0; k < 3; k++)
+            b.lo[k] -= 0.05, b.hi[k] += 0.05;
     double az = placement[camera].azimuth_deg * M_PI / 180, el = placement[camera].elevation_deg * M_PI / 180;
     double dir[3] = {cos(el) * cos(az), cos(el) * sin(az), sin(el)}, right[3], up[3], centre[3];
     camera_axes(dir, right, up);
