@@ -48,15 +48,15 @@ static const unsigned char *glyph_of(char c)
 static void begin_pixels(fs_render *r)
 {
     render_make_current(r);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_LIGHTING);
-    glViewport(0, 0, r->w, r->h);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, r->w, r->h, 0, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_LIGHTING);
+    gl.Viewport(0, 0, r->w, r->h);
+    gl.MatrixMode(GL_PROJECTION);
+    gl.LoadIdentity();
+    gl.Ortho(0, r->w, r->h, 0, -1, 1);
+    gl.MatrixMode(GL_MODELVIEW);
+    gl.LoadIdentity();
 }
 
 /* One glyph's lit pixels as scale x scale quads. */
@@ -66,38 +66,38 @@ static void emit_glyph(const unsigned char g[7], int x, int y, int scale)
         for (int col = 0; col < 5; col++)
             if (g[row] & (0x10 >> col)) {
                 int px = x + col * scale, py = y + row * scale;
-                glVertex2i(px, py);
-                glVertex2i(px + scale, py);
-                glVertex2i(px + scale, py + scale);
-                glVertex2i(px, py + scale);
+                gl.Vertex2i(px, py);
+                gl.Vertex2i(px + scale, py);
+                gl.Vertex2i(px + scale, py + scale);
+                gl.Vertex2i(px, py + scale);
             }
 }
 
 int render_text_gl(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3])
 {
     begin_pixels(r);
-    glColor3ub(rgb[0], rgb[1], rgb[2]);
-    glBegin(GL_QUADS);
+    gl.Color3ub(rgb[0], rgb[1], rgb[2]);
+    gl.Begin(GL_QUADS);
     int x0 = x;
     for (const char *c = text; *c; c++, x += 6 * scale)
         emit_glyph(glyph_of(*c), x, y, scale);
-    glEnd();
+    gl.End();
     return x - x0;
 }
 
 int fs_render_text(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3])
 {
     int w = render_text_gl(r, x, y, scale, text, rgb);
-    glFinish();
+    gl.Finish();
     return w;
 }
 
 void render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep)
 {
     begin_pixels(r);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glColor4f(0, 0, 0, (float)(1 - keep));
-    glRecti(x0, y0, x0 + w, y0 + h);
-    glDisable(GL_BLEND);
+    gl.Enable(GL_BLEND);
+    gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.Color4f(0, 0, 0, (float)(1 - keep));
+    gl.Recti(x0, y0, x0 + w, y0 + h);
+    gl.Disable(GL_BLEND);
 }

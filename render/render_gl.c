@@ -23,8 +23,8 @@ static const float BODY_RGB[][3] = {{0.80f, 0.62f, 0.45f}, {0.72f, 0.52f, 0.38f}
 
 void render_make_current(fs_render *r)
 {
-    if (OSMesaGetCurrentContext() != r->ctx)
-        OSMesaMakeCurrent(r->ctx, r->rgba, GL_UNSIGNED_BYTE, r->w, r->h);
+    if (gl.GetCurrentContext() != r->ctx)
+        gl.MakeCurrent(r->ctx, r->rgba, GL_UNSIGNED_BYTE, r->w, r->h);
 }
 
 /* A unit sphere as quad strips between latitudes, normals equal to positions. */
@@ -32,16 +32,16 @@ static void emit_sphere(int slices, int stacks)
 {
     for (int i = 0; i < stacks; i++) {
         double a0 = M_PI * ((double)i / stacks - 0.5), a1 = M_PI * ((double)(i + 1) / stacks - 0.5);
-        glBegin(GL_QUAD_STRIP);
+        gl.Begin(GL_QUAD_STRIP);
         for (int j = 0; j <= slices; j++) {
             double b = 2 * M_PI * j / slices;
             for (int k = 1; k >= 0; k--) {
                 double a = k ? a1 : a0, p[3] = {cos(a) * cos(b), cos(a) * sin(b), sin(a)};
-                glNormal3dv(p);
-                glVertex3dv(p);
+                gl.Normal3dv(p);
+                gl.Vertex3dv(p);
             }
         }
-        glEnd();
+        gl.End();
     }
 }
 
@@ -50,15 +50,15 @@ static void emit_cube(void)
 {
     static const int face[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3}, {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
     static const double normal[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    glBegin(GL_QUADS);
+    gl.Begin(GL_QUADS);
     for (int f = 0; f < 6; f++) {
-        glNormal3dv(normal[f]);
+        gl.Normal3dv(normal[f]);
         for (int v = 0; v < 4; v++) {
             int c = face[f][v];
-            glVertex3d(c & 1 ? 0.5 : -0.5, c & 2 ? 0.5 : -0.5, c & 4 ? 0.5 : -0.5);
+            gl.Vertex3d(c & 1 ? 0.5 : -0.5, c & 2 ? 0.5 : -0.5, c & 4 ? 0.5 : -0.5);
         }
     }
-    glEnd();
+    gl.End();
 }
 
 fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
@@ -67,6 +67,8 @@ fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
     if (width < 1 || height < 1 || width > FS_RENDER_MAX_SIZE || height > FS_RENDER_MAX_SIZE)
         return fs_fail(err, FS_BAD_INPUT, "frame size %dx%d; allowed: WxH with each from 1 to %d", width, height,
                        FS_RENDER_MAX_SIZE);
+    if (render_gl_load(err) != FS_OK)
+        return FS_BAD_INPUT;
     fs_render *r = calloc(1, sizeof *r);
     if (r)
         r->rgba = malloc((size_t)width * (size_t)height * 4);
@@ -76,20 +78,20 @@ fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
     }
     r->w = width, r->h = height;
     /* RGBA, 24-bit depth, 8-bit stencil (for shadows), no accumulation buffer */
-    r->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    if (!r->ctx || !OSMesaMakeCurrent(r->ctx, r->rgba, GL_UNSIGNED_BYTE, width, height)) {
+    r->ctx = gl.CreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    if (!r->ctx || !gl.MakeCurrent(r->ctx, r->rgba, GL_UNSIGNED_BYTE, width, height)) {
         fs_render_close(r);
         return fs_fail(err, FS_BAD_INPUT, "OSMesa could not make a %dx%d drawing context; install libosmesa6 "
                        "(apt-get install libosmesa6) or run without --frames", width, height);
     }
-    r->sphere = glGenLists(2);
+    r->sphere = gl.GenLists(2);
     r->cube = r->sphere + 1;
-    glNewList(r->sphere, GL_COMPILE);
+    gl.NewList(r->sphere, GL_COMPILE);
     emit_sphere(24, 14);
-    glEndList();
-    glNewList(r->cube, GL_COMPILE);
+    gl.EndList();
+    gl.NewList(r->cube, GL_COMPILE);
     emit_cube();
-    glEndList();
+    gl.EndList();
     *out = r;
     return FS_OK;
 }
@@ -99,7 +101,7 @@ void fs_render_close(fs_render *r)
     if (!r)
         return;
     if (r->ctx)
-        OSMesaDestroyContext(r->ctx);
+        gl.DestroyContext(r->ctx);
     free(r->rgba);
     free(r);
 }
@@ -115,10 +117,10 @@ const unsigned char *fs_render_pixel(const fs_render *r, int x, int y)
 void fs_render_clear(fs_render *r)
 {
     render_make_current(r);
-    glDisable(GL_SCISSOR_TEST);
-    glViewport(0, 0, r->w, r->h);
-    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.Viewport(0, 0, r->w, r->h);
+    gl.ClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
 /* ---- the ground ----------------------------------------------------------------------------- */
@@ -147,9 +149,9 @@ static void ground_vertex(const fs_scene_ground *g, double x, double y, double z
     double sy = (ground_height(g, x, y + e) - ground_height(g, x, y - e)) / (2 * e);
     float rgb[3];
     fs_render_height_colour(zspan > 1e-12 ? (z - zlo) / zspan : 0.5, rgb);
-    glColor3f((float)(rgb[0] * shade), (float)(rgb[1] * shade), (float)(rgb[2] * shade));
-    glNormal3d(-sx, -sy, 1);
-    glVertex3d(x, y, z);
+    gl.Color3f((float)(rgb[0] * shade), (float)(rgb[1] * shade), (float)(rgb[2] * shade));
+    gl.Normal3d(-sx, -sy, 1);
+    gl.Vertex3d(x, y, z);
 }
 
 /* The height grid as lit quads, subdivided to checker squares (bilinear inside each cell). */
@@ -165,7 +167,7 @@ static void draw_ground(const fs_scene_ground *g)
     nu = nu > g->nx - 1 ? nu : g->nx - 1;
     nv = nv > g->ny - 1 ? nv : g->ny - 1;
     double su = w / nu, sv = d / nv;
-    glBegin(GL_QUADS);
+    gl.Begin(GL_QUADS);
     for (int j = 0; j < nv; j++)
         for (int i = 0; i < nu; i++) {
             double x = g->x0 + i * su, y = g->y0 + j * sv;
@@ -176,7 +178,7 @@ static void draw_ground(const fs_scene_ground *g)
             ground_vertex(g, x + su, y + sv, zlo, zhi - zlo, shade);
             ground_vertex(g, x, y + sv, zlo, zhi - zlo, shade);
         }
-    glEnd();
+    gl.End();
 }
 
 /* ---- the foot's shapes and their shadows ---------------------------------------------------- */
@@ -189,19 +191,19 @@ static void shape_transform(const fs_scene_shape *s)
                     2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x), 0,
                     2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y), 0,
                     s->pos[0], s->pos[1], s->pos[2], 1};
-    glMultMatrixd(m);
+    gl.MultMatrixd(m);
     if (s->type == FS_SHAPE_SPHERE)
-        glScaled(s->size[0], s->size[0], s->size[0]);
+        gl.Scaled(s->size[0], s->size[0], s->size[0]);
     else
-        glScaled(s->size[0], s->size[1], s->size[2]);
+        gl.Scaled(s->size[0], s->size[1], s->size[2]);
 }
 
 static void draw_shape_mesh(const fs_render *r, const fs_scene_shape *s)
 {
-    glPushMatrix();
+    gl.PushMatrix();
     shape_transform(s);
-    glCallList(s->type == FS_SHAPE_SPHERE ? r->sphere : r->cube);
-    glPopMatrix();
+    gl.CallList(s->type == FS_SHAPE_SPHERE ? r->sphere : r->cube);
+    gl.PopMatrix();
 }
 
 static void draw_shapes(const fs_render *r, const fs_scene *scene)
@@ -210,7 +212,7 @@ static void draw_shapes(const fs_render *r, const fs_scene *scene)
     for (int i = 0; i < scene->nshapes; i++) {
         const fs_scene_shape *s = &scene->shape[i];
         const float *c = BODY_RGB[(s->body % ncol + ncol) % ncol];
-        glColor3fv(c);
+        gl.Color3fv(c);
         draw_shape_mesh(r, s);
     }
 }
@@ -219,39 +221,39 @@ static void draw_shapes(const fs_render *r, const fs_scene *scene)
  * stencil keeps overlapping shadows from darkening twice. */
 static void draw_shadows(const fs_render *r, const fs_scene *scene)
 {
-    glDisable(GL_LIGHTING);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-2, -4);
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_EQUAL, 0, 0xff);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    gl.Disable(GL_LIGHTING);
+    gl.Enable(GL_BLEND);
+    gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.DepthMask(GL_FALSE);
+    gl.Enable(GL_POLYGON_OFFSET_FILL);
+    gl.PolygonOffset(-2, -4);
+    gl.Enable(GL_STENCIL_TEST);
+    gl.StencilFunc(GL_EQUAL, 0, 0xff);
+    gl.StencilOp(GL_KEEP, GL_KEEP, GL_INCR);
     for (int i = 0; i < scene->nshapes; i++) {
         const fs_scene_shape *s = &scene->shape[i];
         double zg = ground_height(&scene->ground, s->pos[0], s->pos[1]);
         double size = s->type == FS_SHAPE_SPHERE ? s->size[0] : 0.5 * fmin(s->size[0], fmin(s->size[1], s->size[2]));
         double above = fmax(s->pos[2] - size - zg, 0);
-        glColor4f(0.05f, 0.05f, 0.08f, (float)(0.55 * exp(-above / (3 * size + 1e-9))));
-        glPushMatrix();
-        glTranslated(0, 0, zg);
-        glScaled(1, 1, 0);
+        gl.Color4f(0.05f, 0.05f, 0.08f, (float)(0.55 * exp(-above / (3 * size + 1e-9))));
+        gl.PushMatrix();
+        gl.Translated(0, 0, zg);
+        gl.Scaled(1, 1, 0);
         draw_shape_mesh(r, s);
-        glPopMatrix();
+        gl.PopMatrix();
     }
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    gl.Disable(GL_STENCIL_TEST);
+    gl.Disable(GL_POLYGON_OFFSET_FILL);
+    gl.DepthMask(GL_TRUE);
+    gl.Disable(GL_BLEND);
 }
 
 /* ---- lines: links, springs, forces ---------------------------------------------------------- */
 
 static void line(const double a[3], const double b[3])
 {
-    glVertex3dv(a);
-    glVertex3dv(b);
+    gl.Vertex3dv(a);
+    gl.Vertex3dv(b);
 }
 
 /* An arrow from tail to tip with a head in the plane that faces the camera. */
@@ -285,7 +287,7 @@ static void spring_colour(double force_N, double ref_N)
                        compression[3] = {0.10f, 0.30f, 0.95f};
     float t = (float)fmin(fabs(force_N) / (ref_N > 0 ? ref_N : 1), 1);
     const float *to = force_N >= 0 ? tension : compression;
-    glColor3f(slack[0] + t * (to[0] - slack[0]), slack[1] + t * (to[1] - slack[1]), slack[2] + t * (to[2] - slack[2]));
+    gl.Color3f(slack[0] + t * (to[0] - slack[0]), slack[1] + t * (to[1] - slack[1]), slack[2] + t * (to[2] - slack[2]));
 }
 
 static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
@@ -293,29 +295,29 @@ static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] +
 /* Links and joints, springs, contacts with their ground-force arrows, and the load at the ankle. */
 static void draw_lines(fs_render *r, const fs_render_view *v, const fs_scene *scene, double view_h_m, float lw)
 {
-    glDisable(GL_LIGHTING);
-    glLineWidth(lw);
-    glColor3fv(LINK_RGB);
-    glBegin(GL_LINES);
+    gl.Disable(GL_LIGHTING);
+    gl.LineWidth(lw);
+    gl.Color3fv(LINK_RGB);
+    gl.Begin(GL_LINES);
     for (int i = 0; i < scene->nlinks; i++)
         line(scene->link[i].p1, scene->link[i].p2);
-    glEnd();
-    glLineWidth(1.5f * lw);
+    gl.End();
+    gl.LineWidth(1.5f * lw);
     for (int i = 0; i < scene->nsprings; i++)
         r->spring_ref_N = fmax(r->spring_ref_N, fabs(scene->spring[i].force_N));
-    glBegin(GL_LINES);
+    gl.Begin(GL_LINES);
     for (int i = 0; i < scene->nsprings; i++) {
         spring_colour(scene->spring[i].force_N, r->spring_ref_N);
         line(scene->spring[i].p1, scene->spring[i].p2);
     }
-    glEnd();
+    gl.End();
     /* forces: the largest contact force seen is drawn a sixth of the viewport's height long */
     for (int i = 0; i < scene->ncontacts; i++)
         r->contact_ref_N = fmax(r->contact_ref_N, norm3(scene->contact[i].force_N));
     double per_N = r->contact_ref_N > 0 ? view_h_m / 6 / r->contact_ref_N : 0;
-    glLineWidth(lw);
-    glColor3fv(FORCE_RGB);
-    glBegin(GL_LINES);
+    gl.LineWidth(lw);
+    gl.Color3fv(FORCE_RGB);
+    gl.Begin(GL_LINES);
     for (int i = 0; i < scene->ncontacts; i++) {
         const fs_scene_contact *c = &scene->contact[i];
         double tip[3] = {c->pos[0] + per_N * c->force_N[0], c->pos[1] + per_N * c->force_N[1],
@@ -324,32 +326,32 @@ static void draw_lines(fs_render *r, const fs_render_view *v, const fs_scene *sc
     }
     /* the load: an arrow a twelfth of the viewport's height long, ending at the ankle */
     double load = norm3(scene->load_N);
-    glColor3fv(ANKLE_RGB);
+    gl.Color3fv(ANKLE_RGB);
     if (load > 0) {
         double tail[3];
         for (int k = 0; k < 3; k++)
             tail[k] = scene->ankle[k] - view_h_m / 12 * scene->load_N[k] / load;
         arrow(v, tail, scene->ankle);
     }
-    glEnd();
+    gl.End();
     /* points: joints, contacts, the ankle */
-    glPointSize(2.5f * lw);
-    glBegin(GL_POINTS);
-    glColor3fv(JOINT_RGB);
+    gl.PointSize(2.5f * lw);
+    gl.Begin(GL_POINTS);
+    gl.Color3fv(JOINT_RGB);
     for (int i = 0; i < scene->nlinks; i++)
-        glVertex3dv(scene->link[i].p1);
-    glColor3fv(CONTACT_RGB);
+        gl.Vertex3dv(scene->link[i].p1);
+    gl.Color3fv(CONTACT_RGB);
     for (int i = 0; i < scene->ncontacts; i++)
-        glVertex3dv(scene->contact[i].pos);
-    glEnd();
+        gl.Vertex3dv(scene->contact[i].pos);
+    gl.End();
     /* the ankle, where the load acts, on top of everything */
-    glDisable(GL_DEPTH_TEST);
-    glPointSize(3.5f * lw);
-    glBegin(GL_POINTS);
-    glColor3fv(ANKLE_RGB);
-    glVertex3dv(scene->ankle);
-    glEnd();
-    glEnable(GL_DEPTH_TEST);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.PointSize(3.5f * lw);
+    gl.Begin(GL_POINTS);
+    gl.Color3fv(ANKLE_RGB);
+    gl.Vertex3dv(scene->ankle);
+    gl.End();
+    gl.Enable(GL_DEPTH_TEST);
 }
 
 /* ---- a frame -------------------------------------------------------------------------------- */
@@ -360,15 +362,15 @@ static void set_lighting(void)
 {
     static const float dir[4] = {0.35f, -0.45f, 0.82f, 0}, diffuse[4] = {0.75f, 0.75f, 0.72f, 1},
                        ambient[4] = {0.38f, 0.38f, 0.42f, 1};
-    glLightfv(GL_LIGHT0, GL_POSITION, dir);
-    glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);
-    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
-    glEnable(GL_LIGHT0);
-    glEnable(GL_LIGHTING);
-    glEnable(GL_COLOR_MATERIAL);
-    glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
-    glEnable(GL_NORMALIZE);
-    glShadeModel(GL_SMOOTH);
+    gl.Lightfv(GL_LIGHT0, GL_POSITION, dir);
+    gl.Lightfv(GL_LIGHT0, GL_DIFFUSE, diffuse);
+    gl.LightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+    gl.Enable(GL_LIGHT0);
+    gl.Enable(GL_LIGHTING);
+    gl.Enable(GL_COLOR_MATERIAL);
+    gl.ColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+    gl.Enable(GL_NORMALIZE);
+    gl.ShadeModel(GL_SMOOTH);
 }
 
 /* Time, scenario, foot and terrain in the viewport's top-left corner, on a darkened panel. */
@@ -395,29 +397,29 @@ void fs_render_draw(fs_render *r, const fs_render_view *v, const fs_scene *scene
 {
     render_make_current(r);
     int gy = r->h - y0 - h;
-    glViewport(x0, gy, w, h);
-    glScissor(x0, gy, w, h);
-    glEnable(GL_SCISSOR_TEST);
-    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    gl.Viewport(x0, gy, w, h);
+    gl.Scissor(x0, gy, w, h);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.ClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     double proj[16], model[16];
     fs_render_view_matrices(v, proj, model);
-    glMatrixMode(GL_PROJECTION);
-    glLoadMatrixd(proj);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixd(model);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
+    gl.MatrixMode(GL_PROJECTION);
+    gl.LoadMatrixd(proj);
+    gl.MatrixMode(GL_MODELVIEW);
+    gl.LoadMatrixd(model);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LEQUAL);
     set_lighting();
     draw_ground(&scene->ground);
     draw_shadows(r, scene);
-    glEnable(GL_LIGHTING);
+    gl.Enable(GL_LIGHTING);
     draw_shapes(r, scene);
     /* the viewport's height in metres at the target, for sizes given as a part of the picture */
     double dx = v->eye[0] - v->target[0], dy = v->eye[1] - v->target[1], dz = v->eye[2] - v->target[2];
     double view_h_m = 2 * sqrt(dx * dx + dy * dy + dz * dz) * tan(v->fovy_deg * M_PI / 360);
     draw_lines(r, v, scene, view_h_m, (float)fmax(1, h / 360.0));
-    glDisable(GL_SCISSOR_TEST);
+    gl.Disable(GL_SCISSOR_TEST);
     draw_overlay(r, scene, x0, y0, w, h);
-    glFinish();
+    gl.Finish();
 }

@@ -4,7 +4,7 @@
 
 #include "fs_render.h"
 
-#include <GL/osmesa.h>
+#include "render_glapi.h"
 
 struct fs_render {
     OSMesaContext ctx;

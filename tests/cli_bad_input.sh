@@ -56,6 +56,11 @@ if [ "$renderer" = render ]; then
     expect 2 "give two scenario files" -- render-compare $sl --out "$tmp/f5"
     expect 2 "--size 1x10: not a frame size; allowed: WxH with W from 2" -- render-compare $sl $sl --size 1x10 --out "$tmp/f5"
     expect 2 "unexpected argument" -- render-compare $sl $sl $sl
+    # no OSMesa to load (FOOTSIM_OSMESA names the library in its place)
+    export FOOTSIM_OSMESA="$tmp/no/libOSMesa.so.8"
+    expect 2 "OSMesa is not available.*apt-get install libosmesa6" -- run $sl --frames --out "$tmp/f1"
+    expect 2 "OSMesa is not available" -- render-compare $sl $sl --out "$tmp/f5"
+    unset FOOTSIM_OSMESA
 else
     expect 2 "--frames: this footsim was built without the renderer" -- run $sl --frames --out "$tmp/f1"
     expect 2 "render-compare: this footsim was built without the renderer" -- render-compare $sl $sl --out "$tmp/f5"
