@@ -72,7 +72,7 @@ static void test_size_refused(void)
 
 /* The ankle (drawn as a marker, always on top) and the nearest shape are where fs_render_project
  * says, on the real foot at t = 0, in every view; the same frame without the foot differs at the
- * ankle and not 3 cm above it. */
+ * ankle and not 12 mm above it. */
 static void test_projection(void)
 {
     static fs_scenario sc;
@@ -99,7 +99,7 @@ static void test_projection(void)
         fixture_copy(r, with);
         fs_render_draw(r, &v, &empty, 0, 0, w, h);
         fixture_copy(r, without);
-        double px[2], above[3] = {s.ankle[0], s.ankle[1], s.ankle[2] + 0.03}, qx[2];
+        double px[2], above[3] = {s.ankle[0], s.ankle[1], s.ankle[2] + 0.012}, qx[2];
         CHECK(fs_render_project(&v, w, h, s.ankle, px));
         CHECK(fs_render_project(&v, w, h, above, qx));
         int x = (int)px[0], y = (int)px[1], ax = (int)qx[0], ay = (int)qx[1];
@@ -110,7 +110,7 @@ static void test_projection(void)
         const unsigned char *p = with + 4 * ((size_t)y * w + x);
         CHECK(p[0] > 150 && p[1] < 80 && p[2] > 130);
         CHECK(pixel_diff(p, without + 4 * ((size_t)y * w + x)) > 60);
-        /* 3 cm above the ankle nothing is drawn */
+        /* 12 mm above the ankle (the top of the foot) nothing is drawn */
         CHECK(pixel_diff(with + 4 * ((size_t)ay * w + ax), without + 4 * ((size_t)ay * w + ax)) <= 2);
         /* the shape nearest the camera shows a body's warm colour around its projected centre */
         CHECK(fs_render_project(&v, w, h, s.shape[nearest_shape(&s, v.eye)].pos, px));

@@ -13,18 +13,29 @@ make -s build BUILD=build-norender CMAKE_FLAGS="-DFS_RENDER=OFF" >/dev/null
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# median_seconds FOOTSIM ARGS...: the median wall time of repeat runs, s
-median_seconds() {
-    for _ in $(seq "$repeat"); do
-        start=$(date +%s.%N)
-        "$@" --out "$tmp/out" >/dev/null
-        end=$(date +%s.%N)
-        awk -v s="$start" -v e="$end" 'BEGIN {print e - s}'
-    done | sort -g | awk '{t[NR] = $1} END {printf "%.4f", t[int((NR + 1) / 2)]}'
+# seconds FOOTSIM ARGS...: the wall time of one run, s
+seconds() {
+    start=$(date +%s.%N)
+    "$@" --out "$tmp/out" >/dev/null
+    end=$(date +%s.%N)
+    awk -v s="$start" -v e="$end" 'BEGIN {print e - s}'
 }
 
-off=$(median_seconds build-norender/footsim run $scenario)
-on=$(median_seconds build/footsim run $scenario)
+# median: of the numbers on stdin
+median() { sort -g | awk '{t[NR] = $1} END {printf "%.4f", t[int((NR + 1) / 2)]}'; }
+
+# median_seconds FOOTSIM ARGS...: the median wall time of repeat runs, s
+median_seconds() {
+    for _ in $(seq "$repeat"); do seconds "$@"; done | median
+}
+
+# without frames, the two builds taking turns, so that other load on the machine hits both alike
+for _ in $(seq "$repeat"); do
+    seconds build-norender/footsim run $scenario >>"$tmp/off"
+    seconds build/footsim run $scenario >>"$tmp/on"
+done
+off=$(median <"$tmp/off")
+on=$(median <"$tmp/on")
 out=results/bench/render.csv
 {
     echo "case,build,size,frames,seconds,render_seconds,fps"
