@@ -76,7 +76,9 @@ void fs_render_clear(fs_render *r);
  * frame), with the overlay (time, scenario, foot, terrain) in its top-left corner. Shows: the
  * ground as a lit, height-shaded mesh; every shape as it collides (spheres, boxes); a shadow blob
  * on the ground under each shape; links and joints; springs coloured by force (red tension, blue
- * compression, grey slack); contact points with ground-force arrows; the load at the ankle. */
+ * compression, grey slack); contact points with ground-force arrows; the load at the ankle.
+ * Spring colours and arrow lengths are scaled by the largest force r has drawn so far (so that
+ * successive frames compare); the overlay scales with the viewport. */
 void fs_render_draw(fs_render *r, const fs_render_view *v, const fs_scene *scene, int x0, int y0, int w, int h);
 
 /* The RGBA bytes of pixel (x, y) of the last drawn frame. */

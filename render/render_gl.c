@@ -100,6 +100,9 @@ void fs_render_close(fs_render *r)
 {
     if (!r)
         return;
+    /* released first, so that Mesa frees the frame's buffers with the context */
+    if (r->ctx && gl.GetCurrentContext() == r->ctx)
+        gl.MakeCurrent(NULL, NULL, 0, 0, 0);
     if (r->ctx)
         gl.DestroyContext(r->ctx);
     free(r->rgba);

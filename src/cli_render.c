@@ -1,4 +1,5 @@
-/* cli_render.c: frames of a run when footsim is built without the renderer (FS_RENDER=OFF). */
+/* cli_render.c: frames of a run and render-compare when footsim is built without the renderer
+ * (FS_RENDER=OFF): both refuse with exit 2. */
 #include "cli.h"
 
 #include "footsim/fs_error.h"
