@@ -4,7 +4,7 @@
 #include <dlfcn.h>
 #include <stdlib.h>
 
-render_gl_api gl;
+render_gl_api render_gl;
 
 /* The runtime library of Debian's libosmesa6 (and the development link, as a second choice). */
 static const char *const LIBRARIES[] = {"libOSMesa.so.8", "libOSMesa.so"};

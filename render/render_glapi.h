@@ -70,7 +70,9 @@ typedef struct render_gl_api {
 #undef RENDER_GL_MEMBER
 } render_gl_api;
 
-extern render_gl_api gl;
+/* The table (render_gl; `gl` for short in the renderer's own files). */
+extern render_gl_api render_gl;
+#define gl render_gl
 
 /* Loads libOSMesa and fills gl (once; later calls return at once). FS_BAD_INPUT, saying what to
  * install, when it is not there or lacks a function. */
