@@ -8,6 +8,7 @@ enum { CLI_MAX_SET = 256 };
 typedef struct cli_args {
     const char *command;
     const char *input;              /* the scenario or design file */
+    const char *input2;             /* a second one, for commands that take two (render-compare) */
     const char *out;                /* --out DIR, or NULL */
     int json;                       /* --json */
     const char *set[CLI_MAX_SET];   /* --set section.key=value, in order */
@@ -20,15 +21,20 @@ typedef struct cli_args {
     const char *scenario;           /* --scenario FILE */
 } cli_args;
 
-/* Frames of a run (cli_render.c). cli_frames_open checks the frame options and prepares the
- * renderer before anything is simulated (exit 2 when they are wrong or no renderer is built in);
- * it fills obs with the observer that draws each frame. cli_frames_close finishes (video). */
+/* Frames of a run (render/cli_frames.c; src/cli_render.c without the renderer). cli_frames_open
+ * checks the frame options and prepares the renderer before anything is simulated (exit 2 when
+ * they are wrong or no renderer is built in); it fills obs with the observer that draws each
+ * frame. cli_frames_close finishes (video). */
 typedef struct fs_run_observer fs_run_observer;
 typedef struct fs_scenario fs_scenario;
 typedef struct cli_frames cli_frames;
 int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
                     fs_run_observer *obs);
 int cli_frames_close(cli_frames *frames, int ok);
+
+/* render-compare A B: both runs side by side in DIR/frames/, and DIR/filmstrip.png
+ * (render/cli_compare.c; src/cli_render.c without the renderer: exit 2). */
+int cli_render_compare(const cli_args *a);
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);

@@ -21,6 +21,10 @@ static const command commands[] = {
      "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
      "  (1280x720), seen by --camera side|front|three-quarter|follow (side); --video also encodes\n"
      "  DIR/video.mp4 with ffmpeg."},
+    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --set --fps --size --camera --video",
+     "Runs both scenarios and writes their frames side by side (A left, B right) to DIR/frames/ and key\n"
+     "  frames from touch-down to rest to DIR/filmstrip.png (default DIR: results/compare/A-foot_vs_B-foot/).\n"
+     "  --set a:KEY=V changes A only, b:KEY=V B only, KEY=V both. Frame options as for run."},
     {"model", cli_model, "DESIGN", "--json --set",
      "Prints the built model in SI units and world coordinates: bodies, joints, springs, geoms."},
     {"stiffness", cli_stiffness, "DESIGN", "--json --set",
@@ -122,6 +126,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->set[a->nset++] = argv[++i];
         } else if (c->input && !a->input)
             a->input = arg;
+        else if (c->input && strchr(c->input, ' ') && !a->input2)
+            a->input2 = arg;
         else {
             fprintf(stderr, "footsim %s: unexpected argument '%s'; see 'footsim %s --help'\n", c->name, arg, c->name);
             return 2;

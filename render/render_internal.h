@@ -1,0 +1,27 @@
+/* render_internal.h: what the renderer's own files share (not part of its interface). */
+#ifndef FS_RENDER_INTERNAL_H
+#define FS_RENDER_INTERNAL_H
+
+#include "fs_render.h"
+
+#include "render_glapi.h"
+
+struct fs_render {
+    OSMesaContext ctx;
+    int w, h;
+    unsigned char *rgba;     /* w x h RGBA, rows bottom-up as GL writes them */
+    GLuint sphere, cube;     /* display lists: unit sphere (radius 1), unit cube (edges 1) */
+    double spring_ref_N;     /* the largest spring force seen: full colour */
+    double contact_ref_N;    /* the largest contact force seen: the longest arrow */
+};
+
+/* Makes r's context current on its frame. */
+void render_make_current(fs_render *r);
+
+/* Darkens the rectangle at (x0, y0), w x h, keeping the fraction keep of each colour (GL). */
+void render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep);
+
+/* fs_render_text without waiting for GL to finish. */
+int render_text_gl(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3]);
+
+#endif
