@@ -77,27 +77,49 @@ done:
     return status;
 }
 
-fs_status fs_png_write_rgb(const char *path, int w, int h, const unsigned char *rgb, fs_error *err)
+/* Encodes h rows of w pixels (3 or 4 bytes each, RGB first; stride bytes apart) to f as RGB. */
+static int encode(FILE *f, const unsigned char *pixels, int w, int h, int channels, long stride, int bottom_up,
+                  int level)
+{
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    if (!info) {
+        png_destroy_write_struct(&png, NULL);
+        return 0;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return 0;
+    }
+    png_init_io(png, f);
+    /* speed over size at low levels: a fast zlib level and the cheapest useful row filter */
+    png_set_compression_level(png, level);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
+    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+    png_write_info(png, info);
+    if (channels == 4)
+        png_set_filler(png, 0, PNG_FILLER_AFTER);
+    for (int y = 0; y < h; y++)
+        png_write_row(png, pixels + (size_t)(bottom_up ? h - 1 - y : y) * (size_t)stride);
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    return 1;
+}
+
+fs_status fs_png_write(const char *path, const unsigned char *pixels, int w, int h, int channels, long stride,
+                       int bottom_up, int level, fs_error *err)
 {
     char temp[4200];
     FILE *f = fs_open_temp(path, temp, sizeof temp, err);
     if (!f)
         return FS_IO;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
-    png_infop info = png ? png_create_info_struct(png) : NULL;
-    if (!png || !info || setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        fs_commit_file(f, temp, path, 0, err);
-        return fs_fail(err, FS_IO, "%s: PNG could not be written", path);
-    }
-    png_init_io(png, f);
-    png_set_compression_level(png, 3);
-    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    for (int r = 0; r < h; r++)
-        png_write_row(png, (png_const_bytep)(rgb + (size_t)r * w * 3));
-    png_write_end(png, NULL);
-    png_destroy_write_struct(&png, &info);
-    return fs_commit_file(f, temp, path, 1, err);
+    int ok = encode(f, pixels, w, h, channels, stride, bottom_up, level);
+    fs_status s = fs_commit_file(f, temp, path, ok, err);
+    return ok ? s : fs_fail(err, FS_IO, "%s: PNG encoding failed", path);
+}
+
+fs_status fs_png_write_rgb(const char *path, int w, int h, const unsigned char *rgb, fs_error *err)
+{
+    return fs_png_write(path, rgb, w, h, 3, (long)w * 3, 0, 6, err);
 }
