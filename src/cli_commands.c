@@ -4,6 +4,7 @@
 #include "footsim/fs_analysis.h"
 #include "footsim/fs_output.h"
 #include "footsim/fs_run.h"
+#include "footsim/fs_trial.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -198,6 +199,50 @@ int cli_stiffness(const cli_args *a)
                    eq[f].mtp_rad * 180 / M_PI, eq[f].ball_clearance_m * 1e3);
     }
     return worst <= STIFFNESS_TOLERANCE ? 0 : FS_EXPECTATION_FAILED;
+}
+
+/* ---- trial ------------------------------------------------------------------------------------ */
+
+int cli_trial(const cli_args *a)
+{
+    char *end;
+    long seed = a->seed ? strtol(a->seed, &end, 10) : 1;
+    if (a->seed && (*end || end == a->seed || seed < 0 || seed > 2147483647L))
+        return cli_report(FS_BAD_INPUT, "--seed: give a whole number from 0 to 2147483647");
+    fs_trial_result r;
+    fs_error err;
+    if (fs_trial_run(a->input, a->set, a->nset, (int)seed, &r, &err) != FS_OK)
+        return fail(&err);
+    if (a->json) {
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddNumberToObject(o, "seed", r.draw.seed);
+        cJSON_AddStringToObject(o, "outcome", fs_outcome_name(r.outcome));
+        cJSON_AddStringToObject(o, "failure", r.failure);
+        double pose[5] = {r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg};
+        cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
+        cJSON_AddNumberToObject(o, "touchdown_s", r.touchdown_s);
+        cJSON_AddNumberToObject(o, "end_time_s", r.end_time_s);
+        cJSON_AddNumberToObject(o, "peak_tilt_deg", r.peak_tilt_deg);
+        cJSON_AddNumberToObject(o, "final_tilt_deg", r.final_tilt_deg);
+        cJSON_AddNumberToObject(o, "peak_force_N", r.peak_force_N);
+        cJSON_AddNumberToObject(o, "impact_impulse_Ns", r.impact_impulse_Ns);
+        cJSON_AddNumberToObject(o, "settle_time_s", r.settle_time_s);
+        cJSON_AddNumberToObject(o, "mean_contacts", r.mean_contacts);
+        cJSON_AddNumberToObject(o, "final_contacts", r.final_contacts);
+        cJSON_AddNumberToObject(o, "ankle_drop_m", r.ankle_drop_m);
+        cJSON_AddNumberToObject(o, "slip_m", r.slip_m);
+        print_json(o);
+        cJSON_Delete(o);
+    } else {
+        printf("%s, seed %ld: %s%s%s\n  start x %.4f m, y %.4f m, yaw %.1f deg, pitch %.2f deg, roll %.2f deg\n"
+               "  touchdown %.3f s, end %.3f s; lean peak %.1f deg, final %.1f deg; peak force %.0f N, impulse %.2f N s\n"
+               "  settled %.3f s after touchdown; contacts mean %.1f, final %.0f; ankle drop %.2f mm, slip %.2f mm\n",
+               a->input, seed, fs_outcome_name(r.outcome), r.failure[0] ? ": " : "", r.failure, r.draw.x_m, r.draw.y_m,
+               r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg, r.touchdown_s, r.end_time_s, r.peak_tilt_deg,
+               r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, r.settle_time_s, r.mean_contacts,
+               r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
+    }
+    return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
 }
 
 /* ---- keys and demo ---------------------------------------------------------------------------- */

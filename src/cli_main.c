@@ -35,6 +35,9 @@ static const command commands[] = {
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
      "  --scenario S gives one); with neither, a summary."},
+    {"trial", cli_trial, "SCENARIO", "--seed --json --set",
+     "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
+     "  the drawn pose, the outcome (landed or fell) and the metrics."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "",
@@ -83,7 +86,7 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
         }
         int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
                           !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
-                          !strcmp(arg, "--scenario") || !strcmp(arg, "--height");
+                          !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "--seed");
         if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
             fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
                     *c->options ? c->options : "no options");
@@ -106,6 +109,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->png = argv[++i];
         else if (!strcmp(arg, "--scenario"))
             a->scenario = argv[++i];
+        else if (!strcmp(arg, "--seed"))
+            a->seed = argv[++i];
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--frames"))

@@ -157,6 +157,46 @@ static void build_joints(fs_sim *sim)
     }
 }
 
+/* ---- the robot ---------------------------------------------------------------------------- */
+
+/* The passive body on the ankle: rigidly fixed, or hinged with an Achilles spring-damper from
+ * the heel (the ankle body of a flat foot) to the leg, 2 cm behind the ankle. */
+static void build_robot(fs_sim *sim)
+{
+    const fs_scenario_def *s = &sim->sc->def;
+    const fs_foot_geom *g = sim->geom;
+    dBodyID ankle_body = sim->body[g->ankle_body];
+    sim->robot = dBodyCreate(sim->world);
+    dMass m;
+    const double *I = s->robot_inertia_kgm2;
+    dMassSetParameters(&m, s->robot_kg, 0, 0, 0, I[0], I[1], I[2], 0, 0, 0);
+    dBodySetMass(sim->robot, &m);
+    fs_vec3 com = place(sim, fs_add(g->ankle, fs_v3(s->robot_com_forward_m, 0, s->robot_com_height_m)));
+    dBodySetPosition(sim->robot, com.x, com.y, com.z);
+    const double *R = sim->R0;
+    dMatrix3 rot = {R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0};
+    dBodySetRotation(sim->robot, rot);
+    if (s->robot_joint == 0) {
+        sim->robot_joint = dJointCreateFixed(sim->world, 0);
+        dJointAttach(sim->robot_joint, sim->robot, ankle_body);
+        dJointSetFixed(sim->robot_joint);
+        return;
+    }
+    fs_vec3 a = place(sim, g->ankle), axis = turn(sim, fs_v3(0, 1, 0));
+    sim->robot_joint = dJointCreateHinge(sim->world, 0);
+    dJointAttach(sim->robot_joint, sim->robot, ankle_body);
+    dJointSetHingeAnchor(sim->robot_joint, a.x, a.y, a.z);
+    dJointSetHingeAxis(sim->robot_joint, axis.x, axis.y, axis.z);
+    const double behind = 0.02; /* m: the tendon's line behind the ankle axis */
+    fs_vec3 heel = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, -0.01)));
+    fs_vec3 leg = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, s->achilles_leg_anchor_m)));
+    double p1[3] = {heel.x, heel.y, heel.z}, p2[3] = {leg.x, leg.y, leg.z};
+    int heel_body = g->kind == FS_FOOT_BIOMIMETIC ? FS_BODY_HEEL : 0;
+    fs_spring_init(&sim->achilles, sim->world, (fs_spring_impl)s->springs, sim->body[heel_body], sim->robot, p1, p2,
+                   s->achilles_k_N_per_m, s->achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
+    sim->has_achilles = 1;
+}
+
 /* How far each body's points (joints, spring anchors, shapes) lie from its COM. */
 static void body_reach(fs_sim *sim)
 {
@@ -251,6 +291,8 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         build_body(sim, i);
     build_shapes(sim);
     build_joints(sim);
+    if (s->robot_kg > 0)
+        build_robot(sim);
     if (opts->hold_rear_foot && sim->geom->kind == FS_FOOT_BIOMIMETIC) {
         dBodySetKinematic(sim->body[FS_BODY_HEEL]);
         dBodySetKinematic(sim->body[FS_BODY_TALUS]);
@@ -446,6 +488,8 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
     /* spring-dampers: soft rows set for h, or explicit forces */
     for (int i = 0; i < sim->geom->nsprings; i++)
         fs_spring_prepare(&sim->spring[i], h);
+    if (sim->has_achilles)
+        fs_spring_prepare(&sim->achilles, h);
     /* collision: the foot's shapes against the ground, nothing else */
     sim->contacts_now = 0;
     if (sim->ground)
@@ -464,31 +508,40 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
 
 /* ---- measurements ------------------------------------------------------------------------- */
 
+/* Kinetic and gravitational energy of one body (relative to z = 0), J. */
+static void body_energy(const fs_sim *sim, dBodyID b, double *ke, double *pe)
+{
+    if (dBodyIsKinematic(b))
+        return;
+    double g = sim->sc->def.gravity_m_per_s2;
+    dMass m;
+    dBodyGetMass(b, &m);
+    const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b), *p = dBodyGetPosition(b);
+    const dReal *R = dBodyGetRotation(b);
+    /* the angular velocity in the body frame, where ODE keeps the inertia */
+    double wb[3] = {0, 0, 0};
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            wb[r] += R[4 * c + r] * w[c];
+    double rot = 0;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            rot += wb[r] * m.I[4 * r + c] * wb[c];
+    *ke += 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.5 * rot;
+    *pe -= m.mass * g * (p[0] * sim->down[0] + p[1] * sim->down[1] + p[2] * sim->down[2]);
+}
+
 double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, double *elastic)
 {
-    double ke = 0, pe = 0, se = 0, g = sim->sc->def.gravity_m_per_s2;
-    for (int i = 0; i < sim->geom->nbodies; i++) {
-        dBodyID b = sim->body[i];
-        if (dBodyIsKinematic(b))
-            continue;
-        dMass m;
-        dBodyGetMass(b, &m);
-        const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b), *p = dBodyGetPosition(b);
-        const dReal *R = dBodyGetRotation(b);
-        /* world inertia R I R^T applied to w: rotate w into the body frame first */
-        double wb[3] = {0, 0, 0};
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++)
-                wb[r] += R[4 * c + r] * w[c];
-        double rot = 0;
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++)
-                rot += wb[r] * m.I[4 * r + c] * wb[c];
-        ke += 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.5 * rot;
-        pe -= m.mass * g * (p[0] * sim->down[0] + p[1] * sim->down[1] + p[2] * sim->down[2]);
-    }
+    double ke = 0, pe = 0, se = 0;
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        body_energy(sim, sim->body[i], &ke, &pe);
+    if (sim->robot)
+        body_energy(sim, sim->robot, &ke, &pe);
     for (int i = 0; i < sim->geom->nsprings; i++)
         se += fs_spring_measure(&sim->spring[i]).energy_J;
+    if (sim->has_achilles)
+        se += fs_spring_measure(&sim->achilles).energy_J;
     if (kinetic)
         *kinetic = ke;
     if (potential)
@@ -501,6 +554,11 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
 double fs_sim_max_speed(const fs_sim *sim)
 {
     double vmax = 0;
+    if (sim->robot) {
+        const dReal *v = dBodyGetLinearVel(sim->robot), *w = dBodyGetAngularVel(sim->robot);
+        vmax = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+               sim->sc->def.robot_com_height_m * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    }
     for (int i = 0; i < sim->geom->nbodies; i++) {
         const dReal *v = dBodyGetLinearVel(sim->body[i]), *w = dBodyGetAngularVel(sim->body[i]);
         double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
@@ -508,6 +566,37 @@ double fs_sim_max_speed(const fs_sim *sim)
         vmax = fmax(vmax, speed);
     }
     return vmax;
+}
+
+double fs_sim_robot_tilt(const fs_sim *sim)
+{
+    if (!sim->robot)
+        return 0;
+    const dReal *R = dBodyGetRotation(sim->robot);
+    return acos(fmax(-1.0, fmin(1.0, R[10])));
+}
+
+double fs_sim_penetration(const fs_sim *sim)
+{
+    const fs_terrain *t = &sim->sc->terrain;
+    double worst = -INFINITY;
+    for (int i = 0; i < sim->nshapes; i++) {
+        dGeomID g = sim->shape[i];
+        const dReal *p = dGeomGetPosition(g);
+        if (dGeomGetClass(g) == dSphereClass) {
+            worst = fmax(worst, fs_terrain_height(t, p[0], p[1]) - (p[2] - dGeomSphereGetRadius(g)));
+            continue;
+        }
+        /* a box: its underside on a 21 x 11 grid */
+        dVector3 l, q;
+        dGeomBoxGetLengths(g, l);
+        for (int a = 0; a <= 20; a++)
+            for (int b = 0; b <= 10; b++) {
+                dGeomGetRelPointPos(g, (a / 20.0 - 0.5) * l[0], (b / 10.0 - 0.5) * l[1], -0.5 * l[2], q);
+                worst = fmax(worst, fs_terrain_height(t, q[0], q[1]) - q[2]);
+            }
+    }
+    return worst;
 }
 
 void fs_sim_ground_force(const fs_sim *sim, double force[3])
@@ -574,6 +663,12 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
         copy3(c->force_N, sim->feedback[i].f1);
     }
     fs_sim_ankle(sim, scene->ankle);
+    if (sim->robot && scene->nlinks < FS_SCENE_MAX_SEGMENTS) {
+        /* the robot as a line from the ankle to its centre of mass */
+        fs_scene_segment *seg = &scene->link[scene->nlinks++];
+        memcpy(seg->p1, scene->ankle, sizeof seg->p1);
+        copy3(seg->p2, dBodyGetPosition(sim->robot));
+    }
     const fs_scenario_def *s = &sim->sc->def;
     double ramp = s->ramp_s > 0 && sim->time_s < s->ramp_s ? sim->time_s / s->ramp_s : 1.0;
     for (int k = 0; k < 3; k++)

@@ -56,7 +56,7 @@ const fs_key fs_design_keys[] = {
     NUM("contact", "toe_radius_m", toe_radius_m, 0, 1, POS, "m", "0.003", "toe tip contact sphere (times scale)"),
     NUM("sole", "mu", sole_mu, 0, 10, 0, "", "1.0", "friction coefficient of the sole material"),
     NUM("sole", "stiffness_N_per_m", sole_stiffness_N_per_m, 0, 1e12, POS, "N/m", "1e7", "contact stiffness of the sole material"),
-    NUM("sole", "damping_Ns_per_m", sole_damping_Ns_per_m, 0, 1e9, 0, "N s/m", "2000", "contact damping of the sole material"),
+    NUM("sole", "damping_Ns_per_m", sole_damping_Ns_per_m, 0, 1e9, 0, "N s/m", "2e4", "contact damping of the sole material"),
     NUM("flat", "thickness_m", flat_thickness_m, 0, 1, POS, "m", "0.008", "the flat foot's sole plate thickness"),
 };
 const int fs_design_nkeys = (int)(sizeof fs_design_keys / sizeof fs_design_keys[0]);

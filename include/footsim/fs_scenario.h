@@ -35,6 +35,14 @@ typedef struct fs_scenario_def {
     double joint_erp, joint_cfm; /* ODE's hinge error reduction and constraint force mixing */
     double contact_layer_m;    /* ODE's contact surface layer */
     int tile_cells;            /* heightfield tiles' size, cells a side */
+    /* [robot]: a passive body (torso and leg) on the ankle; none when its mass is 0 */
+    double robot_kg, robot_com_height_m, robot_com_forward_m;
+    double robot_inertia_kgm2[3];
+    int robot_joint;           /* 0 rigid, 1 achilles: an ankle hinge and a heel-to-leg spring-damper */
+    double achilles_k_N_per_m, achilles_c_Ns_per_m, achilles_leg_anchor_m;
+    /* [landing]: the drawn pose and the rules of a landing trial */
+    double land_x_range_m, land_y_range_m, land_yaw_range_deg, land_tilt_range_deg;
+    double landed_tilt_deg, fall_tilt_deg;
 } fs_scenario_def;
 
 typedef struct fs_scenario {

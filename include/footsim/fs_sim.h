@@ -36,6 +36,10 @@ typedef struct fs_sim {
     dGeomID shape[FS_MAX_SPHERES + 1];
     int nshapes;
     fs_spring spring[FS_MAX_SPRINGS];
+    dBodyID robot;         /* the passive body on the ankle, or NULL */
+    dJointID robot_joint;  /* fixed, or the ankle hinge */
+    fs_spring achilles;    /* with robot.joint = achilles */
+    int has_achilles;
     double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
     dVector3 ankle_local;  /* the load's point on the ankle body */
     dVector3 down;         /* unit direction of the load and gravity */
@@ -73,6 +77,12 @@ void fs_sim_ground_force(const fs_sim *sim, double force[3]);
 /* Fills scene with the state now (shapes, links, springs with their forces, contacts with their
  * forces, the load). */
 void fs_sim_scene(const fs_sim *sim, fs_scene *scene);
+
+/* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. */
+double fs_sim_robot_tilt(const fs_sim *sim);
+
+/* How far the foot's contact shapes reach below the terrain surface now, m (negative: above). */
+double fs_sim_penetration(const fs_sim *sim);
 
 /* Joint angle of hinge i from the neutral pose, rad (positive: distal link turned up). */
 double fs_sim_hinge_angle(const fs_sim *sim, int i);
