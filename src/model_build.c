@@ -159,8 +159,10 @@ static void build_joints(fs_sim *sim)
 
 /* ---- the robot ---------------------------------------------------------------------------- */
 
-/* The passive body on the ankle: rigidly fixed, or hinged with an Achilles spring-damper from
- * the heel (the ankle body of a flat foot) to the leg, 2 cm behind the ankle. */
+/* The passive body on the ankle: rigidly fixed, or hinged at the ankle with an Achilles
+ * spring-damper from the ankle body, 2 cm behind the joint, to the leg. (The tendon ends on the
+ * talus, not the heel: here the heel turns about the same ankle axis as the leg would, so a
+ * heel-to-leg tendon would let leg and heel fold together about it unresisted.) */
 static void build_robot(fs_sim *sim)
 {
     const fs_scenario_def *s = &sim->sc->def;
@@ -191,8 +193,7 @@ static void build_robot(fs_sim *sim)
     fs_vec3 heel = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, -0.01)));
     fs_vec3 leg = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, s->achilles_leg_anchor_m)));
     double p1[3] = {heel.x, heel.y, heel.z}, p2[3] = {leg.x, leg.y, leg.z};
-    int heel_body = g->kind == FS_FOOT_BIOMIMETIC ? FS_BODY_HEEL : 0;
-    fs_spring_init(&sim->achilles, sim->world, (fs_spring_impl)s->springs, sim->body[heel_body], sim->robot, p1, p2,
+    fs_spring_init(&sim->achilles, sim->world, (fs_spring_impl)s->springs, ankle_body, sim->robot, p1, p2,
                    s->achilles_k_N_per_m, s->achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
     sim->has_achilles = 1;
 }
