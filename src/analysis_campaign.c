@@ -349,7 +349,7 @@ static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *
         if (strlen(full) + 24 >= FS_VALUE_MAX)
             return fs_fail(err, FS_BAD_INPUT, "%s: %s: path longer than %d characters; move the files", cfg->path,
                            full, FS_VALUE_MAX - 24);
-        snprintf(items[i]->path, sizeof items[i]->path, "%s", full);
+        memcpy(items[i]->path, full, strlen(full) + 1); /* shorter than FS_VALUE_MAX, checked above */
     }
     return FS_OK;
 }

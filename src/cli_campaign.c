@@ -2,7 +2,7 @@
  * the expectations) and `footsim compare` (a summary against its baseline).
  *
  * Workers are forked processes, each fed trial indices through a pipe and answering with whole
- * results through another (a message is smaller than PIPE_BUF, so it arrives whole). A worker
+ * results through another of its own, one trial at a time, so the fast take more. A worker
  * that dies (an ODE error exits with status 3) marks its trial failed_numerics, saying which
  * trial, which seed and how it ended; a fresh worker takes its place and the campaign goes on.
  * FOOTSIM_TEST_CRASH_SEED=N (for tests) makes a worker exit with status 3 on seed N. */
@@ -24,11 +24,12 @@
 
 enum { MAX_JOBS = 1024 };
 
+/* A worker's answer to one trial, read in full (each worker has its own pipe: nothing interleaves). */
 typedef struct message {
     int index;      /* the trial */
     int status;     /* fs_trial_run's */
     fs_trial_result result;
-    char error[FS_ERROR_MAX / 2];
+    char error[FS_ERROR_MAX];
 } message;
 
 typedef struct worker {
