@@ -20,6 +20,7 @@ typedef struct cli_args {
     const char *png;                /* --png FILE */
     const char *scenario;           /* --scenario FILE */
     const char *seed;               /* --seed N */
+    const char *jobs;               /* -j N: worker processes (campaign) */
 } cli_args;
 
 /* Frames of a run (render/cli_frames.c; src/cli_render.c without the renderer). cli_frames_open
@@ -44,6 +45,8 @@ int cli_keys(const cli_args *a);
 int cli_demo(const cli_args *a);
 int cli_terrain(const cli_args *a);
 int cli_trial(const cli_args *a);
+int cli_campaign(const cli_args *a);  /* src/cli_campaign.c */
+int cli_compare(const cli_args *a);
 
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);

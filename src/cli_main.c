@@ -38,6 +38,15 @@ static const command commands[] = {
     {"trial", cli_trial, "SCENARIO", "--seed --json --set",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed or fell) and the metrics."},
+    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --set",
+     "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
+     "  worker processes (default: all cores) and writes DIR/summary.md, summary.csv, summary.json,\n"
+     "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
+     "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
+     "  sections go to every trial."},
+    {"compare", cli_compare, "RESULT BASELINE", "",
+     "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
+     "  baseline's 95 % interval or a median moves further than the baseline's tolerance."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "",
@@ -61,6 +70,8 @@ static void command_help(const command *c)
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
     if (strstr(c->options, "--out"))
         printf(" [--out DIR]");
+    if (strstr(c->options, "-j "))
+        printf(" [-j N]");
     if (strstr(c->options, "--json"))
         printf(" [--json]");
     if (strstr(c->options, "--height"))
@@ -86,7 +97,12 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
         }
         int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
                           !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
-                          !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "--seed");
+                          !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
+                          !strcmp(arg, "--seed");
+        if (!strcmp(arg, "-j") && !strstr(c->options, "-j ")) {
+            fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
+            return 2;
+        }
         if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
             fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
                     *c->options ? c->options : "no options");
@@ -111,6 +127,10 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->scenario = argv[++i];
         else if (!strcmp(arg, "--seed"))
             a->seed = argv[++i];
+        else if (!strcmp(arg, "-j"))
+            a->jobs = argv[++i];
+        else if (!strncmp(arg, "-j", 2) && strstr(c->options, "-j "))
+            a->jobs = arg + 2;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--frames"))

@@ -153,7 +153,7 @@ static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, in
                        "or a smaller ball_radius_m",
                        fs_config_where(cfg, "pose", "toe_deg", where, sizeof where), i + 1, (rb - B.z) * 1e3);
     int meta = g->nbodies++, phal = g->nbodies++;
-    char name[24];
+    char name[32];
     snprintf(name, sizeof name, "metatarsal%d", i + 1);
     link_body(&g->body[meta], name, s * d->metatarsal_kg, M, B, d->link_width_m, d->link_width_m);
     snprintf(name, sizeof name, "phalanx%d", i + 1);

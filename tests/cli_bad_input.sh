@@ -39,6 +39,32 @@ expect 2 "unknown command" -- sprint
 expect 2 "cannot create folder" -- run scenarios/static_load.ini --out /proc/footsim/out
 expect 2 "unknown section \[wheels\]" -- stiffness scenarios/feet/biomimetic.ini --set wheels.count=4
 
+# campaigns: refused with file:line before any trial runs (nothing written)
+camp() { # camp NAME BODY: a campaign file on the stand-in trial with one foot and one terrain
+    printf '[campaign]\ntrial = %s/scenarios/campaign_test_trial.ini\n%b\n[foot.bio]\nfile = %s/scenarios/feet/biomimetic.ini\n[terrain.flat]\nfile = %s/terrains/flat.ini\n' \
+        "$PWD" "$2" "$PWD" "$PWD" >"$tmp/$1.ini"
+}
+camp zero 'seeds = 0'
+camp unknown 'seeds = 3\nspeed = 2'
+camp range 'seeds = 3\n[expect.e]\nfoot = bio\nterrain = flat\nmin_success = 1.5'
+camp nofoot 'seeds = 3\n[foot.ghost]\nfile = feet/ghost.ini'
+camp noterrain 'seeds = 3\n[expect.e]\nfoot = bio\nterrain = rocks'
+camp minmax 'seeds = 3\n[expect.e]\nfoot = bio\nterrain = flat\nmin_success = 0.8\nmax_success = 0.5'
+camp sweep 'seeds = 3\nsweep = rough.rms_m\nsweep_values = 0, 0.001, abc'
+camp nosweep 'seeds = 3\nsweep_values = 0, 0.001'
+expect 2 "$tmp/zero.ini:3: seeds = '0' is out of range; allowed: a whole number in \[1, 100000\]" -- campaign "$tmp/zero.ini" --out "$tmp/c1"
+expect 2 "$tmp/unknown.ini:4: unknown key 'speed' in \[campaign\]" -- campaign "$tmp/unknown.ini" --out "$tmp/c2"
+expect 2 "$tmp/range.ini:7: min_success = '1.5' is out of range" -- campaign "$tmp/range.ini" --out "$tmp/c3"
+expect 2 "$tmp/nofoot.ini:5: file = 'feet/ghost.ini': no such file" -- campaign "$tmp/nofoot.ini" --out "$tmp/c4"
+expect 2 "$tmp/noterrain.ini:6: terrain = 'rocks' is not one of the choices; allowed: flat" -- campaign "$tmp/noterrain.ini" --out "$tmp/c5"
+expect 2 "$tmp/minmax.ini:7: min_success = 0.8 is above max_success = 0.5" -- campaign "$tmp/minmax.ini" --out "$tmp/c6"
+expect 2 "$tmp/sweep.ini:5: sweep_values: 'abc' is not a finite number" -- campaign "$tmp/sweep.ini" --out "$tmp/c7"
+expect 2 "$tmp/nosweep.ini:4: sweep_values without sweep" -- campaign "$tmp/nosweep.ini" --out "$tmp/c8"
+expect 2 "--set mud.depth: unknown section \[mud\].*(campaign scenarios/landing_ci.ini: foot biomimetic on terrain flat)" -- campaign scenarios/landing_ci.ini --set mud.depth=3 --out "$tmp/c9"
+expect 2 "no such file" -- campaign scenarios/landing_ci.ini --set terrain.flat.file=../terrains/lava.ini --out "$tmp/c9"
+expect 2 "\-j 0: not a number of workers; allowed: a whole number from 1 to 1024" -- campaign scenarios/landing_ci.ini -j 0 --out "$tmp/c9"
+expect 2 "give two summary.json files" -- compare results/baseline/landing.json
+
 # frame options: refused before the simulation starts
 sl=scenarios/static_load.ini
 if [ "$renderer" = render ]; then
@@ -67,7 +93,7 @@ else
 fi
 
 # nothing was written for any refused run (a frame-option run may leave its empty folder)
-for d in o1 o2 o3 o4 o5; do
+for d in o1 o2 o3 o4 o5 c1 c2 c3 c4 c5 c6 c7 c8 c9; do
     if [ -e "$tmp/$d" ]; then failed=$((failed + 1)); echo "FAIL: $tmp/$d was created" >&2; else passed=$((passed + 1)); fi
 done
 for d in f1 f2 f3 f4 f5; do

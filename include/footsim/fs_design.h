@@ -51,27 +51,27 @@ typedef struct fs_design_def {
 } fs_design_def;
 
 typedef struct fs_body_geom {
-    char name[24];
+    char name[32];
     double mass_kg;
     fs_vec3 com;         /* the body's origin, at its centre of mass */
     double inertia[9];   /* about the COM, world axes, kg m^2 (row-major) */
 } fs_body_geom;
 
 typedef struct fs_hinge_geom {
-    char name[24];
+    char name[32];
     int body1, body2;    /* proximal, distal */
     fs_vec3 anchor, axis;
 } fs_hinge_geom;
 
 typedef struct fs_spring_geom {
-    char name[24];
+    char name[32];
     int body1, body2;
     fs_vec3 p1, p2;      /* anchors in the neutral pose */
     double k_N_per_m, c_Ns_per_m, rest_length_m;
 } fs_spring_geom;
 
 typedef struct fs_sphere_geom {
-    char name[24];
+    char name[32];
     int body;
     fs_vec3 centre;
     double radius_m;

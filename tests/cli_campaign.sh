@@ -1,0 +1,88 @@
+#!/bin/sh
+# footsim campaign and compare, end to end on a small campaign (2 feet x 1 terrain x 3 seeds):
+# -j 1 and -j 4 write identical files; a worker that dies is reported as failed_numerics and the
+# campaign goes on; expectations set the exit status; compare exits 0 on identical summaries and
+# 1 on a planted change. Usage: cli_campaign.sh path/to/footsim (run from the source folder).
+fs=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+
+check() { # check DESCRIPTION COMMAND...: the command must succeed
+    what=$1
+    shift
+    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $what" >&2; fi
+}
+
+cat >"$tmp/small.ini" <<EOF
+[campaign]
+trial = $PWD/scenarios/campaign_test_trial.ini
+seeds = 3
+
+[foot.bio]
+file = $PWD/scenarios/feet/biomimetic.ini
+
+[foot.flat]
+file = $PWD/scenarios/feet/flat.ini
+
+[terrain.bumpy]
+file = $PWD/terrains/simply_uneven.ini
+
+[expect.anything]
+foot = bio
+terrain = bumpy
+min_success = 0
+max_success = 1
+EOF
+
+# the same campaign on 1 and on 4 workers: the same files, byte for byte
+"$fs" campaign "$tmp/small.ini" -j 1 --out "$tmp/j1" >"$tmp/j1.out" 2>"$tmp/j1.err"
+check "campaign -j 1 exits 0 (its expectation holds)" [ $? -eq 0 ]
+"$fs" campaign "$tmp/small.ini" -j 4 --out "$tmp/j4" >"$tmp/j4.out" 2>"$tmp/j4.err"
+check "campaign -j 4 exits 0" [ $? -eq 0 ]
+for f in summary.json summary.csv summary.md trials.csv chart.dat chart.gp; do
+    check "$f written" [ -s "$tmp/j1/$f" ]
+    check "$f the same with -j 1 and -j 4" cmp -s "$tmp/j1/$f" "$tmp/j4/$f"
+done
+if command -v gnuplot >/dev/null 2>&1; then
+    check "success.png the same with -j 1 and -j 4" cmp -s "$tmp/j1/success.png" "$tmp/j4/success.png"
+fi
+check "rows in order of foot, terrain, seed" [ "$(cut -d, -f1,2,3 "$tmp/j1/trials.csv" | tr '\n' ' ')" = \
+    "foot,terrain,seed bio,bumpy,1 bio,bumpy,2 bio,bumpy,3 flat,bumpy,1 flat,bumpy,2 flat,bumpy,3 " ]
+check "no progress bar when stderr is not a terminal" [ ! -s "$tmp/j1.err" ] || ! command -v gnuplot >/dev/null
+check "summary.json has the row fields" grep -q '"median_peak_force_N"' "$tmp/j1/summary.json"
+check "summary.csv names its columns with units" grep -q '^foot,terrain,trials,landed,fell,failed_numerics,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
+
+# a worker that dies on seed 2 (as an ODE error makes it, exit 3): failed_numerics, the campaign
+# goes on; an expectation that cannot hold then fails with exit 1, after the results are written;
+# without gnuplot on the PATH the chart is skipped with a message
+mkdir "$tmp/nopath"
+FOOTSIM_TEST_CRASH_SEED=2 PATH="$tmp/nopath" "$fs" campaign "$tmp/small.ini" -j 2 --out "$tmp/crash" \
+    --set expect.all.foot=flat --set expect.all.terrain=bumpy --set expect.all.min_success=1 \
+    >"$tmp/crash.out" 2>"$tmp/crash.err"
+check "a failed expectation exits 1" [ $? -eq 1 ]
+check "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy landed . of 3' "$tmp/crash.out"
+check "the dead worker's trials are failed_numerics" [ "$(grep -c ',2,.*failed_numerics,.*seed 2, exited with status 3' "$tmp/crash/trials.csv")" -eq 2 ]
+check "the other trials ran" [ "$(grep -c -v failed_numerics "$tmp/crash/trials.csv")" -eq 5 ]
+check "the summary counts them" grep -q '"failed_numerics":	1' "$tmp/crash/summary.json"
+check "the death is reported on stderr" grep -q 'foot bio on terrain bumpy, seed 2, exited with status 3' "$tmp/crash.err"
+check "no gnuplot: said so" grep -q 'gnuplot is not installed' "$tmp/crash.err"
+check "no gnuplot: no chart" [ ! -e "$tmp/crash/success.png" ]
+
+# compare: identical summaries exit 0; a planted change in a rate or a median exits 1
+"$fs" compare "$tmp/j4/summary.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
+check "compare of identical summaries exits 0" [ $? -eq 0 ]
+check "compare says identical" grep -q 'identical' "$tmp/cmp.out"
+sed '0,/"success_rate":/s/"success_rate":[^,]*/"success_rate":	-1/' "$tmp/j1/summary.json" >"$tmp/rate.json"
+"$fs" compare "$tmp/rate.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
+check "compare exits 1 when a rate leaves the baseline interval" [ $? -eq 1 ]
+check "compare names the rate" grep -q '| bio | bumpy | success_rate | .* | -1 |.*outside' "$tmp/cmp.out"
+sed '0,/"median_steps":/s/"median_steps":[^,]*/"median_steps":	1e12/' "$tmp/j1/summary.json" >"$tmp/steps.json"
+"$fs" compare "$tmp/steps.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
+check "compare exits 1 when a median moves too far" [ $? -eq 1 ]
+check "compare names the median" grep -q 'median_steps .* 1e+12 .*outside' "$tmp/cmp.out"
+"$fs" compare "$tmp/j1/summary.json" "$tmp/missing.json" 2>"$tmp/cmp.err"
+check "compare of a missing file exits 2" [ $? -eq 2 ]
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,214 @@
+/* test_analysis_campaign: Wilson intervals, medians, summaries, expectations, the campaign file
+ * and the comparison of two summaries (no trials run here; tests/cli_campaign.sh runs them). */
+#include "fs_test.h"
+
+#include "footsim/fs_campaign.h"
+#include "footsim/fs_output.h"
+
+#include <stdlib.h>
+#include <unistd.h>
+
+/* The 95 % Wilson score interval of k in n, z = 1.959964 (z^2 = 3.841459):
+ *   centre = (p + z^2/2n) / (1 + z^2/n),  half = z / (1 + z^2/n) * sqrt(p(1-p)/n + z^2/4n^2).
+ * 0/10:  z^2/n = 0.3841459; centre = 0.1920729 / 1.3841459 = 0.1387664; half = 1.4160006 *
+ *        sqrt(0 + 0.0096036) = 0.1387664: [0, 0.2775328].
+ * 5/10:  centre 0.5; half = 1.4160006 * sqrt(0.025 + 0.0096036) = 0.2634069: [0.2365931, 0.7634069].
+ * 10/10: the mirror of 0/10: [0.7224672, 1].
+ * 45/50: p = 0.9, z^2/n = 0.0768292; centre = (0.9 + 0.0384146) / 1.0768292 = 0.8714610;
+ *        half = 1.8201194 * sqrt(0.0018 + 0.0003841) = 0.0850633: [0.7863977, 0.9565242].
+ * (The textbook values, e.g. Newcombe 1998, agree to the 4 digits they give.) */
+static void test_wilson(void)
+{
+    double lo, hi;
+    fs_wilson(0, 10, &lo, &hi);
+    CHECK(lo == 0);
+    CHECK_NEAR(hi, 0.2775328, 1e-7);
+    fs_wilson(5, 10, &lo, &hi);
+    CHECK_NEAR(lo, 0.2365931, 1e-7);
+    CHECK_NEAR(hi, 0.7634069, 1e-7);
+    fs_wilson(10, 10, &lo, &hi);
+    CHECK_NEAR(lo, 0.7224672, 1e-7);
+    CHECK(hi == 1);
+    fs_wilson(45, 50, &lo, &hi);
+    CHECK_NEAR(lo, 0.7863977, 1e-7);
+    CHECK_NEAR(hi, 0.9565242, 1e-7);
+}
+
+static void test_median(void)
+{
+    double odd[] = {5, 1, 3}, even[] = {4, 1, 3, 2}, one[] = {7};
+    CHECK(fs_median(odd, 3) == 3);
+    CHECK(fs_median(even, 4) == 2.5);
+    CHECK(fs_median(one, 1) == 7);
+    CHECK(isnan(fs_median(NULL, 0)));
+}
+
+/* A campaign of two feet on one terrain, 4 seeds, built by hand. */
+static void small_campaign(fs_campaign *c)
+{
+    memset(c, 0, sizeof *c);
+    snprintf(c->name, sizeof c->name, "small");
+    snprintf(c->trial_path, sizeof c->trial_path, "/x/trial.ini");
+    c->seeds = 4;
+    c->first_seed = 1;
+    c->nfeet = 2;
+    c->nterrains = 1;
+    snprintf(c->foot[0].name, FS_NAME_MAX, "bio");
+    snprintf(c->foot[1].name, FS_NAME_MAX, "flat");
+    snprintf(c->terrain[0].name, FS_NAME_MAX, "rocks");
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+        c->tolerance[m][0] = 0.1;
+        c->tolerance[m][1] = 1;
+    }
+}
+
+/* bio: 3 landed, 1 failed numerically; flat: 1 landed, 3 fell; peak force 100, 200, ... */
+static void small_results(fs_trial_result r[8])
+{
+    memset(r, 0, 8 * sizeof *r);
+    for (int i = 0; i < 8; i++) {
+        r[i].outcome = i < 4 ? FS_LANDED : FS_FELL;
+        r[i].peak_force_N = 100.0 * (i + 1);
+        r[i].steps = 10 * (i + 1);
+    }
+    r[3].outcome = FS_FAILED_NUMERICS;
+    r[3].peak_force_N = NAN; /* left out of the medians */
+    r[5].outcome = FS_LANDED;
+}
+
+/* The small campaign and its summary rows. */
+static void summarized(fs_campaign *c, fs_campaign_row rows[2])
+{
+    fs_trial_result r[8];
+    small_campaign(c);
+    small_results(r);
+    fs_campaign_summarize(c, r, rows);
+}
+
+static void test_summarize(void)
+{
+    fs_campaign c;
+    fs_campaign_row rows[2];
+    summarized(&c, rows);
+    CHECK(rows[0].trials == 4 && rows[0].landed == 3 && rows[0].failed_numerics == 1 && rows[0].fell == 0);
+    CHECK(rows[0].success_rate == 0.75);
+    CHECK(rows[0].nmetric == 3);
+    CHECK(rows[0].median[4] == 200); /* peak_force_N of 100, 200, 300 */
+    CHECK(rows[0].median[11] == 20); /* steps 10, 20, 30 */
+    CHECK(rows[1].landed == 1 && rows[1].fell == 3);
+    CHECK(rows[1].median[4] == 650); /* 500, 600, 700, 800 */
+    int foot, terrain, seed;
+    fs_campaign_trial_of(&c, 5, &foot, &terrain, &seed);
+    CHECK(foot == 1 && terrain == 0 && seed == 2);
+}
+
+static void test_expectations(void)
+{
+    fs_campaign c;
+    fs_campaign_row rows[2];
+    summarized(&c, rows);
+    c.nexpect = 2;
+    c.expect[0] = (fs_expectation){"bio_lands", 0, 0, 0.7, 1};
+    c.expect[1] = (fs_expectation){"flat_fails", 1, 0, 0, 0.5};
+    FILE *null = fopen("/dev/null", "w");
+    CHECK(fs_campaign_check(&c, rows, null) == 0);
+    c.expect[0].min_success = 0.8; /* 0.75 is below it */
+    c.expect[1].max_success = 0.2; /* 0.25 is above it */
+    CHECK(fs_campaign_check(&c, rows, null) == 2);
+    fclose(null);
+}
+
+/* Writes the small campaign's summary.json into dir, after change() edits its rows. */
+static void write_summary(const char *dir, void (*change)(fs_campaign_row *))
+{
+    fs_campaign c;
+    fs_campaign_row rows[2];
+    fs_error err;
+    summarized(&c, rows);
+    if (change)
+        change(rows);
+    CHECK(fs_make_dirs(dir, &err) == FS_OK);
+    CHECK(fs_campaign_write_summary(&c, rows, dir, &err) == FS_OK);
+}
+
+static void rate_out(fs_campaign_row *rows) { rows[1].success_rate = 0.9; } /* baseline CI of 1/4 ends at 0.70 */
+static void rate_in(fs_campaign_row *rows) { rows[1].success_rate = 0.5; }
+static void force_near(fs_campaign_row *rows) { rows[0].median[4] += 20; } /* 0.1 * 200 + 1 = 21 allowed */
+static void force_far(fs_campaign_row *rows) { rows[0].median[4] += 22; }
+static void no_median(fs_campaign_row *rows) { rows[0].median[4] = NAN; }
+
+static fs_status compare_with(const char *tmp, const char *name, void (*change)(fs_campaign_row *))
+{
+    char dir[512], result[600], baseline[600];
+    snprintf(dir, sizeof dir, "%s/%s", tmp, name);
+    write_summary(dir, change);
+    snprintf(result, sizeof result, "%s/summary.json", dir);
+    snprintf(baseline, sizeof baseline, "%s/base/summary.json", tmp);
+    FILE *null = fopen("/dev/null", "w");
+    fs_error err;
+    fs_status s = fs_campaign_compare(result, baseline, null, &err);
+    fclose(null);
+    return s;
+}
+
+static void test_compare(void)
+{
+    char tmp[] = "/tmp/fs_campaign_XXXXXX";
+    CHECK(mkdtemp(tmp) != NULL);
+    char dir[512];
+    snprintf(dir, sizeof dir, "%s/base", tmp);
+    write_summary(dir, NULL);
+    CHECK(compare_with(tmp, "same", NULL) == FS_OK);
+    CHECK(compare_with(tmp, "rate_out", rate_out) == FS_EXPECTATION_FAILED);
+    CHECK(compare_with(tmp, "rate_in", rate_in) == FS_OK);
+    CHECK(compare_with(tmp, "force_near", force_near) == FS_OK);
+    CHECK(compare_with(tmp, "force_far", force_far) == FS_EXPECTATION_FAILED);
+    CHECK(compare_with(tmp, "no_median", no_median) == FS_EXPECTATION_FAILED);
+    /* a file that is no summary is bad input */
+    fs_error err;
+    char path[600];
+    snprintf(path, sizeof path, "%s/base/summary.json", tmp);
+    CHECK(fs_campaign_compare("scenarios/landing_ci.ini", path, stdout, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "not a campaign summary") != NULL);
+    char cmd[600];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
+    CHECK(system(cmd) == 0);
+}
+
+static void test_load(void)
+{
+    static fs_campaign c;
+    fs_error err;
+    CHECK(fs_campaign_load("scenarios/landing_ci.ini", NULL, 0, &c, &err) == FS_OK);
+    CHECK(c.nfeet == 2 && c.nterrains == 3 && c.seeds == 5 && c.first_seed == 1 && !c.sweep[0]);
+    CHECK(!strcmp(c.foot[1].name, "flat") && !strcmp(c.terrain[2].name, "complex_uneven"));
+    CHECK(c.foot[0].path[0] == '/');
+    CHECK(fs_campaign_ntrials(&c) == 30);
+    const char *sets[] = {"campaign.seeds=2", "run.step_s=2e-4", "expect.e.foot=flat", "expect.e.terrain=flat",
+                          "tolerance.peak_force_N=0.2, 3"};
+    CHECK(fs_campaign_load("scenarios/landing_ci.ini", sets, 5, &c, &err) == FS_OK);
+    CHECK(c.seeds == 2 && c.nset == 1 && !strcmp(c.set[0], "run.step_s=2e-4"));
+    CHECK(c.nexpect == 1 && c.expect[0].foot == 1 && c.expect[0].terrain == 0 && c.expect[0].min_success == 0);
+    CHECK(c.tolerance[4][0] == 0.2 && c.tolerance[4][1] == 3);
+    char buf[3][FS_PATH_MAX + 32];
+    const char *ov[FS_CAMPAIGN_MAX_SET + 3];
+    CHECK(fs_campaign_overrides(&c, 1, 2, buf, ov) == 3);
+    CHECK(!strncmp(ov[0], "scenario.design=/", 17) && strstr(ov[0], "/scenarios/feet/flat.ini"));
+    CHECK(strstr(ov[1], "/terrains/complex_uneven.ini") && !strcmp(ov[2], "run.step_s=2e-4"));
+}
+
+static void test_sweep(void)
+{
+    static fs_campaign c;
+    fs_error err;
+    CHECK(fs_campaign_load("scenarios/roughness.ini", NULL, 0, &c, &err) == FS_OK);
+    CHECK(!strcmp(c.sweep, "rough.rms_m") && c.nterrains == 11);
+    CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set, "rough.rms_m=0.003"));
+    CHECK(c.terrain[10].sweep_value == 0.02);
+    const char *bad[] = {"campaign.sweep_values=0, -0.001"};
+    CHECK(fs_campaign_load("scenarios/roughness.ini", bad, 1, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "rms_m = '-0.001' is out of range") && strstr(err.message, "rough@-0.001"));
+}
+
+FS_TEST_MAIN(TEST(test_wilson), TEST(test_median), TEST(test_summarize), TEST(test_expectations), TEST(test_compare),
+             TEST(test_load), TEST(test_sweep))
