@@ -13,7 +13,7 @@
 static void name_columns(fs_run_result *res, const fs_foot_geom *g)
 {
     static const char *fixed[] = {"t_s", "ankle_x_m", "ankle_y_m", "ankle_z_m", "contacts"};
-    static char hinge_names[FS_MAX_HINGES][32];
+    static char hinge_names[FS_MAX_HINGES][48];
     res->ncols = 0;
     for (int i = 0; i < 5; i++)
         res->col_name[res->ncols++] = fixed[i];
