@@ -270,5 +270,13 @@ int cli_demo(const cli_args *a)
         fs_run_free(&res);
     }
     cli_args st = {.command = "stiffness", .input = "scenarios/feet/biomimetic.ini"};
-    return cli_stiffness(&st);
+    int s = cli_stiffness(&st);
+    if (s)
+        return s;
+    /* the main job, small: both feet landing on even, simply and complex uneven ground */
+    printf("\nlanding comparison (2 seeds each; 'footsim campaign scenarios/landing.ini' runs 50):\n");
+    fflush(stdout);
+    cli_args camp = {.command = "campaign", .input = "scenarios/landing_ci.ini", .nset = 1,
+                     .set = {"campaign.seeds=2"}, .out = "results/campaigns/demo"};
+    return cli_campaign(&camp);
 }
