@@ -8,6 +8,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* libpng's complaints end the read through setjmp; the caller reports them, libpng stays quiet. */
+static void png_quiet_error(png_structp png, png_const_charp message)
+{
+    (void)message;
+    png_longjmp(png, 1);
+}
+
+static void png_quiet_warning(png_structp png, png_const_charp message) { (void)png, (void)message; }
+
 fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, double **values, fs_error *err)
 {
     *values = NULL;
@@ -19,11 +28,12 @@ fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, 
         fclose(f);
         return fs_fail(err, FS_BAD_INPUT, "%s: %s is not a PNG image; give an 8- or 16-bit grayscale PNG", where, path);
     }
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, png_quiet_error, png_quiet_warning);
     png_infop info = png ? png_create_info_struct(png) : NULL;
     volatile fs_status status = FS_OK;
     double *volatile out = NULL;
     png_bytep *volatile rows = NULL;
+    unsigned char *volatile pixels = NULL; /* freed on every path, the damaged-image jump included */
     if (!png || !info || setjmp(png_jmpbuf(png))) {
         status = fs_fail(err, FS_BAD_INPUT, "%s: %s is a damaged PNG image", where, path);
         goto done;
@@ -49,9 +59,8 @@ fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, 
     size_t stride = png_get_rowbytes(png, info);
     rows = calloc(height, sizeof *rows);
     out = malloc((size_t)width * height * sizeof *out);
-    unsigned char *pixels = malloc(stride * height);
+    pixels = malloc(stride * height);
     if (!rows || !out || !pixels) {
-        free(pixels);
         status = fs_fail(err, FS_BAD_INPUT, "%s: %s: out of memory", where, path);
         goto done;
     }
@@ -64,13 +73,13 @@ fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, 
             unsigned v = depth == 16 ? ((const unsigned short *)rows[r])[c] : rows[r][c];
             out[(size_t)r * width + c] = v / full;
         }
-    free(pixels);
     *w = (int)width;
     *h = (int)height;
     *values = out;
     out = NULL;
 done:
     png_destroy_read_struct(&png, &info, NULL);
+    free(pixels);
     free(rows);
     free(out);
     fclose(f);
