@@ -29,6 +29,17 @@ static int fs_test_failures;
         }                                                                                    \
     } while (0)
 
+/* A refusal's message starts with "path:line: " (unless line is 0) and contains words. */
+static inline void fs_check_refusal(const char *message, const char *path, int line, const char *words)
+{
+    char prefix[1100];
+    snprintf(prefix, sizeof prefix, "%s:%d: ", path, line);
+    if ((line > 0 && strncmp(message, prefix, strlen(prefix))) || !strstr(message, words)) {
+        fprintf(stderr, "  expected '%s...%s' in: %s\n", line > 0 ? prefix : "", words, message);
+        fs_test_failures++;
+    }
+}
+
 typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case;
 
 /* `test_x NAME` runs only the tests whose name contains NAME. */

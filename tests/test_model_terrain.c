@@ -217,10 +217,7 @@ static void refused(const char *text, int line, const char *words)
     static fs_terrain t;
     fs_error err = {0};
     CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
-    char prefix[160];
-    snprintf(prefix, sizeof prefix, "%s:%d: ", path, line);
-    if ((line > 0 && strncmp(err.message, prefix, strlen(prefix))) || !strstr(err.message, words))
-        fprintf(stderr, "  expected '%s...%s' in: %s\n", prefix, words, err.message), fs_test_failures++;
+    fs_check_refusal(err.message, path, line, words);
 }
 
 static void bad_terrain_files_are_refused(void)
