@@ -45,6 +45,7 @@ int cli_keys(const cli_args *a);
 int cli_demo(const cli_args *a);
 int cli_terrain(const cli_args *a);
 int cli_trial(const cli_args *a);
+int cli_walk(const cli_args *a);
 int cli_campaign(const cli_args *a);  /* src/cli_campaign.c */
 int cli_compare(const cli_args *a);
 

@@ -5,6 +5,7 @@
 #include "footsim/fs_output.h"
 #include "footsim/fs_run.h"
 #include "footsim/fs_trial.h"
+#include "footsim/fs_walk.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -243,6 +244,41 @@ int cli_trial(const cli_args *a)
                r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
     }
     return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
+}
+
+/* ---- walk ------------------------------------------------------------------------------------- */
+
+int cli_walk(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_error err;
+    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+        return fail(&err);
+    fs_walk_result r;
+    fs_status s = fs_walk_run(&sc, &r, &err);
+    const char *foot = sc.geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
+    fs_scenario_free(&sc);
+    if (s != FS_OK)
+        return fail(&err);
+    if (a->json) {
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "foot", foot);
+        cJSON_AddNumberToObject(o, "steps_completed", r.steps_completed);
+        cJSON_AddNumberToObject(o, "falls", r.falls);
+        cJSON_AddNumberToObject(o, "rough_steps", r.rough_steps);
+        cJSON_AddNumberToObject(o, "rough_contacts_mean", r.rough_contacts_mean);
+        cJSON_AddNumberToObject(o, "flat_contacts_mean", r.flat_contacts_mean);
+        cJSON_AddNumberToObject(o, "peak_force_N", r.peak_force_N);
+        cJSON_AddNumberToObject(o, "peak_tilt_deg", r.peak_tilt_deg);
+        print_json(o);
+        cJSON_Delete(o);
+    } else {
+        printf("%s: %s foot: %d steps completed, %d falls; contact points at mid-stance %.1f on the rough "
+               "section (%d steps), %.1f off it; peak ground force %.0f N; ankle tilt up to %.1f deg\n",
+               a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
+               r.peak_force_N, r.peak_tilt_deg);
+    }
+    return 0;
 }
 
 /* ---- keys and demo ---------------------------------------------------------------------------- */

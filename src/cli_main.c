@@ -47,6 +47,9 @@ static const command commands[] = {
     {"compare", cli_compare, "RESULT BASELINE", "",
      "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
      "  baseline's 95 % interval or a median moves further than the baseline's tolerance."},
+    {"walk", cli_walk, "SCENARIO", "--json --set",
+     "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
+     "  toe contact points on the rough section and off it, peak ground force."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "",

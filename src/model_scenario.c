@@ -16,6 +16,8 @@ const fs_key fs_scenario_keys[] = {
      "design file, relative to the scenario's folder"},
     {"scenario", "terrain", FS_KEY_PATH, F(terrain_path), 0, 0, 0, 0, NULL, "", "",
      "terrain file, relative to the scenario's folder; none: a flat plane of default material"},
+    {"scenario", "kind", FS_KEY_CHOICE, F(kind), 0, 0, 0, 0, "experiment|walk", "", "experiment",
+     "experiment: run, trial and campaign use it; walk: the walking machine (footsim walk)"},
     NUM("start", "x_m", start_x_m, -100, 100, 0, "m", "0", "where the foot's heel contact starts"),
     NUM("start", "y_m", start_y_m, -100, 100, 0, "m", "0", "where the foot's heel contact starts"),
     NUM("start", "yaw_deg", yaw_deg, -180, 180, 0, "deg", "0", "the foot turned about z"),
@@ -60,6 +62,15 @@ const fs_key fs_scenario_keys[] = {
     NUM("landing", "tilt_range_deg", land_tilt_range_deg, 0, 45, 0, "deg", "2", "pitch and roll each drawn within +- this"),
     NUM("landing", "landed_tilt_deg", landed_tilt_deg, 0, 90, POS, "deg", "15", "landed: at rest leaning less than this from upright"),
     NUM("landing", "fall_tilt_deg", fall_tilt_deg, 0, 180, POS, "deg", "45", "fell: the lean passed this (the trial stops)"),
+    {"walk", "steps", FS_KEY_INTEGER, F(walk_steps), 1, 1000, 0, 0, NULL, "", "8", "walking machine: steps to take"},
+    NUM("walk", "step_length_m", step_length_m, 0, 10, POS, "m", "0.06", "forward travel of the foot each step"),
+    NUM("walk", "period_s", walk_period_s, 0, 100, POS, "s", "1.0", "one step: stance then swing"),
+    NUM("walk", "stance_fraction", stance_fraction, 0, 1, POS, "", "0.6", "share of the period the foot stands (60 % in human gait)"),
+    NUM("walk", "lift_m", lift_m, 0, 1, POS, "m", "0.02", "the actuator lifts the foot this high in swing"),
+    NUM("walk", "press_m", press_m, 0, 1, 0, "m", "0.004", "and lowers the carriage this far below first contact in stance"),
+    NUM("walk", "suspension_k_N_per_m", suspension_k_N_per_m, 0, 1e9, POS, "N/m", "3e4", "the leg's suspension to the carriage"),
+    NUM("walk", "suspension_c_Ns_per_m", suspension_c_Ns_per_m, 0, 1e7, 0, "N s/m", "1000", "its damping"),
+    NUM("walk", "fall_tilt_deg", walk_fall_tilt_deg, 0, 180, POS, "deg", "30", "a step fails when the ankle body tilts more than this"),
     {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "8",
      "contact points kept per foot shape against the terrain (after merging duplicates)"},
 };
@@ -100,6 +111,8 @@ static fs_status crop_terrain(fs_scenario *sc, fs_error *err)
     double box[4];
     fs_scenario_footprint(sc, box);
     double m = sc->def.region_margin_m;
+    if (sc->def.kind == 1) /* the walking machine's path */
+        box[1] += sc->def.walk_steps * sc->def.step_length_m;
     return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
 }
 

@@ -32,6 +32,8 @@ const fs_key fs_terrain_keys[] = {
     NUM("rough", "correlation_m", correlation_m, 0, 10, POS, "m", "0.015", "distance at which the height correlation falls to 1/e"),
     NUM("rough", "resolution_m", resolution_m, 1e-4, 1, 0, "m", "0.001", "lattice spacing of the heightfield"),
     INT("rough", "seed", seed, 0, 2147483647, "1", "random seed of the roughness and the rocks"),
+    NUM("rough", "patch_x_min_m", patch_x_min_m, -1e3, 1e3, 0, "m", "-1000", "the roughness starts here along x (a rough section)"),
+    NUM("rough", "patch_x_max_m", patch_x_max_m, -1e3, 1e3, 0, "m", "1000", "and ends here"),
     NUM("bump", "height_m", bump_height_m, 0, 1, POS, "m", "0.008", "simply_uneven: height of the one rock"),
     NUM("bump", "radius_m", bump_radius_m, 0, 1, POS, "m", "0.015", "simply_uneven: its radius (a cosine-squared cap)"),
     NUM("bump", "x_m", bump_x_m, -10, 10, 0, "m", "0.06", "simply_uneven: its centre"),
@@ -105,6 +107,14 @@ static void make_kernel(const fs_terrain_def *d, kernel *k)
     k->gain = d->rms_m / sum2;
 }
 
+/* 1 inside the rough section, 0 outside, linear over one correlation length at its ends. */
+static double patch_window(const fs_terrain_def *d, double x)
+{
+    double ramp = d->correlation_m;
+    double a = (x - d->patch_x_min_m) / ramp, b = (d->patch_x_max_m - x) / ramp;
+    return fmin(1.0, fmax(0.0, fmin(a, b)));
+}
+
 /* Roughness on lattice rows j0..j0+ny-1, columns i0..i0+nx-1 into out (row-major). Each value
  * depends only on the noise around its own node, summed in a fixed order: any crop agrees. */
 static fs_status rough_patch(const fs_terrain_def *d, long i0, long j0, int nx, int ny, double *out, fs_error *err)
@@ -128,7 +138,7 @@ static fs_status rough_patch(const fs_terrain_def *d, long i0, long j0, int nx, 
             double s = 0;
             for (int p = -r; p <= r; p++)
                 s += k.w[p + r] * rows[(size_t)j * wx + i + r + p];
-            out[(size_t)j * nx + i] = k.gain * s;
+            out[(size_t)j * nx + i] = k.gain * s * patch_window(d, (double)(i0 + i) * d->resolution_m);
         }
     free(rows);
     return FS_OK;
@@ -321,6 +331,9 @@ static fs_status check_terrain(const fs_terrain *t, const fs_config *cfg, fs_err
                        fs_config_where(cfg, "rocks", "radius_max_m", where, sizeof where));
     if (d->kind == FS_TERRAIN_HEIGHTMAP && !d->heightmap_path[0])
         return fs_fail(err, FS_BAD_INPUT, "%s: a heightmap terrain needs [heightmap] file = a grayscale PNG", t->path);
+    if (d->patch_x_max_m <= d->patch_x_min_m)
+        return fs_fail(err, FS_BAD_INPUT, "%s: patch_x_max_m is not above patch_x_min_m; make the section longer",
+                       fs_config_where(cfg, "rough", "patch_x_max_m", where, sizeof where));
     if (has_roughness(t) && d->correlation_m / d->resolution_m > 300)
         return fs_fail(err, FS_BAD_INPUT,
                        "%s: correlation_m is %.0f lattice cells; at most 300: use a coarser resolution_m",

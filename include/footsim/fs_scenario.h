@@ -14,6 +14,7 @@
 typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
 
 typedef struct fs_scenario_def {
+    int kind;                  /* 0 experiment (run, trial), 1 walk (the walking machine) */
     char design_path[FS_PATH_MAX];
     char terrain_path[FS_PATH_MAX];
     double start_x_m, start_y_m, yaw_deg, pitch_deg, roll_deg; /* where the foot starts */
@@ -43,6 +44,10 @@ typedef struct fs_scenario_def {
     /* [landing]: the drawn pose and the rules of a landing trial */
     double land_x_range_m, land_y_range_m, land_yaw_range_deg, land_tilt_range_deg;
     double landed_tilt_deg, fall_tilt_deg;
+    /* [walk]: the walking machine (Fig. 16) */
+    int walk_steps;
+    double step_length_m, walk_period_s, stance_fraction, lift_m, press_m;
+    double suspension_k_N_per_m, suspension_c_Ns_per_m, walk_fall_tilt_deg;
 } fs_scenario_def;
 
 typedef struct fs_scenario {

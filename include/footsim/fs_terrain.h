@@ -30,6 +30,8 @@ typedef struct fs_terrain_def {
     int step_count, step_pattern;   /* stepped */
     double rms_m, correlation_m, resolution_m; /* rough (and the base of complex_uneven) */
     int seed;
+    double patch_x_min_m, patch_x_max_m; /* the roughness only between these x, faded in over
+                                            one correlation length */
     double bump_height_m, bump_radius_m, bump_x_m, bump_y_m; /* simply_uneven */
     int rock_count;                 /* complex_uneven */
     double rock_height_min_m, rock_height_max_m, rock_radius_min_m, rock_radius_max_m, rock_field_m;

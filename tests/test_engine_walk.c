@@ -1,0 +1,35 @@
+/* Tests of engine_walk.c: the walking machine steps as its trajectory says. */
+#include "fs_test.h"
+
+#include "footsim/fs_walk.h"
+
+/* Every step is judged once, as completed or a fall; on flat ground the flat foot completes all,
+ * and the ground carries the body's weight at least (26 kg: 255 N) at some moment. */
+static void machine_takes_its_steps(void)
+{
+    const char *set[] = {"walk.steps=3", "scenario.terrain=../terrains/flat.ini", "foot.kind=flat"};
+    static fs_scenario sc;
+    fs_error err;
+    CHECK(fs_scenario_load("scenarios/walking.ini", set, 3, &sc, &err) == FS_OK);
+    fs_walk_result r;
+    CHECK(fs_walk_run(&sc, &r, &err) == FS_OK);
+    CHECK(r.steps_completed + r.falls == 3);
+    CHECK(r.steps_completed == 3);
+    CHECK(r.rough_steps == 0);
+    CHECK(r.peak_force_N > sc.def.robot_kg * sc.def.gravity_m_per_s2);
+    CHECK_NEAR(r.end_time_s, 3 * sc.def.walk_period_s, sc.def.step_s);
+    fs_scenario_free(&sc);
+}
+
+/* A scenario that is not a walk is refused. */
+static void only_walk_scenarios_walk(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    CHECK(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
+    fs_walk_result r;
+    CHECK(fs_walk_run(&sc, &r, &err) == FS_BAD_INPUT);
+    fs_scenario_free(&sc);
+}
+
+FS_TEST_MAIN(TEST(machine_takes_its_steps), TEST(only_walk_scenarios_walk))
