@@ -92,9 +92,6 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
     fs_status s = fs_sim_build(&sim, sc, NULL, err);
     if (s != FS_OK)
         return s;
-    char context[FS_PATH_MAX + 32];
-    snprintf(context, sizeof context, "%s", sc->path);
-    fs_ode_context(context);
     fs_sim_ankle(&sim, res->ankle_start_m);
     res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
     log_row(res, &sim);

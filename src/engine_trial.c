@@ -53,7 +53,7 @@ typedef struct watch {
 
 static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, double h)
 {
-    double f[3], a[3];
+    double f[3];
     fs_sim_ground_force(sim, f);
     double tilt = fs_sim_robot_tilt(sim) / DEG;
     out->peak_tilt_deg = fmax(out->peak_tilt_deg, tilt);
@@ -73,8 +73,6 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
         out->impact_impulse_Ns += f[2] * h;
         w->arrested = dBodyGetLinearVel(lead)[2] >= 0;
     }
-    fs_sim_ankle(sim, a);
-    (void)a;
 }
 
 static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)

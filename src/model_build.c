@@ -255,6 +255,7 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     if (!opts)
         opts = &normal;
     memset(sim, 0, sizeof *sim);
+    fs_ode_context(sc->path); /* ODE's complaints name the scenario */
     sim->feedback = calloc(FS_MAX_STEP_CONTACTS, sizeof *sim->feedback);
     if (!sim->feedback)
         return fs_fail(err, FS_BAD_INPUT, "%s: out of memory", sc->path);
