@@ -218,7 +218,7 @@ int cli_render_compare(const cli_args *a)
                sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), frames_dir, n - 1, n, o.fps, o.width,
                o.height, fs_render_camera_names[o.camera], dir);
         if (o.video)
-            s = cli_frames_video(dir, frames_dir, o.fps, n);
+            s = cli_frames_video(dir, frames_dir, o.fps, n, dir);
     }
     for (int k = 0; k < 2; k++) {
         fs_render_close(r[k]);

@@ -141,7 +141,7 @@ static int run_program(char *const argv[])
     return WIFEXITED(status) ? WEXITSTATUS(status) : 126;
 }
 
-int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nframes)
+int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nframes, const char *shown_dir)
 {
     char input[CLI_FRAMES_PATH + 16], path[CLI_FRAMES_PATH + 16], temp[CLI_FRAMES_PATH + 64], rate[32], count[32];
     snprintf(input, sizeof input, "%s/%%06d.png", frames_dir);
@@ -155,8 +155,8 @@ int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nf
                     "-pix_fmt", "yuv420p", temp, NULL};
     int s = run_program(argv);
     if (s == 127) {
-        printf("  video: not made: ffmpeg is not installed (apt-get install ffmpeg); the frames are in %s/\n",
-               frames_dir);
+        printf("  video: not made: ffmpeg is not installed (apt-get install ffmpeg); the frames are in %s/frames/\n",
+               shown_dir);
         return 0;
     }
     if (s != 0 || rename(temp, path) != 0) {
@@ -165,7 +165,7 @@ int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nf
                 s, frames_dir);
         return FS_IO;
     }
-    printf("  video: %s\n", path);
+    printf("  video: %s/video.mp4\n", shown_dir);
     return 0;
 }
 
@@ -217,16 +217,16 @@ int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, c
     return 0;
 }
 
-int cli_frames_close(cli_frames *f, int ok)
+int cli_frames_close(cli_frames *f, int ok, const char *shown_dir)
 {
     if (!f)
         return 0;
     int s = 0;
     if (ok) {
-        printf("  frames: %s/000000.png ... %06d.png (%d at %g per simulated second, %dx%d, camera %s)\n",
-               f->frames_dir, f->n - 1, f->n, f->o.fps, f->o.width, f->o.height, fs_render_camera_names[f->o.camera]);
+        printf("  frames: %s/frames/000000.png ... %06d.png (%d at %g per simulated second, %dx%d, camera %s)\n",
+               shown_dir, f->n - 1, f->n, f->o.fps, f->o.width, f->o.height, fs_render_camera_names[f->o.camera]);
         if (f->o.video)
-            s = cli_frames_video(f->dir, f->frames_dir, f->o.fps, f->n);
+            s = cli_frames_video(f->dir, f->frames_dir, f->o.fps, f->n, shown_dir);
     }
     fs_render_close(f->r);
     free(f);

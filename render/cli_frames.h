@@ -31,7 +31,7 @@ fs_status cli_frames_write(const fs_render *r, const char *frames_dir, int index
 
 /* For --video: DIR/video.mp4 from the frames with ffmpeg when it is installed (when it is not,
  * says so and returns 0); 4 when ffmpeg fails. */
-int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nframes);
+int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nframes, const char *shown_dir);
 
 /* Opens a renderer, printing why not. */
 int cli_render_open(fs_render **r, int w, int h);

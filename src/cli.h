@@ -32,7 +32,7 @@ typedef struct fs_scenario fs_scenario;
 typedef struct cli_frames cli_frames;
 int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
                     fs_run_observer *obs);
-int cli_frames_close(cli_frames *frames, int ok);
+int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir);
 
 /* render-compare A B: both runs side by side in DIR/frames/, and DIR/filmstrip.png
  * (render/cli_compare.c; src/cli_render.c without the renderer: exit 2). */

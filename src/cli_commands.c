@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* The stiffness model and ODE must agree this closely (issue 2's acceptance bound). */
 static const double STIFFNESS_TOLERANCE = 0.01;
@@ -29,31 +30,31 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
         snprintf(dir, sizeof dir, "%s", a->out);
     else
         snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
-    /* the folder must be writable, and the frame options right, before anything is simulated */
-    if (fs_make_dirs(dir, &err) != FS_OK)
+    /* the folder must be writable, and the frame options right, before anything is simulated;
+     * everything goes to a partial folder beside it, swapped in whole at the end */
+    char partial[FS_PATH_MAX + 96];
+    snprintf(partial, sizeof partial, "%s.partial.%ld", dir, (long)getpid());
+    if (fs_make_dirs(dir, &err) != FS_OK || fs_make_dirs(partial, &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     if (a->frames) {
-        int fs = cli_frames_open(a, sc, dir, &frames, &observer);
-        if (fs)
+        int fs = cli_frames_open(a, sc, partial, &frames, &observer);
+        if (fs) {
+            fs_remove_tree(partial);
             return fs;
+        }
         obs = &observer;
     }
     fs_status rs = fs_run(sc, obs, res, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK) : 0;
-    if (rs != FS_OK) {
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, dir) : 0;
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, partial, &err)) == FS_OK)
+        rs = fs_commit_dir(partial, dir, &err);
+    else
+        fs_remove_tree(partial);
+    if (rs != FS_OK || fstatus) {
         fs_run_free(res);
-        return fail(&err);
-    }
-    if (fstatus) {
-        fs_run_free(res);
-        return fstatus;
-    }
-    fs_status s = fs_run_write(sc, res, dir, &err);
-    if (s != FS_OK) {
-        fs_run_free(res);
-        return fail(&err);
+        return fstatus ? fstatus : fail(&err);
     }
     printf("%s: %s foot, %.1f kg at %.0f deg: ankle drop %.3f mm, settled after %.3f s (%s at t = %.3f s)\n"
            "  results: %s/metrics.json, %s/trajectory.csv\n",

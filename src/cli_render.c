@@ -25,8 +25,8 @@ int cli_render_compare(const cli_args *a)
     return FS_BAD_INPUT;
 }
 
-int cli_frames_close(cli_frames *frames, int ok)
+int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir)
 {
-    (void)frames, (void)ok;
+    (void)frames, (void)ok, (void)shown_dir;
     return 0;
 }

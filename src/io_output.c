@@ -1,6 +1,9 @@
-/* io_output.c: atomic writes and folder creation. */
+/* io_output.c: atomic writes, atomic folders and folder creation. */
+#define _GNU_SOURCE /* renameat2: swapping two folders in one step (Linux) */
 #include "footsim/fs_output.h"
 
+#include <fcntl.h>
+#include <ftw.h>
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -68,4 +71,26 @@ fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_err
         return FS_IO;
     fwrite(data, 1, len, f);
     return fs_commit_file(f, temp, path, 1, err);
+}
+
+static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
+{
+    (void)st, (void)flag, (void)ftw;
+    return remove(path);
+}
+
+void fs_remove_tree(const char *dir) { nftw(dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS); }
+
+fs_status fs_commit_dir(const char *partial, const char *final, fs_error *err)
+{
+    /* swap the two folders in one step, then remove the old one; or move the new one in */
+    if (renameat2(AT_FDCWD, partial, AT_FDCWD, final, RENAME_EXCHANGE) == 0) {
+        fs_remove_tree(partial);
+        return FS_OK;
+    }
+    if (errno == ENOENT && rename(partial, final) == 0)
+        return FS_OK;
+    int e = errno;
+    fs_remove_tree(partial);
+    return fs_fail(err, FS_IO, "%s: cannot put the results in place (%s)", final, strerror(e));
 }

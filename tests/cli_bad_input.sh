@@ -68,7 +68,6 @@ expect 2 "give two summary.json files" -- compare results/baseline/landing.json
 # frame options: refused before the simulation starts
 sl=scenarios/static_load.ini
 if [ "$renderer" = render ]; then
-    mkdir -p "$tmp/f6" && : >"$tmp/f6/frames"
     expect 2 "--size 0x10: not a frame size; allowed: WxH" -- run $sl --frames --size 0x10 --out "$tmp/f1"
     expect 2 "--size 9000x10: not a frame size; allowed: WxH with W from 1 and H from 1, each to 8192" -- run $sl --frames --size 9000x10 --out "$tmp/f1"
     expect 2 "--size 640: not a frame size" -- run $sl --frames --size 640 --out "$tmp/f1"
@@ -77,7 +76,6 @@ if [ "$renderer" = render ]; then
     expect 2 "--fps abc: not a frame rate" -- run $sl --frames --fps abc --out "$tmp/f3"
     expect 2 "--fps 20000: not a frame rate" -- run $sl --frames --fps 20000 --out "$tmp/f3"
     expect 2 "--fps 2000: not a frame rate.*one frame per step of 0.001 s" -- run $sl --frames --fps 2000 --set run.step_s=1e-3 --out "$tmp/f4"
-    expect 2 "frames: not a folder" -- run $sl --frames --out "$tmp/f6"
     expect 2 "cannot create folder" -- run $sl --frames --out /proc/footsim/frames
     expect 2 "give two scenario files" -- render-compare $sl --out "$tmp/f5"
     expect 2 "--size 1x10: not a frame size; allowed: WxH with W from 2" -- render-compare $sl $sl --size 1x10 --out "$tmp/f5"
