@@ -71,6 +71,7 @@ int cli_run(const cli_args *a)
     int s = run_scenario(a, &res, &sc);
     if (s == 0)
         fs_run_free(&res);
+    fs_scenario_free(&sc);
     return s;
 }
 
@@ -302,6 +303,7 @@ int cli_demo(const cli_args *a)
         fs_run_result res;
         cli_args run = {.command = "run", .input = scenarios[i]};
         int s = run_scenario(&run, &res, &sc);
+        fs_scenario_free(&sc);
         if (s)
             return s;
         fs_run_free(&res);

@@ -3,6 +3,8 @@
 #include "footsim/fs_design.h"
 #include "footsim/fs_terrain.h"
 
+#include "fuzz_file.h"
+
 #include <stdint.h>
 #include <stdio.h>
 #include <unistd.h>
@@ -10,12 +12,8 @@
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     char path[64];
-    snprintf(path, sizeof path, "/tmp/footsim-fuzz-%ld.ini", (long)getpid());
-    FILE *f = fopen(path, "wb");
-    if (!f)
+    if (!fuzz_write_temp(data, size, ".ini", path, sizeof path))
         return 0;
-    fwrite(data, 1, size, f);
-    fclose(f);
     static fs_design_def def;
     static fs_foot_geom geom;
     static fs_terrain t;

@@ -1,6 +1,8 @@
 /* libFuzzer target: heightmap images. Any input must be refused or read cleanly. */
 #include "footsim/fs_png.h"
 
+#include "fuzz_file.h"
+
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,12 +11,8 @@
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     char path[64];
-    snprintf(path, sizeof path, "/tmp/footsim-fuzz-%ld.png", (long)getpid());
-    FILE *f = fopen(path, "wb");
-    if (!f)
+    if (!fuzz_write_temp(data, size, ".png", path, sizeof path))
         return 0;
-    fwrite(data, 1, size, f);
-    fclose(f);
     int w, h;
     double *v = NULL;
     fs_error err;
