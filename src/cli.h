@@ -2,6 +2,8 @@
 #ifndef FS_CLI_H
 #define FS_CLI_H
 
+#include <stddef.h>
+
 enum { CLI_MAX_SET = 256 };
 
 /* What every subcommand may be given. */
@@ -21,6 +23,7 @@ typedef struct cli_args {
     const char *scenario;           /* --scenario FILE */
     const char *seed;               /* --seed N */
     const char *jobs;               /* -j N: worker processes (campaign) */
+    int quick;                      /* --quick: a smaller sweep (bench) */
 } cli_args;
 
 /* Frames of a run (render/cli_frames.c; src/cli_render.c without the renderer). cli_frames_open
@@ -48,6 +51,26 @@ int cli_trial(const cli_args *a);
 int cli_walk(const cli_args *a);
 int cli_campaign(const cli_args *a);  /* src/cli_campaign.c */
 int cli_compare(const cli_args *a);
+
+/* bench precision|stability|speed (src/cli_bench*.c). Each writes its CSVs, charts and a Markdown
+ * table to --out DIR (default results/bench/), whole or not at all. */
+int cli_bench(const cli_args *a);
+int cli_bench_precision(const cli_args *a, const char *dir);
+int cli_bench_stability(const cli_args *a, const char *dir);
+int cli_bench_speed(const cli_args *a, const char *dir);
+
+/* Seconds on a monotonic clock, for timings. */
+double cli_clock_s(void);
+
+/* The machine a benchmark ran on, one line: CPU model, cores, compiler, ODE version. */
+void cli_machine(char *out, size_t size);
+
+/* Whether an executable is on PATH. */
+int cli_have_program(const char *name);
+
+/* Runs 'gnuplot -e "out='TMP'" SCRIPT' in dir and renames TMP to dir/png_name: the chart whole or
+ * not at all. Without gnuplot, or when it fails, says so (naming `who`) and returns 0. */
+int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who);
 
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);

@@ -274,55 +274,6 @@ static fs_status run_trials(pool *p, int jobs, fs_error *err)
     return s;
 }
 
-/* ---- the chart ---------------------------------------------------------------------------- */
-
-static int have_program(const char *name)
-{
-    const char *path = getenv("PATH");
-    char dir[FS_PATH_MAX], full[FS_PATH_MAX + 64];
-    for (const char *p = path ? path : "/usr/bin:/bin"; *p;) {
-        size_t n = strcspn(p, ":");
-        snprintf(dir, sizeof dir, "%.*s", (int)n, p);
-        snprintf(full, sizeof full, "%s/%s", n ? dir : ".", name);
-        if (access(full, X_OK) == 0)
-            return 1;
-        p += n + (p[n] == ':');
-    }
-    return 0;
-}
-
-/* Draws dir/success.png with gnuplot from chart.gp, whole or not at all; says why when it cannot. */
-static void draw_chart(const char *dir)
-{
-    char png[2 * FS_PATH_MAX], temp[64], var[128];
-    snprintf(png, sizeof png, "%s/success.png", dir);
-    if (!have_program("gnuplot")) {
-        remove(png); /* a chart of an earlier run would not match these results */
-        fprintf(stderr, "footsim campaign: gnuplot is not installed: no chart %s (apt-get install gnuplot-nox "
-                        "draws it; or run 'gnuplot chart.gp' in %s later)\n", png, dir);
-        return;
-    }
-    snprintf(temp, sizeof temp, "success.png.tmp.%ld", (long)getpid());
-    snprintf(var, sizeof var, "out='%s'", temp);
-    fflush(stdout);
-    fflush(stderr);
-    pid_t pid = fork();
-    if (pid == 0) {
-        if (chdir(dir) == 0)
-            execlp("gnuplot", "gnuplot", "-e", var, "chart.gp", (char *)NULL);
-        _exit(127);
-    }
-    int status = -1;
-    if (pid > 0)
-        waitpid(pid, &status, 0);
-    char full[2 * FS_PATH_MAX];
-    snprintf(full, sizeof full, "%s/%s", dir, temp);
-    if (pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0 && rename(full, png) == 0)
-        return;
-    remove(full);
-    fprintf(stderr, "footsim campaign: gnuplot failed: no chart %s (the data and script are in %s)\n", png, dir);
-}
-
 /* ---- campaign ----------------------------------------------------------------------------- */
 
 static int parse_jobs(const cli_args *a, int *jobs)
@@ -365,7 +316,7 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, const ch
     if (s == FS_OK)
         s = fs_campaign_write_chart(c, rows, dir, &err);
     if (s == FS_OK)
-        draw_chart(dir);
+        cli_gnuplot(dir, "chart.gp", "success.png", "campaign");
     if (s == FS_OK)
         s = fs_campaign_write_summary(c, rows, dir, &err);
     if (s != FS_OK) {

@@ -50,6 +50,13 @@ static const command commands[] = {
     {"walk", cli_walk, "SCENARIO", "--json --set",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
+    {"bench", cli_bench, "precision|stability|speed", "--quick --out",
+     "Benchmarks (docs/bench.md), written to DIR (default: results/bench/):\n"
+     "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
+     "             against the planar reference model, and a landing trial against its finest run;\n"
+     "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height;\n"
+     "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves.\n"
+     "  --quick runs a smaller sweep (minutes instead of tens of minutes)."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "",
@@ -77,6 +84,8 @@ static void command_help(const command *c)
         printf(" [-j N]");
     if (strstr(c->options, "--json"))
         printf(" [--json]");
+    if (strstr(c->options, "--quick"))
+        printf(" [--quick]");
     if (strstr(c->options, "--height"))
         printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
     if (strstr(c->options, "--frames"))
@@ -134,6 +143,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->jobs = argv[++i];
         else if (!strncmp(arg, "-j", 2) && strstr(c->options, "-j "))
             a->jobs = arg + 2;
+        else if (!strcmp(arg, "--quick"))
+            a->quick = 1;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--frames"))

@@ -1,0 +1,14 @@
+/* cli_bench_precision.c: 'footsim bench precision' (not built yet). */
+#include "cli.h"
+
+#include "footsim/fs_error.h"
+
+#include <stdio.h>
+
+int cli_bench_precision(const cli_args *a, const char *dir)
+{
+    (void)a;
+    (void)dir;
+    fprintf(stderr, "footsim bench precision: not built yet\n");
+    return FS_BAD_INPUT;
+}
