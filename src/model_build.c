@@ -148,6 +148,14 @@ static void build_joints(fs_sim *sim)
         dJointSetHingeAxis(j, x.x, x.y, x.z);
         sim->hinge[i] = j;
     }
+    for (int i = 0; i < g->npins; i++) {
+        dJointID j = dJointCreateHinge(sim->world, 0);
+        dJointAttach(j, sim->body[g->pin[i].body], 0);
+        fs_vec3 a = place(sim, g->pin[i].anchor), x = turn(sim, g->pin[i].axis);
+        dJointSetHingeAnchor(j, a.x, a.y, a.z);
+        dJointSetHingeAxis(j, x.x, x.y, x.z);
+        sim->pin[i] = j;
+    }
     for (int i = 0; i < g->nsprings; i++) {
         const fs_spring_geom *s = &g->spring[i];
         fs_vec3 a = place(sim, s->p1), b = place(sim, s->p2);
@@ -262,6 +270,14 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     sim->sc = sc;
     sim->geom = &sc->geom;
     const fs_scenario_def *s = &sc->def;
+    int share = 1;
+    if (opts->pinned_chain) {
+        fs_status made = fs_design_pinned_chain(&sc->design, &sc->geom, opts->pinned_chain - 1, &sim->own_geom, err);
+        if (made != FS_OK)
+            return made;
+        sim->geom = &sim->own_geom;
+        share = FS_CHAINS;
+    }
     double tilt = s->tilt_deg * DEG;
     sim->down[0] = sin(tilt);
     sim->down[2] = -cos(tilt);
@@ -280,7 +296,7 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     sim->t0[0] = s->start_x_m;
     sim->t0[1] = s->start_y_m;
     sim->t0[2] = 0;
-    if (opts->with_ground) {
+    if (opts->with_ground && !opts->pinned_chain) {
         sim->t0[2] = start_lift(sim);
         /* a hash space: a heightfield comes as many tiles */
         sim->ground = dHashSpaceCreate(0);
@@ -301,7 +317,7 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     }
     const fs_vec3 a = place(sim, sim->geom->ankle);
     dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a.x, a.y, a.z, sim->ankle_local);
-    sim->load_N = s->load_kg * s->gravity_m_per_s2;
+    sim->load_N = s->load_kg * s->gravity_m_per_s2 / share;
     contact_template(sim);
     body_reach(sim);
     return scene_ground(sim, err);

@@ -287,3 +287,67 @@ fs_status fs_design_load(const char *path, const char *const *overrides, int nov
     fs_config_free(&cfg);
     return s;
 }
+
+fs_status fs_design_pinned_chain(const fs_design_def *d, const fs_foot_geom *foot, int chain, fs_foot_geom *out,
+                                 fs_error *err)
+{
+    if (foot->kind != FS_FOOT_BIOMIMETIC)
+        return fs_fail(err, FS_BAD_INPUT, "a pinned chain needs the biomimetic foot (foot.kind = biomimetic)");
+    if (chain < 0 || chain >= FS_CHAINS || d->splay_deg[chain] != 0)
+        return fs_fail(err, FS_BAD_INPUT, "chain %d: give an unsplayed chain (1 to %d with chains.splay_deg = 0)",
+                       chain + 1, FS_CHAINS);
+    memset(out, 0, sizeof *out);
+    out->kind = FS_FOOT_BIOMIMETIC;
+    const int body_of[4] = {FS_BODY_HEEL, FS_BODY_TALUS, foot->chain[chain].metatarsal, foot->chain[chain].phalanx};
+    const double share[4] = {1.0 / FS_CHAINS, 1.0 / FS_CHAINS, 1, 1};
+    int index[FS_MAX_BODIES];
+    for (int i = 0; i < FS_MAX_BODIES; i++)
+        index[i] = -1;
+    /* bodies, with the shared ones' share */
+    for (int k = 0; k < 4; k++) {
+        out->body[k] = foot->body[body_of[k]];
+        out->body[k].mass_kg *= share[k];
+        for (int r = 0; r < 9; r++)
+            out->body[k].inertia[r] *= share[k];
+        out->total_mass_kg += out->body[k].mass_kg;
+        index[body_of[k]] = k;
+    }
+    out->nbodies = 4;
+    /* the ankle, midfoot and MTP hinges */
+    const int hinge_of[3] = {0, foot->chain[chain].midfoot_hinge, foot->chain[chain].mtp_hinge};
+    for (int k = 0; k < 3; k++) {
+        out->hinge[k] = foot->hinge[hinge_of[k]];
+        out->hinge[k].body1 = index[out->hinge[k].body1];
+        out->hinge[k].body2 = index[out->hinge[k].body2];
+    }
+    out->nhinges = 3;
+    for (int k = 0; k < 3; k++) {
+        out->spring[k] = foot->spring[foot->chain[chain].spring[k]];
+        out->spring[k].body1 = index[out->spring[k].body1];
+        out->spring[k].body2 = index[out->spring[k].body2];
+        out->chain[0].spring[k] = k;
+    }
+    out->nsprings = 3;
+    /* pins: the heel sphere's centre in the chain's plane, and the toe sphere's centre */
+    fs_vec3 axis = foot->hinge[hinge_of[1]].axis;
+    double heel = d->heel_deg * DEG;
+    fs_vec3 H = fs_sub(foot->ankle, fs_v3(d->l1_m * cos(heel), 0, d->l1_m * sin(heel)));
+    H.y = foot->chain[chain].midfoot.y;
+    out->pin[0].body = 0;
+    out->pin[0].anchor = H;
+    out->pin[1].body = 3;
+    out->pin[1].anchor = foot->chain[chain].toe;
+    out->pin[0].axis = out->pin[1].axis = axis;
+    out->npins = 2;
+    out->ankle_body = index[foot->ankle_body];
+    out->ankle = foot->ankle;
+    out->chain[0].metatarsal = 2;
+    out->chain[0].phalanx = 3;
+    out->chain[0].midfoot_hinge = 1;
+    out->chain[0].mtp_hinge = 2;
+    out->chain[0].midfoot = foot->chain[chain].midfoot;
+    out->chain[0].mtp = foot->chain[chain].mtp;
+    out->chain[0].toe = foot->chain[chain].toe;
+    out->chain[0].metatarsal_deg = foot->chain[chain].metatarsal_deg;
+    return FS_OK;
+}

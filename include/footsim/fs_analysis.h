@@ -7,7 +7,10 @@
  *   in ODE by torque probes with the rear foot held and gravity off.
  * - fs_planar_*: one chain in its plane with heel and toe rolling on the ground, solved for its
  *   static equilibrium under a load at the ankle: the stiffness model's prediction of how the foot
- *   deflects, shared with no ODE code. */
+ *   deflects, shared with no ODE code.
+ * - fs_reference_*: the paper's dynamic model (Sec. IV) of one chain in its plane, heel and toe
+ *   pinned at their sphere centres, integrated by GSL's rk8pd: the ground truth for the ODE model's
+ *   transient (docs/bench.md), also shared with no ODE code. */
 #ifndef FS_ANALYSIS_H
 #define FS_ANALYSIS_H
 
@@ -53,5 +56,35 @@ typedef struct fs_planar_load {
  * Exact for a design whose chains are alike and unsplayed; a projection otherwise. */
 fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, int chain, const fs_planar_load *load,
                                 fs_planar_result *out, fs_error *err);
+
+/* The reference transient: chain `chain` (0-based, unsplayed) from rest, the load rising linearly
+ * over ramp_s. Masses: a fifth of heel and talus, the whole metatarsal and phalanx; a fifth of the
+ * load. */
+typedef struct fs_reference_def {
+    int chain;
+    double load_N;             /* on the whole foot, at the ankle */
+    double ramp_s;
+    double gravity_m_per_s2;
+    double tilt_rad;           /* load and gravity turned as in fs_scenario_def.tilt_deg */
+    double tolerance;          /* rk8pd's absolute and relative error bound per step */
+    double q0_offset_rad[2];   /* a start displaced from the neutral pose (heel, talus directions) */
+} fs_reference_def;
+
+typedef struct fs_reference_state {
+    double t_s;
+    double ankle_m[3];         /* the ankle joint, world coordinates */
+    double joint_rad[3];       /* ankle, midfoot, MTP from the neutral pose (positive: distal link up) */
+    double energy_J;           /* kinetic + springs + gravity + the load's potential at its current size */
+} fs_reference_state;
+
+/* Fills out[i] with the state at t = i * dt_s, i < n. FS_BAD_INPUT for a splayed chain or a
+ * non-biomimetic design; FS_NUMERICAL if the loop stops closing (the chain folds through). */
+fs_status fs_reference_run(const fs_design_def *d, const fs_foot_geom *g, const fs_reference_def *def, double dt_s,
+                           int n, fs_reference_state *out, fs_error *err);
+
+/* The chain linearised about its neutral pose with no load, gravity or damping: its two natural
+ * frequencies (rad/s, ascending) and mode shapes (unit vectors in heel and talus direction). */
+fs_status fs_reference_modes(const fs_design_def *d, const fs_foot_geom *g, int chain, double omega[2],
+                             double shape[2][2], fs_error *err);
 
 #endif

@@ -87,6 +87,8 @@ typedef struct fs_foot_geom {
     fs_sphere_geom sphere[FS_MAX_SPHERES];
     int has_box;
     fs_vec3 box_size, box_centre; /* the flat sole, on body 0 */
+    int npins;           /* hinges to the world (a pinned chain, fs_design_pinned_chain) */
+    struct { int body; fs_vec3 anchor, axis; } pin[2];
     int ankle_body;      /* the body the load acts on */
     fs_vec3 ankle;       /* the load's point: the ankle joint centre */
     double total_mass_kg;
@@ -115,5 +117,13 @@ void fs_design_defaults(fs_design_def *def);
 /* Builds the geometry of a def; cfg (may be NULL) only locates keys in messages. Refuses a
  * def whose toe cannot reach the ground or whose ball would sit below it. */
 fs_status fs_design_geometry(const fs_design_def *def, const fs_config *cfg, fs_foot_geom *geom, fs_error *err);
+
+/* One chain of a biomimetic foot alone, for comparison with the planar dynamic reference
+ * (fs_reference_run): heel, talus, metatarsal and phalanx (0-3), with a fifth of the heel's and
+ * talus's mass and inertia (they are shared by five chains), the chain's three hinges and three
+ * springs, no contact shapes, and the heel and the toe pinned to the world at their sphere centres
+ * by hinges about the chain's axis. The chain must be unsplayed. */
+fs_status fs_design_pinned_chain(const fs_design_def *d, const fs_foot_geom *foot, int chain, fs_foot_geom *out,
+                                 fs_error *err);
 
 #endif

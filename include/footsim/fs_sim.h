@@ -20,11 +20,14 @@ enum { FS_MAX_CONTACTS = 256, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * 64 }
 typedef struct fs_sim_options {
     int with_ground;        /* 0: no ground (the stiffness probes) */
     int hold_rear_foot;     /* 1: heel and talus kinematic, fixed where they are */
+    int pinned_chain;       /* c (1-5): chain c alone, heel and toe pinned to the world, a fifth of the
+                               load and no ground (fs_design_pinned_chain); 0: the whole foot */
 } fs_sim_options;
 
 typedef struct fs_sim {
     const fs_scenario *sc;
-    const fs_foot_geom *geom;
+    const fs_foot_geom *geom; /* the scenario's, or own_geom for a pinned chain */
+    fs_foot_geom own_geom;
     dWorldID world;
     dSpaceID space;        /* the foot's shapes */
     dSpaceID ground;       /* the terrain's shapes (plane, boxes or heightfield); NULL without ground */
@@ -33,6 +36,7 @@ typedef struct fs_sim {
     dJointGroupID contact_group;
     dBodyID body[FS_MAX_BODIES];
     dJointID hinge[FS_MAX_HINGES];
+    dJointID pin[2];       /* a pinned chain's hinges to the world */
     dGeomID shape[FS_MAX_SPHERES + 1];
     int nshapes;
     fs_spring spring[FS_MAX_SPRINGS];
