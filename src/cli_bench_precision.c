@@ -1,14 +1,476 @@
-/* cli_bench_precision.c: 'footsim bench precision' (not built yet). */
+/* cli_bench_precision.c: 'footsim bench precision': run time against error.
+ *
+ * Two scenes, each run in ODE at every step size, stepper and spring implementation:
+ * - chain: the middle toe chain pinned at heel and toe under the static_load scenario's load (the
+ *   paper's Fig. 11 transient), against the planar dynamic reference (analysis_reference.c);
+ * - landing: the landing trial on rough ground (seed 1's pose), against its own run at 1e-5 s with
+ *   dWorldStep.
+ * Error is the ankle's distance (and the hinge angles' difference) from the reference, largest and
+ * RMS over the run; cost is the median wall time of the steps over repeated runs. Writes
+ * DIR/precision.csv, precision.md and precision.png (gnuplot). */
 #include "cli.h"
 
-#include "footsim/fs_error.h"
+#include "footsim/fs_output.h"
+#include "footsim/fs_track.h"
+#include "footsim/fs_trial.h"
 
+#include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+enum { MAX_SET = 16, MAX_ROWS = 512 };
+
+static const double REF_STEP_S = 1e-5;          /* the finest step, and the reference's sample spacing */
+static const double REF_TOLERANCE = 1e-10;      /* rk8pd's error bound per step for the reference */
+static const double GOAL_ERR_M = 1e-3, GOAL_RTF = 100; /* issue 6: the landing trial's goal */
+
+static const double STEPS_FULL[] = {1e-5, 2e-5, 5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
+static const double STEPS_QUICK[] = {1e-5, 1e-4, 1e-3, 1e-2};
+static const int ITERATIONS_FULL[] = {0, 10, 20, 50, 100, 200}; /* 0: dWorldStep */
+static const int ITERATIONS_QUICK[] = {0, 20};
+
+/* A scene: a scenario, the overrides that make it, how it is run, and its reference path. */
+typedef struct scene {
+    const char *name, *path;
+    char set[MAX_SET][96];
+    int nset;
+    int pinned_chain;           /* 0, or the chain (1-5) pinned alone */
+    double duration_s;
+    fs_scenario_def defaults;   /* the scenario's own run settings, to mark the default row */
+    fs_track ref;
+    double ref_check_m;         /* chain: how much halving the reference's tolerance moves the ankle */
+    double ref_wall_s;
+} scene;
+
+typedef struct row {
+    const scene *sc;
+    int stepper, iterations, springs;
+    double step_s;
+    int ok;                     /* 0: the run blew up */
+    fs_track_error e;
+    double wall_s;              /* median over repeats */
+    int pareto, is_default;
+} row;
+
+static const char *stepper_name(int s) { return s == FS_STEPPER_QUICKSTEP ? "quickstep" : "step"; }
+static const char *spring_name(int s) { return s == FS_SPRING_EXPLICIT ? "explicit" : "implicit"; }
+
+static fs_status load(const scene *s, const char *const *extra, int nextra, fs_scenario *sc, fs_error *err)
+{
+    const char *set[MAX_SET + 8];
+    for (int i = 0; i < s->nset; i++)
+        set[i] = s->set[i];
+    for (int i = 0; i < nextra; i++)
+        set[s->nset + i] = extra[i];
+    return fs_scenario_load(s->path, set, s->nset + nextra, sc, err);
+}
+
+/* The run settings as overrides. */
+enum { NSETTINGS = 5 };
+static void settings(const row *r, char text[NSETTINGS][64], const char *set[NSETTINGS])
+{
+    snprintf(text[0], 64, "run.step_s=%.17g", r->step_s);
+    snprintf(text[1], 64, "run.stepper=%s", stepper_name(r->stepper));
+    snprintf(text[2], 64, "run.iterations=%d", r->iterations > 0 ? r->iterations : 20);
+    snprintf(text[3], 64, "run.springs=%s", spring_name(r->springs));
+    snprintf(text[4], 64, "run.log_interval_s=%.17g", fmax(r->step_s, 1e-3)); /* no path is logged here */
+    for (int i = 0; i < NSETTINGS; i++)
+        set[i] = text[i];
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Runs one configuration `repeats` times: the error of the first run, the median wall time. */
+static fs_status measure(row *r, int repeats, fs_error *err)
+{
+    char text[NSETTINGS][64];
+    const char *set[NSETTINGS];
+    settings(r, text, set);
+    static fs_scenario sc;
+    fs_status s = load(r->sc, set, NSETTINGS, &sc, err);
+    if (s != FS_OK)
+        return s;
+    fs_sim_options opts = {.with_ground = 1, .pinned_chain = r->sc->pinned_chain};
+    double wall[8];
+    r->ok = 1;
+    for (int k = 0; k < repeats && r->ok; k++) {
+        fs_track t;
+        fs_error run_err;
+        if (fs_track_run(&sc, &opts, r->sc->duration_s, &t, &run_err) != FS_OK) {
+            r->ok = 0; /* blown up: a result of the sweep, not a failure of the command */
+            break;
+        }
+        wall[k] = t.wall_s;
+        if (k == 0)
+            s = fs_track_compare(&t, &r->sc->ref, &r->e, err);
+        fs_track_free(&t);
+        if (s != FS_OK)
+            break;
+    }
+    if (r->ok) {
+        qsort(wall, (size_t)repeats, sizeof wall[0], compare_double);
+        r->wall_s = wall[repeats / 2];
+    }
+    fs_scenario_free(&sc);
+    return s;
+}
+
+/* ---- the scenes and their references ---------------------------------------------------- */
+
+static fs_status chain_scene(scene *s, fs_error *err)
+{
+    memset(s, 0, sizeof *s);
+    s->name = "chain";
+    s->path = "scenarios/static_load.ini";
+    s->pinned_chain = 3;
+    s->duration_s = 0.2;
+    static fs_scenario sc;
+    fs_status st = load(s, NULL, 0, &sc, err);
+    if (st != FS_OK)
+        return st;
+    s->defaults = sc.def;
+    const fs_scenario_def *d = &sc.def;
+    fs_reference_def def = {s->pinned_chain - 1, d->load_kg * d->gravity_m_per_s2, d->ramp_s, d->gravity_m_per_s2,
+                            d->tilt_deg * M_PI / 180, REF_TOLERANCE, {0, 0}};
+    int n = (int)lround(s->duration_s / REF_STEP_S) + 1;
+    double start = cli_clock_s();
+    st = fs_track_reference(&sc.design, &sc.geom, &def, REF_STEP_S, n, &s->ref, err);
+    s->ref_wall_s = cli_clock_s() - start;
+    /* the reference checked against itself at half the tolerance */
+    fs_track half;
+    def.tolerance = 0.5 * REF_TOLERANCE;
+    if (st == FS_OK)
+        st = fs_track_reference(&sc.design, &sc.geom, &def, REF_STEP_S, n, &half, err);
+    for (int i = 0; st == FS_OK && i < n; i++)
+        for (int k = 0; k < 3; k++)
+            s->ref_check_m = fmax(s->ref_check_m, fabs(half.ankle[i][k] - s->ref.ankle[i][k]));
+    if (st == FS_OK)
+        fs_track_free(&half);
+    fs_scenario_free(&sc);
+    return st;
+}
+
+static fs_status landing_scene(scene *s, fs_error *err)
+{
+    memset(s, 0, sizeof *s);
+    s->name = "landing";
+    s->path = "scenarios/landing_trial.ini";
+    s->duration_s = 0.5;
+    snprintf(s->set[s->nset++], sizeof s->set[0], "scenario.terrain=../terrains/rough.ini");
+    static fs_scenario sc;
+    fs_status st = load(s, NULL, 0, &sc, err);
+    if (st != FS_OK)
+        return st;
+    s->defaults = sc.def;
+    fs_trial_draw draw;
+    fs_trial_draw_pose(&sc, 1, &draw);
+    fs_scenario_free(&sc);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.x_m=%.17g", draw.x_m);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.y_m=%.17g", draw.y_m);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.yaw_deg=%.17g", draw.yaw_deg);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.pitch_deg=%.17g", draw.pitch_deg);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.roll_deg=%.17g", draw.roll_deg);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "rough.seed=1");
+    /* the reference: footsim itself at the finest step with dWorldStep */
+    row ref = {.sc = s, .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT, .step_s = REF_STEP_S};
+    char text[NSETTINGS][64];
+    const char *set[NSETTINGS];
+    settings(&ref, text, set);
+    st = load(s, set, NSETTINGS, &sc, err);
+    if (st != FS_OK)
+        return st;
+    fs_sim_options opts = {.with_ground = 1};
+    st = fs_track_run(&sc, &opts, s->duration_s, &s->ref, err);
+    s->ref_wall_s = s->ref.wall_s;
+    fs_scenario_free(&sc);
+    return st;
+}
+
+/* ---- the sweep ---------------------------------------------------------------------------- */
+
+/* Not dominated: no other row is at least as accurate and at least as fast, and better in one. */
+static void mark_pareto(row *rows, int n)
+{
+    for (int i = 0; i < n; i++) {
+        rows[i].pareto = rows[i].ok;
+        for (int j = 0; j < n && rows[i].pareto; j++) {
+            if (j == i || !rows[j].ok || rows[j].sc != rows[i].sc)
+                continue;
+            int no_worse = rows[j].e.max_m <= rows[i].e.max_m && rows[j].wall_s <= rows[i].wall_s;
+            int better = rows[j].e.max_m < rows[i].e.max_m || rows[j].wall_s < rows[i].wall_s;
+            if (no_worse && better)
+                rows[i].pareto = 0;
+        }
+    }
+}
+
+static int is_default(const row *r)
+{
+    const fs_scenario_def *d = &r->sc->defaults;
+    return r->step_s == d->step_s && r->springs == d->springs && r->stepper == d->stepper &&
+           (r->stepper == FS_STEPPER_STEP || r->iterations == d->iterations);
+}
+
+static double rtf(const row *r) { return r->ok && r->wall_s > 0 ? r->sc->duration_s / r->wall_s : 0; }
+
+static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nrows, fs_error *err)
+{
+    const double *steps = quick ? STEPS_QUICK : STEPS_FULL;
+    int nsteps = quick ? (int)(sizeof STEPS_QUICK / sizeof *steps) : (int)(sizeof STEPS_FULL / sizeof *steps);
+    const int *its = quick ? ITERATIONS_QUICK : ITERATIONS_FULL;
+    int nits = quick ? (int)(sizeof ITERATIONS_QUICK / sizeof *its) : (int)(sizeof ITERATIONS_FULL / sizeof *its);
+    int repeats = quick ? 1 : 3, total = nscenes * nsteps * nits * 2, n = 0;
+    fs_status s = FS_OK;
+    for (int c = 0; c < nscenes && s == FS_OK; c++)
+        for (int i = 0; i < nits && s == FS_OK; i++)
+            for (int sp = 0; sp < 2 && s == FS_OK; sp++)
+                for (int h = 0; h < nsteps && s == FS_OK; h++) {
+                    row *r = &rows[n++];
+                    *r = (row){.sc = &scenes[c], .stepper = its[i] ? FS_STEPPER_QUICKSTEP : FS_STEPPER_STEP,
+                               .iterations = its[i], .springs = sp ? FS_SPRING_EXPLICIT : FS_SPRING_IMPLICIT,
+                               .step_s = steps[h]};
+                    fprintf(stderr, "\rfootsim bench precision: %d/%d  %-7s %-9s %3d %-8s h = %-6g", n, total,
+                            r->sc->name, stepper_name(r->stepper), r->iterations, spring_name(r->springs), r->step_s);
+                    s = measure(r, repeats, err);
+                    r->is_default = is_default(r);
+                }
+    fprintf(stderr, "\n");
+    *nrows = n;
+    mark_pareto(rows, n);
+    return s;
+}
+
+/* ---- the outputs -------------------------------------------------------------------------- */
+
+typedef struct text { char *buf; size_t len, cap; } text;
+
+static void add(text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void add(text *t, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int need = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (need < 0)
+        return;
+    if (t->len + (size_t)need + 1 > t->cap) {
+        size_t cap = 2 * (t->cap + (size_t)need + 1);
+        char *b = realloc(t->buf, cap);
+        if (!b)
+            return;
+        t->buf = b;
+        t->cap = cap;
+    }
+    va_start(ap, fmt);
+    vsnprintf(t->buf + t->len, t->cap - t->len, fmt, ap);
+    va_end(ap);
+    t->len += (size_t)need;
+}
+
+static fs_status write_csv(const char *dir, const row *rows, int n, const char *machine, fs_error *err)
+{
+    text t = {0};
+    add(&t, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
+            "wall_s,wall_per_sim_s,rtf,status,pareto,default\n");
+    for (int i = 0; i < n; i++) {
+        const row *r = &rows[i];
+        if (r->ok)
+            add(&t, "%s,%s,%d,%s,%g,%.4e,%.4e,%.4e,%.4e,%.4e,%.4e,%.4g,ok,%d,%d\n", r->sc->name, stepper_name(r->stepper),
+                r->iterations, spring_name(r->springs), r->step_s, r->e.max_m, r->e.rms_m, r->e.max_rad, r->e.rms_rad,
+                r->wall_s, r->wall_s / r->sc->duration_s, rtf(r), r->pareto, r->is_default);
+        else
+            add(&t, "%s,%s,%d,%s,%g,inf,inf,inf,inf,,,,blown_up,0,%d\n", r->sc->name, stepper_name(r->stepper),
+                r->iterations, spring_name(r->springs), r->step_s, r->is_default);
+    }
+    char path[2 * FS_PATH_MAX];
+    snprintf(path, sizeof path, "%s/precision.csv", dir);
+    (void)machine;
+    fs_status s = t.buf ? fs_write_atomic(path, t.buf, t.len, err) : fs_fail(err, FS_IO, "out of memory");
+    free(t.buf);
+    return s;
+}
+
+static void describe(text *t, const row *r)
+{
+    if (r->stepper == FS_STEPPER_QUICKSTEP)
+        add(t, "| quickstep %d | %s | %g |", r->iterations, spring_name(r->springs), r->step_s);
+    else
+        add(t, "| step | %s | %g |", spring_name(r->springs), r->step_s);
+}
+
+/* The table of one scene's Pareto front, fastest last. */
+static void front_table(text *t, const row *rows, int n, const scene *s)
+{
+    add(t, "\n### %s: the Pareto front\n\n| stepper | springs | step (s) | max ankle error (m) | RMS (m) | "
+           "max angle error (rad) | real-time factor | default |\n|---|---|---|---|---|---|---|---|\n", s->name);
+    const row *sorted[MAX_ROWS];
+    int m = 0;
+    for (int i = 0; i < n; i++)
+        if (rows[i].sc == s && (rows[i].pareto || rows[i].is_default))
+            sorted[m++] = &rows[i];
+    for (int i = 1; i < m; i++)
+        for (int j = i; j > 0 && rtf(sorted[j]) < rtf(sorted[j - 1]); j--) {
+            const row *x = sorted[j];
+            sorted[j] = sorted[j - 1];
+            sorted[j - 1] = x;
+        }
+    for (int i = 0; i < m; i++) {
+        const row *r = sorted[i];
+        describe(t, r);
+        if (r->ok)
+            add(t, " %.2e | %.2e | %.2e | %.0f | %s%s |\n", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
+                r->is_default ? "yes" : "", r->pareto ? "" : " (not on the front)");
+        else
+            add(t, " blew up | | | | %s |\n", r->is_default ? "yes" : "");
+    }
+}
+
+/* The landing trial's goal: the fastest configuration within GOAL_ERR_M at GOAL_RTF or more. */
+static void goal(text *t, const row *rows, int n, const scene *s)
+{
+    const row *best = NULL, *dflt = NULL;
+    for (int i = 0; i < n; i++) {
+        const row *r = &rows[i];
+        if (r->sc != s)
+            continue;
+        if (r->is_default)
+            dflt = r;
+        if (r->ok && r->e.max_m <= GOAL_ERR_M && (!best || rtf(r) > rtf(best)))
+            best = r;
+    }
+    add(t, "\n**Goal** (issue 6): at most %g mm of ankle error at a real-time factor of %g or more on one core, "
+           "for the landing trial. ", GOAL_ERR_M * 1e3, GOAL_RTF);
+    if (best)
+        add(t, "The fastest configuration within %g mm: %s, %s springs, h = %g s: %.3g mm at %.0fx real time: goal "
+               "%s.", GOAL_ERR_M * 1e3, best->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep",
+            spring_name(best->springs), best->step_s, best->e.max_m * 1e3, rtf(best),
+            rtf(best) >= GOAL_RTF ? "met" : "not met");
+    else
+        add(t, "No configuration stays within %g mm: goal not met.", GOAL_ERR_M * 1e3);
+    if (dflt && dflt->ok)
+        add(t, " The scenario's default (%s, %s springs, h = %g s): %.3g mm at %.0fx.\n",
+            dflt->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep", spring_name(dflt->springs),
+            dflt->step_s, dflt->e.max_m * 1e3, rtf(dflt));
+    else
+        add(t, "\n");
+}
+
+static fs_status write_md(const char *dir, const row *rows, int n, const scene *scenes, int nscenes,
+                          const char *machine, int quick, fs_error *err)
+{
+    text t = {0};
+    char date[32];
+    time_t now = time(NULL);
+    strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+    double load[3] = {0, 0, 0};
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3)
+            load[0] = -1;
+        fclose(f);
+    }
+    add(&t, "# Precision: run time against error\n\n`footsim bench precision%s` on %s; %s; load average %.2f at the "
+            "end. Every row of `precision.csv` is one configuration; the chart is `precision.png`.\n",
+        quick ? " --quick" : "", date, machine, load[0]);
+    add(&t, "\nReferences: **chain**: the planar dynamic model (GSL rk8pd, tolerance %g; halving it moves the ankle "
+            "by %.1e m; %.2f s to compute); **landing**: footsim's own run at h = %g s with dWorldStep (%.1f s).\n",
+        REF_TOLERANCE, scenes[0].ref_check_m, scenes[0].ref_wall_s, REF_STEP_S,
+        nscenes > 1 ? scenes[1].ref_wall_s : 0.0);
+    for (int c = 0; c < nscenes; c++)
+        front_table(&t, rows, n, &scenes[c]);
+    if (nscenes > 1)
+        goal(&t, rows, n, &scenes[1]);
+    int blown = 0;
+    for (int i = 0; i < n; i++)
+        blown += !rows[i].ok;
+    add(&t, "\n%d of %d configurations blew up (`status` = blown_up in the CSV); `footsim bench stability` maps "
+            "where.\n", blown, n);
+    char path[2 * FS_PATH_MAX];
+    snprintf(path, sizeof path, "%s/precision.md", dir);
+    fs_status s = t.buf ? fs_write_atomic(path, t.buf, t.len, err) : fs_fail(err, FS_IO, "out of memory");
+    free(t.buf);
+    return s;
+}
+
+static fs_status write_chart(const char *dir, fs_error *err)
+{
+    static const char gp[] =
+        "# 'gnuplot precision.gp' in this folder draws precision.png from precision.csv.\n"
+        "if (!exists(\"out\")) out = 'precision.png'\n"
+        "set terminal pngcairo size 1400,600 font ',11'\n"
+        "set output out\n"
+        "set datafile separator ','\n"
+        "set logscale xy\n"
+        "set format y '10^{%L}'\n"
+        "set format x '10^{%L}'\n"
+        "set xlabel 'real-time factor (simulated s per wall s)'\n"
+        "set ylabel 'largest ankle error (m)'\n"
+        "set grid\n"
+        "set key bottom right font ',9'\n"
+        "sel(scene, stepper, spring, col) = (strcol(1) eq scene && strcol(2) eq stepper && strcol(4) eq spring && "
+        "strcol(13) eq 'ok') ? column(col) : NaN\n"
+        "front(scene, col) = (strcol(1) eq scene && $14 == 1) ? column(col) : NaN\n"
+        "dflt(scene, col) = (strcol(1) eq scene && $15 == 1 && strcol(13) eq 'ok') ? column(col) : NaN\n"
+        "set multiplot layout 1,2\n"
+        "do for [s in 'chain landing'] {\n"
+        "  set title s eq 'chain' ? 'pinned chain vs the planar reference (Fig. 11 transient)' : "
+        "'landing trial on rough ground vs its 1e-5 s run'\n"
+        "  plot 'precision.csv' skip 1 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
+        "with points pt 7 ps 1 lc rgb '#1f77b4' title 'dWorldStep, implicit springs', \\\n"
+        "       '' skip 1 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
+        "lc rgb '#ff7f0e' title 'dWorldStep, explicit', \\\n"
+        "       '' skip 1 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
+        "pt 6 ps 1 lc rgb '#2ca02c' title 'QuickStep, implicit', \\\n"
+        "       '' skip 1 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
+        "pt 4 ps 1 lc rgb '#d62728' title 'QuickStep, explicit', \\\n"
+        "       '' skip 1 using (front(s,12)):(front(s,6)) smooth unique with lines lw 2 lc rgb 'black' "
+        "title 'Pareto front', \\\n"
+        "       '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
+        "title 'scenario default'\n"
+        "}\n"
+        "unset multiplot\n";
+    char path[2 * FS_PATH_MAX];
+    snprintf(path, sizeof path, "%s/precision.gp", dir);
+    fs_status s = fs_write_atomic(path, gp, sizeof gp - 1, err);
+    if (s == FS_OK)
+        cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
+    return s;
+}
 
 int cli_bench_precision(const cli_args *a, const char *dir)
 {
-    (void)a;
-    (void)dir;
-    fprintf(stderr, "footsim bench precision: not built yet\n");
-    return FS_BAD_INPUT;
+    fs_error err;
+    static scene scenes[2];
+    static row rows[MAX_ROWS];
+    int nrows = 0;
+    char machine[512];
+    cli_machine(machine, sizeof machine);
+    fs_status s = fs_make_dirs(dir, &err);
+    fprintf(stderr, "footsim bench precision: the references ...\n");
+    if (s == FS_OK)
+        s = chain_scene(&scenes[0], &err);
+    if (s == FS_OK)
+        s = landing_scene(&scenes[1], &err);
+    if (s == FS_OK)
+        s = sweep(scenes, 2, a->quick, rows, &nrows, &err);
+    if (s == FS_OK)
+        s = write_csv(dir, rows, nrows, machine, &err);
+    if (s == FS_OK)
+        s = write_md(dir, rows, nrows, scenes, 2, machine, a->quick, &err);
+    if (s == FS_OK)
+        s = write_chart(dir, &err);
+    for (int c = 0; c < 2; c++)
+        fs_track_free(&scenes[c].ref);
+    if (s != FS_OK)
+        return cli_report(s, err.message);
+    printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}\n", nrows, dir);
+    return 0;
 }

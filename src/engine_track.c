@@ -4,6 +4,14 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
 
 static fs_status track_alloc(fs_track *t, double dt_s, int n, fs_error *err)
 {
@@ -45,11 +53,18 @@ fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double
     s = fs_sim_build(&sim, sc, opts, err);
     if (s == FS_OK) {
         sample(&sim, out, 0);
+        double start = now_s();
         for (int i = 1; i <= steps && s == FS_OK; i++) {
             s = fs_sim_step(&sim, err);
             if (s == FS_OK)
                 sample(&sim, out, i);
+            /* stop a run that is blowing up before ODE meets a non-finite state inside its step */
+            if (s == FS_OK && !(fs_sim_max_speed(&sim) < FS_TRACK_MAX_SPEED_M_PER_S))
+                s = fs_fail(err, FS_NUMERICAL, "%s: a point moves faster than %g m/s at t = %.6f s: the run is "
+                            "blowing up; try a smaller step_s or springs = implicit", sc->path,
+                            FS_TRACK_MAX_SPEED_M_PER_S, sim.time_s);
         }
+        out->wall_s = now_s() - start;
     }
     fs_sim_destroy(&sim);
     if (s != FS_OK)
