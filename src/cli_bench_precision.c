@@ -44,6 +44,7 @@ typedef struct scene {
     fs_track ref;
     double ref_check_m;         /* chain: how much halving the reference's tolerance moves the ankle */
     double ref_wall_s;
+    int has_springs;            /* 0: the spring implementation makes no difference (the flat foot) */
 } scene;
 
 typedef struct row {
@@ -140,6 +141,7 @@ static fs_status chain_scene(scene *s, fs_error *err)
     if (st != FS_OK)
         return st;
     s->defaults = sc.def;
+    s->has_springs = 1;
     const fs_scenario_def *d = &sc.def;
     fs_reference_def def = {s->pinned_chain - 1, d->load_kg * d->gravity_m_per_s2, d->ramp_s, d->gravity_m_per_s2,
                             d->tilt_deg * M_PI / 180, REF_TOLERANCE, {0, 0}};
@@ -175,6 +177,7 @@ static fs_status landing_scene(scene *s, const char *name, const char *design, i
     if (st != FS_OK)
         return st;
     s->defaults = sc.def;
+    s->has_springs = sc.geom.nsprings > 0 || sc.def.robot_joint != 0;
     fs_trial_draw draw;
     fs_trial_draw_pose(&sc, seed, &draw);
     fs_scenario_free(&sc);
@@ -232,11 +235,13 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
     int nsteps = quick ? (int)(sizeof STEPS_QUICK / sizeof *steps) : (int)(sizeof STEPS_FULL / sizeof *steps);
     const int *its = quick ? ITERATIONS_QUICK : ITERATIONS_FULL;
     int nits = quick ? (int)(sizeof ITERATIONS_QUICK / sizeof *its) : (int)(sizeof ITERATIONS_FULL / sizeof *its);
-    int repeats = quick ? 1 : 5, total = nscenes * nsteps * nits * 2, n = 0;
+    int repeats = quick ? 1 : 5, total = 0, n = 0;
+    for (int c = 0; c < nscenes; c++)
+        total += nsteps * nits * (1 + scenes[c].has_springs);
     fs_status s = FS_OK;
     for (int c = 0; c < nscenes && s == FS_OK; c++)
         for (int i = 0; i < nits && s == FS_OK; i++)
-            for (int sp = 0; sp < 2 && s == FS_OK; sp++)
+            for (int sp = 0; sp < 1 + scenes[c].has_springs && s == FS_OK; sp++)
                 for (int h = 0; h < nsteps && s == FS_OK; h++) {
                     row *r = &rows[n++];
                     *r = (row){.sc = &scenes[c], .stepper = its[i] ? FS_STEPPER_QUICKSTEP : FS_STEPPER_STEP,
@@ -332,7 +337,7 @@ static void front_table(text *t, const row *rows, int n, const scene *s)
         const row *r = sorted[i];
         describe(t, r);
         if (r->ok)
-            add(t, " %.2e | %.2e | %.2e | %.0f | %s%s |\n", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
+            add(t, " %.2e | %.2e | %.2e | %.3g | %s%s |\n", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
                 r->is_default ? "yes" : "", r->pareto ? "" : " (not on the front)");
         else
             add(t, " blew up | | | | %s |\n", r->is_default ? "yes" : "");
@@ -355,14 +360,14 @@ static void goal(text *t, const row *rows, int n, const scene *s)
     add(t, "\n**Goal** (issue 6), %s: at most %g mm of ankle error at a real-time factor of %g or more on one "
            "core. ", s->name, GOAL_ERR_M * 1e3, GOAL_RTF);
     if (best)
-        add(t, "The fastest configuration within %g mm: %s, %s springs, h = %g s: %.3g mm at %.0fx real time: goal "
+        add(t, "The fastest configuration within %g mm: %s, %s springs, h = %g s: %.3g mm at %.3gx real time: goal "
                "%s.", GOAL_ERR_M * 1e3, best->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep",
             spring_name(best->springs), best->step_s, best->e.max_m * 1e3, rtf(best),
             rtf(best) >= GOAL_RTF ? "met" : "not met");
     else
         add(t, "No configuration stays within %g mm: goal not met.", GOAL_ERR_M * 1e3);
     if (dflt && dflt->ok)
-        add(t, " The scenario's default (%s, %s springs, h = %g s): %.3g mm at %.0fx.\n",
+        add(t, " The scenario's default (%s, %s springs, h = %g s): %.3g mm at %.3gx.\n",
             dflt->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep", spring_name(dflt->springs),
             dflt->step_s, dflt->e.max_m * 1e3, rtf(dflt));
     else
@@ -398,6 +403,8 @@ static fs_status write_md(const char *dir, const row *rows, int n, const scene *
     int blown = 0;
     for (int i = 0; i < n; i++)
         blown += !rows[i].ok;
+    add(&t, "\nThe flat foot has no hinges or springs: its angle error is `nan` and it is run with one spring "
+            "implementation only.\n");
     add(&t, "\n%d of %d configurations blew up (`status` = blown_up in the CSV); `footsim bench stability` maps "
             "where.\n", blown, n);
     char path[2 * FS_PATH_MAX];

@@ -13,11 +13,12 @@ static double now_s(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static fs_status track_alloc(fs_track *t, double dt_s, int n, fs_error *err)
+static fs_status track_alloc(fs_track *t, double dt_s, int n, int nangles, fs_error *err)
 {
     memset(t, 0, sizeof *t);
     t->dt_s = dt_s;
     t->n = n;
+    t->nangles = nangles;
     t->ankle = calloc((size_t)n, sizeof *t->ankle);
     t->angle = calloc((size_t)n, sizeof *t->angle);
     if (!t->ankle || !t->angle) {
@@ -37,7 +38,7 @@ void fs_track_free(fs_track *t)
 static void sample(const fs_sim *sim, fs_track *t, int i)
 {
     fs_sim_ankle(sim, t->ankle[i]);
-    for (int k = 0; k < FS_TRACK_ANGLES && k < sim->geom->nhinges; k++)
+    for (int k = 0; k < t->nangles; k++)
         t->angle[i][k] = fs_sim_hinge_angle(sim, k);
 }
 
@@ -46,7 +47,8 @@ fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double
 {
     double h = sc->def.step_s;
     int steps = (int)ceil(duration_s / h - 1e-9);
-    fs_status s = track_alloc(out, h, steps + 1, err);
+    int nangles = sc->geom.nhinges < FS_TRACK_ANGLES ? sc->geom.nhinges : FS_TRACK_ANGLES;
+    fs_status s = track_alloc(out, h, steps + 1, nangles, err);
     if (s != FS_OK)
         return s;
     fs_sim sim;
@@ -80,7 +82,7 @@ fs_status fs_track_reference(const fs_design_def *d, const fs_foot_geom *g, cons
         return fs_fail(err, FS_BAD_INPUT, "out of memory for a reference of %d samples", n);
     fs_status s = fs_reference_run(d, g, def, dt_s, n, r, err);
     if (s == FS_OK)
-        s = track_alloc(out, dt_s, n, err);
+        s = track_alloc(out, dt_s, n, FS_TRACK_ANGLES, err);
     for (int i = 0; s == FS_OK && i < n; i++) {
         memcpy(out->ankle[i], r[i].ankle_m, sizeof out->ankle[i]);
         memcpy(out->angle[i], r[i].joint_rad, sizeof out->angle[i]);
@@ -97,13 +99,17 @@ fs_status fs_track_compare(const fs_track *run, const fs_track *ref, fs_track_er
     if (stride < 1 || fabs(ratio - (double)stride) > 1e-6 * ratio)
         return fs_fail(err, FS_BAD_INPUT, "a step of %g s does not fall on the reference's %g s samples; give a whole "
                        "multiple of it", run->dt_s, ref->dt_s);
+    if (run->nangles != ref->nangles)
+        return fs_fail(err, FS_BAD_INPUT, "paths with %d and %d hinge angles cannot be compared", run->nangles,
+                       ref->nangles);
+    int nangles = run->nangles;
     double sum_m = 0, sum_rad = 0;
     for (long i = 0; i < run->n && i * stride < ref->n; i++) {
         const double *a = run->ankle[i], *b = ref->ankle[i * stride];
         double d = sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
         out->max_m = fmax(out->max_m, d);
         sum_m += d * d;
-        for (int k = 0; k < FS_TRACK_ANGLES; k++) {
+        for (int k = 0; k < nangles; k++) {
             double e = fabs(run->angle[i][k] - ref->angle[i * stride][k]);
             out->max_rad = fmax(out->max_rad, e);
             sum_rad += e * e;
@@ -112,7 +118,9 @@ fs_status fs_track_compare(const fs_track *run, const fs_track *ref, fs_track_er
     }
     if (out->compared) {
         out->rms_m = sqrt(sum_m / out->compared);
-        out->rms_rad = sqrt(sum_rad / (out->compared * FS_TRACK_ANGLES));
+        out->rms_rad = nangles ? sqrt(sum_rad / (out->compared * nangles)) : NAN;
     }
+    if (!nangles)
+        out->max_rad = NAN;
     return FS_OK;
 }

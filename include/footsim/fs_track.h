@@ -20,6 +20,7 @@ enum { FS_TRACK_ANGLES = 3 };
 typedef struct fs_track {
     double dt_s;
     int n;
+    int nangles;               /* hinge angles sampled: up to FS_TRACK_ANGLES (0 for the flat foot) */
     double (*ankle)[3];
     double (*angle)[FS_TRACK_ANGLES];
     double wall_s;             /* fs_track_run: wall-clock time of the steps (not of building), s */
@@ -38,7 +39,7 @@ fs_status fs_track_reference(const fs_design_def *d, const fs_foot_geom *g, cons
 
 typedef struct fs_track_error {
     double max_m, rms_m;       /* ankle position: largest and RMS distance */
-    double max_rad, rms_rad;   /* hinge angles: largest and RMS difference, over all angles */
+    double max_rad, rms_rad;   /* hinge angles: largest and RMS difference over all angles; NAN without */
     int compared;              /* samples compared */
 } fs_track_error;
 
