@@ -1,0 +1,31 @@
+#!/bin/sh
+# footsim bench precision --quick writes its table, summary and chart, marks each scene's default
+# and Pareto front, and ODE's error on the pinned chain falls as the step does (first order: ten
+# times smaller step, about ten times smaller error). Usage: cli_bench_precision.sh path/to/footsim
+fs=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1" >&2; fi; }
+"$fs" bench precision --quick --out "$tmp" >/dev/null 2>"$tmp/err.txt"
+status=$?
+check '[ "$status" -eq 0 ]'
+csv="$tmp/precision.csv"
+check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default$"'
+# 3 steps x 2 steppers: x 2 spring implementations for the chain and the biomimetic foot, x 1 for the flat foot
+check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 30 ]'
+for scene in chain landing_flat landing_biomimetic; do
+  check '[ "$(awk -F, -v s=$scene "\$1 == s && \$15 == 1" "$csv" | wc -l)" -eq 1 ]'
+  check '[ "$(awk -F, -v s=$scene "\$1 == s && \$14 == 1" "$csv" | wc -l)" -ge 1 ]'
+done
+ratio=$(awk -F, '$1 == "chain" && $2 == "step" && $4 == "implicit" && $5 == 0.001 { a = $6 }
+                 $1 == "chain" && $2 == "step" && $4 == "implicit" && $5 == 0.0001 { b = $6 }
+                 END { print a / b }' "$csv")
+check 'awk -v r="$ratio" "BEGIN { exit !(r > 5 && r < 20) }"'
+check 'grep -q "Goal" "$tmp/precision.md"'
+if command -v gnuplot >/dev/null 2>&1; then check '[ -s "$tmp/precision.png" ]'; fi
+"$fs" bench nonsense 2>/dev/null
+status=$?
+check '[ "$status" -eq 2 ]'
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
