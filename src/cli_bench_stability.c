@@ -43,7 +43,8 @@ static const slice SLICES[NSLICES] = {
     {"drop", "scenarios/landing_trial.ini", "drop height of the 26 kg robot", "m", 0, {0, 0.005, 0.02, 0.05},
      {0, 0.02}, 4, 2},
 };
-static const double STEPS_FULL[] = {1e-5, 2e-5, 5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
+/* finer around the explicit springs' limit (4e-5 to 8e-5 s for the default foot) */
+static const double STEPS_FULL[] = {1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 6e-5, 8e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
 static const double STEPS_QUICK[] = {2e-5, 1e-4, 5e-4, 2e-3, 1e-2};
 static const char *STEPPERS[2] = {"step", "quickstep"}, *SPRINGS[2] = {"implicit", "explicit"};
 
@@ -307,7 +308,7 @@ static fs_status write_script(const char *dir, int s, fs_error *err)
                       "set title '%s springs, %s'\n"
                       "ok(p) = strcol(1) eq '%s' && strcol(2) eq '%s' && strcol(4) eq '%s' && column(11) == p\n"
                       "plot for [p=0:2] 'stability.csv' every ::1 using (ok(p) ? $5 : NaN):%d:(11 + p) with points "
-                      "pt 5 ps 2.5 lc variable title word('stable drifting blown_up', p + 1), \\\n"
+                      "pt 5 ps 1.8 lc variable title word('stable drifting blown_up', p + 1), \\\n"
                       "     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && '%s' eq 'explicit' ? $22 : NaN):%d "
                       "with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'\n",
                       sp, st, sl->name, st, sp, value_column(s), sp, value_column(s));
