@@ -318,30 +318,42 @@ static fs_status write_script(const char *dir, int s, fs_error *err)
     return fs_write_atomic(path, text, strlen(text), err);
 }
 
-/* The largest step of a row (slice value, combo) below which every run was stable, and the
- * smallest that blew up; 0 / INFINITY when none. */
+/* Rows over several slices: every run, or every run with the design's link masses. */
+enum { ALL_RUNS = -1, DESIGN_MASSES = -2, MASS_SLICE = 2 /* SLICES[2] */ };
+
+/* Whether run c belongs to a row: its spring x stepper, and its slice and value (or ALL_RUNS, or
+ * DESIGN_MASSES). */
+static int in_row(const config *c, int s, int combo, double value)
+{
+    if (c->stepper != combo / 2 || c->springs != combo % 2)
+        return 0;
+    if (s == ALL_RUNS)
+        return 1;
+    if (s == DESIGN_MASSES)
+        return c->slice != MASS_SLICE || c->value == 1;
+    return c->slice == s && c->value == value;
+}
+
+/* The largest step of a row below which every run was stable, and the smallest that drifted and
+ * that blew up; 0 / INFINITY when none. */
 static void boundary(const config *cfg, const outcome *out, int n, int s, int combo, double value, double *stable,
                      double *blown, double *drift)
 {
     *stable = 0, *blown = *drift = INFINITY;
     double first_bad = INFINITY;
     for (int i = 0; i < n; i++) {
-        const config *c = &cfg[i];
-        if (c->slice != s || c->stepper != combo / 2 || c->springs != combo % 2 || c->value != value)
+        if (!in_row(&cfg[i], s, combo, value))
             continue;
         if (out[i].cls != FS_CHECK_STABLE)
-            first_bad = fmin(first_bad, c->step_s);
+            first_bad = fmin(first_bad, cfg[i].step_s);
         if (out[i].cls == FS_CHECK_BLOWN_UP)
-            *blown = fmin(*blown, c->step_s);
+            *blown = fmin(*blown, cfg[i].step_s);
         if (out[i].cls == FS_CHECK_DRIFTING)
-            *drift = fmin(*drift, c->step_s);
+            *drift = fmin(*drift, cfg[i].step_s);
     }
-    for (int i = 0; i < n; i++) {
-        const config *c = &cfg[i];
-        if (c->slice == s && c->stepper == combo / 2 && c->springs == combo % 2 && c->value == value &&
-            c->step_s < first_bad)
-            *stable = fmax(*stable, c->step_s);
-    }
+    for (int i = 0; i < n; i++)
+        if (in_row(&cfg[i], s, combo, value) && cfg[i].step_s < first_bad)
+            *stable = fmax(*stable, cfg[i].step_s);
 }
 
 static void cell(char *buf, size_t size, double stable, double drift, double blown)
@@ -418,6 +430,19 @@ static fs_status write_summary(const char *dir, const config *cfg, const outcome
                "lightest body as a mass on its springs and dampers, `fs_check_explicit_step_limit`: "
                "k h² + 2 c h < 4 m); the paper's default foot gives 4.0e-5 s (phalanx, 8 g, two dampers of "
                "200 N·s/m), or 8e-5 s with one damper (2 m / c).\n");
+    fprintf(f, "\n## Safe envelope\n\nThe largest step at which every swept case (every slice and value) was "
+               "stable, then the smallest that drifted and that blew up; and the same with the design's link "
+               "masses (the mass slice's other scales left out):\n\n| springs, stepper | every case | design's "
+               "link masses |\n|---|---|---|\n");
+    for (int combo = 0; combo < NCOMBOS; combo++) {
+        char text[2][160];
+        for (int k = 0; k < 2; k++) {
+            double st, bl, dr;
+            boundary(cfg, out, n, k ? DESIGN_MASSES : ALL_RUNS, combo, 0, &st, &bl, &dr);
+            cell(text[k], sizeof text[k], st, dr, bl);
+        }
+        fprintf(f, "| %s, %s | %s | %s |\n", SPRINGS[combo % 2], STEPPERS[combo / 2], text[0], text[1]);
+    }
     for (int s = 0; s < NSLICES; s++)
         slice_table(f, cfg, out, n, s, quick);
     fprintf(f, "\n`stability.csv` has every run (class, the check that failed, where and when, the worst loop "
