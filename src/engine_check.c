@@ -175,9 +175,9 @@ static const char *advice(const fs_sim *sim, fs_check_kind kind, char *buf, size
 {
     const fs_scenario_def *d = &sim->sc->def;
     char springs[96] = "";
-    if (d->springs == FS_SPRING_EXPLICIT)
-        snprintf(springs, sizeof springs, "; explicit springs are stable below about %.1e s here",
-                 fs_check_explicit_step_limit(sim));
+    double limit = fs_check_explicit_step_limit(sim);
+    if (d->springs == FS_SPRING_EXPLICIT && isfinite(limit))
+        snprintf(springs, sizeof springs, "; explicit springs are stable below about %.1e s here", limit);
     const char *more = kind == FS_CHECK_LOOP ? ", run.stepper = step or more run.iterations"
                        : kind == FS_CHECK_ENERGY
                            ? ", run.springs = implicit, or a larger check.energy_margin_J if something footsim "
