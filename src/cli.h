@@ -59,6 +59,9 @@ int cli_bench_precision(const cli_args *a, const char *dir);
 int cli_bench_stability(const cli_args *a, const char *dir);
 int cli_bench_speed(const cli_args *a, const char *dir);
 
+/* -j N: worker processes, default all cores online (1 to 1024; exit 2 otherwise). */
+int cli_parse_jobs(const cli_args *a, int *jobs);
+
 /* Seconds on a monotonic clock, for timings. */
 double cli_clock_s(void);
 

@@ -10,6 +10,7 @@
  * DIR/precision.csv, precision.md and precision.png (gnuplot). */
 #include "cli.h"
 
+#include "footsim/fs_check.h"
 #include "footsim/fs_output.h"
 #include "footsim/fs_track.h"
 #include "footsim/fs_trial.h"
@@ -52,6 +53,7 @@ typedef struct row {
     int stepper, iterations, springs;
     double step_s;
     int ok;                     /* 0: the run blew up */
+    int drifting;               /* a loop opened or energy grew beyond the checks' bounds (fs_check.h) */
     fs_track_error e;
     double wall_s;              /* median over repeats */
     int pareto, is_default;
@@ -100,7 +102,7 @@ static fs_status measure(row *r, int repeats, fs_error *err)
     fs_status s = load(r->sc, set, NSETTINGS, &sc, err);
     if (s != FS_OK)
         return s;
-    fs_sim_options opts = {.with_ground = 1, .pinned_chain = r->sc->pinned_chain};
+    fs_sim_options opts = {.with_ground = 1, .pinned_chain = r->sc->pinned_chain, .record_drift = 1};
     double wall[8], spent = 0;
     int done = 0;
     r->ok = 1;
@@ -112,6 +114,7 @@ static fs_status measure(row *r, int repeats, fs_error *err)
             break;
         }
         wall[done++] = t.wall_s;
+        r->drifting = t.check_class == FS_CHECK_DRIFTING;
         spent += t.wall_s;
         if (k == 0)
             s = fs_track_compare(&t, &r->sc->ref, &r->e, err);
@@ -209,9 +212,9 @@ static fs_status landing_scene(scene *s, const char *name, const char *design, i
 static void mark_pareto(row *rows, int n)
 {
     for (int i = 0; i < n; i++) {
-        rows[i].pareto = rows[i].ok;
+        rows[i].pareto = rows[i].ok && !rows[i].drifting;
         for (int j = 0; j < n && rows[i].pareto; j++) {
-            if (j == i || !rows[j].ok || rows[j].sc != rows[i].sc)
+            if (j == i || !rows[j].ok || rows[j].drifting || rows[j].sc != rows[i].sc)
                 continue;
             int no_worse = rows[j].e.max_m <= rows[i].e.max_m && rows[j].wall_s <= rows[i].wall_s;
             int better = rows[j].e.max_m < rows[i].e.max_m || rows[j].wall_s < rows[i].wall_s;
@@ -295,9 +298,10 @@ static fs_status write_csv(const char *dir, const row *rows, int n, const char *
     for (int i = 0; i < n; i++) {
         const row *r = &rows[i];
         if (r->ok)
-            add(&t, "%s,%s,%d,%s,%g,%.4e,%.4e,%.4e,%.4e,%.4e,%.4e,%.4g,ok,%d,%d\n", r->sc->name, stepper_name(r->stepper),
+            add(&t, "%s,%s,%d,%s,%g,%.4e,%.4e,%.4e,%.4e,%.4e,%.4e,%.4g,%s,%d,%d\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, r->e.max_m, r->e.rms_m, r->e.max_rad, r->e.rms_rad,
-                r->wall_s, r->wall_s / r->sc->duration_s, rtf(r), r->pareto, r->is_default);
+                r->wall_s, r->wall_s / r->sc->duration_s, rtf(r), r->drifting ? "drifting" : "ok", r->pareto,
+                r->is_default);
         else
             add(&t, "%s,%s,%d,%s,%g,inf,inf,inf,inf,,,,blown_up,0,%d\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, r->is_default);
@@ -431,7 +435,7 @@ static fs_status write_chart(const char *dir, fs_error *err)
         "set grid\n"
         "set key bottom right font ',9'\n"
         "sel(scene, stepper, spring, col) = (strcol(1) eq scene && strcol(2) eq stepper && strcol(4) eq spring && "
-        "strcol(13) eq 'ok') ? column(col) : NaN\n"
+        "strcol(13) ne 'blown_up') ? column(col) : NaN\n"
         "front(scene, col) = (strcol(1) eq scene && $14 == 1) ? column(col) : NaN\n"
         "dflt(scene, col) = (strcol(1) eq scene && $15 == 1 && strcol(13) eq 'ok') ? column(col) : NaN\n"
         "set multiplot layout 1,3\n"

@@ -276,7 +276,7 @@ static fs_status run_trials(pool *p, int jobs, fs_error *err)
 
 /* ---- campaign ----------------------------------------------------------------------------- */
 
-static int parse_jobs(const cli_args *a, int *jobs)
+int cli_parse_jobs(const cli_args *a, int *jobs)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);
     *jobs = n > 0 ? (int)(n < MAX_JOBS ? n : MAX_JOBS) : 1;
@@ -285,8 +285,8 @@ static int parse_jobs(const cli_args *a, int *jobs)
     char *end;
     n = strtol(a->jobs, &end, 10);
     if (*end || end == a->jobs || n < 1 || n > MAX_JOBS) {
-        fprintf(stderr, "footsim campaign: -j %s: not a number of workers; allowed: a whole number from 1 to %d\n",
-                a->jobs, MAX_JOBS);
+        fprintf(stderr, "footsim %s: -j %s: not a number of workers; allowed: a whole number from 1 to %d\n",
+                a->command, a->jobs, MAX_JOBS);
         return FS_BAD_INPUT;
     }
     *jobs = (int)n;
@@ -340,7 +340,7 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, const ch
 int cli_campaign(const cli_args *a)
 {
     int jobs;
-    int s = parse_jobs(a, &jobs);
+    int s = cli_parse_jobs(a, &jobs);
     if (s)
         return s;
     static fs_campaign c;

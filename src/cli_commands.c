@@ -34,6 +34,7 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
      * everything goes to a partial folder beside it, swapped in whole at the end */
     char partial[FS_PATH_MAX + 96];
     snprintf(partial, sizeof partial, "%s.partial.%ld", dir, (long)getpid());
+    int existed = access(dir, F_OK) == 0; /* a failed run leaves no new (empty) results folder */
     if (fs_make_dirs(dir, &err) != FS_OK || fs_make_dirs(partial, &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
@@ -42,6 +43,8 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
         int fs = cli_frames_open(a, sc, partial, &frames, &observer);
         if (fs) {
             fs_remove_tree(partial);
+            if (!existed)
+                rmdir(dir);
             return fs;
         }
         obs = &observer;
@@ -53,6 +56,8 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     else
         fs_remove_tree(partial);
     if (rs != FS_OK || fstatus) {
+        if (!existed)
+            rmdir(dir);
         fs_run_free(res);
         return fstatus ? fstatus : fail(&err);
     }

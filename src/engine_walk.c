@@ -22,6 +22,32 @@ static void carriage_path(const fs_scenario_def *d, double t, double *x, double 
     *phase = f;
 }
 
+/* The suspension's force on the robot (its body 2) for the state it is measured in, N. */
+static void suspension_force(const fs_spring *s, double f[3])
+{
+    double p1[3], p2[3], len = 0;
+    fs_spring_anchors(s, p1, p2);
+    for (int k = 0; k < 3; k++)
+        len += (p2[k] - p1[k]) * (p2[k] - p1[k]);
+    len = sqrt(len);
+    double t = fs_spring_measure(s).force_N;
+    for (int k = 0; k < 3; k++)
+        f[k] = len > 0 ? -t * (p2[k] - p1[k]) / len : 0;
+}
+
+/* The carriage's work on the robot over the step just taken, J: the slider's force and torque and
+ * the suspension's force (explicit: from the state before the step, as applied; implicit: after,
+ * as backward Euler applies it) times the robot's displacement and turn. */
+static double carriage_work(dBodyID robot, const dJointFeedback *slider, const double susp[3], const double before[3],
+                            double h)
+{
+    const dReal *p = dBodyGetPosition(robot), *w = dBodyGetAngularVel(robot);
+    double work = 0;
+    for (int k = 0; k < 3; k++)
+        work += (slider->f1[k] + susp[k]) * (p[k] - before[k]) + slider->t1[k] * w[k] * h;
+    return work;
+}
+
 /* The ankle body's tilt from its start orientation, rad. */
 static double ankle_tilt(const fs_sim *sim)
 {
@@ -49,6 +75,8 @@ fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
     dJointID slider = dJointCreateSlider(sim.world, 0);
     dJointAttach(slider, sim.robot, carriage);
     dJointSetSliderAxis(slider, 0, 0, 1);
+    dJointFeedback feedback;
+    dJointSetFeedback(slider, &feedback);
     fs_spring suspension;
     double a1[3] = {start[0], start[1], start[2]}, a2[3] = {p[0], p[1], p[2]};
     fs_spring_init(&suspension, sim.world, (fs_spring_impl)d->springs, carriage, sim.robot, a1, a2,
@@ -65,9 +93,16 @@ fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
         const dReal *c = dBodyGetPosition(carriage);
         dBodySetLinearVel(carriage, (start[0] + x - c[0]) / d->step_s, 0, (start[2] + z - c[2]) / d->step_s);
         fs_spring_prepare(&suspension, d->step_s);
+        double before[3] = {p[0], p[1], p[2]}, susp[3];
+        if (d->springs == FS_SPRING_EXPLICIT)
+            suspension_force(&suspension, susp);
         s = fs_sim_step(&sim, err);
         if (s != FS_OK)
             break;
+        /* the actuator's work goes into the energy balance the step's checks keep */
+        if (d->springs != FS_SPRING_EXPLICIT)
+            suspension_force(&suspension, susp);
+        fs_check_add_work(&sim, carriage_work(sim.robot, &feedback, susp, before, d->step_s));
         double f[3];
         fs_sim_ground_force(&sim, f);
         out->peak_force_N = fmax(out->peak_force_N, f[2]);

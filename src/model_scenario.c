@@ -73,6 +73,16 @@ const fs_key fs_scenario_keys[] = {
     NUM("walk", "fall_tilt_deg", walk_fall_tilt_deg, 0, 180, POS, "deg", "30", "a step fails when the ankle body tilts more than this"),
     {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "8",
      "contact points kept per foot shape against the terrain (after merging duplicates)"},
+    NUM("check", "max_speed_m_per_s", check_max_speed_m_per_s, 0, 1e6, POS, "m/s", "100",
+        "blown up: any point of a body faster than this (a 10 m fall lands at 14 m/s)"),
+    NUM("check", "max_loop_error_m", check_max_loop_error_m, 0, 1, POS, "m", "1e-3",
+        "drifting: a hinge's two anchors this far apart (the shortest link is 15 mm)"),
+    NUM("check", "energy_margin_J", check_energy_margin_J, 0, 1e9, POS, "J", "1",
+        "drifting: energy above its start plus the load's and drivers' work by more than this ..."),
+    NUM("check", "energy_margin_rel", check_energy_margin_rel, 0, 10, 0, "", "0.1",
+        "... plus this fraction of the work put in (docs/bench.md derives both)"),
+    {"check", "energy_every", FS_KEY_INTEGER, F(check_energy_every), 1, 1000000, 0, 0, NULL, "", "1",
+     "the energy check runs every this many steps (the other checks every step)"},
 };
 const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);
 

@@ -48,6 +48,9 @@ typedef struct fs_scenario_def {
     int walk_steps;
     double step_length_m, walk_period_s, stance_fraction, lift_m, press_m;
     double suspension_k_N_per_m, suspension_c_Ns_per_m, walk_fall_tilt_deg;
+    /* [check]: the bounds of the state checks after every step (fs_check.h) */
+    double check_max_speed_m_per_s, check_max_loop_error_m, check_energy_margin_J, check_energy_margin_rel;
+    int check_energy_every;
 } fs_scenario_def;
 
 typedef struct fs_scenario {

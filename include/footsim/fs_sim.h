@@ -5,10 +5,12 @@
  * time: fs_sim_step allocates nothing (ODE's own step works in its preallocated arena).
  *
  * One step is a fixed sequence of stages: external loads, springs, collision (foot against
- * ground only), the ODE step, and a check that the state is finite. */
+ * ground only), the ODE step, and the state checks of fs_check.h (finite, speed, loop closure,
+ * energy). */
 #ifndef FS_SIM_H
 #define FS_SIM_H
 
+#include "footsim/fs_check.h"
 #include "footsim/fs_scenario.h"
 #include "footsim/fs_scene.h"
 #include "footsim/fs_spring.h"
@@ -22,6 +24,7 @@ typedef struct fs_sim_options {
     int hold_rear_foot;     /* 1: heel and talus kinematic, fixed where they are */
     int pinned_chain;       /* c (1-5): chain c alone, heel and toe pinned to the world, a fifth of the
                                load and no ground (fs_design_pinned_chain); 0: the whole foot */
+    int record_drift;       /* 1: a drifting state is recorded, not stopped at (fs_check.h) */
 } fs_sim_options;
 
 typedef struct fs_sim {
@@ -56,15 +59,19 @@ typedef struct fs_sim {
     double *ground_grid;   /* planes and steps sampled for fs_sim_scene (heightfields use theirs) */
     fs_scene_ground scene_ground;
     long contacts_total, collision_tests;
+    fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
 } fs_sim;
 
 /* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err);
 void fs_sim_destroy(fs_sim *sim);
 
-/* Advances by the scenario's step; FS_NUMERICAL (with the body and time named) if the state
- * is no longer finite. */
+/* Advances by the scenario's step; FS_NUMERICAL (with the body or hinge and the time named) if
+ * a check of fs_check.h fails. */
 fs_status fs_sim_step(fs_sim *sim, fs_error *err);
+
+/* The load's force now (it rises over ramp_s), N; it acts along down. */
+double fs_sim_load_now_N(const fs_sim *sim);
 
 /* The load's point (the ankle) in world coordinates now. */
 void fs_sim_ankle(const fs_sim *sim, double p[3]);
@@ -74,6 +81,9 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
 
 /* A bound on the fastest point of any body: COM speed plus angular speed times its reach, m/s. */
 double fs_sim_max_speed(const fs_sim *sim);
+
+/* The same for body i (0 .. nbodies - 1; nbodies: the robot, its reach com_height_m), m/s. */
+double fs_sim_body_speed(const fs_sim *sim, int i);
 
 /* The ground's total force on the foot during the last step, N. */
 void fs_sim_ground_force(const fs_sim *sim, double force[3]);

@@ -11,9 +11,6 @@
 
 enum { FS_TRACK_ANGLES = 3 };
 
-/* Far beyond anything a foot dropped from centimetres does (a 1 m fall lands at 4.4 m/s): a run
- * whose points pass it is blowing up. */
-#define FS_TRACK_MAX_SPEED_M_PER_S 100.0
 
 /* Sample i is the state at t = i * dt_s: the ankle (world, m) and the first FS_TRACK_ANGLES hinge
  * angles (rad; for a pinned chain: ankle, midfoot, MTP). */
@@ -24,12 +21,13 @@ typedef struct fs_track {
     double (*ankle)[3];
     double (*angle)[FS_TRACK_ANGLES];
     double wall_s;             /* fs_track_run: wall-clock time of the steps (not of building), s */
+    int check_class;           /* fs_track_run: fs_check_class of the run (drifting only with record_drift) */
 } fs_track;
 
 /* Runs sc built with opts (NULL: the whole foot on its ground) for duration_s at sc's step and
- * samples every step. All memory is taken before the first step. FS_NUMERICAL when the state
- * stops being finite or a point passes FS_TRACK_MAX_SPEED_M_PER_S (err says when); out is then
- * freed. */
+ * samples every step. All memory is taken before the first step. FS_NUMERICAL when a state
+ * check fails (fs_check.h; with opts->record_drift only when it blows up; err says when); out is
+ * then freed. */
 fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double duration_s, fs_track *out,
                        fs_error *err);
 
