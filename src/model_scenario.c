@@ -73,6 +73,12 @@ const fs_key fs_scenario_keys[] = {
     NUM("walk", "fall_tilt_deg", walk_fall_tilt_deg, 0, 180, POS, "deg", "30", "a step fails when the ankle body tilts more than this"),
     {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "8",
      "contact points kept per foot shape against the terrain (after merging duplicates)"},
+    {"run", "collide", FS_KEY_CHOICE, F(collide_all), 0, 0, 0, 0, "ground|all", "", "ground",
+     "ground: each foot shape against the terrain only; all: every pair of shapes, foot against foot too "
+     "(slower; what footsim bench speed compares)"},
+    NUM("run", "auto_disable_s", auto_disable_s, 0, 100, 0, "s", "0",
+        "0: off; else ODE stops stepping a body slower than rest_speed_m_per_s (turning slower than that "
+        "over 1 cm) for this long"),
 };
 const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);
 

@@ -48,6 +48,9 @@ typedef struct fs_scenario_def {
     int walk_steps;
     double step_length_m, walk_period_s, stance_fraction, lift_m, press_m;
     double suspension_k_N_per_m, suspension_c_Ns_per_m, walk_fall_tilt_deg;
+    /* what a run may skip (the speed benchmark measures both ways) */
+    int collide_all;           /* 0: foot shapes against the ground only; 1: every pair, foot-foot too */
+    double auto_disable_s;     /* > 0: ODE disables bodies slower than rest_speed_m_per_s for this long */
 } fs_scenario_def;
 
 typedef struct fs_scenario {
