@@ -402,6 +402,13 @@ static double distance2(const dContactGeom *a, const dContactGeom *b)
     return d;
 }
 
+/* distance2(a, b) <= r2, most often decided by x alone (adding squares never makes a sum smaller). */
+static int within(const dContactGeom *a, const dContactGeom *b, double r2)
+{
+    double dx = a->pos[0] - b->pos[0];
+    return dx * dx <= r2 && distance2(a, b) <= r2;
+}
+
 /* Keeps at most max contacts: the same point found by two heightfield tiles (they share their
  * edges) counts once, then the deepest, then each next the farthest from those kept, so the
  * support the contacts give is spread like the real one. Contacts from index lattice_from on are
@@ -415,7 +422,7 @@ static int select_contacts(gathered *g, int max, double merge_m, int lattice_fro
         if (i == lattice_from)
             others = n;
         for (int k = 0; k < (i < lattice_from ? n : others) && !twin; k++)
-            twin = distance2(&g->c[i], &g->c[k]) <= merge_m * merge_m;
+            twin = within(&g->c[i], &g->c[k], merge_m * merge_m);
         if (!twin)
             g->c[n++] = g->c[i];
     }
@@ -441,6 +448,23 @@ static int select_contacts(gathered *g, int max, double merge_m, int lattice_fro
     return max;
 }
 
+/* Whether every vertex of lattice block (a, b) lies below the box: under its lowest corner zlow,
+ * or (the box upright) below the plane of its underside, p[2] < -hz in box_vertex_contacts, by a
+ * bound over the block's extent and highest sample with a nanometre to spare. */
+static int block_below(const fs_terrain *t, long a, long b, const dReal *R, const dReal *c, double hz, double zlow)
+{
+    const long B = FS_TERRAIN_BLOCK;
+    double top = t->zblock[(size_t)b * t->bx + a];
+    if (top < zlow)
+        return 1;
+    if (R[10] <= 0)
+        return 0;
+    double xa = t->x0 + a * B * t->dx - c[0], xb = xa + B * t->dx;
+    double ya = t->y0 + b * B * t->dx - c[1], yb = ya + B * t->dx;
+    double bound = fmax(R[2] * xa, R[2] * xb) + fmax(R[6] * ya, R[6] * yb) + R[10] * (top - c[2]);
+    return bound < -hz - 1e-9;
+}
+
 /* ODE's box-heightfield test finds box corners below the surface, not the surface's vertices
  * poking up through the box's faces: a flat sole sliding onto a rock would sink into it. This
  * adds one contact per lattice vertex inside the box, pushing out through the nearer of its top
@@ -455,13 +479,13 @@ static void box_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g)
     double hx = 0.5 * l[0], hy = 0.5 * l[1], hz = 0.5 * l[2];
     long i0 = (long)floor((aabb[0] - t->x0) / t->dx), i1 = (long)ceil((aabb[1] - t->x0) / t->dx);
     long j0 = (long)floor((aabb[2] - t->y0) / t->dx), j1 = (long)ceil((aabb[3] - t->y0) / t->dx);
-    const long B = FS_TERRAIN_BLOCK, nx = t->nx;
+    const long B = FS_TERRAIN_BLOCK, nx = t->nx, ilo = i0 > 0 ? i0 : 0;
     const double zlow = aabb[4];
     for (long j = j0 > 0 ? j0 : 0; j <= j1 && j < t->ny; j++) {
-        const double *row = t->z + (size_t)j * nx, *tops = t->zblock + (size_t)(j / B) * t->bx;
-        for (long i = i0 > 0 ? i0 : 0; i <= i1 && i < nx; i++) {
+        const double *row = t->z + (size_t)j * nx;
+        for (long i = ilo; i <= i1 && i < nx; i++) {
             /* a block wholly below the box: on to the next (the same vertices, in the same order) */
-            if (tops[i / B] < zlow) {
+            if ((i == ilo || i % B == 0) && block_below(t, i / B, j / B, R, c, hz, zlow)) {
                 i = (i / B) * B + B - 1;
                 continue;
             }
