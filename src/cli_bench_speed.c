@@ -40,7 +40,7 @@ typedef struct outcome {
     double print[NPRINT];
 } outcome;
 
-/* One scene measured: the median run, and a profiled run's stages. */
+/* One scene measured: the median run, and the median stages of its profiled runs. */
 typedef struct timing {
     const scene *sc;
     int runs;
@@ -192,8 +192,11 @@ static fs_status run_once(const scene *sc, const char *const *extra, const fs_ru
         fs_scenario_free(&loaded);
     }
     o->wall_s = cli_clock_s() - t0;
-    if (s != FS_OK)
-        return fs_fail(err, s, "%s (bench speed, scene '%s')", err->message, sc->name);
+    if (s != FS_OK) {
+        char what[FS_ERROR_MAX];
+        snprintf(what, sizeof what, "%s", err->message);
+        return fs_fail(err, s, "%s (bench speed, scene '%s')", what, sc->name);
+    }
     return FS_OK;
 }
 
@@ -276,7 +279,7 @@ static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double 
     return s;
 }
 
-/* runs unprofiled runs (their median), then profiled ones. */
+/* `runs` runs (their median), then `profiled` runs with fs_sim_profile on. */
 static fs_status time_scene(const scene *sc, int runs, int profiled, timing *t, fs_error *err)
 {
     outcome o[MAX_RUNS];
@@ -292,7 +295,8 @@ static fs_status time_scene(const scene *sc, int runs, int profiled, timing *t, 
     return s;
 }
 
-/* A temporary folder for frames, removed after. */
+/* One run of sc with the renderer drawing frames (as --frames) into a temporary folder, removed
+ * after. FS_BAD_INPUT when this footsim has no renderer. */
 static fs_status frames_run(const scene *sc, outcome *o, fs_error *err)
 {
     char tmp[] = "/tmp/footsim-bench-XXXXXX";
@@ -325,7 +329,7 @@ static fs_status time_skip(const skip *k, int runs, skip_timing *t, fs_error *er
         s = run_once(&k->base, k->with_set, NULL, &w[i], err);
         if (s == FS_OK)
             s = k->frames ? frames_run(&k->base, &wo[i], err) : run_once(&k->base, k->without_set, NULL, &wo[i], err);
-        t->same = t->same && !memcmp(w[i].print, wo[i].print, sizeof w[i].print);
+        t->same = t->same && (s != FS_OK || !memcmp(w[i].print, wo[i].print, sizeof w[i].print));
     }
     if (s == FS_OK) {
         t->with = median_run(w, runs);
