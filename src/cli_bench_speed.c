@@ -442,7 +442,10 @@ static void skips_md_table(FILE *f, const skip_timing *t, int n)
                "|---|---|---|---|--:|--:|--:|---|\n");
     for (int i = 0; i < n; i++) {
         const skip_timing *s = &t[i];
-        if (!s->skipped)
+        if (s->skipped)
+            fprintf(f, "| %s | %s | %s | %s | | | | left out: this footsim has no renderer |\n", s->k->name,
+                    s->k->base.name, s->k->with, s->k->without);
+        else
             fprintf(f, "| %s | %s | %s | %s | %.3f | %.3f | %.1f %% | %s |\n", s->k->name, s->k->base.name,
                     s->k->with, s->k->without, s->with.wall_s, s->without.wall_s, saving_pct(s),
                     s->same ? "bit-identical" : "differs");
