@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #define DEG (M_PI / 180.0)
 
@@ -257,6 +258,48 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
     return FS_OK;
 }
 
+/* ODE's auto-disable: a body that has moved slower than rest_speed_m_per_s (and turned slower than
+ * that over 1 cm) for auto_disable_s stops being stepped until something enabled touches it. */
+static void auto_disable(dWorldID world, const fs_scenario_def *s)
+{
+    dWorldSetAutoDisableFlag(world, 1);
+    dWorldSetAutoDisableLinearThreshold(world, s->rest_speed_m_per_s);
+    dWorldSetAutoDisableAngularThreshold(world, s->rest_speed_m_per_s / 0.01);
+    dWorldSetAutoDisableSteps(world, 0);
+    dWorldSetAutoDisableTime(world, s->auto_disable_s);
+}
+
+/* ---- profiling ---------------------------------------------------------------------------- */
+
+static fs_profile profile_sums; /* one per process, like the benchmark that reads it */
+static int profile_on;
+
+void fs_sim_profile(int on)
+{
+    profile_on = on;
+    if (on)
+        memset(&profile_sums, 0, sizeof profile_sums);
+}
+
+void fs_sim_profile_read(fs_profile *out) { *out = profile_sums; }
+
+static fs_profile *profile_sink(void) { return profile_on ? &profile_sums : NULL; }
+
+/* Adds the time since the last stage ended to stage, when profiling. */
+static void lap(fs_sim *sim, fs_stage stage)
+{
+    if (!sim->profile)
+        return;
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    double t = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+    if (sim->profile_mark > 0) {
+        sim->profile->stage_s[stage] += t - sim->profile_mark;
+        sim->profile->laps[stage]++;
+    }
+    sim->profile_mark = t;
+}
+
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
 {
     fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
@@ -294,6 +337,8 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     /* Without a surface layer, a very stiff contact pushes a resting sphere out in one step and it
      * loses contact (and friction) every few steps: the toes then creep. */
     dWorldSetContactSurfaceLayer(sim->world, s->contact_layer_m);
+    if (s->auto_disable_s > 0)
+        auto_disable(sim->world, s);
     sim->space = dSimpleSpaceCreate(0);
     sim->contact_group = dJointGroupCreate(0);
     start_rotation(s, sim->R0);
@@ -324,6 +369,7 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     sim->load_N = s->load_kg * s->gravity_m_per_s2 / share;
     contact_template(sim);
     body_reach(sim);
+    sim->profile = profile_sink();
     return scene_ground(sim, err);
 }
 
@@ -376,16 +422,27 @@ static double distance2(const dContactGeom *a, const dContactGeom *b)
     return d;
 }
 
+/* distance2(a, b) <= r2, most often decided by x alone (adding squares never makes a sum smaller). */
+static int within(const dContactGeom *a, const dContactGeom *b, double r2)
+{
+    double dx = a->pos[0] - b->pos[0];
+    return dx * dx <= r2 && distance2(a, b) <= r2;
+}
+
 /* Keeps at most max contacts: the same point found by two heightfield tiles (they share their
  * edges) counts once, then the deepest, then each next the farthest from those kept, so the
- * support the contacts give is spread like the real one. */
-static int select_contacts(gathered *g, int max, double merge_m)
+ * support the contacts give is spread like the real one. Contacts from index lattice_from on are
+ * distinct lattice vertices (box_vertex_contacts), a lattice cell apart: none is another's twin,
+ * so they are compared with the others only. */
+static int select_contacts(gathered *g, int max, double merge_m, int lattice_from)
 {
-    int n = 0;
+    int n = 0, others = 0;
     for (int i = 0; i < g->n; i++) {
         int twin = 0;
-        for (int k = 0; k < n && !twin; k++)
-            twin = distance2(&g->c[i], &g->c[k]) <= merge_m * merge_m;
+        if (i == lattice_from)
+            others = n;
+        for (int k = 0; k < (i < lattice_from ? n : others) && !twin; k++)
+            twin = within(&g->c[i], &g->c[k], merge_m * merge_m);
         if (!twin)
             g->c[n++] = g->c[i];
     }
@@ -411,6 +468,23 @@ static int select_contacts(gathered *g, int max, double merge_m)
     return max;
 }
 
+/* Whether every vertex of lattice block (a, b) lies below the box: under its lowest corner zlow,
+ * or (the box upright) below the plane of its underside, p[2] < -hz in box_vertex_contacts, by a
+ * bound over the block's extent and highest sample with a nanometre to spare. */
+static int block_below(const fs_terrain *t, long a, long b, const dReal *R, const dReal *c, double hz, double zlow)
+{
+    const long B = FS_TERRAIN_BLOCK;
+    double top = t->zblock[(size_t)b * t->bx + a];
+    if (top < zlow)
+        return 1;
+    if (R[10] <= 0)
+        return 0;
+    double xa = t->x0 + a * B * t->dx - c[0], xb = xa + B * t->dx;
+    double ya = t->y0 + b * B * t->dx - c[1], yb = ya + B * t->dx;
+    double bound = fmax(R[2] * xa, R[2] * xb) + fmax(R[6] * ya, R[6] * yb) + R[10] * (top - c[2]);
+    return bound < -hz - 1e-9;
+}
+
 /* ODE's box-heightfield test finds box corners below the surface, not the surface's vertices
  * poking up through the box's faces: a flat sole sliding onto a rock would sink into it. This
  * adds one contact per lattice vertex inside the box, pushing out through the nearer of its top
@@ -425,17 +499,27 @@ static void box_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g)
     double hx = 0.5 * l[0], hy = 0.5 * l[1], hz = 0.5 * l[2];
     long i0 = (long)floor((aabb[0] - t->x0) / t->dx), i1 = (long)ceil((aabb[1] - t->x0) / t->dx);
     long j0 = (long)floor((aabb[2] - t->y0) / t->dx), j1 = (long)ceil((aabb[3] - t->y0) / t->dx);
-    for (long j = j0 > 0 ? j0 : 0; j <= j1 && j < t->ny; j++)
-        for (long i = i0 > 0 ? i0 : 0; i <= i1 && i < t->nx; i++) {
-            double z = t->z[(size_t)j * t->nx + i];
-            if (z < aabb[4])
+    const long B = FS_TERRAIN_BLOCK, nx = t->nx, ilo = i0 > 0 ? i0 : 0;
+    const double zlow = aabb[4];
+    for (long j = j0 > 0 ? j0 : 0; j <= j1 && j < t->ny; j++) {
+        const double *row = t->z + (size_t)j * nx;
+        for (long i = ilo; i <= i1 && i < nx; i++) {
+            /* a block wholly below the box: on to the next (the same vertices, in the same order) */
+            if ((i == ilo || i % B == 0) && block_below(t, i / B, j / B, R, c, hz, zlow)) {
+                i = (i / B) * B + B - 1;
+                continue;
+            }
+            double z = row[i];
+            if (z < zlow)
                 continue;
             double w[3] = {t->x0 + i * t->dx - c[0], t->y0 + j * t->dx - c[1], z - c[2]};
             /* the vertex in the box's frame: R^T w (ODE's R is row-major, 4 columns) */
             double p[3];
             for (int k = 0; k < 3; k++)
                 p[k] = R[k] * w[0] + R[4 + k] * w[1] + R[8 + k] * w[2];
-            if (fabs(p[0]) > hx || fabs(p[1]) > hy || fabs(p[2]) > hz || g->n == FS_MAX_CONTACTS)
+            if (g->n == FS_MAX_CONTACTS)
+                return;
+            if (fabs(p[0]) > hx || fabs(p[1]) > hy || fabs(p[2]) > hz)
                 continue;
             int up = p[2] > 0; /* nearer the top face: push the box down over it */
             dContactGeom *ct = &g->c[g->n++];
@@ -447,6 +531,28 @@ static void box_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g)
             ct->depth = up ? hz - p[2] : p[2] + hz;
             ct->g1 = box;
         }
+    }
+}
+
+/* Two foot shapes (run.collide = all): bodies joined by a joint are skipped, and whatever touches
+ * becomes contact joints between the two bodies. */
+static void foot_pair(void *data, dGeomID a, dGeomID b)
+{
+    fs_sim *sim = data;
+    dBodyID b1 = dGeomGetBody(a), b2 = dGeomGetBody(b);
+    if (dAreConnectedExcluding(b1, b2, dJointTypeContact))
+        return;
+    sim->collision_tests++;
+    dContactGeom c[8];
+    int n = dCollide(a, b, 8, c, sizeof c[0]);
+    for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
+        dContact ct = sim->contact_template;
+        ct.geom = c[i];
+        dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
+        dJointAttach(j, b1, b2);
+        dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
+        memcpy(sim->contact_pos[sim->contacts_now++], c[i].pos, 3 * sizeof(double));
+    }
 }
 
 /* Collision: each foot shape against the terrain, nothing else; its contacts become joints. */
@@ -458,10 +564,13 @@ static void collide(fs_sim *sim)
     for (int s = 0; s < sim->nshapes; s++) {
         g.sim = sim;
         g.n = 0;
+        lap(sim, FS_STAGE_CONTACTS);
         dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, &g, gather);
+        lap(sim, FS_STAGE_COLLISION);
+        int from_ode = g.n;
         if (t->z && dGeomGetClass(sim->shape[s]) == dBoxClass)
             box_vertex_contacts(t, sim->shape[s], &g);
-        int n = select_contacts(&g, sim->sc->def.max_contacts, merge_m);
+        int n = select_contacts(&g, sim->sc->def.max_contacts, merge_m, from_ode);
         dBodyID body = dGeomGetBody(sim->shape[s]);
         for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
             dContact ct = sim->contact_template;
@@ -472,6 +581,11 @@ static void collide(fs_sim *sim)
             memcpy(sim->contact_pos[sim->contacts_now], g.c[i].pos, 3 * sizeof(double));
             sim->contacts_now++;
         }
+    }
+    if (sim->sc->def.collide_all) {
+        lap(sim, FS_STAGE_CONTACTS);
+        dSpaceCollide(sim->space, sim, foot_pair);
+        lap(sim, FS_STAGE_COLLISION);
     }
 }
 
@@ -494,18 +608,22 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
 {
     const fs_scenario_def *s = &sim->sc->def;
     double h = s->step_s;
+    lap(sim, FS_STAGE_CALLER);
     /* external loads */
     apply_load(sim);
+    lap(sim, FS_STAGE_LOADS);
     /* spring-dampers: soft rows set for h, or explicit forces */
     for (int i = 0; i < sim->geom->nsprings; i++)
         fs_spring_prepare(&sim->spring[i], h);
     if (sim->has_achilles)
         fs_spring_prepare(&sim->achilles, h);
+    lap(sim, FS_STAGE_SPRINGS);
     /* collision: the foot's shapes against the ground, nothing else */
     sim->contacts_now = 0;
     if (sim->ground)
         collide(sim);
     sim->contacts_total += sim->contacts_now;
+    lap(sim, FS_STAGE_CONTACTS);
     /* the ODE step */
     if (s->stepper == FS_STEPPER_QUICKSTEP)
         dWorldQuickStep(sim->world, h);
@@ -513,8 +631,13 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
         dWorldStep(sim->world, h);
     dJointGroupEmpty(sim->contact_group);
     sim->time_s += h;
+    lap(sim, FS_STAGE_ODE);
     /* a sound state (finite, physical speeds, closed loops, no energy from nowhere), or a clear stop */
-    return fs_check_step(sim, err);
+    fs_status st = fs_check_step(sim, err);
+    lap(sim, FS_STAGE_CHECK);
+    if (sim->profile)
+        sim->profile->steps++;
+    return st;
 }
 
 /* ---- measurements ------------------------------------------------------------------------- */

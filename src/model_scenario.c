@@ -83,6 +83,12 @@ const fs_key fs_scenario_keys[] = {
         "... plus this fraction of the work put in (docs/bench.md derives both)"),
     {"check", "energy_every", FS_KEY_INTEGER, F(check_energy_every), 1, 1000000, 0, 0, NULL, "", "1",
      "the energy check runs every this many steps (the other checks every step)"},
+    {"run", "collide", FS_KEY_CHOICE, F(collide_all), 0, 0, 0, 0, "ground|all", "", "ground",
+     "ground: each foot shape against the terrain only; all: every pair of shapes, foot against foot too "
+     "(slower; what footsim bench speed compares)"},
+    NUM("run", "auto_disable_s", auto_disable_s, 0, 100, 0, "s", "0",
+        "0: off; else ODE stops stepping a body slower than rest_speed_m_per_s (turning slower than that "
+        "over 1 cm) for this long"),
 };
 const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);
 

@@ -258,6 +258,25 @@ double fs_terrain_height(const fs_terrain *t, double x, double y)
     return z00 + (z01 - z00) * fy + (z11 - z01) * fx;
 }
 
+/* The highest sample of each block (fs_terrain.h). */
+static fs_status block_tops(fs_terrain *t, fs_error *err)
+{
+    const int B = FS_TERRAIN_BLOCK;
+    t->bx = (t->nx + B - 1) / B;
+    t->by = (t->ny + B - 1) / B;
+    t->zblock = malloc((size_t)t->bx * t->by * sizeof *t->zblock);
+    if (!t->zblock)
+        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory for %d x %d samples", t->path, t->nx, t->ny);
+    for (int k = 0; k < t->bx * t->by; k++)
+        t->zblock[k] = -INFINITY;
+    for (int j = 0; j < t->ny; j++)
+        for (int i = 0; i < t->nx; i++) {
+            double *top = &t->zblock[(size_t)(j / B) * t->bx + i / B];
+            *top = fmax(*top, t->z[(size_t)j * t->nx + i]);
+        }
+    return FS_OK;
+}
+
 fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, double ymax, fs_error *err)
 {
     if (!fs_terrain_is_heightfield(t))
@@ -277,6 +296,8 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
                        "coarser resolution_m or a smaller region",
                        t->path, xmax - xmin, ymax - ymin, dx, n, FS_TERRAIN_MAX_SAMPLES);
     free(t->z);
+    free(t->zblock);
+    t->zblock = NULL;
     t->nx = (int)(i1 - i0 + 1);
     t->ny = (int)(j1 - j0 + 1);
     t->i0 = i0;
@@ -301,7 +322,7 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
             t->zmin = fmin(t->zmin, *z);
             t->zmax = fmax(t->zmax, *z);
         }
-    return FS_OK;
+    return block_tops(t, err);
 }
 
 /* ---- loading ------------------------------------------------------------------------------- */
@@ -381,6 +402,8 @@ void fs_terrain_free(fs_terrain *t)
 {
     free(t->img);
     free(t->z);
+    free(t->zblock);
     t->img = NULL;
     t->z = NULL;
+    t->zblock = NULL;
 }

@@ -51,6 +51,9 @@ typedef struct fs_scenario_def {
     /* [check]: the bounds of the state checks after every step (fs_check.h) */
     double check_max_speed_m_per_s, check_max_loop_error_m, check_energy_margin_J, check_energy_margin_rel;
     int check_energy_every;
+    /* what a run may skip (the speed benchmark measures both ways) */
+    int collide_all;           /* 0: foot shapes against the ground only; 1: every pair, foot-foot too */
+    double auto_disable_s;     /* > 0: ODE disables bodies slower than rest_speed_m_per_s for this long */
 } fs_scenario_def;
 
 typedef struct fs_scenario {

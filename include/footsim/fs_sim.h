@@ -6,7 +6,7 @@
  *
  * One step is a fixed sequence of stages: external loads, springs, collision (foot against
  * ground only), the ODE step, and the state checks of fs_check.h (finite, speed, loop closure,
- * energy). */
+ * energy). fs_sim_profile times them. */
 #ifndef FS_SIM_H
 #define FS_SIM_H
 
@@ -60,6 +60,8 @@ typedef struct fs_sim {
     fs_scene_ground scene_ground;
     long contacts_total, collision_tests;
     fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
+    struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_profile) */
+    double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
 } fs_sim;
 
 /* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */
@@ -72,6 +74,34 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err);
 
 /* The load's force now (it rises over ramp_s), N; it acts along down. */
 double fs_sim_load_now_N(const fs_sim *sim);
+/* Where the time of the steps goes. The stages of fs_sim_step, in order, and what their code is:
+ * ODE's (collision: dSpaceCollide2 over the ground space with the dCollide calls of footsim's
+ * callback; the ODE step: dWorldStep or dWorldQuickStep and emptying the contact group) or
+ * footsim's own (the rest, and FS_STAGE_CALLER: the time between one step's end and the next
+ * one's start, which is the caller's measurements, logging and rest test). */
+typedef enum fs_stage {
+    FS_STAGE_LOADS,     /* the load ramped and applied */
+    FS_STAGE_SPRINGS,   /* spring-dampers prepared for the step */
+    FS_STAGE_COLLISION, /* ODE: foot shapes against the ground space */
+    FS_STAGE_CONTACTS,  /* box vertex contacts, merging and selecting, contact joints made */
+    FS_STAGE_ODE,       /* ODE: the step */
+    FS_STAGE_CHECK,     /* the state checks (fs_check.h) */
+    FS_STAGE_CALLER,    /* between steps: the caller's own work */
+    FS_NSTAGES
+} fs_stage;
+
+typedef struct fs_profile {
+    double stage_s[FS_NSTAGES]; /* wall time in each stage, summed over every profiled step, s */
+    long laps[FS_NSTAGES];      /* how many timed intervals each sum has (each holds one clock read) */
+    long steps;
+} fs_profile;
+
+/* Profiling is process-wide and off by default. fs_sim_profile(1) clears the sums, and every
+ * fs_sim built after it adds the time of each of its steps' stages to them (CLOCK_MONOTONIC);
+ * fs_sim_profile(0) stops that for sims built afterwards. Off, each stage costs one untaken branch.
+ * Timing never changes a result. fs_sim_profile_read copies the sums. Not thread-safe. */
+void fs_sim_profile(int on);
+void fs_sim_profile_read(fs_profile *out);
 
 /* The load's point (the ankle) in world coordinates now. */
 void fs_sim_ankle(const fs_sim *sim, double p[3]);

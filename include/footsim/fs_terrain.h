@@ -55,7 +55,14 @@ typedef struct fs_terrain {
     double x0, y0, dx;
     double *z;
     double zmin, zmax;
+    /* the highest sample of each block of FS_TERRAIN_BLOCK x FS_TERRAIN_BLOCK samples, bx * by of
+     * them, zblock[b * bx + a] over samples [a B, a B + B) x [b B, b B + B): a search for samples
+     * above a height skips the blocks below it */
+    int bx, by;
+    double *zblock;
 } fs_terrain;
+
+enum { FS_TERRAIN_BLOCK = 8 };
 
 extern const fs_key fs_terrain_keys[];
 extern const int fs_terrain_nkeys;
