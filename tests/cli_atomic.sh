@@ -1,11 +1,7 @@
 #!/bin/sh
 # A run's folder is replaced whole: a second run into it leaves exactly the new run's files, and no
 # partial folder behind. Usage: cli_atomic.sh path/to/footsim (run from the source folder).
-fs=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1" >&2; fi; }
+. "$(dirname "$0")/cli_check.sh"
 mkdir -p "$tmp/out" && echo stale >"$tmp/out/old.txt"
 "$fs" run scenarios/static_load.ini --set run.duration_s=0.05 --out "$tmp/out" >/dev/null
 check '[ -f "$tmp/out/metrics.json" ] && [ -f "$tmp/out/trajectory.csv" ]'
@@ -17,5 +13,4 @@ cp "$tmp/out/metrics.json" "$tmp/before.json"
 status=$?
 check '[ "$status" -eq 2 ]'
 check 'cmp -s "$tmp/before.json" "$tmp/out/metrics.json"'
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -2,11 +2,7 @@
 # footsim bench precision --quick writes its table, summary and chart, marks each scene's default
 # and Pareto front, and ODE's error on the pinned chain falls as the step does (first order: ten
 # times smaller step, about ten times smaller error). Usage: cli_bench_precision.sh path/to/footsim
-fs=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1" >&2; fi; }
+. "$(dirname "$0")/cli_check.sh"
 "$fs" bench precision --quick --out "$tmp" >/dev/null 2>"$tmp/err.txt"
 status=$?
 check '[ "$status" -eq 0 ]'
@@ -27,5 +23,4 @@ if command -v gnuplot >/dev/null 2>&1; then check '[ -s "$tmp/precision.png" ]';
 "$fs" bench nonsense 2>/dev/null
 status=$?
 check '[ "$status" -eq 2 ]'
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

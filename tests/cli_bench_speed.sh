@@ -2,11 +2,7 @@
 # footsim bench speed --quick writes its files, whole, with a row per scene and per skip; a folder
 # it cannot make is refused (exit 2) before anything is measured. No timing is checked.
 # Usage: cli_bench_speed.sh path/to/footsim (run from the source folder).
-fs=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1" >&2; fi; }
+. "$(dirname "$0")/cli_check.sh"
 "$fs" bench speed --quick --out "$tmp/bench" >/dev/null 2>"$tmp/err"
 status=$?
 check '[ "$status" -eq 0 ]'
@@ -27,5 +23,4 @@ touch "$tmp/file"
 "$fs" bench speed --quick --out "$tmp/file/bench" >/dev/null 2>&1
 status=$?
 check '[ "$status" -eq 2 ]'
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -2,11 +2,7 @@
 # A run that blows up exits 3, says which body, when and what to try, and writes nothing: no results
 # folder, no partial folder, and an earlier run's results left as they were; a trial exits 3 too.
 # Usage: cli_numerical.sh path/to/footsim (run from the source folder).
-fs=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1" >&2; fi; }
+. "$(dirname "$0")/cli_check.sh"
 # explicit springs at 1 ms, 25 times beyond their 4e-5 s limit
 blow="--set run.springs=explicit --set run.step_s=1e-3"
 "$fs" run scenarios/static_load.ini $blow --out "$tmp/new" >"$tmp/out.txt" 2>"$tmp/err.txt"
@@ -29,5 +25,4 @@ check '[ -z "$(ls -d "$tmp"/old.partial.* 2>/dev/null)" ]'
 "$fs" trial scenarios/landing_trial.ini $blow >/dev/null 2>&1
 status=$?
 check '[ "$status" -eq 3 ]'
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
