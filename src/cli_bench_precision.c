@@ -36,7 +36,7 @@ static const int ITERATIONS_QUICK[] = {0, 20};
 
 /* A scene: a scenario, the overrides that make it, how it is run, and its reference path. */
 typedef struct scene {
-    const char *name, *path;
+    const char *name, *title, *path;
     char set[MAX_SET][96];
     int nset;
     int pinned_chain;           /* 0, or the chain (1-5) pinned alone */
@@ -109,8 +109,14 @@ static fs_status measure(row *r, int repeats, fs_error *err)
     for (int k = 0; k < repeats && r->ok && (k == 0 || spent < REPEAT_BUDGET_S); k++) {
         fs_track t;
         fs_error run_err;
-        if (fs_track_run(&sc, &opts, r->sc->duration_s, &t, &run_err) != FS_OK) {
+        fs_status ran = fs_track_run(&sc, &opts, r->sc->duration_s, &t, &run_err);
+        if (ran == FS_NUMERICAL) {
             r->ok = 0; /* blown up: a result of the sweep, not a failure of the command */
+            break;
+        }
+        if (ran != FS_OK) {
+            *err = run_err;
+            s = ran;
             break;
         }
         wall[done++] = t.wall_s;
@@ -136,6 +142,7 @@ static fs_status chain_scene(scene *s, fs_error *err)
 {
     memset(s, 0, sizeof *s);
     s->name = "chain";
+    s->title = "pinned chain against the planar reference";
     s->path = "scenarios/static_load.ini";
     s->pinned_chain = 3;
     s->duration_s = 0.2;
@@ -167,11 +174,12 @@ static fs_status chain_scene(scene *s, fs_error *err)
 }
 
 /* A landing trial on rough ground: `design`, the pose drawn for `seed` (as a campaign would). */
-static fs_status landing_scene(scene *s, const char *name, const char *design, int seed, double duration_s,
-                               fs_error *err)
+static fs_status landing_scene(scene *s, const char *name, const char *title, const char *design, int seed,
+                               double duration_s, fs_error *err)
 {
     memset(s, 0, sizeof *s);
     s->name = name;
+    s->title = title;
     s->path = "scenarios/landing_trial.ini";
     s->duration_s = duration_s;
     snprintf(s->set[s->nset++], sizeof s->set[0], "scenario.terrain=../terrains/rough.ini");
@@ -322,22 +330,29 @@ static void describe(text *t, const row *r)
         add(t, "| step | %s | %g |", spring_name(r->springs), r->step_s);
 }
 
+/* Scene s's rows on its Pareto front (and its default row, with_default), slowest first. */
+static int sorted_front(const row *rows, int n, const scene *s, int with_default, const row **out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++)
+        if (rows[i].sc == s && (rows[i].pareto || (with_default && rows[i].is_default)))
+            out[m++] = &rows[i];
+    for (int i = 1; i < m; i++)
+        for (int j = i; j > 0 && rtf(out[j]) < rtf(out[j - 1]); j--) {
+            const row *x = out[j];
+            out[j] = out[j - 1];
+            out[j - 1] = x;
+        }
+    return m;
+}
+
 /* The table of one scene's Pareto front, fastest last. */
 static void front_table(text *t, const row *rows, int n, const scene *s)
 {
     add(t, "\n### %s: the Pareto front\n\n| stepper | springs | step (s) | max ankle error (m) | RMS (m) | "
            "max angle error (rad) | real-time factor | default |\n|---|---|---|---|---|---|---|---|\n", s->name);
     const row *sorted[MAX_ROWS];
-    int m = 0;
-    for (int i = 0; i < n; i++)
-        if (rows[i].sc == s && (rows[i].pareto || rows[i].is_default))
-            sorted[m++] = &rows[i];
-    for (int i = 1; i < m; i++)
-        for (int j = i; j > 0 && rtf(sorted[j]) < rtf(sorted[j - 1]); j--) {
-            const row *x = sorted[j];
-            sorted[j] = sorted[j - 1];
-            sorted[j - 1] = x;
-        }
+    int m = sorted_front(rows, n, s, 1, sorted);
     for (int i = 0; i < m; i++) {
         const row *r = sorted[i];
         describe(t, r);
@@ -405,13 +420,14 @@ static fs_status write_md(const char *dir, const row *rows, int n, const scene *
         front_table(&t, rows, n, &scenes[c]);
     for (int c = 1; c < nscenes; c++)
         goal(&t, rows, n, &scenes[c]);
-    int blown = 0;
-    for (int i = 0; i < n; i++)
+    int blown = 0, drifting = 0;
+    for (int i = 0; i < n; i++) {
         blown += !rows[i].ok;
-    add(&t, "\nThe flat foot has no hinges or springs: its angle error is `nan` and it is run with one spring "
-            "implementation only.\n");
-    add(&t, "\n%d of %d configurations blew up (`status` = blown_up in the CSV); `footsim bench stability` maps "
-            "where.\n", blown, n);
+        drifting += rows[i].ok && rows[i].drifting;
+    }
+    add(&t, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
+            "from nowhere: `status` in the CSV; neither is put on a front); `footsim bench stability` maps where.\n",
+        blown, n, drifting);
     char path[2 * FS_PATH_MAX];
     snprintf(path, sizeof path, "%s/precision.md", dir);
     fs_status s = t.buf ? fs_write_atomic(path, t.buf, t.len, err) : fs_fail(err, FS_IO, "out of memory");
@@ -419,46 +435,61 @@ static fs_status write_md(const char *dir, const row *rows, int n, const scene *
     return s;
 }
 
-static fs_status write_chart(const char *dir, fs_error *err)
+static fs_status write_chart(const char *dir, const row *rows, int n, const scene *scenes, int nscenes, fs_error *err)
 {
-    static const char gp[] =
+    static const char head[] =
         "# 'gnuplot precision.gp' in this folder draws precision.png from precision.csv.\n"
         "if (!exists(\"out\")) out = 'precision.png'\n"
+        "set datafile separator ','\n"
+        "sel(scene, stepper, spring, col) = (strcol(1) eq scene && strcol(2) eq stepper && strcol(4) eq spring && "
+        "strcol(13) ne 'blown_up') ? column(col) : NaN\n"
+        "dflt(scene, col) = (strcol(1) eq scene && $15 == 1 && strcol(13) eq 'ok') ? column(col) : NaN\n";
+    static const char axes[] =
         "set terminal pngcairo size 1800,600 font ',11'\n"
         "set output out\n"
-        "set datafile separator ','\n"
         "set logscale xy\n"
         "set format y '10^{%L}'\n"
         "set format x '10^{%L}'\n"
         "set xlabel 'real-time factor (simulated s per wall s)'\n"
         "set ylabel 'largest ankle error (m)'\n"
         "set grid\n"
-        "set key bottom right font ',9'\n"
-        "sel(scene, stepper, spring, col) = (strcol(1) eq scene && strcol(2) eq stepper && strcol(4) eq spring && "
-        "strcol(13) ne 'blown_up') ? column(col) : NaN\n"
-        "front(scene, col) = (strcol(1) eq scene && $14 == 1) ? column(col) : NaN\n"
-        "dflt(scene, col) = (strcol(1) eq scene && $15 == 1 && strcol(13) eq 'ok') ? column(col) : NaN\n"
-        "set multiplot layout 1,3\n"
-        "do for [s in 'chain landing_flat landing_biomimetic'] {\n"
-        "  set title s eq 'chain' ? 'pinned chain vs the planar reference' : s eq 'landing_flat' ? "
-        "'flat foot landing on rough ground' : 'biomimetic foot landing on rough ground'\n"
-        "  plot 'precision.csv' skip 1 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
+        "set key bottom right font ',9'\n";
+    static const char panel[] =
+        "set title '%s'\n"
+        "plot 'precision.csv' skip 1 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
         "with points pt 7 ps 1 lc rgb '#1f77b4' title 'dWorldStep, implicit springs', \\\n"
-        "       '' skip 1 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
+        "     '' skip 1 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
         "lc rgb '#ff7f0e' title 'dWorldStep, explicit', \\\n"
-        "       '' skip 1 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
+        "     '' skip 1 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
         "pt 6 ps 1 lc rgb '#2ca02c' title 'QuickStep, implicit', \\\n"
-        "       '' skip 1 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
+        "     '' skip 1 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
         "pt 4 ps 1 lc rgb '#d62728' title 'QuickStep, explicit', \\\n"
-        "       '' skip 1 using (front(s,12)):(front(s,6)) smooth unique with lines lw 2 lc rgb 'black' "
-        "title 'Pareto front', \\\n"
-        "       '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
-        "title 'scenario default'\n"
-        "}\n"
-        "unset multiplot\n";
+        "     '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
+        "title 'scenario default', \\\n"
+        "     $front%d using 1:2 with lines lw 2 lc rgb 'black' title 'Pareto front'\n";
+    text t = {0};
+    add(&t, "%s", head);
+    /* each front as a block of its own (real-time factor, error), fastest last: a line through
+     * filtered rows of the CSV would break at every row filtered out */
+    for (int c = 0; c < nscenes; c++) {
+        const row *front[MAX_ROWS];
+        int m = sorted_front(rows, n, &scenes[c], 0, front);
+        add(&t, "$front%d << EOD\n", c);
+        for (int i = 0; i < m; i++)
+            if (front[i]->e.max_m > 0) /* the reference itself has no place on a log scale */
+                add(&t, "%.6g,%.6g\n", rtf(front[i]), front[i]->e.max_m);
+        add(&t, "EOD\n");
+    }
+    add(&t, "%sset multiplot layout 1,%d\n", axes, nscenes);
+    for (int c = 0; c < nscenes; c++) {
+        add(&t, "s = '%s'\n", scenes[c].name);
+        add(&t, panel, scenes[c].title, c);
+    }
+    add(&t, "unset multiplot\n");
     char path[2 * FS_PATH_MAX];
     snprintf(path, sizeof path, "%s/precision.gp", dir);
-    fs_status s = fs_write_atomic(path, gp, sizeof gp - 1, err);
+    fs_status s = t.buf ? fs_write_atomic(path, t.buf, t.len, err) : fs_fail(err, FS_IO, "out of memory");
+    free(t.buf);
     if (s == FS_OK)
         cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
     return s;
@@ -481,9 +512,10 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     /* the flat foot lands with seed 10's pose on rough ground; the biomimetic foot folds and falls
      * with any (docs/landing.md), and seed 1's fall is measured as it is */
     if (s == FS_OK)
-        s = landing_scene(&scenes[1], "landing_flat", "feet/flat.ini", 10, landing_s, &err);
+        s = landing_scene(&scenes[1], "landing_flat", "flat foot landing on rough ground", "feet/flat.ini", 10, landing_s, &err);
     if (s == FS_OK)
-        s = landing_scene(&scenes[2], "landing_biomimetic", "feet/biomimetic.ini", 1, landing_s, &err);
+        s = landing_scene(&scenes[2], "landing_biomimetic", "biomimetic foot landing on rough ground",
+                              "feet/biomimetic.ini", 1, landing_s, &err);
     if (s == FS_OK)
         s = sweep(scenes, NSCENES, a->quick, rows, &nrows, &err);
     if (s == FS_OK)
@@ -491,7 +523,7 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     if (s == FS_OK)
         s = write_md(dir, rows, nrows, scenes, NSCENES, machine, a->quick, &err);
     if (s == FS_OK)
-        s = write_chart(dir, &err);
+        s = write_chart(dir, rows, nrows, scenes, NSCENES, &err);
     for (int c = 0; c < NSCENES; c++)
         fs_track_free(&scenes[c].ref);
     if (s != FS_OK)
