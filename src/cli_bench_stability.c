@@ -116,7 +116,7 @@ static void run_config(const config *c, const fs_design_def *base, double durati
     if (o->status == FS_OK)
         o->status = fs_sim_build(&sim, &sc, NULL, &err);
     if (o->status != FS_OK) {
-        snprintf(o->error, sizeof o->error, "%s", err.message);
+        snprintf(o->error, sizeof o->error, "%.500s", err.message);
         return;
     }
     sim.check.record_drift = 1;
