@@ -210,6 +210,16 @@ static void progress(int done, int n, double t0)
         fputc('\n', stderr);
 }
 
+/* Ends the children still running (after a failure) and collects them. */
+static void stop_children(child *ch, int running)
+{
+    for (int i = 0; i < running; i++) {
+        kill(ch[i].pid, SIGKILL);
+        waitpid(ch[i].pid, NULL, 0);
+        close(ch[i].fd);
+    }
+}
+
 /* Runs every configuration in up to jobs children at a time. */
 static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, const fs_design_def *base,
                          double duration, fs_error *err)
@@ -219,20 +229,29 @@ static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, const
     double t0 = cli_clock_s();
     while (done < n) {
         while (running < jobs && next < n) {
-            if (!start_child(&cfg[next], base, duration, next, &ch[running]))
-                return fs_fail(err, FS_IO, "cannot start a child process (%s)", strerror(errno));
+            if (!start_child(&cfg[next], base, duration, next, &ch[running])) {
+                int e = errno;
+                stop_children(ch, running);
+                return fs_fail(err, FS_IO, "cannot start a child process (%s)", strerror(e));
+            }
             next++, running++;
         }
         int status;
         pid_t pid = waitpid(-1, &status, 0);
-        if (pid < 0)
-            return fs_fail(err, FS_IO, "waitpid: %s", strerror(errno));
+        if (pid < 0) {
+            int e = errno;
+            stop_children(ch, running);
+            return fs_fail(err, FS_IO, "waitpid: %s", strerror(e));
+        }
         for (int i = 0; i < running; i++)
             if (ch[i].pid == pid) {
                 finish_child(&ch[i], status, &cfg[ch[i].index], &out[ch[i].index]);
-                if (out[ch[i].index].status != FS_OK)
-                    return fs_fail(err, (fs_status)out[ch[i].index].status, "%s", out[ch[i].index].error);
+                const outcome *o = &out[ch[i].index];
                 ch[i] = ch[--running];
+                if (o->status != FS_OK) {
+                    stop_children(ch, running);
+                    return fs_fail(err, (fs_status)o->status, "%s", o->error);
+                }
                 progress(++done, n, t0);
                 break;
             }

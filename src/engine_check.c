@@ -119,10 +119,23 @@ static void account_load(fs_sim *sim)
     c->work_abs_J += fabs(w);
 }
 
-void fs_check_add_work(fs_sim *sim, double work_J)
+void fs_check_set_work(fs_sim *sim, fs_check_work_fn fn, void *user)
 {
-    sim->check.work_J += work_J;
-    sim->check.work_abs_J += fabs(work_J);
+    sim->check.work_fn = fn;
+    sim->check.work_user = user;
+}
+
+/* A driver's work over the step just taken, from the reference on. */
+static void account_driver(fs_sim *sim)
+{
+    fs_check *c = &sim->check;
+    if (!c->work_fn)
+        return;
+    double w = c->work_fn(c->work_user, sim);
+    if (!c->started)
+        return;
+    c->work_J += w;
+    c->work_abs_J += fabs(w);
 }
 
 /* 4: the energy above its reference and the work put in, against the margin. */
@@ -220,6 +233,7 @@ fs_status fs_check_step(fs_sim *sim, fs_error *err)
         return report(sim, &loop, err);
     check_loops(sim, &loop);
     account_load(sim);
+    account_driver(sim);
     if (!c->started || (c->steps + 1) % sim->sc->def.check_energy_every == 0)
         check_energy(sim, &energy);
     c->started = 1;

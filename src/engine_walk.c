@@ -35,16 +35,29 @@ static void suspension_force(const fs_spring *s, double f[3])
         f[k] = len > 0 ? -t * (p2[k] - p1[k]) / len : 0;
 }
 
-/* The carriage's work on the robot over the step just taken, J: the slider's force and torque and
- * the suspension's force (explicit: from the state before the step, as applied; implicit: after,
- * as backward Euler applies it) times the robot's displacement and turn. */
-static double carriage_work(dBodyID robot, const dJointFeedback *slider, const double susp[3], const double before[3],
-                            double h)
+/* What the carriage's work over a step needs: the slider's feedback, the suspension, the robot's
+ * position before the step and, for explicit springs, the suspension's force as applied. */
+typedef struct carriage_drive {
+    dBodyID robot;
+    const dJointFeedback *slider;
+    const fs_spring *suspension;
+    int explicit_springs;
+    double h, before[3], susp[3];
+} carriage_drive;
+
+/* The carriage's work on the robot over the step just taken, J (fs_check_work_fn): the slider's
+ * force and torque and the suspension's force (explicit: from the state before the step, as
+ * applied; implicit: after, as backward Euler applies it) times the robot's displacement and turn. */
+static double carriage_work(void *user, const fs_sim *sim)
 {
-    const dReal *p = dBodyGetPosition(robot), *w = dBodyGetAngularVel(robot);
+    carriage_drive *c = user;
+    (void)sim;
+    if (!c->explicit_springs)
+        suspension_force(c->suspension, c->susp);
+    const dReal *p = dBodyGetPosition(c->robot), *w = dBodyGetAngularVel(c->robot);
     double work = 0;
     for (int k = 0; k < 3; k++)
-        work += (slider->f1[k] + susp[k]) * (p[k] - before[k]) + slider->t1[k] * w[k] * h;
+        work += (c->slider->f1[k] + c->susp[k]) * (p[k] - c->before[k]) + c->slider->t1[k] * w[k] * c->h;
     return work;
 }
 
@@ -81,6 +94,9 @@ fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
     double a1[3] = {start[0], start[1], start[2]}, a2[3] = {p[0], p[1], p[2]};
     fs_spring_init(&suspension, sim.world, (fs_spring_impl)d->springs, carriage, sim.robot, a1, a2,
                    d->suspension_k_N_per_m, d->suspension_c_Ns_per_m, 0.1);
+    carriage_drive drive = {sim.robot, &feedback, &suspension, d->springs == FS_SPRING_EXPLICIT, d->step_s,
+                            {0, 0, 0}, {0, 0, 0}};
+    fs_check_set_work(&sim, carriage_work, &drive);
     const fs_terrain_def *td = &sc->terrain.def;
     double rough_sum = 0, flat_sum = 0, tilt_max = 0;
     int flat_steps = 0, last_step = -1, judged = 0;
@@ -93,16 +109,13 @@ fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
         const dReal *c = dBodyGetPosition(carriage);
         dBodySetLinearVel(carriage, (start[0] + x - c[0]) / d->step_s, 0, (start[2] + z - c[2]) / d->step_s);
         fs_spring_prepare(&suspension, d->step_s);
-        double before[3] = {p[0], p[1], p[2]}, susp[3];
+        memcpy(drive.before, p, sizeof drive.before);
         if (d->springs == FS_SPRING_EXPLICIT)
-            suspension_force(&suspension, susp);
+            suspension_force(&suspension, drive.susp);
+        /* the step's checks take the carriage's work into their energy balance (carriage_work) */
         s = fs_sim_step(&sim, err);
         if (s != FS_OK)
             break;
-        /* the actuator's work goes into the energy balance the step's checks keep */
-        if (d->springs != FS_SPRING_EXPLICIT)
-            suspension_force(&suspension, susp);
-        fs_check_add_work(&sim, carriage_work(sim.robot, &feedback, susp, before, d->step_s));
         double f[3];
         fs_sim_ground_force(&sim, f);
         out->peak_force_N = fmax(out->peak_force_N, f[2]);

@@ -12,7 +12,7 @@
  *        E(t) - E(t1) - W(t) <= energy_margin_J + energy_margin_rel * W_abs(t)
  *    where t1 is the end of the first step (the reference is taken there), W the work done on the
  *    foot since then by the load at the ankle (its force over each step times the ankle's
- *    displacement) and by any driver that reports it (fs_check_add_work: the walking machine's
+ *    displacement) and by any driver that reports it (fs_check_set_work: the walking machine's
  *    carriage), and W_abs the sum of the magnitudes of those increments. Gravity is inside E.
  *    The physics: everything else footsim models takes energy out (dampers, friction, contact
  *    damping) or stores it where E does not count it (the ground's contact springs, which start
@@ -31,6 +31,8 @@
 #define FS_CHECK_H
 
 #include "footsim/fs_error.h"
+
+struct fs_sim;
 
 typedef enum fs_check_class { FS_CHECK_STABLE = 0, FS_CHECK_DRIFTING = 1, FS_CHECK_BLOWN_UP = 2 } fs_check_class;
 
@@ -51,6 +53,8 @@ typedef struct fs_check {
     double work_J, work_abs_J; /* W and W_abs since t1 */
     double ankle_prev[3];      /* the ankle at the start of the coming step */
     double load_next[3];       /* the load's force during the coming step, N */
+    double (*work_fn)(void *user, const struct fs_sim *sim); /* a driver's work (fs_check_set_work) */
+    void *work_user;
     /* the worst seen, for reports and the benchmark */
     double max_speed_m_per_s, max_loop_error_m, max_energy_excess_J, energy_bound_J;
     /* the first drift (record_drift) and the failure that stopped the run */
@@ -62,14 +66,16 @@ typedef struct fs_check {
     char failure_where[48];    /* the body or hinge */
 } fs_check;
 
-struct fs_sim;
-
 /* Checks sim's state after a step (fs_sim_step calls it). FS_OK, or FS_NUMERICAL with err saying
  * which body or hinge, when, the value against its bound, and what to try. */
 fs_status fs_check_step(struct fs_sim *sim, fs_error *err);
 
-/* Work done on the foot by something outside it during the last step (a driven carriage), J. */
-void fs_check_add_work(struct fs_sim *sim, double work_J);
+/* Something outside the foot that does work on it (a driven carriage): fn(user, sim) returns its
+ * work over the step just taken, J. fs_check_step calls it after the ODE step and before the
+ * energy check, so that W(t) includes the step being checked; the first step's work comes before
+ * the reference E(t1) and is not counted. */
+typedef double (*fs_check_work_fn)(void *user, const struct fs_sim *sim);
+void fs_check_set_work(struct fs_sim *sim, fs_check_work_fn fn, void *user);
 
 /* The class of a check kind: stable, drifting or blown up. */
 fs_check_class fs_check_class_of(fs_check_kind kind);
