@@ -62,11 +62,11 @@ int cli_bench_speed(const cli_args *a, const char *dir);
 /* -j N: worker processes, default all cores online (1 to 1024; exit 2 otherwise). */
 int cli_parse_jobs(const cli_args *a, int *jobs);
 
-/* Seconds on a monotonic clock, for timings. */
-double cli_clock_s(void);
-
 /* The machine a benchmark ran on, one line: CPU model, cores, compiler, ODE version. */
 void cli_machine(char *out, size_t size);
+
+/* The 1-minute load average from /proc/loadavg, or -1 when it cannot be read. */
+double cli_load_average(void);
 
 /* Whether an executable is on PATH. */
 int cli_have_program(const char *name);

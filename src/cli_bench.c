@@ -6,15 +6,7 @@
 #include <ode/ode.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
-
-double cli_clock_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 void cli_machine(char *out, size_t size)
 {
@@ -36,6 +28,17 @@ void cli_machine(char *out, size_t size)
              "gcc",
 #endif
              __VERSION__, strstr(config, "ODE_double_precision") ? "double precision" : "single precision");
+}
+
+double cli_load_average(void)
+{
+    double l = -1;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f && fscanf(f, "%lf", &l) != 1)
+        l = -1;
+    if (f)
+        fclose(f);
+    return l;
 }
 
 int cli_bench(const cli_args *a)

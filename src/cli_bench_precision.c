@@ -16,7 +16,6 @@
 #include "footsim/fs_trial.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -156,9 +155,9 @@ static fs_status chain_scene(scene *s, fs_error *err)
     fs_reference_def def = {s->pinned_chain - 1, d->load_kg * d->gravity_m_per_s2, d->ramp_s, d->gravity_m_per_s2,
                             d->tilt_deg * M_PI / 180, REF_TOLERANCE, {0, 0}};
     int n = (int)lround(s->duration_s / REF_STEP_S) + 1;
-    double start = cli_clock_s();
+    double start = fs_clock_s();
     st = fs_track_reference(&sc.design, &sc.geom, &def, REF_STEP_S, n, &s->ref, err);
-    s->ref_wall_s = cli_clock_s() - start;
+    s->ref_wall_s = fs_clock_s() - start;
     /* the reference checked against itself at half the tolerance */
     fs_track half;
     def.tolerance = 0.5 * REF_TOLERANCE;
@@ -272,62 +271,46 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
 
 /* ---- the outputs -------------------------------------------------------------------------- */
 
-typedef struct text { char *buf; size_t len, cap; } text;
+/* An output file written whole or not at all (fs_open_temp, then fs_commit_file). */
+typedef struct out_file { FILE *f; char path[2 * FS_PATH_MAX], temp[2 * FS_PATH_MAX + 64]; } out_file;
 
-static void add(text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
-static void add(text *t, const char *fmt, ...)
+static FILE *open_out(out_file *o, const char *dir, const char *name, fs_error *err)
 {
-    va_list ap;
-    va_start(ap, fmt);
-    int need = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    if (need < 0)
-        return;
-    if (t->len + (size_t)need + 1 > t->cap) {
-        size_t cap = 2 * (t->cap + (size_t)need + 1);
-        char *b = realloc(t->buf, cap);
-        if (!b)
-            return;
-        t->buf = b;
-        t->cap = cap;
-    }
-    va_start(ap, fmt);
-    vsnprintf(t->buf + t->len, t->cap - t->len, fmt, ap);
-    va_end(ap);
-    t->len += (size_t)need;
+    snprintf(o->path, sizeof o->path, "%s/%s", dir, name);
+    o->f = fs_open_temp(o->path, o->temp, sizeof o->temp, err);
+    return o->f;
 }
 
-static fs_status write_csv(const char *dir, const row *rows, int n, const char *machine, fs_error *err)
+static fs_status close_out(out_file *o, fs_error *err) { return fs_commit_file(o->f, o->temp, o->path, 1, err); }
+
+static fs_status write_csv(const char *dir, const row *rows, int n, fs_error *err)
 {
-    text t = {0};
-    add(&t, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
+    out_file o;
+    FILE *f = open_out(&o, dir, "precision.csv", err);
+    if (!f)
+        return FS_IO;
+    fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
             "wall_s,wall_per_sim_s,rtf,status,pareto,default\n");
     for (int i = 0; i < n; i++) {
         const row *r = &rows[i];
         if (r->ok)
-            add(&t, "%s,%s,%d,%s,%g,%.4e,%.4e,%.4e,%.4e,%.4e,%.4e,%.4g,%s,%d,%d\n", r->sc->name, stepper_name(r->stepper),
+            fprintf(f, "%s,%s,%d,%s,%g,%.4e,%.4e,%.4e,%.4e,%.4e,%.4e,%.4g,%s,%d,%d\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, r->e.max_m, r->e.rms_m, r->e.max_rad, r->e.rms_rad,
                 r->wall_s, r->wall_s / r->sc->duration_s, rtf(r), r->drifting ? "drifting" : "ok", r->pareto,
                 r->is_default);
         else
-            add(&t, "%s,%s,%d,%s,%g,inf,inf,inf,inf,,,,blown_up,0,%d\n", r->sc->name, stepper_name(r->stepper),
+            fprintf(f, "%s,%s,%d,%s,%g,inf,inf,inf,inf,,,,blown_up,0,%d\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, r->is_default);
     }
-    char path[2 * FS_PATH_MAX];
-    snprintf(path, sizeof path, "%s/precision.csv", dir);
-    (void)machine;
-    fs_status s = t.buf ? fs_write_atomic(path, t.buf, t.len, err) : fs_fail(err, FS_IO, "out of memory");
-    free(t.buf);
-    return s;
+    return close_out(&o, err);
 }
 
-static void describe(text *t, const row *r)
+static void describe(FILE *f, const row *r)
 {
     if (r->stepper == FS_STEPPER_QUICKSTEP)
-        add(t, "| quickstep %d | %s | %g |", r->iterations, spring_name(r->springs), r->step_s);
+        fprintf(f, "| quickstep %d | %s | %g |", r->iterations, spring_name(r->springs), r->step_s);
     else
-        add(t, "| step | %s | %g |", spring_name(r->springs), r->step_s);
+        fprintf(f, "| step | %s | %g |", spring_name(r->springs), r->step_s);
 }
 
 /* Scene s's rows on its Pareto front (and its default row, with_default), slowest first. */
@@ -347,25 +330,25 @@ static int sorted_front(const row *rows, int n, const scene *s, int with_default
 }
 
 /* The table of one scene's Pareto front, fastest last. */
-static void front_table(text *t, const row *rows, int n, const scene *s)
+static void front_table(FILE *f, const row *rows, int n, const scene *s)
 {
-    add(t, "\n### %s: the Pareto front\n\n| stepper | springs | step (s) | max ankle error (m) | RMS (m) | "
+    fprintf(f, "\n### %s: the Pareto front\n\n| stepper | springs | step (s) | max ankle error (m) | RMS (m) | "
            "max angle error (rad) | real-time factor | default |\n|---|---|---|---|---|---|---|---|\n", s->name);
     const row *sorted[MAX_ROWS];
     int m = sorted_front(rows, n, s, 1, sorted);
     for (int i = 0; i < m; i++) {
         const row *r = sorted[i];
-        describe(t, r);
+        describe(f, r);
         if (r->ok)
-            add(t, " %.2e | %.2e | %.2e | %.3g | %s%s |\n", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
+            fprintf(f, " %.2e | %.2e | %.2e | %.3g | %s%s |\n", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
                 r->is_default ? "yes" : "", r->pareto ? "" : " (not on the front)");
         else
-            add(t, " blew up | | | | %s |\n", r->is_default ? "yes" : "");
+            fprintf(f, " blew up | | | | %s |\n", r->is_default ? "yes" : "");
     }
 }
 
 /* The landing trial's goal: the fastest configuration within GOAL_ERR_M at GOAL_RTF or more. */
-static void goal(text *t, const row *rows, int n, const scene *s)
+static void goal(FILE *f, const row *rows, int n, const scene *s)
 {
     const row *best = NULL, *dflt = NULL;
     for (int i = 0; i < n; i++) {
@@ -377,62 +360,54 @@ static void goal(text *t, const row *rows, int n, const scene *s)
         if (r->ok && r->e.max_m <= GOAL_ERR_M && (!best || rtf(r) > rtf(best)))
             best = r;
     }
-    add(t, "\n**Goal** (issue 6), %s: at most %g mm of ankle error at a real-time factor of %g or more on one "
+    fprintf(f, "\n**Goal** (issue 6), %s: at most %g mm of ankle error at a real-time factor of %g or more on one "
            "core. ", s->name, GOAL_ERR_M * 1e3, GOAL_RTF);
     if (best)
-        add(t, "The fastest configuration within %g mm: %s, %s springs, h = %g s: %.3g mm at %.3gx real time: goal "
+        fprintf(f, "The fastest configuration within %g mm: %s, %s springs, h = %g s: %.3g mm at %.3gx real time: goal "
                "%s.", GOAL_ERR_M * 1e3, best->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep",
             spring_name(best->springs), best->step_s, best->e.max_m * 1e3, rtf(best),
             rtf(best) >= GOAL_RTF ? "met" : "not met");
     else
-        add(t, "No configuration stays within %g mm: goal not met.", GOAL_ERR_M * 1e3);
+        fprintf(f, "No configuration stays within %g mm: goal not met.", GOAL_ERR_M * 1e3);
     if (dflt && dflt->ok)
-        add(t, " The scenario's default (%s, %s springs, h = %g s): %.3g mm at %.3gx.\n",
+        fprintf(f, " The scenario's default (%s, %s springs, h = %g s): %.3g mm at %.3gx.\n",
             dflt->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep", spring_name(dflt->springs),
             dflt->step_s, dflt->e.max_m * 1e3, rtf(dflt));
     else
-        add(t, "\n");
+        fprintf(f, "\n");
 }
 
 static fs_status write_md(const char *dir, const row *rows, int n, const scene *scenes, int nscenes,
                           const char *machine, int quick, fs_error *err)
 {
-    text t = {0};
+    out_file o;
+    FILE *f = open_out(&o, dir, "precision.md", err);
+    if (!f)
+        return FS_IO;
     char date[32];
     time_t now = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
-    double load[3] = {0, 0, 0};
-    FILE *f = fopen("/proc/loadavg", "r");
-    if (f) {
-        if (fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3)
-            load[0] = -1;
-        fclose(f);
-    }
-    add(&t, "# Precision: run time against error\n\n`footsim bench precision%s` on %s; %s; load average %.2f at the "
+    fprintf(f, "# Precision: run time against error\n\n`footsim bench precision%s` on %s; %s; load average %.2f at the "
             "end. Every row of `precision.csv` is one configuration; the chart is `precision.png`.\n",
-        quick ? " --quick" : "", date, machine, load[0]);
-    add(&t, "\nReferences: **chain**: the planar dynamic model (GSL rk8pd, tolerance %g; halving it moves the ankle "
+        quick ? " --quick" : "", date, machine, cli_load_average());
+    fprintf(f, "\nReferences: **chain**: the planar dynamic model (GSL rk8pd, tolerance %g; halving it moves the ankle "
             "by %.1e m; %.2f s to compute). **landing_flat**, **landing_biomimetic**: footsim's own run of the same "
             "trial at h = %g s with dWorldStep (%.1f s and %.1f s), over %g s from release.\n",
         REF_TOLERANCE, scenes[0].ref_check_m, scenes[0].ref_wall_s, REF_STEP_S, scenes[1].ref_wall_s,
         scenes[2].ref_wall_s, scenes[1].duration_s);
     for (int c = 0; c < nscenes; c++)
-        front_table(&t, rows, n, &scenes[c]);
+        front_table(f, rows, n, &scenes[c]);
     for (int c = 1; c < nscenes; c++)
-        goal(&t, rows, n, &scenes[c]);
+        goal(f, rows, n, &scenes[c]);
     int blown = 0, drifting = 0;
     for (int i = 0; i < n; i++) {
         blown += !rows[i].ok;
         drifting += rows[i].ok && rows[i].drifting;
     }
-    add(&t, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
+    fprintf(f, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
             "from nowhere: `status` in the CSV; neither is put on a front); `footsim bench stability` maps where.\n",
         blown, n, drifting);
-    char path[2 * FS_PATH_MAX];
-    snprintf(path, sizeof path, "%s/precision.md", dir);
-    fs_status s = t.buf ? fs_write_atomic(path, t.buf, t.len, err) : fs_fail(err, FS_IO, "out of memory");
-    free(t.buf);
-    return s;
+    return close_out(&o, err);
 }
 
 static fs_status write_chart(const char *dir, const row *rows, int n, const scene *scenes, int nscenes, fs_error *err)
@@ -467,29 +442,29 @@ static fs_status write_chart(const char *dir, const row *rows, int n, const scen
         "     '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
         "title 'scenario default', \\\n"
         "     $front%d using 1:2 with lines lw 2 lc rgb 'black' title 'Pareto front'\n";
-    text t = {0};
-    add(&t, "%s", head);
+    out_file o;
+    FILE *f = open_out(&o, dir, "precision.gp", err);
+    if (!f)
+        return FS_IO;
+    fprintf(f, "%s", head);
     /* each front as a block of its own (real-time factor, error), fastest last: a line through
      * filtered rows of the CSV would break at every row filtered out */
     for (int c = 0; c < nscenes; c++) {
         const row *front[MAX_ROWS];
         int m = sorted_front(rows, n, &scenes[c], 0, front);
-        add(&t, "$front%d << EOD\n", c);
+        fprintf(f, "$front%d << EOD\n", c);
         for (int i = 0; i < m; i++)
             if (front[i]->e.max_m > 0) /* the reference itself has no place on a log scale */
-                add(&t, "%.6g,%.6g\n", rtf(front[i]), front[i]->e.max_m);
-        add(&t, "EOD\n");
+                fprintf(f, "%.6g,%.6g\n", rtf(front[i]), front[i]->e.max_m);
+        fprintf(f, "EOD\n");
     }
-    add(&t, "%sset multiplot layout 1,%d\n", axes, nscenes);
+    fprintf(f, "%sset multiplot layout 1,%d\n", axes, nscenes);
     for (int c = 0; c < nscenes; c++) {
-        add(&t, "s = '%s'\n", scenes[c].name);
-        add(&t, panel, scenes[c].title, c);
+        fprintf(f, "s = '%s'\n", scenes[c].name);
+        fprintf(f, panel, scenes[c].title, c);
     }
-    add(&t, "unset multiplot\n");
-    char path[2 * FS_PATH_MAX];
-    snprintf(path, sizeof path, "%s/precision.gp", dir);
-    fs_status s = t.buf ? fs_write_atomic(path, t.buf, t.len, err) : fs_fail(err, FS_IO, "out of memory");
-    free(t.buf);
+    fprintf(f, "unset multiplot\n");
+    fs_status s = close_out(&o, err);
     if (s == FS_OK)
         cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
     return s;
@@ -519,7 +494,7 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     if (s == FS_OK)
         s = sweep(scenes, NSCENES, a->quick, rows, &nrows, &err);
     if (s == FS_OK)
-        s = write_csv(dir, rows, nrows, machine, &err);
+        s = write_csv(dir, rows, nrows, &err);
     if (s == FS_OK)
         s = write_md(dir, rows, nrows, scenes, NSCENES, machine, a->quick, &err);
     if (s == FS_OK)

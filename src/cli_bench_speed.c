@@ -180,7 +180,7 @@ static fs_status run_once(const scene *sc, const char *const *extra, const fs_ru
 {
     const char *set[2 * MAX_SET];
     int n = join_set(sc, extra, set);
-    double t0 = cli_clock_s();
+    double t0 = fs_clock_s();
     fs_status s;
     if (sc->how == BY_TRIAL) {
         s = run_trial(sc->path, set, n, o, err);
@@ -191,7 +191,7 @@ static fs_status run_once(const scene *sc, const char *const *extra, const fs_ru
             s = run_engine(&loaded, sc->how, obs, o, err);
         fs_scenario_free(&loaded);
     }
-    o->wall_s = cli_clock_s() - t0;
+    o->wall_s = fs_clock_s() - t0;
     if (s != FS_OK) {
         char what[FS_ERROR_MAX];
         snprintf(what, sizeof what, "%s", err->message);
@@ -238,10 +238,10 @@ static double clock_read_s(void)
     enum { N = 20000 };
     double batch[9];
     for (int b = 0; b < 9; b++) {
-        double t0 = cli_clock_s();
+        double t0 = fs_clock_s();
         for (int i = 0; i < N; i++)
-            cli_clock_s();
-        batch[b] = (cli_clock_s() - t0) / (N + 1);
+            fs_clock_s();
+        batch[b] = (fs_clock_s() - t0) / (N + 1);
     }
     return median(batch, 9);
 }
@@ -306,14 +306,14 @@ static fs_status frames_run(const scene *sc, outcome *o, fs_error *err)
     static fs_scenario loaded;
     cli_frames *frames = NULL;
     fs_run_observer obs;
-    double t0 = cli_clock_s();
+    double t0 = fs_clock_s();
     fs_status s = fs_scenario_load(sc->path, sc->set, count_set(sc->set), &loaded, err);
     if (s == FS_OK && cli_frames_open(&a, &loaded, tmp, &frames, &obs) != 0)
         s = fs_fail(err, FS_BAD_INPUT, "no renderer");
     if (s == FS_OK)
         s = run_engine(&loaded, sc->how, &obs, o, err);
     cli_frames_close(frames, 0, tmp);
-    o->wall_s = cli_clock_s() - t0;
+    o->wall_s = fs_clock_s() - t0;
     fs_scenario_free(&loaded);
     fs_remove_tree(tmp);
     return s;
@@ -345,17 +345,6 @@ typedef struct context {
     char machine[512], date[32], command[64];
     double load_start, load_end;
 } context;
-
-static double load_average(void)
-{
-    double l = -1;
-    FILE *f = fopen("/proc/loadavg", "r");
-    if (f && fscanf(f, "%lf", &l) != 1)
-        l = -1;
-    if (f)
-        fclose(f);
-    return l;
-}
 
 static double stage_total(const fs_profile *p)
 {
@@ -546,7 +535,7 @@ static void start_context(context *c, int quick)
     time_t now = time(NULL);
     strftime(c->date, sizeof c->date, "%Y-%m-%d %H:%M", gmtime(&now));
     snprintf(c->command, sizeof c->command, "footsim bench speed%s", quick ? " --quick" : "");
-    c->load_start = load_average();
+    c->load_start = cli_load_average();
 }
 
 /* The scenes this run takes, timed into t; *n: how many. */
@@ -610,7 +599,7 @@ int cli_bench_speed(const cli_args *a, const char *dir)
         fputc('\n', stderr);
         return cli_report(s, err.message);
     }
-    c.load_end = load_average();
+    c.load_end = cli_load_average();
     report r = {&c, t, n, k, nk};
     if ((s = write_report(dir, &r, &err)) != FS_OK)
         return cli_report(s, err.message);

@@ -114,12 +114,11 @@ static void run_config(const config *c, const fs_design_def *base, double durati
     o->status = fs_scenario_load(SLICES[c->slice].scenario, ov, n, &sc, &err);
     fs_sim sim;
     if (o->status == FS_OK)
-        o->status = fs_sim_build(&sim, &sc, NULL, &err);
+        o->status = fs_sim_build(&sim, &sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
     if (o->status != FS_OK) {
         snprintf(o->error, sizeof o->error, "%.500s", err.message);
         return;
     }
-    sim.check.record_drift = 1;
     long nsteps = (long)ceil(duration / c->step_s - 1e-9);
     fs_status s = FS_OK;
     for (long i = 0; i < nsteps && s == FS_OK; i++)
@@ -205,7 +204,7 @@ static void progress(int done, int n, double t0)
     if (!tty && done % 50 != 0 && done != n)
         return;
     fprintf(stderr, tty ? "\rfootsim bench stability: %d/%d runs, %.0f s" : "footsim bench stability: %d/%d runs, %.0f s\n",
-            done, n, cli_clock_s() - t0);
+            done, n, fs_clock_s() - t0);
     if (tty && done == n)
         fputc('\n', stderr);
 }
@@ -226,7 +225,7 @@ static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, const
 {
     child ch[MAX_WORKERS];
     int next = 0, done = 0, running = 0;
-    double t0 = cli_clock_s();
+    double t0 = fs_clock_s();
     while (done < n) {
         while (running < jobs && next < n) {
             if (!start_child(&cfg[next], base, duration, next, &ch[running])) {
@@ -490,7 +489,7 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     outcome *out = calloc((size_t)n, sizeof *out);
     if (!out)
         return cli_report(FS_IO, "out of memory");
-    double duration = a->quick ? DURATION_QUICK_S : DURATION_FULL_S, t0 = cli_clock_s();
+    double duration = a->quick ? DURATION_QUICK_S : DURATION_FULL_S, t0 = fs_clock_s();
     fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
     fs_status s = run_all(cfg, out, n, jobs, &base.design, duration, &err);
     if (s == FS_OK)
@@ -503,7 +502,7 @@ int cli_bench_stability(const cli_args *a, const char *dir)
             cli_gnuplot(dir, gp, png, "bench stability");
     }
     if (s == FS_OK)
-        s = write_summary(dir, cfg, out, n, a->quick, cli_clock_s() - t0, jobs, &err);
+        s = write_summary(dir, cfg, out, n, a->quick, fs_clock_s() - t0, jobs, &err);
     free(out);
     if (s != FS_OK)
         return fail(&err);

@@ -6,14 +6,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static fs_status track_alloc(fs_track *t, double dt_s, int n, int nangles, fs_error *err)
 {
@@ -57,13 +49,13 @@ fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double
     s = fs_sim_build(&sim, sc, opts, err);
     if (s == FS_OK) {
         sample(&sim, out, 0);
-        double start = now_s();
+        double start = fs_clock_s();
         for (int i = 1; i <= steps && s == FS_OK; i++) {
             s = fs_sim_step(&sim, err);
             if (s == FS_OK)
                 sample(&sim, out, i);
         }
-        out->wall_s = now_s() - start;
+        out->wall_s = fs_clock_s() - start;
         out->check_class = fs_check_class_of(sim.check.first_drift);
     }
     fs_sim_destroy(&sim);

@@ -285,14 +285,19 @@ void fs_sim_profile_read(fs_profile *out) { *out = profile_sums; }
 
 static fs_profile *profile_sink(void) { return profile_on ? &profile_sums : NULL; }
 
+double fs_clock_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 /* Adds the time since the last stage ended to stage, when profiling. */
 static void lap(fs_sim *sim, fs_stage stage)
 {
     if (!sim->profile)
         return;
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    double t = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+    double t = fs_clock_s();
     if (sim->profile_mark > 0) {
         sim->profile->stage_s[stage] += t - sim->profile_mark;
         sim->profile->laps[stage]++;

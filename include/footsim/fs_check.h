@@ -46,7 +46,7 @@ typedef enum fs_check_kind {
 } fs_check_kind;
 
 typedef struct fs_check {
-    int record_drift;          /* set by the caller: 0 stop at any failure, 1 stop only when blown up */
+    int record_drift;          /* fs_sim_options.record_drift: 0 stop at any failure, 1 only when blown up */
     int started;               /* the reference has been taken (after the first step) */
     long steps;                /* steps checked */
     double energy_ref_J;       /* E(t1) */

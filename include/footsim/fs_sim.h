@@ -101,6 +101,10 @@ typedef struct fs_profile {
  * fs_sim_profile(0) stops that for sims built afterwards. Off, each stage costs one untaken branch.
  * Timing never changes a result. fs_sim_profile_read copies the sums. Not thread-safe. */
 void fs_sim_profile(int on);
+
+/* Seconds on the monotonic clock (CLOCK_MONOTONIC): what profiling, fs_track_run and the
+ * benchmarks time with. */
+double fs_clock_s(void);
 void fs_sim_profile_read(fs_profile *out);
 
 /* The load's point (the ankle) in world coordinates now. */
