@@ -7,7 +7,7 @@
 #ifndef FS_RENDER_GLAPI_H
 #define FS_RENDER_GLAPI_H
 
-#include "footsim/fs_error.h"
+#include "footsim/base/fs_error.h"
 
 #include <GL/gl.h>
 #include <GL/osmesa.h>

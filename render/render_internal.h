@@ -2,7 +2,7 @@
 #ifndef FS_RENDER_INTERNAL_H
 #define FS_RENDER_INTERNAL_H
 
-#include "fs_render.h"
+#include "footsim/render/fs_render.h"
 
 #include "render_glapi.h"
 

@@ -1,7 +1,7 @@
 /* render_png.c: frames to PNG files (libpng), whole or not at all, and PNG files back to pixels. */
 #include "render_internal.h"
 
-#include "footsim/fs_png.h"
+#include "footsim/io/fs_png.h"
 
 #include <png.h>
 #include <stdlib.h>

@@ -1,6 +1,6 @@
 /* render_view.c: cameras framed on a scene's extent, their matrices and the projection of world
  * points to pixels (the same matrices render_gl.c loads into GL). */
-#include "fs_render.h"
+#include "footsim/render/fs_render.h"
 
 #include <math.h>
 #include <string.h>

@@ -3,7 +3,7 @@
 #ifndef FS_RENDER_FIXTURE_H
 #define FS_RENDER_FIXTURE_H
 
-#include "fs_render.h"
+#include "footsim/render/fs_render.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,8 +2,8 @@
  * and the comparison of two summaries (no trials run here; tests/cli_campaign.sh runs them). */
 #include "fs_test.h"
 
-#include "footsim/fs_campaign.h"
-#include "footsim/fs_output.h"
+#include "footsim/campaign/fs_campaign.h"
+#include "footsim/io/fs_output.h"
 
 #include <stdlib.h>
 #include <unistd.h>

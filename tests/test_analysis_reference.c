@@ -2,8 +2,8 @@
  * conserves energy when nothing dissipates, and does not depend on its tolerance. */
 #include "fs_test.h"
 
-#include "footsim/fs_analysis.h"
-#include "footsim/fs_track.h"
+#include "footsim/analysis/fs_analysis.h"
+#include "footsim/experiment/fs_track.h"
 
 #include <stdlib.h>
 

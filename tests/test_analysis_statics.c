@@ -2,8 +2,8 @@
  * paper's 26 kg load agrees with the stiffness model's prediction. */
 #include "fs_test.h"
 
-#include "footsim/fs_analysis.h"
-#include "footsim/fs_run.h"
+#include "footsim/analysis/fs_analysis.h"
+#include "footsim/experiment/fs_run.h"
 
 /* A design whose five chains are alike and unsplayed, so that one planar chain is exact; stiff
  * contacts and a strict rest criterion, so that the comparison measures the models, not those;

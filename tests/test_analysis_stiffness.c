@@ -1,7 +1,7 @@
 /* Tests of analysis_stiffness.c: the stiffness model (paper eqs. 1-3) against ODE. */
 #include "fs_test.h"
 
-#include "footsim/fs_analysis.h"
+#include "footsim/analysis/fs_analysis.h"
 
 /* K measured by torque probes in ODE agrees with G^T Kdd G within 1 % (Frobenius norm), for the
  * default design and for a stiffer, differently anchored one. */

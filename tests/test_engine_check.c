@@ -1,9 +1,9 @@
-/* Tests of the state checks (engine_check.c): each check fires on a state planted to fail it,
+/* Tests of the state checks (sim_check.c): each check fires on a state planted to fail it,
  * naming the body or hinge; a stable run passes with room; a blow-up of the explicit springs is
  * classified as one; recording a drift lets the run go on. */
 #include "fs_test.h"
 
-#include "footsim/fs_sim.h"
+#include "footsim/sim/fs_sim.h"
 
 #include <string.h>
 

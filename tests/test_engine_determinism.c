@@ -6,7 +6,7 @@
  * test_model_terrain and cli_campaign.sh.) */
 #include "fs_test.h"
 
-#include "footsim/fs_run.h"
+#include "footsim/experiment/fs_run.h"
 
 #include <inttypes.h>
 #include <stdint.h>

@@ -1,8 +1,8 @@
-/* Tests of the step (model_build.c, engine_spring.c): an undamped foot falling freely, its toes
+/* Tests of the step (sim_build.c, sim_spring.c): an undamped foot falling freely, its toes
  * set swinging, does not gain energy (gravitational, kinetic and spring energy summed). */
 #include "fs_test.h"
 
-#include "footsim/fs_sim.h"
+#include "footsim/sim/fs_sim.h"
 
 /* Runs the undamped foot without ground for 0.5 s; returns the largest energy gain over the start,
  * and the internal (spring + relative kinetic) energy it was given, both J. */

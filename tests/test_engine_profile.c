@@ -3,9 +3,9 @@
  * foot-foot pairs changes a result. No timings are compared: only that they add up. */
 #include "fs_test.h"
 
-#include "footsim/fs_run.h"
-#include "footsim/fs_sim.h"
-#include "footsim/fs_trial.h"
+#include "footsim/experiment/fs_run.h"
+#include "footsim/sim/fs_sim.h"
+#include "footsim/experiment/fs_trial.h"
 
 #include <string.h>
 

@@ -1,8 +1,8 @@
-/* Tests of engine_spring.c: both spring-damper implementations against the damped oscillator. */
+/* Tests of sim_spring.c: both spring-damper implementations against the damped oscillator. */
 #include "fs_test.h"
 
-#include "footsim/fs_spring.h"
-#include "footsim/fs_error.h"
+#include "footsim/sim/fs_spring.h"
+#include "footsim/base/fs_error.h"
 
 #include <ode/ode.h>
 #include <string.h>

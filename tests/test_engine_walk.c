@@ -1,7 +1,7 @@
-/* Tests of engine_walk.c: the walking machine steps as its trajectory says. */
+/* Tests of experiment_walk.c: the walking machine steps as its trajectory says. */
 #include "fs_test.h"
 
-#include "footsim/fs_walk.h"
+#include "footsim/experiment/fs_walk.h"
 
 /* Every step is judged once, as completed or a fall; on flat ground the flat foot completes all,
  * and the ground carries the body's weight at least (26 kg: 255 N) at some moment. */

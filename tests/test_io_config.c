@@ -2,7 +2,7 @@
  * "file:line: what is wrong" and FS_BAD_INPUT, before anything is built. */
 #include "fs_test.h"
 
-#include "footsim/fs_scenario.h"
+#include "footsim/model/fs_scenario.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -1,8 +1,8 @@
-/* Tests of model_design.c and model_build.c: the geometry closes each chain's loop on the
+/* Tests of model_design.c and sim_build.c: the geometry closes each chain's loop on the
  * ground, and the built foot rests on heel and toe tips. */
 #include "fs_test.h"
 
-#include "footsim/fs_sim.h"
+#include "footsim/sim/fs_sim.h"
 
 #include <string.h>
 

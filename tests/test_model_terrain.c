@@ -1,10 +1,10 @@
-/* Tests of model_terrain.c and model_ground.c: every terrain lies where its height function says,
+/* Tests of model_terrain.c and sim_ground.c: every terrain lies where its height function says,
  * nothing tunnels through it, the same seed gives the same ground, and bad files are refused. */
 #include "fs_test.h"
 
-#include "footsim/fs_ground.h"
-#include "footsim/fs_run.h"
-#include "footsim/fs_sim.h"
+#include "footsim/sim/fs_ground.h"
+#include "footsim/experiment/fs_run.h"
+#include "footsim/sim/fs_sim.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -3,7 +3,7 @@
 #include "fs_test.h"
 #include "render_fixture.h"
 
-#include "footsim/fs_sim.h"
+#include "footsim/sim/fs_sim.h"
 
 #include <stdio.h>
 #include <unistd.h>

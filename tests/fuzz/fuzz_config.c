@@ -1,7 +1,7 @@
 /* libFuzzer target: design and terrain files (the INI reader, the schemas, the checks, the
  * geometry). Any input must be refused or accepted cleanly: no crash, leak or undefined behaviour. */
-#include "footsim/fs_design.h"
-#include "footsim/fs_terrain.h"
+#include "footsim/model/fs_design.h"
+#include "footsim/model/fs_terrain.h"
 
 #include "fuzz_file.h"
 

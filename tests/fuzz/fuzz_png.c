@@ -1,5 +1,5 @@
 /* libFuzzer target: heightmap images. Any input must be refused or read cleanly. */
-#include "footsim/fs_png.h"
+#include "footsim/io/fs_png.h"
 
 #include "fuzz_file.h"
 

@@ -1,0 +1,508 @@
+/* cli_bench_precision.c: 'footsim bench precision': run time against error.
+ *
+ * Two scenes, each run in ODE at every step size, stepper and spring implementation:
+ * - chain: the middle toe chain pinned at heel and toe under the static_load scenario's load (the
+ *   paper's Fig. 11 transient), against the planar dynamic reference (analysis_reference.c);
+ * - landing: the landing trial on rough ground (seed 1's pose), against its own run at 1e-5 s with
+ *   dWorldStep.
+ * Error is the ankle's distance (and the hinge angles' difference) from the reference, largest and
+ * RMS over the run; cost is the median wall time of the steps over repeated runs. Writes
+ * DIR/precision.csv, precision.md and precision.png (gnuplot). */
+#include "cli.h"
+
+#include "footsim/sim/fs_check.h"
+#include "footsim/io/fs_output.h"
+#include "footsim/experiment/fs_track.h"
+#include "footsim/experiment/fs_trial.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+enum { MAX_SET = 16, MAX_ROWS = 512, NSCENES = 3 };
+
+static const double REF_STEP_S = 1e-5;          /* the finest step, and the reference's sample spacing */
+static const double REF_TOLERANCE = 1e-10;      /* rk8pd's error bound per step for the reference */
+static const double REPEAT_BUDGET_S = 2;        /* wall time after which a configuration is not rerun */
+static const double GOAL_ERR_M = 1e-3, GOAL_RTF = 100; /* issue 6: the landing trial's goal */
+
+static const double STEPS_FULL[] = {1e-5, 2e-5, 5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
+static const double STEPS_QUICK[] = {1e-4, 1e-3, 1e-2};
+static const int ITERATIONS_FULL[] = {0, 10, 20, 50, 100, 200}; /* 0: dWorldStep */
+static const int ITERATIONS_QUICK[] = {0, 20};
+
+/* A scene: a scenario, the overrides that make it, how it is run, and its reference path. */
+typedef struct scene {
+    const char *name, *title, *path;
+    char set[MAX_SET][96];
+    int nset;
+    int pinned_chain;           /* 0, or the chain (1-5) pinned alone */
+    double duration_s;
+    fs_scenario_def defaults;   /* the scenario's own run settings, to mark the default row */
+    fs_track ref;
+    double ref_check_m;         /* chain: how much halving the reference's tolerance moves the ankle */
+    double ref_wall_s;
+    int has_springs;            /* 0: the spring implementation makes no difference (the flat foot) */
+} scene;
+
+typedef struct row {
+    const scene *sc;
+    int stepper, iterations, springs;
+    double step_s;
+    int ok;                     /* 0: the run blew up */
+    int drifting;               /* a loop opened or energy grew beyond the checks' bounds (fs_check.h) */
+    fs_track_error e;
+    double wall_s;              /* median over repeats */
+    int pareto, is_default;
+} row;
+
+static const char *stepper_name(int s) { return s == FS_STEPPER_QUICKSTEP ? "quickstep" : "step"; }
+static const char *spring_name(int s) { return s == FS_SPRING_EXPLICIT ? "explicit" : "implicit"; }
+
+static fs_status load(const scene *s, const char *const *extra, int nextra, fs_scenario *sc, fs_error *err)
+{
+    const char *set[MAX_SET + 8];
+    for (int i = 0; i < s->nset; i++)
+        set[i] = s->set[i];
+    for (int i = 0; i < nextra; i++)
+        set[s->nset + i] = extra[i];
+    return fs_scenario_load(s->path, set, s->nset + nextra, sc, err);
+}
+
+/* The run settings as overrides. */
+enum { NSETTINGS = 5 };
+static void settings(const row *r, char text[NSETTINGS][64], const char *set[NSETTINGS])
+{
+    snprintf(text[0], 64, "run.step_s=%.17g", r->step_s);
+    snprintf(text[1], 64, "run.stepper=%s", stepper_name(r->stepper));
+    snprintf(text[2], 64, "run.iterations=%d", r->iterations > 0 ? r->iterations : 20);
+    snprintf(text[3], 64, "run.springs=%s", spring_name(r->springs));
+    snprintf(text[4], 64, "run.log_interval_s=%.17g", fmax(r->step_s, 1e-3)); /* no path is logged here */
+    for (int i = 0; i < NSETTINGS; i++)
+        set[i] = text[i];
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Runs one configuration up to `repeats` times, fewer once REPEAT_BUDGET_S of wall time is spent
+ * on it (a long run times itself well): the error of the first run, the median wall time. */
+static fs_status measure(row *r, int repeats, fs_error *err)
+{
+    char text[NSETTINGS][64];
+    const char *set[NSETTINGS];
+    settings(r, text, set);
+    static fs_scenario sc;
+    fs_status s = load(r->sc, set, NSETTINGS, &sc, err);
+    if (s != FS_OK)
+        return s;
+    fs_sim_options opts = {.with_ground = 1, .pinned_chain = r->sc->pinned_chain, .record_drift = 1};
+    double wall[8], spent = 0;
+    int done = 0;
+    r->ok = 1;
+    for (int k = 0; k < repeats && r->ok && (k == 0 || spent < REPEAT_BUDGET_S); k++) {
+        fs_track t;
+        fs_error run_err;
+        fs_status ran = fs_track_run(&sc, &opts, r->sc->duration_s, &t, &run_err);
+        if (ran == FS_NUMERICAL) {
+            r->ok = 0; /* blown up: a result of the sweep, not a failure of the command */
+            break;
+        }
+        if (ran != FS_OK) {
+            *err = run_err;
+            s = ran;
+            break;
+        }
+        wall[done++] = t.wall_s;
+        r->drifting = t.check_class == FS_CHECK_DRIFTING;
+        spent += t.wall_s;
+        if (k == 0)
+            s = fs_track_compare(&t, &r->sc->ref, &r->e, err);
+        fs_track_free(&t);
+        if (s != FS_OK)
+            break;
+    }
+    if (r->ok) {
+        qsort(wall, (size_t)done, sizeof wall[0], compare_double);
+        r->wall_s = wall[done / 2];
+    }
+    fs_scenario_free(&sc);
+    return s;
+}
+
+/* ---- the scenes and their references ---------------------------------------------------- */
+
+static fs_status chain_scene(scene *s, fs_error *err)
+{
+    memset(s, 0, sizeof *s);
+    s->name = "chain";
+    s->title = "pinned chain against the planar reference";
+    s->path = "scenarios/static_load.ini";
+    s->pinned_chain = 3;
+    s->duration_s = 0.2;
+    static fs_scenario sc;
+    fs_status st = load(s, NULL, 0, &sc, err);
+    if (st != FS_OK)
+        return st;
+    s->defaults = sc.def;
+    s->has_springs = 1;
+    const fs_scenario_def *d = &sc.def;
+    fs_reference_def def = {s->pinned_chain - 1, d->load_kg * d->gravity_m_per_s2, d->ramp_s, d->gravity_m_per_s2,
+                            d->tilt_deg * M_PI / 180, REF_TOLERANCE, {0, 0}};
+    int n = (int)lround(s->duration_s / REF_STEP_S) + 1;
+    double start = fs_clock_s();
+    st = fs_track_reference(&sc.design, &sc.geom, &def, REF_STEP_S, n, &s->ref, err);
+    s->ref_wall_s = fs_clock_s() - start;
+    /* the reference checked against itself at half the tolerance */
+    fs_track half;
+    def.tolerance = 0.5 * REF_TOLERANCE;
+    if (st == FS_OK)
+        st = fs_track_reference(&sc.design, &sc.geom, &def, REF_STEP_S, n, &half, err);
+    for (int i = 0; st == FS_OK && i < n; i++)
+        for (int k = 0; k < 3; k++)
+            s->ref_check_m = fmax(s->ref_check_m, fabs(half.ankle[i][k] - s->ref.ankle[i][k]));
+    if (st == FS_OK)
+        fs_track_free(&half);
+    fs_scenario_free(&sc);
+    return st;
+}
+
+/* A landing trial on rough ground: `design`, the pose drawn for `seed` (as a campaign would). */
+static fs_status landing_scene(scene *s, const char *name, const char *title, const char *design, int seed,
+                               double duration_s, fs_error *err)
+{
+    memset(s, 0, sizeof *s);
+    s->name = name;
+    s->title = title;
+    s->path = "scenarios/landing_trial.ini";
+    s->duration_s = duration_s;
+    snprintf(s->set[s->nset++], sizeof s->set[0], "scenario.terrain=../terrains/rough.ini");
+    snprintf(s->set[s->nset++], sizeof s->set[0], "scenario.design=%s", design);
+    static fs_scenario sc;
+    fs_status st = load(s, NULL, 0, &sc, err);
+    if (st != FS_OK)
+        return st;
+    s->defaults = sc.def;
+    s->has_springs = sc.geom.nsprings > 0 || sc.def.robot_joint != 0;
+    fs_trial_draw draw;
+    fs_trial_draw_pose(&sc, seed, &draw);
+    fs_scenario_free(&sc);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.x_m=%.17g", draw.x_m);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.y_m=%.17g", draw.y_m);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.yaw_deg=%.17g", draw.yaw_deg);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.pitch_deg=%.17g", draw.pitch_deg);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "start.roll_deg=%.17g", draw.roll_deg);
+    snprintf(s->set[s->nset++], sizeof s->set[0], "rough.seed=%d", seed);
+    /* the reference: footsim itself at the finest step with dWorldStep */
+    row ref = {.sc = s, .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT, .step_s = REF_STEP_S};
+    char text[NSETTINGS][64];
+    const char *set[NSETTINGS];
+    settings(&ref, text, set);
+    st = load(s, set, NSETTINGS, &sc, err);
+    if (st != FS_OK)
+        return st;
+    fs_sim_options opts = {.with_ground = 1};
+    st = fs_track_run(&sc, &opts, s->duration_s, &s->ref, err);
+    s->ref_wall_s = s->ref.wall_s;
+    fs_scenario_free(&sc);
+    return st;
+}
+
+/* ---- the sweep ---------------------------------------------------------------------------- */
+
+/* Not dominated: no other row is at least as accurate and at least as fast, and better in one. */
+static void mark_pareto(row *rows, int n)
+{
+    for (int i = 0; i < n; i++) {
+        rows[i].pareto = rows[i].ok && !rows[i].drifting;
+        for (int j = 0; j < n && rows[i].pareto; j++) {
+            if (j == i || !rows[j].ok || rows[j].drifting || rows[j].sc != rows[i].sc)
+                continue;
+            int no_worse = rows[j].e.max_m <= rows[i].e.max_m && rows[j].wall_s <= rows[i].wall_s;
+            int better = rows[j].e.max_m < rows[i].e.max_m || rows[j].wall_s < rows[i].wall_s;
+            if (no_worse && better)
+                rows[i].pareto = 0;
+        }
+    }
+}
+
+static int is_default(const row *r)
+{
+    const fs_scenario_def *d = &r->sc->defaults;
+    return r->step_s == d->step_s && r->springs == d->springs && r->stepper == d->stepper &&
+           (r->stepper == FS_STEPPER_STEP || r->iterations == d->iterations);
+}
+
+static double rtf(const row *r) { return r->ok && r->wall_s > 0 ? r->sc->duration_s / r->wall_s : 0; }
+
+static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nrows, fs_error *err)
+{
+    const double *steps = quick ? STEPS_QUICK : STEPS_FULL;
+    int nsteps = quick ? (int)(sizeof STEPS_QUICK / sizeof *steps) : (int)(sizeof STEPS_FULL / sizeof *steps);
+    const int *its = quick ? ITERATIONS_QUICK : ITERATIONS_FULL;
+    int nits = quick ? (int)(sizeof ITERATIONS_QUICK / sizeof *its) : (int)(sizeof ITERATIONS_FULL / sizeof *its);
+    int repeats = quick ? 1 : 5, total = 0, n = 0;
+    for (int c = 0; c < nscenes; c++)
+        total += nsteps * nits * (1 + scenes[c].has_springs);
+    fs_status s = FS_OK;
+    for (int c = 0; c < nscenes && s == FS_OK; c++)
+        for (int i = 0; i < nits && s == FS_OK; i++)
+            for (int sp = 0; sp < 1 + scenes[c].has_springs && s == FS_OK; sp++)
+                for (int h = 0; h < nsteps && s == FS_OK; h++) {
+                    row *r = &rows[n++];
+                    *r = (row){.sc = &scenes[c], .stepper = its[i] ? FS_STEPPER_QUICKSTEP : FS_STEPPER_STEP,
+                               .iterations = its[i], .springs = sp ? FS_SPRING_EXPLICIT : FS_SPRING_IMPLICIT,
+                               .step_s = steps[h]};
+                    fprintf(stderr, "\rfootsim bench precision: %d/%d  %-7s %-9s %3d %-8s h = %-6g", n, total,
+                            r->sc->name, stepper_name(r->stepper), r->iterations, spring_name(r->springs), r->step_s);
+                    s = measure(r, repeats, err);
+                    r->is_default = is_default(r);
+                }
+    fprintf(stderr, "\n");
+    *nrows = n;
+    mark_pareto(rows, n);
+    return s;
+}
+
+/* ---- the outputs -------------------------------------------------------------------------- */
+
+/* An output file written whole or not at all (fs_open_temp, then fs_commit_file). */
+typedef struct out_file { FILE *f; char path[2 * FS_PATH_MAX], temp[2 * FS_PATH_MAX + 64]; } out_file;
+
+static FILE *open_out(out_file *o, const char *dir, const char *name, fs_error *err)
+{
+    snprintf(o->path, sizeof o->path, "%s/%s", dir, name);
+    o->f = fs_open_temp(o->path, o->temp, sizeof o->temp, err);
+    return o->f;
+}
+
+static fs_status close_out(out_file *o, fs_error *err) { return fs_commit_file(o->f, o->temp, o->path, 1, err); }
+
+static fs_status write_csv(const char *dir, const row *rows, int n, fs_error *err)
+{
+    out_file o;
+    FILE *f = open_out(&o, dir, "precision.csv", err);
+    if (!f)
+        return FS_IO;
+    fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
+            "wall_s,wall_per_sim_s,rtf,status,pareto,default\n");
+    for (int i = 0; i < n; i++) {
+        const row *r = &rows[i];
+        if (r->ok)
+            fprintf(f, "%s,%s,%d,%s,%g,%.4e,%.4e,%.4e,%.4e,%.4e,%.4e,%.4g,%s,%d,%d\n", r->sc->name, stepper_name(r->stepper),
+                r->iterations, spring_name(r->springs), r->step_s, r->e.max_m, r->e.rms_m, r->e.max_rad, r->e.rms_rad,
+                r->wall_s, r->wall_s / r->sc->duration_s, rtf(r), r->drifting ? "drifting" : "ok", r->pareto,
+                r->is_default);
+        else
+            fprintf(f, "%s,%s,%d,%s,%g,inf,inf,inf,inf,,,,blown_up,0,%d\n", r->sc->name, stepper_name(r->stepper),
+                r->iterations, spring_name(r->springs), r->step_s, r->is_default);
+    }
+    return close_out(&o, err);
+}
+
+static void describe(FILE *f, const row *r)
+{
+    if (r->stepper == FS_STEPPER_QUICKSTEP)
+        fprintf(f, "| quickstep %d | %s | %g |", r->iterations, spring_name(r->springs), r->step_s);
+    else
+        fprintf(f, "| step | %s | %g |", spring_name(r->springs), r->step_s);
+}
+
+/* Scene s's rows on its Pareto front (and its default row, with_default), slowest first. */
+static int sorted_front(const row *rows, int n, const scene *s, int with_default, const row **out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++)
+        if (rows[i].sc == s && (rows[i].pareto || (with_default && rows[i].is_default)))
+            out[m++] = &rows[i];
+    for (int i = 1; i < m; i++)
+        for (int j = i; j > 0 && rtf(out[j]) < rtf(out[j - 1]); j--) {
+            const row *x = out[j];
+            out[j] = out[j - 1];
+            out[j - 1] = x;
+        }
+    return m;
+}
+
+/* The table of one scene's Pareto front, fastest last. */
+static void front_table(FILE *f, const row *rows, int n, const scene *s)
+{
+    fprintf(f, "\n### %s: the Pareto front\n\n| stepper | springs | step (s) | max ankle error (m) | RMS (m) | "
+           "max angle error (rad) | real-time factor | default |\n|---|---|---|---|---|---|---|---|\n", s->name);
+    const row *sorted[MAX_ROWS];
+    int m = sorted_front(rows, n, s, 1, sorted);
+    for (int i = 0; i < m; i++) {
+        const row *r = sorted[i];
+        describe(f, r);
+        if (r->ok)
+            fprintf(f, " %.2e | %.2e | %.2e | %.3g | %s%s |\n", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
+                r->is_default ? "yes" : "", r->pareto ? "" : " (not on the front)");
+        else
+            fprintf(f, " blew up | | | | %s |\n", r->is_default ? "yes" : "");
+    }
+}
+
+/* The landing trial's goal: the fastest configuration within GOAL_ERR_M at GOAL_RTF or more. */
+static void goal(FILE *f, const row *rows, int n, const scene *s)
+{
+    const row *best = NULL, *dflt = NULL;
+    for (int i = 0; i < n; i++) {
+        const row *r = &rows[i];
+        if (r->sc != s)
+            continue;
+        if (r->is_default)
+            dflt = r;
+        if (r->ok && r->e.max_m <= GOAL_ERR_M && (!best || rtf(r) > rtf(best)))
+            best = r;
+    }
+    fprintf(f, "\n**Goal** (issue 6), %s: at most %g mm of ankle error at a real-time factor of %g or more on one "
+           "core. ", s->name, GOAL_ERR_M * 1e3, GOAL_RTF);
+    if (best)
+        fprintf(f, "The fastest configuration within %g mm: %s, %s springs, h = %g s: %.3g mm at %.3gx real time: goal "
+               "%s.", GOAL_ERR_M * 1e3, best->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep",
+            spring_name(best->springs), best->step_s, best->e.max_m * 1e3, rtf(best),
+            rtf(best) >= GOAL_RTF ? "met" : "not met");
+    else
+        fprintf(f, "No configuration stays within %g mm: goal not met.", GOAL_ERR_M * 1e3);
+    if (dflt && dflt->ok)
+        fprintf(f, " The scenario's default (%s, %s springs, h = %g s): %.3g mm at %.3gx.\n",
+            dflt->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep", spring_name(dflt->springs),
+            dflt->step_s, dflt->e.max_m * 1e3, rtf(dflt));
+    else
+        fprintf(f, "\n");
+}
+
+static fs_status write_md(const char *dir, const row *rows, int n, const scene *scenes, int nscenes,
+                          const char *machine, int quick, fs_error *err)
+{
+    out_file o;
+    FILE *f = open_out(&o, dir, "precision.md", err);
+    if (!f)
+        return FS_IO;
+    char date[32];
+    time_t now = time(NULL);
+    strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+    fprintf(f, "# Precision: run time against error\n\n`footsim bench precision%s` on %s; %s; load average %.2f at the "
+            "end. Every row of `precision.csv` is one configuration; the chart is `precision.png`.\n",
+        quick ? " --quick" : "", date, machine, cli_load_average());
+    fprintf(f, "\nReferences: **chain**: the planar dynamic model (GSL rk8pd, tolerance %g; halving it moves the ankle "
+            "by %.1e m; %.2f s to compute). **landing_flat**, **landing_biomimetic**: footsim's own run of the same "
+            "trial at h = %g s with dWorldStep (%.1f s and %.1f s), over %g s from release.\n",
+        REF_TOLERANCE, scenes[0].ref_check_m, scenes[0].ref_wall_s, REF_STEP_S, scenes[1].ref_wall_s,
+        scenes[2].ref_wall_s, scenes[1].duration_s);
+    for (int c = 0; c < nscenes; c++)
+        front_table(f, rows, n, &scenes[c]);
+    for (int c = 1; c < nscenes; c++)
+        goal(f, rows, n, &scenes[c]);
+    int blown = 0, drifting = 0;
+    for (int i = 0; i < n; i++) {
+        blown += !rows[i].ok;
+        drifting += rows[i].ok && rows[i].drifting;
+    }
+    fprintf(f, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
+            "from nowhere: `status` in the CSV; neither is put on a front); `footsim bench stability` maps where.\n",
+        blown, n, drifting);
+    return close_out(&o, err);
+}
+
+static fs_status write_chart(const char *dir, const row *rows, int n, const scene *scenes, int nscenes, fs_error *err)
+{
+    static const char head[] =
+        "# 'gnuplot precision.gp' in this folder draws precision.png from precision.csv.\n"
+        "if (!exists(\"out\")) out = 'precision.png'\n"
+        "set datafile separator ','\n"
+        "sel(scene, stepper, spring, col) = (strcol(1) eq scene && strcol(2) eq stepper && strcol(4) eq spring && "
+        "strcol(13) ne 'blown_up') ? column(col) : NaN\n"
+        "dflt(scene, col) = (strcol(1) eq scene && $15 == 1 && strcol(13) eq 'ok') ? column(col) : NaN\n";
+    static const char axes[] =
+        "set terminal pngcairo size 1800,600 font ',11'\n"
+        "set output out\n"
+        "set logscale xy\n"
+        "set format y '10^{%L}'\n"
+        "set format x '10^{%L}'\n"
+        "set xlabel 'real-time factor (simulated s per wall s)'\n"
+        "set ylabel 'largest ankle error (m)'\n"
+        "set grid\n"
+        "set key bottom right font ',9'\n";
+    static const char panel[] =
+        "set title '%s'\n"
+        "plot 'precision.csv' skip 1 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
+        "with points pt 7 ps 1 lc rgb '#1f77b4' title 'dWorldStep, implicit springs', \\\n"
+        "     '' skip 1 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
+        "lc rgb '#ff7f0e' title 'dWorldStep, explicit', \\\n"
+        "     '' skip 1 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
+        "pt 6 ps 1 lc rgb '#2ca02c' title 'QuickStep, implicit', \\\n"
+        "     '' skip 1 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
+        "pt 4 ps 1 lc rgb '#d62728' title 'QuickStep, explicit', \\\n"
+        "     '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
+        "title 'scenario default', \\\n"
+        "     $front%d using 1:2 with lines lw 2 lc rgb 'black' title 'Pareto front'\n";
+    out_file o;
+    FILE *f = open_out(&o, dir, "precision.gp", err);
+    if (!f)
+        return FS_IO;
+    fprintf(f, "%s", head);
+    /* each front as a block of its own (real-time factor, error), fastest last: a line through
+     * filtered rows of the CSV would break at every row filtered out */
+    for (int c = 0; c < nscenes; c++) {
+        const row *front[MAX_ROWS];
+        int m = sorted_front(rows, n, &scenes[c], 0, front);
+        fprintf(f, "$front%d << EOD\n", c);
+        for (int i = 0; i < m; i++)
+            if (front[i]->e.max_m > 0) /* the reference itself has no place on a log scale */
+                fprintf(f, "%.6g,%.6g\n", rtf(front[i]), front[i]->e.max_m);
+        fprintf(f, "EOD\n");
+    }
+    fprintf(f, "%sset multiplot layout 1,%d\n", axes, nscenes);
+    for (int c = 0; c < nscenes; c++) {
+        fprintf(f, "s = '%s'\n", scenes[c].name);
+        fprintf(f, panel, scenes[c].title, c);
+    }
+    fprintf(f, "unset multiplot\n");
+    fs_status s = close_out(&o, err);
+    if (s == FS_OK)
+        cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
+    return s;
+}
+
+int cli_bench_precision(const cli_args *a, const char *dir)
+{
+    fs_error err;
+    static scene scenes[NSCENES];
+    static row rows[MAX_ROWS];
+    int nrows = 0;
+    char machine[512];
+    cli_machine(machine, sizeof machine);
+    fs_status s = fs_make_dirs(dir, &err);
+    /* touchdown at about 35 ms, the impact over by 0.1 s; --quick stops soon after */
+    double landing_s = a->quick ? 0.2 : 0.5;
+    fprintf(stderr, "footsim bench precision: the references ...\n");
+    if (s == FS_OK)
+        s = chain_scene(&scenes[0], &err);
+    /* the flat foot lands with seed 10's pose on rough ground; the biomimetic foot folds and falls
+     * with any (docs/landing.md), and seed 1's fall is measured as it is */
+    if (s == FS_OK)
+        s = landing_scene(&scenes[1], "landing_flat", "flat foot landing on rough ground", "feet/flat.ini", 10, landing_s, &err);
+    if (s == FS_OK)
+        s = landing_scene(&scenes[2], "landing_biomimetic", "biomimetic foot landing on rough ground",
+                              "feet/biomimetic.ini", 1, landing_s, &err);
+    if (s == FS_OK)
+        s = sweep(scenes, NSCENES, a->quick, rows, &nrows, &err);
+    if (s == FS_OK)
+        s = write_csv(dir, rows, nrows, &err);
+    if (s == FS_OK)
+        s = write_md(dir, rows, nrows, scenes, NSCENES, machine, a->quick, &err);
+    if (s == FS_OK)
+        s = write_chart(dir, rows, nrows, scenes, NSCENES, &err);
+    for (int c = 0; c < NSCENES; c++)
+        fs_track_free(&scenes[c].ref);
+    if (s != FS_OK)
+        return cli_report(s, err.message);
+    printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}\n", nrows, dir);
+    return 0;
+}

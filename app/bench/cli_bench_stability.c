@@ -1,0 +1,511 @@
+/* cli_bench_stability.c: 'footsim bench stability': where the numerics hold, over step size,
+ * spring stiffness, load, link masses and drop height, for both spring implementations and both
+ * ODE steppers.
+ *
+ * Four slices, each a grid of step size against one quantity, each for 2 springs x 2 steppers:
+ * stiffness (all fifteen springs, static_load.ini), load (static_load.ini), mass (every link mass
+ * scaled, static_load.ini) and drop (the landing robot let fall, landing_trial.ini at its mean
+ * pose). A run steps its scenario for a fixed time with the run-time checks of fs_check.h, which
+ * record a drift and stop at a blow-up: the classifier and the run-time checks are one piece of
+ * code. Each run is a forked child: an ODE error (which exits the process), a crash or a hang
+ * (killed after CHILD_LIMIT_S) is a blown-up run and the sweep goes on; results do not depend on
+ * -j. Files: DIR/stability.csv, stability_<slice>.gp and .png, stability.md, each whole or not at
+ * all. */
+#include "cli.h"
+
+#include "footsim/io/fs_output.h"
+#include "footsim/sim/fs_sim.h"
+
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+enum { NSLICES = 4, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, CHILD_LIMIT_S = 300 };
+
+/* A swept quantity and its values (full sweep, then --quick). */
+typedef struct slice {
+    const char *name, *scenario, *label, *unit;
+    int log_axis;
+    double full[MAX_VALUES], quick[MAX_VALUES];
+    int nfull, nquick;
+} slice;
+
+static const slice SLICES[NSLICES] = {
+    {"stiffness", "scenarios/static_load.ini", "spring stiffness k, all 15 springs", "N/m", 1,
+     {1e3, 1e4, 1e5, 1e6, 1e7}, {1e3, 1e5, 1e7}, 5, 3},
+    {"load", "scenarios/static_load.ini", "load at the ankle", "kg", 1, {1, 5, 26, 100, 500}, {1, 26, 500}, 5, 3},
+    {"mass", "scenarios/static_load.ini", "link mass scale (every link)", "", 1, {0.01, 0.1, 1, 10}, {0.01, 1}, 4, 2},
+    {"drop", "scenarios/landing_trial.ini", "drop height of the 26 kg robot", "m", 0, {0, 0.005, 0.02, 0.05},
+     {0, 0.02}, 4, 2},
+};
+/* finer around the explicit springs' limit (4e-5 to 8e-5 s for the default foot) */
+static const double STEPS_FULL[] = {1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 6e-5, 8e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
+static const double STEPS_QUICK[] = {2e-5, 1e-4, 5e-4, 2e-3, 1e-2};
+static const char *STEPPERS[2] = {"step", "quickstep"}, *SPRINGS[2] = {"implicit", "explicit"};
+
+/* Simulated time of each run, s: the static load rises over 20 ms and settles by 0.2 s; the robot
+ * dropped 5 cm lands at 0.1 s. */
+static const double DURATION_FULL_S = 0.3, DURATION_QUICK_S = 0.1;
+
+typedef struct config {
+    int slice, stepper, springs;
+    double step_s, value; /* value: the slice's quantity */
+} config;
+
+/* What a run found; a child sends it whole through its pipe. */
+typedef struct outcome {
+    int status;                 /* FS_OK, or FS_BAD_INPUT when the scenario was refused (a bug here) */
+    int cls, kind, drift;       /* fs_check_class, the failure's and the first drift's fs_check_kind */
+    char reason[32];            /* the kind's name, or how the child died */
+    double time_s, drift_time_s, sim_time_s;
+    long steps;
+    double loop_m, excess_J, bound_J, speed_m_per_s, limit_s;
+    int iterations;
+    char where[48], drift_where[48];
+    char error[512];
+} outcome;
+
+static int fail(const fs_error *err) { return cli_report(err->status, err->message); }
+
+/* ---- one run ---------------------------------------------------------------------------------- */
+
+/* The --set overrides of a configuration; base masses from the design. */
+static int overrides(const config *c, const fs_design_def *base, double duration, char text[][96], const char **ov)
+{
+    const slice *s = &SLICES[c->slice];
+    int n = 0;
+    snprintf(text[n++], 96, "run.step_s=%.17g", c->step_s);
+    snprintf(text[n++], 96, "run.stepper=%s", STEPPERS[c->stepper]);
+    snprintf(text[n++], 96, "run.springs=%s", SPRINGS[c->springs]);
+    snprintf(text[n++], 96, "run.duration_s=%.17g", duration);
+    snprintf(text[n++], 96, "run.log_interval_s=%.17g", fmax(c->step_s, 1e-3));
+    if (!strcmp(s->name, "stiffness"))
+        for (int k = 1; k <= 3; k++)
+            snprintf(text[n++], 96, "springs.k_d%d_N_per_m=%.17g", k, c->value);
+    if (!strcmp(s->name, "load"))
+        snprintf(text[n++], 96, "load.mass_kg=%.17g", c->value);
+    if (!strcmp(s->name, "mass")) {
+        snprintf(text[n++], 96, "mass.heel_kg=%.17g", base->heel_kg * c->value);
+        snprintf(text[n++], 96, "mass.talus_kg=%.17g", base->talus_kg * c->value);
+        snprintf(text[n++], 96, "mass.metatarsal_kg=%.17g", base->metatarsal_kg * c->value);
+        snprintf(text[n++], 96, "mass.phalanx_kg=%.17g", base->phalanx_kg * c->value);
+    }
+    if (!strcmp(s->name, "drop"))
+        snprintf(text[n++], 96, "start.drop_m=%.17g", c->value);
+    for (int i = 0; i < n; i++)
+        ov[i] = text[i];
+    return n;
+}
+
+/* Steps the configuration for the duration, the checks recording drifts, until it blows up. */
+static void run_config(const config *c, const fs_design_def *base, double duration, outcome *o)
+{
+    static fs_scenario sc;
+    char text[16][96];
+    const char *ov[16];
+    int n = overrides(c, base, duration, text, ov);
+    fs_error err = {FS_OK, ""};
+    memset(o, 0, sizeof *o);
+    o->status = fs_scenario_load(SLICES[c->slice].scenario, ov, n, &sc, &err);
+    fs_sim sim;
+    if (o->status == FS_OK)
+        o->status = fs_sim_build(&sim, &sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
+    if (o->status != FS_OK) {
+        snprintf(o->error, sizeof o->error, "%.500s", err.message);
+        return;
+    }
+    long nsteps = (long)ceil(duration / c->step_s - 1e-9);
+    fs_status s = FS_OK;
+    for (long i = 0; i < nsteps && s == FS_OK; i++)
+        s = fs_sim_step(&sim, &err);
+    const fs_check *k = &sim.check;
+    o->kind = s == FS_OK ? FS_CHECK_OK : k->failure;
+    o->drift = k->first_drift;
+    o->cls = fs_check_class_of(o->kind != FS_CHECK_OK ? (fs_check_kind)o->kind : k->first_drift);
+    snprintf(o->reason, sizeof o->reason, "%s", fs_check_kind_name(o->kind != FS_CHECK_OK ? o->kind : o->drift));
+    snprintf(o->where, sizeof o->where, "%s", o->kind != FS_CHECK_OK ? k->failure_where : k->drift_where);
+    snprintf(o->drift_where, sizeof o->drift_where, "%s", k->drift_where);
+    o->time_s = o->kind != FS_CHECK_OK ? k->failure_time_s : o->drift ? k->first_drift_time_s : NAN;
+    o->drift_time_s = o->drift ? k->first_drift_time_s : NAN;
+    o->sim_time_s = sim.time_s;
+    o->steps = k->steps;
+    o->loop_m = k->max_loop_error_m;
+    o->excess_J = k->max_energy_excess_J;
+    o->bound_J = k->energy_bound_J;
+    o->speed_m_per_s = k->max_speed_m_per_s;
+    o->limit_s = fs_check_explicit_step_limit(&sim);
+    o->iterations = sc.def.iterations;
+    fs_sim_destroy(&sim);
+    fs_scenario_free(&sc);
+}
+
+/* ---- the pool of children --------------------------------------------------------------------- */
+
+typedef struct child {
+    pid_t pid;
+    int fd, index;
+} child;
+
+static int start_child(const config *c, const fs_design_def *base, double duration, int index, child *ch)
+{
+    int fd[2];
+    if (pipe(fd) != 0)
+        return 0;
+    fflush(stdout);
+    fflush(stderr);
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(fd[0]);
+        alarm(CHILD_LIMIT_S);
+        static outcome o;
+        run_config(c, base, duration, &o);
+        /* smaller than PIPE_BUF and the pipe's buffer: written whole, and without waiting */
+        _exit(write(fd[1], &o, sizeof o) == (ssize_t)sizeof o ? 0 : FS_IO);
+    }
+    close(fd[1]);
+    if (pid < 0) {
+        close(fd[0]);
+        return 0;
+    }
+    *ch = (child){pid, fd[0], index};
+    return 1;
+}
+
+/* The outcome of a child that has ended: what it sent, or how it died (a blown-up run). */
+static void finish_child(const child *ch, int status, const config *c, outcome *o)
+{
+    ssize_t got = read(ch->fd, o, sizeof *o);
+    close(ch->fd);
+    if (got == (ssize_t)sizeof *o && WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        return;
+    memset(o, 0, sizeof *o);
+    o->cls = FS_CHECK_BLOWN_UP;
+    o->time_s = o->drift_time_s = o->sim_time_s = o->loop_m = o->excess_J = o->bound_J = NAN;
+    o->speed_m_per_s = o->limit_s = NAN;
+    if (WIFEXITED(status))
+        snprintf(o->reason, sizeof o->reason, WEXITSTATUS(status) == FS_NUMERICAL ? "ode_error" : "exit_%d",
+                 WEXITSTATUS(status));
+    else
+        snprintf(o->reason, sizeof o->reason, WTERMSIG(status) == SIGALRM ? "timed_out" : "signal_%d",
+                 WTERMSIG(status));
+    fprintf(stderr, "footsim bench stability: the run %s, %s, %s springs, h = %g s, %s = %g %s\n", o->reason,
+            STEPPERS[c->stepper], SPRINGS[c->springs], c->step_s, SLICES[c->slice].name, c->value,
+            "(counted as blown_up)");
+}
+
+static void progress(int done, int n, double t0)
+{
+    int tty = isatty(STDERR_FILENO);
+    if (!tty && done % 50 != 0 && done != n)
+        return;
+    fprintf(stderr, tty ? "\rfootsim bench stability: %d/%d runs, %.0f s" : "footsim bench stability: %d/%d runs, %.0f s\n",
+            done, n, fs_clock_s() - t0);
+    if (tty && done == n)
+        fputc('\n', stderr);
+}
+
+/* Ends the children still running (after a failure) and collects them. */
+static void stop_children(child *ch, int running)
+{
+    for (int i = 0; i < running; i++) {
+        kill(ch[i].pid, SIGKILL);
+        waitpid(ch[i].pid, NULL, 0);
+        close(ch[i].fd);
+    }
+}
+
+/* Runs every configuration in up to jobs children at a time. */
+static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, const fs_design_def *base,
+                         double duration, fs_error *err)
+{
+    child ch[MAX_WORKERS];
+    int next = 0, done = 0, running = 0;
+    double t0 = fs_clock_s();
+    while (done < n) {
+        while (running < jobs && next < n) {
+            if (!start_child(&cfg[next], base, duration, next, &ch[running])) {
+                int e = errno;
+                stop_children(ch, running);
+                return fs_fail(err, FS_IO, "cannot start a child process (%s)", strerror(e));
+            }
+            next++, running++;
+        }
+        int status;
+        pid_t pid = waitpid(-1, &status, 0);
+        if (pid < 0) {
+            int e = errno;
+            stop_children(ch, running);
+            return fs_fail(err, FS_IO, "waitpid: %s", strerror(e));
+        }
+        for (int i = 0; i < running; i++)
+            if (ch[i].pid == pid) {
+                finish_child(&ch[i], status, &cfg[ch[i].index], &out[ch[i].index]);
+                const outcome *o = &out[ch[i].index];
+                ch[i] = ch[--running];
+                if (o->status != FS_OK) {
+                    stop_children(ch, running);
+                    return fs_fail(err, (fs_status)o->status, "%s", o->error);
+                }
+                progress(++done, n, t0);
+                break;
+            }
+    }
+    return FS_OK;
+}
+
+/* ---- the grid --------------------------------------------------------------------------------- */
+
+static int grid(int quick, config *cfg)
+{
+    const double *steps = quick ? STEPS_QUICK : STEPS_FULL;
+    int nsteps = quick ? (int)(sizeof STEPS_QUICK / sizeof *STEPS_QUICK) : (int)(sizeof STEPS_FULL / sizeof *STEPS_FULL);
+    int n = 0;
+    for (int s = 0; s < NSLICES; s++) {
+        const slice *sl = &SLICES[s];
+        for (int combo = 0; combo < NCOMBOS; combo++)
+            for (int v = 0; v < (quick ? sl->nquick : sl->nfull); v++)
+                for (int h = 0; h < nsteps; h++)
+                    cfg[n++] = (config){s, combo / 2, combo % 2, steps[h], quick ? sl->quick[v] : sl->full[v]};
+    }
+    return n;
+}
+
+/* ---- files ------------------------------------------------------------------------------------ */
+
+static fs_status write_csv(const char *dir, const config *cfg, const outcome *out, int n, fs_error *err)
+{
+    char path[FS_PATH_MAX + 32], temp[FS_PATH_MAX + 96];
+    snprintf(path, sizeof path, "%s/stability.csv", dir);
+    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
+    if (!f)
+        return FS_IO;
+    fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,class,class_code,reason,"
+               "where,time_s,drift_reason,drift_time_s,steps,max_loop_err_m,max_energy_excess_J,energy_bound_J,"
+               "max_speed_m_per_s,explicit_limit_s\n");
+    for (int i = 0; i < n; i++) {
+        const config *c = &cfg[i];
+        const outcome *o = &out[i];
+        const char *sl = SLICES[c->slice].name;
+        double k = !strcmp(sl, "stiffness") ? c->value : 12000, load = !strcmp(sl, "load") ? c->value : 26;
+        double scale = !strcmp(sl, "mass") ? c->value : 1, drop = !strcmp(sl, "drop") ? c->value : 0;
+        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%d,%s,%s,%.6g,%s,%.6g,%ld,%.4g,%.4g,%.4g,%.4g,%.4g\n", sl,
+                STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop,
+                fs_check_class_name((fs_check_class)o->cls), o->cls, o->reason, o->where, o->time_s,
+                fs_check_kind_name((fs_check_kind)o->drift), o->drift_time_s, o->steps, o->loop_m, o->excess_J,
+                o->bound_J, o->speed_m_per_s, o->limit_s);
+    }
+    return fs_commit_file(f, temp, path, !ferror(f), err);
+}
+
+/* The column of a slice's quantity in stability.csv (1-based, for gnuplot). */
+static int value_column(int s) { return 6 + s; }
+
+/* One chart per slice: step size against the quantity, a panel per spring x stepper, each run a
+ * square coloured by its class, the explicit springs' predicted limit as crosses. */
+static fs_status write_script(const char *dir, int s, fs_error *err)
+{
+    const slice *sl = &SLICES[s];
+    char path[FS_PATH_MAX + 64], text[6000];
+    int n = snprintf(text, sizeof text,
+                     "# footsim bench stability: %s against step size (run from this folder: gnuplot -e \"out='x.png'\" %s)\n"
+                     "set terminal pngcairo size 1200,900 noenhanced font 'sans,10'\nset output out\n"
+                     "set datafile separator ','\nset multiplot layout 2,2 title 'footsim bench stability: %s'\n"
+                     "set logscale x\nset xrange [5e-6:2e-2]\nset format x '%%.0e'\nset xlabel 'step h, s'\nset ylabel '%s%s%s%s'\n%s"
+                     "set offsets graph 0.05, graph 0.05, graph 0.08, graph 0.08\nset key outside bottom center horizontal\n"
+                     "set linetype 11 lc rgb '#2ca02c'\nset linetype 12 lc rgb '#ff9f1c'\nset linetype 13 lc rgb '#d62728'\n",
+                     sl->name, "stability.csv", sl->name, sl->label, *sl->unit ? ", " : "", sl->unit, "",
+                     sl->log_axis ? "set logscale y\n" : "");
+    for (int combo = 0; combo < NCOMBOS && n < (int)sizeof text; combo++) {
+        const char *st = STEPPERS[combo / 2], *sp = SPRINGS[combo % 2];
+        n += snprintf(text + n, sizeof text - (size_t)n,
+                      "set title '%s springs, %s'\n"
+                      "ok(p) = strcol(1) eq '%s' && strcol(2) eq '%s' && strcol(4) eq '%s' && column(11) == p\n"
+                      "plot for [p=0:2] 'stability.csv' every ::1 using (ok(p) ? $5 : NaN):%d:(11 + p) with points "
+                      "pt 5 ps 1.8 lc variable title word('stable drifting blown_up', p + 1), \\\n"
+                      "     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && '%s' eq 'explicit' ? $22 : NaN):%d "
+                      "with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'\n",
+                      sp, st, sl->name, st, sp, value_column(s), sp, value_column(s));
+    }
+    n += snprintf(text + n, sizeof text - (size_t)n, "unset multiplot\n");
+    snprintf(path, sizeof path, "%s/stability_%s.gp", dir, sl->name);
+    return fs_write_atomic(path, text, strlen(text), err);
+}
+
+/* Rows over several slices: every run, or every run with the design's link masses. */
+enum { ALL_RUNS = -1, DESIGN_MASSES = -2, MASS_SLICE = 2 /* SLICES[2] */ };
+
+/* Whether run c belongs to a row: its spring x stepper, and its slice and value (or ALL_RUNS, or
+ * DESIGN_MASSES). */
+static int in_row(const config *c, int s, int combo, double value)
+{
+    if (c->stepper != combo / 2 || c->springs != combo % 2)
+        return 0;
+    if (s == ALL_RUNS)
+        return 1;
+    if (s == DESIGN_MASSES)
+        return c->slice != MASS_SLICE || c->value == 1;
+    return c->slice == s && c->value == value;
+}
+
+/* The largest step of a row below which every run was stable, and the smallest that drifted and
+ * that blew up; 0 / INFINITY when none. */
+static void boundary(const config *cfg, const outcome *out, int n, int s, int combo, double value, double *stable,
+                     double *blown, double *drift)
+{
+    *stable = 0, *blown = *drift = INFINITY;
+    double first_bad = INFINITY;
+    for (int i = 0; i < n; i++) {
+        if (!in_row(&cfg[i], s, combo, value))
+            continue;
+        if (out[i].cls != FS_CHECK_STABLE)
+            first_bad = fmin(first_bad, cfg[i].step_s);
+        if (out[i].cls == FS_CHECK_BLOWN_UP)
+            *blown = fmin(*blown, cfg[i].step_s);
+        if (out[i].cls == FS_CHECK_DRIFTING)
+            *drift = fmin(*drift, cfg[i].step_s);
+    }
+    for (int i = 0; i < n; i++)
+        if (in_row(&cfg[i], s, combo, value) && cfg[i].step_s < first_bad)
+            *stable = fmax(*stable, cfg[i].step_s);
+}
+
+static void cell(char *buf, size_t size, double stable, double drift, double blown)
+{
+    int k = snprintf(buf, size, "%s", "");
+    if (stable > 0)
+        k += snprintf(buf + k, size - (size_t)k, "≤ %g", stable);
+    else
+        k += snprintf(buf + k, size - (size_t)k, "none");
+    if (isfinite(drift))
+        k += snprintf(buf + k, size - (size_t)k, "; drifts %g", drift);
+    if (isfinite(blown))
+        snprintf(buf + k, size - (size_t)k, "; blows up %g", blown);
+}
+
+/* The limit the explicit springs' stability predicts for one row (the first run of it). */
+static double predicted(const config *cfg, const outcome *out, int n, int s, double value)
+{
+    for (int i = 0; i < n; i++)
+        if (cfg[i].slice == s && cfg[i].value == value && isfinite(out[i].limit_s) && out[i].limit_s > 0)
+            return out[i].limit_s;
+    return NAN;
+}
+
+static void slice_table(FILE *f, const config *cfg, const outcome *out, int n, int s, int quick)
+{
+    const slice *sl = &SLICES[s];
+    fprintf(f, "\n### %s: step size against %s (`%s`)\n\n![%s](stability_%s.png)\n\n", sl->name, sl->label,
+            sl->scenario, sl->name, sl->name);
+    fprintf(f, "| %s%s%s%s | explicit limit predicted, s | step, implicit | step, explicit | quickstep, implicit | "
+               "quickstep, explicit |\n|--:|--:|---|---|---|---|\n",
+            sl->name, *sl->unit ? " (" : "", sl->unit, *sl->unit ? ")" : "");
+    for (int v = 0; v < (quick ? sl->nquick : sl->nfull); v++) {
+        double value = quick ? sl->quick[v] : sl->full[v];
+        fprintf(f, "| %g | %.2g |", value, predicted(cfg, out, n, s, value));
+        for (int combo = 0; combo < NCOMBOS; combo++) { /* combo = stepper * 2 + springs */
+            double st, bl, dr;
+            char text[160];
+            boundary(cfg, out, n, s, combo, value, &st, &bl, &dr);
+            cell(text, sizeof text, st, dr, bl);
+            fprintf(f, " %s |", text);
+        }
+        fputc('\n', f);
+    }
+}
+
+static void count_classes(const outcome *out, int n, int counts[3])
+{
+    counts[0] = counts[1] = counts[2] = 0;
+    for (int i = 0; i < n; i++)
+        counts[out[i].cls]++;
+}
+
+static fs_status write_summary(const char *dir, const config *cfg, const outcome *out, int n, int quick,
+                               double wall_s, int jobs, fs_error *err)
+{
+    char path[FS_PATH_MAX + 32], temp[FS_PATH_MAX + 96], machine[512];
+    snprintf(path, sizeof path, "%s/stability.md", dir);
+    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
+    if (!f)
+        return FS_IO;
+    cli_machine(machine, sizeof machine);
+    int counts[3];
+    count_classes(out, n, counts);
+    fprintf(f, "# Numerical stability (`footsim bench stability%s`)\n\n", quick ? " --quick" : "");
+    fprintf(f, "%d runs of %.2f s simulated each: %d stable, %d drifting, %d blown up; %.0f s with -j %d on %s.\n",
+            n, quick ? DURATION_QUICK_S : DURATION_FULL_S, counts[0], counts[1], counts[2], wall_s, jobs, machine);
+    fprintf(f, "\nClasses (the run-time checks of `include/footsim/sim/fs_check.h`, default bounds): **stable**; "
+               "**drifting**: a hinge's anchors over 1 mm apart, or the energy above its start plus the work put "
+               "in by more than 1 J + 10 %% of that work; **blown up**: a non-finite state, a point faster than "
+               "100 m/s, or an ODE error that ended the run's process.\n");
+    fprintf(f, "\nEach cell: the largest step h (s) at which that row was stable at every step up to it, then the "
+               "smallest h that drifted and that blew up. The predicted limit is the explicit springs' (the "
+               "lightest body as a mass on its springs and dampers, `fs_check_explicit_step_limit`: "
+               "k h² + 2 c h < 4 m); the paper's default foot gives 4.0e-5 s (phalanx, 8 g, two dampers of "
+               "200 N·s/m), or 8e-5 s with one damper (2 m / c).\n");
+    fprintf(f, "\n## Safe envelope\n\nThe largest step at which every swept case (every slice and value) was "
+               "stable, then the smallest that drifted and that blew up; and the same with the design's link "
+               "masses (the mass slice's other scales left out):\n\n| springs, stepper | every case | design's "
+               "link masses |\n|---|---|---|\n");
+    for (int combo = 0; combo < NCOMBOS; combo++) {
+        char text[2][160];
+        for (int k = 0; k < 2; k++) {
+            double st, bl, dr;
+            boundary(cfg, out, n, k ? DESIGN_MASSES : ALL_RUNS, combo, 0, &st, &bl, &dr);
+            cell(text[k], sizeof text[k], st, dr, bl);
+        }
+        fprintf(f, "| %s, %s | %s | %s |\n", SPRINGS[combo % 2], STEPPERS[combo / 2], text[0], text[1]);
+    }
+    for (int s = 0; s < NSLICES; s++)
+        slice_table(f, cfg, out, n, s, quick);
+    fprintf(f, "\n`stability.csv` has every run (class, the check that failed, where and when, the worst loop "
+               "error, energy excess and speed); `stability_<slice>.gp` draws each chart.\n");
+    return fs_commit_file(f, temp, path, !ferror(f), err);
+}
+
+/* ---- the command ------------------------------------------------------------------------------ */
+
+int cli_bench_stability(const cli_args *a, const char *dir)
+{
+    int jobs;
+    int st = cli_parse_jobs(a, &jobs);
+    if (st)
+        return st;
+    jobs = jobs < MAX_WORKERS ? jobs : MAX_WORKERS;
+    fs_error err;
+    static fs_scenario base;
+    if (fs_scenario_load(SLICES[0].scenario, NULL, 0, &base, &err) != FS_OK)
+        return fail(&err);
+    fs_scenario_free(&base);
+    if (fs_make_dirs(dir, &err) != FS_OK)
+        return fail(&err);
+    static config cfg[NSLICES * NCOMBOS * MAX_VALUES * 16];
+    int n = grid(a->quick, cfg);
+    outcome *out = calloc((size_t)n, sizeof *out);
+    if (!out)
+        return cli_report(FS_IO, "out of memory");
+    double duration = a->quick ? DURATION_QUICK_S : DURATION_FULL_S, t0 = fs_clock_s();
+    fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
+    fs_status s = run_all(cfg, out, n, jobs, &base.design, duration, &err);
+    if (s == FS_OK)
+        s = write_csv(dir, cfg, out, n, &err);
+    for (int i = 0; s == FS_OK && i < NSLICES; i++) {
+        char gp[64], png[64];
+        snprintf(gp, sizeof gp, "stability_%s.gp", SLICES[i].name);
+        snprintf(png, sizeof png, "stability_%s.png", SLICES[i].name);
+        if ((s = write_script(dir, i, &err)) == FS_OK)
+            cli_gnuplot(dir, gp, png, "bench stability");
+    }
+    if (s == FS_OK)
+        s = write_summary(dir, cfg, out, n, a->quick, fs_clock_s() - t0, jobs, &err);
+    free(out);
+    if (s != FS_OK)
+        return fail(&err);
+    printf("bench stability: %d runs; results: %s/stability.md, stability.csv, stability_*.png\n", n, dir);
+    return 0;
+}

@@ -1,0 +1,81 @@
+/* cli.h: the footsim command's shared argument handling and its subcommands. */
+#ifndef FS_CLI_H
+#define FS_CLI_H
+
+#include <stddef.h>
+
+enum { CLI_MAX_SET = 256 };
+
+/* What every subcommand may be given. */
+typedef struct cli_args {
+    const char *command;
+    const char *input;              /* the scenario or design file */
+    const char *input2;             /* a second one, for commands that take two (render-compare) */
+    const char *out;                /* --out DIR, or NULL */
+    int json;                       /* --json */
+    const char *set[CLI_MAX_SET];   /* --set section.key=value, in order */
+    int nset;
+    int frames;                     /* --frames: write DIR/frames/NNNNNN.png */
+    const char *fps, *size, *camera;/* --fps N, --size WxH, --camera NAME (as given; checked by the renderer) */
+    int video;                      /* --video: also DIR/video.mp4 */
+    const char *height_x, *height_y;/* --height X Y */
+    const char *png;                /* --png FILE */
+    const char *scenario;           /* --scenario FILE */
+    const char *seed;               /* --seed N */
+    const char *jobs;               /* -j N: worker processes (campaign) */
+    int quick;                      /* --quick: a smaller sweep (bench) */
+} cli_args;
+
+/* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open
+ * checks the frame options and prepares the renderer before anything is simulated (exit 2 when
+ * they are wrong or no renderer is built in); it fills obs with the observer that draws each
+ * frame. cli_frames_close finishes (video). */
+typedef struct fs_run_observer fs_run_observer;
+typedef struct fs_scenario fs_scenario;
+typedef struct cli_frames cli_frames;
+int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
+                    fs_run_observer *obs);
+int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir);
+
+/* render-compare A B: both runs side by side in DIR/frames/, and DIR/filmstrip.png
+ * (app/cli_compare.c; app/cli_render.c without the renderer: exit 2). */
+int cli_render_compare(const cli_args *a);
+
+int cli_run(const cli_args *a);
+int cli_model(const cli_args *a);
+int cli_stiffness(const cli_args *a);
+int cli_keys(const cli_args *a);
+int cli_demo(const cli_args *a);
+int cli_terrain(const cli_args *a);
+int cli_trial(const cli_args *a);
+int cli_walk(const cli_args *a);
+int cli_campaign(const cli_args *a);  /* app/cli_campaign.c */
+int cli_compare(const cli_args *a);
+
+/* bench precision|stability|speed (src/cli_bench*.c). Each writes its CSVs, charts and a Markdown
+ * table to --out DIR (default results/bench/), whole or not at all. */
+int cli_bench(const cli_args *a);
+int cli_bench_precision(const cli_args *a, const char *dir);
+int cli_bench_stability(const cli_args *a, const char *dir);
+int cli_bench_speed(const cli_args *a, const char *dir);
+
+/* -j N: worker processes, default all cores online (1 to 1024; exit 2 otherwise). */
+int cli_parse_jobs(const cli_args *a, int *jobs);
+
+/* The machine a benchmark ran on, one line: CPU model, cores, compiler, ODE version. */
+void cli_machine(char *out, size_t size);
+
+/* The 1-minute load average from /proc/loadavg, or -1 when it cannot be read. */
+double cli_load_average(void);
+
+/* Whether an executable is on PATH. */
+int cli_have_program(const char *name);
+
+/* Runs 'gnuplot -e "out='TMP'" SCRIPT' in dir and renames TMP to dir/png_name: the chart whole or
+ * not at all. Without gnuplot, or when it fails, says so (naming `who`) and returns 0. */
+int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who);
+
+/* Prints "footsim: message" to stderr and returns the status. */
+int cli_report(int status, const char *message);
+
+#endif

@@ -1,0 +1,328 @@
+/* cli_commands.c: the footsim subcommands. */
+#include "cli.h"
+
+#include "footsim/analysis/fs_analysis.h"
+#include "footsim/io/fs_output.h"
+#include "footsim/experiment/fs_run.h"
+#include "footsim/experiment/fs_trial.h"
+#include "footsim/experiment/fs_walk.h"
+#include "footsim/sim/fs_sim.h"
+
+#include <cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* The stiffness model and ODE must agree this closely (issue 2's acceptance bound). */
+static const double STIFFNESS_TOLERANCE = 0.01;
+
+static int fail(const fs_error *err) { return cli_report(err->status, err->message); }
+
+/* ---- run -------------------------------------------------------------------------------------- */
+
+static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
+{
+    fs_error err;
+    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK)
+        return fail(&err);
+    char dir[FS_PATH_MAX + 64];
+    if (a->out)
+        snprintf(dir, sizeof dir, "%s", a->out);
+    else
+        snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
+    /* the folder must be writable, and the frame options right, before anything is simulated;
+     * everything goes to a partial folder beside it, swapped in whole at the end */
+    char partial[FS_PATH_MAX + 96];
+    snprintf(partial, sizeof partial, "%s.partial.%ld", dir, (long)getpid());
+    int existed = access(dir, F_OK) == 0; /* a failed run leaves no new (empty) results folder */
+    if (fs_make_dirs(dir, &err) != FS_OK || fs_make_dirs(partial, &err) != FS_OK)
+        return fail(&err);
+    cli_frames *frames = NULL;
+    fs_run_observer observer, *obs = NULL;
+    if (a->frames) {
+        int fs = cli_frames_open(a, sc, partial, &frames, &observer);
+        if (fs) {
+            fs_remove_tree(partial);
+            if (!existed)
+                rmdir(dir);
+            return fs;
+        }
+        obs = &observer;
+    }
+    fs_status rs = fs_run(sc, obs, res, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, dir) : 0;
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, partial, &err)) == FS_OK)
+        rs = fs_commit_dir(partial, dir, &err);
+    else
+        fs_remove_tree(partial);
+    if (rs != FS_OK || fstatus) {
+        if (!existed)
+            rmdir(dir);
+        fs_run_free(res);
+        return fstatus ? fstatus : fail(&err);
+    }
+    printf("%s: %s foot, %.1f kg at %.0f deg: ankle drop %.3f mm, settled after %.3f s (%s at t = %.3f s)\n"
+           "  results: %s/metrics.json, %s/trajectory.csv\n",
+           sc->name, sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", sc->def.load_kg, sc->def.tilt_deg,
+           res->ankle_drop_m * 1e3, res->settle_time_s, res->at_rest ? "at rest" : "stopped", res->end_time_s, dir,
+           dir);
+    return 0;
+}
+
+int cli_run(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_run_result res;
+    int s = run_scenario(a, &res, &sc);
+    if (s == 0)
+        fs_run_free(&res);
+    fs_scenario_free(&sc);
+    return s;
+}
+
+/* ---- model ------------------------------------------------------------------------------------ */
+
+static int print_json(cJSON *root)
+{
+    char *text = cJSON_Print(root);
+    if (!text)
+        return cli_report(FS_IO, "out of memory");
+    puts(text);
+    free(text);
+    return 0;
+}
+
+int cli_model(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_error err;
+    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+        return fail(&err);
+    cJSON *root = fs_model_json(&sc, &err);
+    if (!root)
+        return fail(&err);
+    int s = 0;
+    if (a->json) {
+        s = print_json(root);
+    } else {
+        const fs_foot_geom *g = &sc.geom;
+        printf("%s: %s foot, %d bodies, %d hinges, %d springs, %d contact shapes, %.3f kg\n", a->input,
+               g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic", g->nbodies, g->nhinges, g->nsprings,
+               g->nspheres + g->has_box, g->total_mass_kg);
+        printf("ankle at (%.4f, %.4f, %.4f) m\n", g->ankle.x, g->ankle.y, g->ankle.z);
+        for (int i = 0; i < g->nbodies; i++)
+            printf("  body %-12s %.4f kg at (%.4f, %.4f, %.4f) m\n", g->body[i].name, g->body[i].mass_kg,
+                   g->body[i].com.x, g->body[i].com.y, g->body[i].com.z);
+        printf("'footsim model %s --json' gives every number.\n", a->input);
+    }
+    cJSON_Delete(root);
+    return s;
+}
+
+/* ---- stiffness -------------------------------------------------------------------------------- */
+
+static cJSON *mat_json(const double m[2][2])
+{
+    cJSON *rows = cJSON_CreateArray();
+    for (int r = 0; r < 2; r++)
+        cJSON_AddItemToArray(rows, cJSON_CreateDoubleArray(m[r], 2));
+    return rows;
+}
+
+static void print_mat_row(const char *label, const double m[2][2])
+{
+    printf("    %-22s [%9.4f %9.4f; %9.4f %9.4f]\n", label, m[0][0], m[0][1], m[1][0], m[1][1]);
+}
+
+int cli_stiffness(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_error err;
+    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+        return fail(&err);
+    if (sc.geom.kind != FS_FOOT_BIOMIMETIC)
+        return cli_report(FS_BAD_INPUT, "stiffness: the flat foot has no joints; give a biomimetic design");
+    fs_chain_stiffness k[FS_CHAINS];
+    fs_stiffness_analytic(&sc.geom, k);
+    if (fs_stiffness_measure(&sc, k, &err) != FS_OK)
+        return fail(&err);
+    double worst = 0;
+    for (int i = 0; i < FS_CHAINS; i++)
+        worst = fmax(worst, k[i].rel_diff);
+    /* the arch under the design load, on ground that grips (rolling) and on ground that does not */
+    fs_planar_result eq[2];
+    for (int f = 0; f < 2; f++) {
+        fs_planar_load load = {sc.design.design_load_kg * sc.def.gravity_m_per_s2, sc.def.gravity_m_per_s2, 0, f};
+        if (fs_planar_equilibrium(&sc.design, &sc.geom, 2, &load, &eq[f], &err) != FS_OK)
+            return fail(&err);
+    }
+    if (a->json) {
+        cJSON *root = cJSON_CreateObject();
+        cJSON_AddStringToObject(root, "design", a->input);
+        cJSON_AddStringToObject(root, "units", "N m/rad; joints (midfoot, MTP); positive turns the distal link up");
+        cJSON *chains = cJSON_AddArrayToObject(root, "chains");
+        for (int i = 0; i < FS_CHAINS; i++) {
+            cJSON *c = cJSON_CreateObject();
+            cJSON_AddNumberToObject(c, "chain", i + 1);
+            cJSON_AddItemToObject(c, "analytic", mat_json((const double(*)[2])k[i].exact));
+            cJSON_AddItemToObject(c, "paper_eq4", mat_json((const double(*)[2])k[i].eq4));
+            cJSON_AddItemToObject(c, "measured", mat_json((const double(*)[2])k[i].measured));
+            cJSON_AddNumberToObject(c, "rel_diff", k[i].rel_diff);
+            cJSON_AddItemToArray(chains, c);
+        }
+        cJSON_AddNumberToObject(root, "max_rel_diff", worst);
+        cJSON_AddNumberToObject(root, "tolerance", STIFFNESS_TOLERANCE);
+        cJSON *st = cJSON_AddObjectToObject(root, "static_check");
+        cJSON_AddNumberToObject(st, "load_kg", sc.design.design_load_kg);
+        cJSON_AddNumberToObject(st, "chain", 3);
+        for (int f = 0; f < 2; f++) {
+            cJSON *o = cJSON_AddObjectToObject(st, f ? "frictionless" : "gripping");
+            cJSON_AddBoolToObject(o, "converged", eq[f].converged);
+            cJSON_AddBoolToObject(o, "stable", eq[f].stable);
+            cJSON_AddNumberToObject(o, "ankle_drop_m", eq[f].ankle_drop_m);
+            cJSON_AddNumberToObject(o, "ankle_joint_rad", eq[f].ankle_joint_rad);
+            cJSON_AddNumberToObject(o, "midfoot_rad", eq[f].midfoot_rad);
+            cJSON_AddNumberToObject(o, "mtp_rad", eq[f].mtp_rad);
+            cJSON_AddNumberToObject(o, "ball_clearance_m", eq[f].ball_clearance_m);
+            cJSON_AddItemToObject(o, "spring_force_N", cJSON_CreateDoubleArray(eq[f].spring_force_N, 3));
+        }
+        print_json(root);
+        cJSON_Delete(root);
+    } else {
+        printf("%s: joint stiffness per chain, N m/rad, joints (midfoot, MTP)\n", a->input);
+        for (int i = 0; i < FS_CHAINS; i++) {
+            printf("  chain %d (relative difference, measured against exact: %.2e)\n", i + 1, k[i].rel_diff);
+            print_mat_row("exact geometry", (const double(*)[2])k[i].exact);
+            print_mat_row("paper eq. 4 (on-axis)", (const double(*)[2])k[i].eq4);
+            print_mat_row("measured in ODE", (const double(*)[2])k[i].measured);
+        }
+        printf("largest relative difference %.2e (must be below %.0e): %s\n", worst, STIFFNESS_TOLERANCE,
+               worst <= STIFFNESS_TOLERANCE ? "agree" : "DISAGREE");
+        printf("static check of chain 3 under %.1f kg (planar model, all chains alike):\n", sc.design.design_load_kg);
+        for (int f = 0; f < 2; f++)
+            printf("  %-12s %s, %s; ankle drop %.3f mm, midfoot %+.2f deg, MTP %+.2f deg, ball %.2f mm above the "
+                   "ground\n",
+                   f ? "frictionless" : "gripping", eq[f].converged ? "equilibrium found" : "NO EQUILIBRIUM",
+                   eq[f].stable ? "stable" : "UNSTABLE", eq[f].ankle_drop_m * 1e3, eq[f].midfoot_rad * 180 / M_PI,
+                   eq[f].mtp_rad * 180 / M_PI, eq[f].ball_clearance_m * 1e3);
+    }
+    return worst <= STIFFNESS_TOLERANCE ? 0 : FS_EXPECTATION_FAILED;
+}
+
+/* ---- trial ------------------------------------------------------------------------------------ */
+
+int cli_trial(const cli_args *a)
+{
+    char *end;
+    long seed = a->seed ? strtol(a->seed, &end, 10) : 1;
+    if (a->seed && (*end || end == a->seed || seed < 0 || seed > 2147483647L))
+        return cli_report(FS_BAD_INPUT, "--seed: give a whole number from 0 to 2147483647");
+    fs_trial_result r;
+    fs_error err;
+    if (fs_trial_run(a->input, a->set, a->nset, (int)seed, &r, &err) != FS_OK)
+        return fail(&err);
+    if (a->json) {
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddNumberToObject(o, "seed", r.draw.seed);
+        cJSON_AddStringToObject(o, "outcome", fs_outcome_name(r.outcome));
+        cJSON_AddStringToObject(o, "failure", r.failure);
+        double pose[5] = {r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg};
+        cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
+        cJSON_AddNumberToObject(o, "touchdown_s", r.touchdown_s);
+        cJSON_AddNumberToObject(o, "end_time_s", r.end_time_s);
+        cJSON_AddNumberToObject(o, "peak_tilt_deg", r.peak_tilt_deg);
+        cJSON_AddNumberToObject(o, "final_tilt_deg", r.final_tilt_deg);
+        cJSON_AddNumberToObject(o, "peak_force_N", r.peak_force_N);
+        cJSON_AddNumberToObject(o, "impact_impulse_Ns", r.impact_impulse_Ns);
+        cJSON_AddNumberToObject(o, "settle_time_s", r.settle_time_s);
+        cJSON_AddNumberToObject(o, "mean_contacts", r.mean_contacts);
+        cJSON_AddNumberToObject(o, "final_contacts", r.final_contacts);
+        cJSON_AddNumberToObject(o, "ankle_drop_m", r.ankle_drop_m);
+        cJSON_AddNumberToObject(o, "slip_m", r.slip_m);
+        print_json(o);
+        cJSON_Delete(o);
+    } else {
+        printf("%s, seed %ld: %s%s%s\n  start x %.4f m, y %.4f m, yaw %.1f deg, pitch %.2f deg, roll %.2f deg\n"
+               "  touchdown %.3f s, end %.3f s; lean peak %.1f deg, final %.1f deg; peak force %.0f N, impulse %.2f N s\n"
+               "  settled %.3f s after touchdown; contacts mean %.1f, final %.0f; ankle drop %.2f mm, slip %.2f mm\n",
+               a->input, seed, fs_outcome_name(r.outcome), r.failure[0] ? ": " : "", r.failure, r.draw.x_m, r.draw.y_m,
+               r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg, r.touchdown_s, r.end_time_s, r.peak_tilt_deg,
+               r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, r.settle_time_s, r.mean_contacts,
+               r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
+    }
+    return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
+}
+
+/* ---- walk ------------------------------------------------------------------------------------- */
+
+int cli_walk(const cli_args *a)
+{
+    static fs_scenario sc;
+    fs_error err;
+    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+        return fail(&err);
+    fs_walk_result r;
+    fs_status s = fs_walk_run(&sc, &r, &err);
+    const char *foot = sc.geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
+    fs_scenario_free(&sc);
+    if (s != FS_OK)
+        return fail(&err);
+    if (a->json) {
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "foot", foot);
+        cJSON_AddNumberToObject(o, "steps_completed", r.steps_completed);
+        cJSON_AddNumberToObject(o, "falls", r.falls);
+        cJSON_AddNumberToObject(o, "rough_steps", r.rough_steps);
+        cJSON_AddNumberToObject(o, "rough_contacts_mean", r.rough_contacts_mean);
+        cJSON_AddNumberToObject(o, "flat_contacts_mean", r.flat_contacts_mean);
+        cJSON_AddNumberToObject(o, "peak_force_N", r.peak_force_N);
+        cJSON_AddNumberToObject(o, "peak_tilt_deg", r.peak_tilt_deg);
+        print_json(o);
+        cJSON_Delete(o);
+    } else {
+        printf("%s: %s foot: %d steps completed, %d falls; contact points at mid-stance %.1f on the rough "
+               "section (%d steps), %.1f off it; peak ground force %.0f N; ankle tilt up to %.1f deg\n",
+               a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
+               r.peak_force_N, r.peak_tilt_deg);
+    }
+    return 0;
+}
+
+/* ---- keys and demo ---------------------------------------------------------------------------- */
+
+int cli_keys(const cli_args *a)
+{
+    (void)a;
+    fs_config_print_keys(fs_design_keys, fs_design_nkeys, "Design files (scenarios/feet/*.ini)", stdout);
+    fs_config_print_keys(fs_scenario_keys, fs_scenario_nkeys, "Scenario files (scenarios/*.ini)", stdout);
+    fs_config_print_keys(fs_terrain_keys, fs_terrain_nkeys, "Terrain files (terrains/*.ini)", stdout);
+    return 0;
+}
+
+int cli_demo(const cli_args *a)
+{
+    (void)a;
+    static const char *scenarios[] = {"scenarios/static_load.ini", "scenarios/tilt10.ini"};
+    static fs_scenario sc;
+    for (int i = 0; i < 2; i++) {
+        fs_run_result res;
+        cli_args run = {.command = "run", .input = scenarios[i]};
+        int s = run_scenario(&run, &res, &sc);
+        fs_scenario_free(&sc);
+        if (s)
+            return s;
+        fs_run_free(&res);
+    }
+    cli_args st = {.command = "stiffness", .input = "scenarios/feet/biomimetic.ini"};
+    int s = cli_stiffness(&st);
+    if (s)
+        return s;
+    /* the main job, small: both feet landing on even, simply and complex uneven ground */
+    printf("\nlanding comparison (2 seeds each; 'footsim campaign scenarios/landing.ini' runs 50):\n");
+    fflush(stdout);
+    cli_args camp = {.command = "campaign", .input = "scenarios/landing_ci.ini", .nset = 1,
+                     .set = {"campaign.seeds=2"}, .out = "results/campaigns/demo"};
+    return cli_campaign(&camp);
+}

@@ -1,0 +1,228 @@
+/* cli_compare.c: `footsim render-compare SCENARIO_A SCENARIO_B`: both runs side by side in one
+ * image sequence, and a filmstrip of key frames from touch-down to rest.
+ *
+ * Both scenarios run first, each keeping a snapshot per frame (taken once, before the first
+ * step); the frames are drawn after, so the two sides show the same simulated time. A run that
+ * ends first keeps showing its last state. */
+#include "cli_frames.h"
+
+#include "footsim/io/fs_output.h"
+#include "footsim/experiment/fs_run.h"
+#include "footsim/sim/fs_sim.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { FILMSTRIP_FRAMES = 5 };
+
+/* The snapshots of one run, and its ground (static during a run) copied once. */
+typedef struct scene_store {
+    fs_scene *scene;
+    int n, cap;
+    double *heights;
+} scene_store;
+
+/* The observer: keeps a snapshot of the state now. */
+static fs_status store_scene(void *user, const fs_sim *sim, fs_error *err)
+{
+    scene_store *st = user;
+    if (st->n == st->cap)
+        return FS_OK;
+    fs_scene *s = &st->scene[st->n++];
+    fs_sim_scene(sim, s);
+    size_t nh = (size_t)s->ground.nx * (size_t)s->ground.ny;
+    if (!st->heights && nh) {
+        st->heights = malloc(nh * sizeof *st->heights);
+        if (!st->heights)
+            return fs_fail(err, FS_IO, "render-compare: out of memory for the ground");
+        memcpy(st->heights, s->ground.heights, nh * sizeof *st->heights);
+    }
+    s->ground.heights = st->heights;
+    return FS_OK;
+}
+
+/* Runs sc, keeping a snapshot every 1/fps simulated seconds. */
+static int run_stored(const fs_scenario *sc, double fps, scene_store *st)
+{
+    const fs_scenario_def *d = &sc->def;
+    long steps = (long)ceil(d->duration_s / d->step_s), every = lround(1 / (fps * d->step_s));
+    st->cap = (int)(steps / (every < 1 ? 1 : every) + 3);
+    st->scene = malloc((size_t)st->cap * sizeof *st->scene);
+    if (!st->scene)
+        return cli_report(FS_BAD_INPUT, "render-compare: too many frames to keep; lower --fps");
+    fs_run_observer obs = {1 / fps, store_scene, st};
+    fs_run_result res;
+    fs_error err;
+    fs_status s = fs_run(sc, &obs, &res, &err);
+    fs_run_free(&res);
+    return s == FS_OK ? 0 : cli_report(s, err.message);
+}
+
+static void store_free(scene_store *st)
+{
+    free(st->scene);
+    free(st->heights);
+}
+
+/* ---- drawing -------------------------------------------------------------------------------- */
+
+/* The i-th snapshot, or the last when the run ended before. */
+static const fs_scene *scene_at(const scene_store *st, int i) { return &st->scene[i < st->n ? i : st->n - 1]; }
+
+/* Both sides at frame i, each its own view (which follows its own foot for the follow camera). */
+static void draw_pair(fs_render *r, fs_render_view view[2], const scene_store run[2], int i, int x0, int y0, int cw,
+                      int ch)
+{
+    for (int k = 0; k < 2; k++) {
+        fs_render_view_follow(&view[k], scene_at(&run[k], i));
+        fs_render_draw(r, &view[k], scene_at(&run[k], i), x0 + k * cw, y0, cw, ch);
+    }
+}
+
+/* The same camera for both sides, framed on both first states. */
+static void fit_pair(fs_render_view view[2], fs_render_camera camera, const scene_store run[2], int cw, int ch)
+{
+    const fs_scene *first[2] = {&run[0].scene[0], &run[1].scene[0]};
+    fs_render_view_fit(&view[0], camera, first, 2, (double)cw / ch);
+    view[1] = view[0];
+}
+
+static int write_frames(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *frames_dir)
+{
+    int cw = o->width / 2, n = run[0].n > run[1].n ? run[0].n : run[1].n;
+    fs_render_view view[2];
+    fit_pair(view, o->camera, run, cw, o->height);
+    fs_render_clear(r);
+    for (int i = 0; i < n; i++) {
+        draw_pair(r, view, run, i, 0, 0, cw, o->height);
+        fs_error err;
+        if (cli_frames_write(r, frames_dir, i, &err) != FS_OK)
+            return cli_report(err.status, err.message);
+    }
+    return 0;
+}
+
+/* The first snapshot with the foot on the ground (touch-down), or the first. */
+static int touch_down(const scene_store *st)
+{
+    for (int i = 0; i < st->n; i++)
+        if (st->scene[i].ncontacts > 0)
+            return i;
+    return 0;
+}
+
+/* FILMSTRIP_FRAMES columns from touch-down to rest; A above, B below. */
+static int write_filmstrip(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *dir)
+{
+    int cw = fs_render_width(r) / FILMSTRIP_FRAMES, ch = fs_render_height(r) / 2;
+    fs_render_view view[2];
+    fit_pair(view, o->camera, run, cw, ch);
+    fs_render_clear(r);
+    for (int k = 0; k < 2; k++) {
+        int t0 = touch_down(&run[k]), t1 = run[k].n - 1;
+        for (int c = 0; c < FILMSTRIP_FRAMES; c++) {
+            int i = t0 + (int)lround((double)c * (t1 - t0) / (FILMSTRIP_FRAMES - 1));
+            fs_render_view_follow(&view[k], scene_at(&run[k], i));
+            fs_render_draw(r, &view[k], scene_at(&run[k], i), c * cw, k * ch, cw, ch);
+        }
+    }
+    char path[CLI_FRAMES_PATH + 16];
+    snprintf(path, sizeof path, "%s/filmstrip.png", dir);
+    fs_error err;
+    if (fs_render_write_png(r, path, 6, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    return 0;
+}
+
+/* ---- the command ---------------------------------------------------------------------------- */
+
+/* --set a:KEY=V goes to A only, b:KEY=V to B only, KEY=V to both. */
+static void split_sets(const cli_args *a, const char *sets[2][CLI_MAX_SET], int nsets[2])
+{
+    nsets[0] = nsets[1] = 0;
+    for (int i = 0; i < a->nset; i++) {
+        const char *s = a->set[i];
+        int only = (s[0] == 'a' || s[0] == 'b') && s[1] == ':' ? s[0] - 'a' : -1;
+        for (int k = 0; k < 2; k++)
+            if (only < 0 || only == k)
+                sets[k][nsets[k]++] = only < 0 ? s : s + 2;
+    }
+}
+
+static const char *foot_name(const fs_scenario *sc) { return sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic"; }
+
+/* Loads both scenarios and works out DIR (default results/compare/A-foot_vs_B-foot). */
+static int load_pair(const cli_args *a, fs_scenario sc[2], char *dir, size_t size)
+{
+    static const char *sets[2][CLI_MAX_SET];
+    int nsets[2];
+    split_sets(a, sets, nsets);
+    const char *input[2] = {a->input, a->input2};
+    for (int k = 0; k < 2; k++) {
+        fs_error err;
+        if (fs_scenario_load(input[k], sets[k], nsets[k], &sc[k], &err) != FS_OK)
+            return cli_report(err.status, err.message);
+    }
+    int n = a->out ? snprintf(dir, size, "%s", a->out)
+                   : snprintf(dir, size, "results/compare/%s-%s_vs_%s-%s", sc[0].name, foot_name(&sc[0]), sc[1].name,
+                              foot_name(&sc[1]));
+    if (n >= (int)size)
+        return cli_report(FS_BAD_INPUT, "--out: path too long");
+    fs_error err;
+    if (fs_make_dirs(dir, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    return 0;
+}
+
+/* Checks the frame options against both runs and opens the frame and filmstrip renderers. */
+static int prepare(const cli_args *a, const fs_scenario sc[2], const char *dir, cli_frame_opts *o, char *frames_dir,
+                   fs_render *r[2])
+{
+    int s = cli_frame_opts_parse(a, fmax(sc[0].def.step_s, sc[1].def.step_s), 2, o);
+    if (!s)
+        s = cli_frames_folder(dir, frames_dir, CLI_FRAMES_PATH);
+    if (!s)
+        s = cli_render_open(&r[0], o->width, o->height);
+    /* the filmstrip's cells are a quarter of a frame's width and half its height: a side's shape */
+    int cw = o->width / 4 > 0 ? o->width / 4 : 1, ch = o->height / 2 > 0 ? o->height / 2 : 1;
+    if (!s)
+        s = cli_render_open(&r[1], FILMSTRIP_FRAMES * cw, 2 * ch);
+    return s;
+}
+
+int cli_render_compare(const cli_args *a)
+{
+    if (!a->input2)
+        return cli_report(FS_BAD_INPUT, "render-compare: give two scenario files, SCENARIO_A SCENARIO_B "
+                                        "(the same file twice with --set b:foot.kind=flat compares the feet)");
+    static fs_scenario sc[2];
+    static char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
+    cli_frame_opts o;
+    fs_render *r[2] = {NULL, NULL};
+    scene_store run[2] = {{0}, {0}};
+    int s = load_pair(a, sc, dir, sizeof dir);
+    if (!s)
+        s = prepare(a, sc, dir, &o, frames_dir, r);
+    for (int k = 0; k < 2 && !s; k++)
+        s = run_stored(&sc[k], o.fps, &run[k]);
+    if (!s)
+        s = write_frames(r[0], &o, run, frames_dir);
+    if (!s)
+        s = write_filmstrip(r[1], &o, run, dir);
+    if (!s) {
+        int n = run[0].n > run[1].n ? run[0].n : run[1].n;
+        printf("render-compare: %s (%s foot, left) beside %s (%s foot, right)\n  frames: %s/000000.png ... %06d.png "
+               "(%d at %g per simulated second, %dx%d, camera %s)\n  filmstrip: %s/filmstrip.png\n",
+               sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), frames_dir, n - 1, n, o.fps, o.width,
+               o.height, fs_render_camera_names[o.camera], dir);
+        if (o.video)
+            s = cli_frames_video(dir, frames_dir, o.fps, n, dir);
+    }
+    for (int k = 0; k < 2; k++) {
+        fs_render_close(r[k]);
+        store_free(&run[k]);
+    }
+    return s;
+}

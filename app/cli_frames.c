@@ -1,0 +1,234 @@
+/* cli_frames.c: `footsim run --frames`: the frame options, a frame drawn at each observation of
+ * the run, and the video (the renderer's side of cli.h's cli_frames_open / cli_frames_close). */
+#include "cli_frames.h"
+
+#include "footsim/io/fs_output.h"
+#include "footsim/experiment/fs_run.h"
+#include "footsim/sim/fs_sim.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
+
+/* ---- options -------------------------------------------------------------------------------- */
+
+static int parse_size(const char *text, int min_w, int *w, int *h)
+{
+    char *end;
+    long lw = strtol(text, &end, 10), lh = -1;
+    if (end != text && (*end == 'x' || *end == 'X')) {
+        const char *hs = end + 1;
+        lh = strtol(hs, &end, 10);
+        if (end == hs || *end)
+            lh = -1;
+    }
+    if (lw < min_w || lw > FS_RENDER_MAX_SIZE || lh < 1 || lh > FS_RENDER_MAX_SIZE) {
+        fprintf(stderr, "footsim: --size %s: not a frame size; allowed: WxH with W from %d and H from 1, each to %d\n",
+                text, min_w, FS_RENDER_MAX_SIZE);
+        return FS_BAD_INPUT;
+    }
+    *w = (int)lw, *h = (int)lh;
+    return 0;
+}
+
+static int parse_fps(const char *text, double step_s, double *fps)
+{
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end || !isfinite(v) || v < 1 || v > 10000 || v * step_s > 1 + 1e-9) {
+        fprintf(stderr, "footsim: --fps %s: not a frame rate; allowed: frames per simulated second from 1 to %g "
+                        "(one frame per step of %g s at most)\n", text, fmin(10000, 1 / step_s), step_s);
+        return FS_BAD_INPUT;
+    }
+    *fps = v;
+    return 0;
+}
+
+int cli_frame_opts_parse(const cli_args *a, double step_s, int min_w, cli_frame_opts *o)
+{
+    *o = (cli_frame_opts){1280, 720, 60, FS_RENDER_SIDE, a->video};
+    if (a->size && parse_size(a->size, min_w, &o->width, &o->height))
+        return FS_BAD_INPUT;
+    if (a->fps && parse_fps(a->fps, step_s, &o->fps))
+        return FS_BAD_INPUT;
+    if (a->camera) {
+        int c = fs_render_camera_find(a->camera);
+        if (c < 0) {
+            fprintf(stderr, "footsim: --camera %s: unknown camera; allowed: side, front, three-quarter, follow\n",
+                    a->camera);
+            return FS_BAD_INPUT;
+        }
+        o->camera = (fs_render_camera)c;
+    }
+    return 0;
+}
+
+/* ---- the folder and the files --------------------------------------------------------------- */
+
+/* A frame's file name: six digits and .png. */
+static int is_frame_name(const char *name)
+{
+    for (int i = 0; i < 6; i++)
+        if (name[i] < '0' || name[i] > '9')
+            return 0;
+    return !strcmp(name + 6, ".png");
+}
+
+int cli_frames_folder(const char *dir, char *frames_dir, size_t size)
+{
+    fs_error err;
+    if (snprintf(frames_dir, size, "%s/frames", dir) >= (int)size)
+        return cli_report(FS_BAD_INPUT, "--out: path too long");
+    if (fs_make_dirs(frames_dir, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    /* an earlier run's frames would otherwise mix with this run's */
+    DIR *d = opendir(frames_dir);
+    for (struct dirent *e; d && (e = readdir(d));) {
+        char path[CLI_FRAMES_PATH];
+        if (is_frame_name(e->d_name) && snprintf(path, sizeof path, "%s/%s", frames_dir, e->d_name) < (int)sizeof path)
+            remove(path);
+    }
+    if (d)
+        closedir(d);
+    /* a frame can be written there */
+    char probe[CLI_FRAMES_PATH], temp[CLI_FRAMES_PATH + 64];
+    snprintf(probe, sizeof probe, "%s/000000.png", frames_dir);
+    FILE *f = fs_open_temp(probe, temp, sizeof temp, &err);
+    if (!f) {
+        fprintf(stderr, "footsim: %s: cannot write frames there (%s); choose a writable --out\n", frames_dir,
+                err.message);
+        return FS_BAD_INPUT;
+    }
+    fs_commit_file(f, temp, probe, 0, &err);
+    return 0;
+}
+
+fs_status cli_frames_write(const fs_render *r, const char *frames_dir, int index, fs_error *err)
+{
+    char path[CLI_FRAMES_PATH + 16];
+    snprintf(path, sizeof path, "%s/%06d.png", frames_dir, index);
+    return fs_render_write_png(r, path, CLI_PNG_LEVEL, err);
+}
+
+int cli_render_open(fs_render **r, int w, int h)
+{
+    fs_error err;
+    if (fs_render_open(r, w, h, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    return 0;
+}
+
+/* ---- video ---------------------------------------------------------------------------------- */
+
+/* Runs argv, waiting for it; its exit status, 127 when it could not be started. */
+static int run_program(char *const argv[])
+{
+    pid_t pid;
+    if (posix_spawnp(&pid, argv[0], NULL, NULL, argv, environ) != 0)
+        return 127;
+    int status;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+            return 126;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 126;
+}
+
+int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nframes, const char *shown_dir)
+{
+    char input[CLI_FRAMES_PATH + 16], path[CLI_FRAMES_PATH + 16], temp[CLI_FRAMES_PATH + 64], rate[32], count[32];
+    snprintf(input, sizeof input, "%s/%%06d.png", frames_dir);
+    snprintf(path, sizeof path, "%s/video.mp4", dir);
+    snprintf(temp, sizeof temp, "%s/video.tmp.%ld.mp4", dir, (long)getpid());
+    snprintf(rate, sizeof rate, "%.9g", fps);
+    snprintf(count, sizeof count, "%d", nframes);
+    /* H.264 wants even sizes: pad by a pixel when odd */
+    char *argv[] = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", rate, "-i", input,
+                    "-frames:v", count, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
+                    "-pix_fmt", "yuv420p", temp, NULL};
+    int s = run_program(argv);
+    if (s == 127) {
+        printf("  video: not made: ffmpeg is not installed (apt-get install ffmpeg); the frames are in %s/frames/\n",
+               shown_dir);
+        return 0;
+    }
+    if (s != 0 || rename(temp, path) != 0) {
+        remove(temp);
+        fprintf(stderr, "footsim: %s: ffmpeg could not encode the frames (status %d); the frames are in %s/\n", path,
+                s, frames_dir);
+        return FS_IO;
+    }
+    printf("  video: %s/video.mp4\n", shown_dir);
+    return 0;
+}
+
+/* ---- run --frames --------------------------------------------------------------------------- */
+
+struct cli_frames {
+    fs_render *r;
+    cli_frame_opts o;
+    fs_render_view view;
+    char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
+    int n;           /* frames written */
+    fs_scene scene;  /* the snapshot, reused for each frame */
+};
+
+/* The observer: one frame of the state now, framed on the first. */
+static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
+{
+    cli_frames *f = user;
+    fs_sim_scene(sim, &f->scene);
+    const fs_scene *first = &f->scene;
+    if (f->n == 0)
+        fs_render_view_fit(&f->view, f->o.camera, &first, 1, (double)f->o.width / f->o.height);
+    else
+        fs_render_view_follow(&f->view, &f->scene);
+    fs_render_draw(f->r, &f->view, &f->scene, 0, 0, f->o.width, f->o.height);
+    return cli_frames_write(f->r, f->frames_dir, f->n++, err);
+}
+
+int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
+                    fs_run_observer *obs)
+{
+    *frames = NULL;
+    cli_frames *f = calloc(1, sizeof *f);
+    if (!f)
+        return cli_report(FS_IO, "out of memory");
+    int s = cli_frame_opts_parse(a, sc->def.step_s, 1, &f->o);
+    if (!s && snprintf(f->dir, sizeof f->dir, "%s", dir) >= (int)sizeof f->dir)
+        s = cli_report(FS_BAD_INPUT, "--out: path too long");
+    if (!s)
+        s = cli_frames_folder(dir, f->frames_dir, sizeof f->frames_dir);
+    if (!s)
+        s = cli_render_open(&f->r, f->o.width, f->o.height);
+    if (s) {
+        free(f);
+        return s;
+    }
+    *obs = (fs_run_observer){1 / f->o.fps, draw_frame, f};
+    *frames = f;
+    return 0;
+}
+
+int cli_frames_close(cli_frames *f, int ok, const char *shown_dir)
+{
+    if (!f)
+        return 0;
+    int s = 0;
+    if (ok) {
+        printf("  frames: %s/frames/000000.png ... %06d.png (%d at %g per simulated second, %dx%d, camera %s)\n",
+               shown_dir, f->n - 1, f->n, f->o.fps, f->o.width, f->o.height, fs_render_camera_names[f->o.camera]);
+        if (f->o.video)
+            s = cli_frames_video(f->dir, f->frames_dir, f->o.fps, f->n, shown_dir);
+    }
+    fs_render_close(f->r);
+    free(f);
+    return s;
+}

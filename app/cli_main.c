@@ -1,0 +1,210 @@
+/* cli_main.c: the footsim command: subcommands, --help, and argument checks. */
+#include "cli.h"
+
+#include "footsim/base/fs_error.h"
+
+#include <stdio.h>
+#include <string.h>
+
+typedef struct command {
+    const char *name;
+    int (*run)(const cli_args *);
+    const char *input;   /* what the positional argument is, or NULL when there is none */
+    const char *options; /* the options it takes, for checks and --help */
+    const char *help;
+} command;
+
+static const command commands[] = {
+    {"run", cli_run, "SCENARIO", "--out --set --frames --fps --size --camera --video",
+     "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
+     "  (default DIR: results/runs/<scenario name>/).\n"
+     "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
+     "  (1280x720), seen by --camera side|front|three-quarter|follow (side); --video also encodes\n"
+     "  DIR/video.mp4 with ffmpeg."},
+    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --set --fps --size --camera --video",
+     "Runs both scenarios and writes their frames side by side (A left, B right) to DIR/frames/ and key\n"
+     "  frames from touch-down to rest to DIR/filmstrip.png (default DIR: results/compare/A-foot_vs_B-foot/).\n"
+     "  --set a:KEY=V changes A only, b:KEY=V B only, KEY=V both. Frame options as for run."},
+    {"model", cli_model, "DESIGN", "--json --set",
+     "Prints the built model in SI units and world coordinates: bodies, joints, springs, geoms."},
+    {"stiffness", cli_stiffness, "DESIGN", "--json --set",
+     "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
+     "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
+     "  Exit 1 when analytic and measured differ by more than 1 %."},
+    {"terrain", cli_terrain, "TERRAIN", "--height --png --scenario --set",
+     "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
+     "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
+     "  --scenario S gives one); with neither, a summary."},
+    {"trial", cli_trial, "SCENARIO", "--seed --json --set",
+     "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
+     "  the drawn pose, the outcome (landed or fell) and the metrics."},
+    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --set",
+     "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
+     "  worker processes (default: all cores) and writes DIR/summary.md, summary.csv, summary.json,\n"
+     "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
+     "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
+     "  sections go to every trial."},
+    {"compare", cli_compare, "RESULT BASELINE", "",
+     "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
+     "  baseline's 95 % interval or a median moves further than the baseline's tolerance."},
+    {"walk", cli_walk, "SCENARIO", "--json --set",
+     "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
+     "  toe contact points on the rough section and off it, peak ground force."},
+    {"bench", cli_bench, "precision|stability|speed", "-j --quick --out",
+     "Benchmarks (docs/bench.md), written to DIR (default: results/bench/):\n"
+     "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
+     "             against the planar reference model, and a landing trial against its finest run;\n"
+     "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height;\n"
+     "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves.\n"
+     "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
+     "  worker processes (default: all cores; the results do not depend on N)."},
+    {"keys", cli_keys, NULL, "",
+     "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
+    {"demo", cli_demo, NULL, "",
+     "Runs the paper's first experiments (static load, 10 degree tilt) and the stiffness check,\n"
+     "  and says where the results went."},
+};
+enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
+
+static void usage(FILE *out)
+{
+    fprintf(out, "usage: footsim COMMAND [ARGS] [OPTIONS]\n\ncommands:\n");
+    for (int i = 0; i < NCOMMANDS; i++)
+        fprintf(out, "  %-10s %s %s\n", commands[i].name, commands[i].input ? commands[i].input : "",
+                commands[i].options);
+    fprintf(out, "\n'footsim COMMAND --help' says more. Exit status: 0 ok, 1 expectations failed, 2 bad input,\n"
+                 "3 numerical failure, 4 results could not be written.\n");
+}
+
+static void command_help(const command *c)
+{
+    printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
+    if (strstr(c->options, "--out"))
+        printf(" [--out DIR]");
+    if (strstr(c->options, "-j "))
+        printf(" [-j N]");
+    if (strstr(c->options, "--json"))
+        printf(" [--json]");
+    if (strstr(c->options, "--quick"))
+        printf(" [--quick]");
+    if (strstr(c->options, "--height"))
+        printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
+    if (strstr(c->options, "--frames"))
+        printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--video]]");
+    if (strstr(c->options, "--set"))
+        printf(" [--set section.key=value]...");
+    printf("\n\n  %s\n", c->help);
+    if (strstr(c->options, "--set"))
+        printf("\n  --set overrides one value of the file (or, for a scenario, of its design) without editing\n"
+               "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
+}
+
+/* Parses argv after the command name into a, refusing what c does not take. */
+static int parse_args(const command *c, int argc, char **argv, cli_args *a)
+{
+    for (int i = 0; i < argc; i++) {
+        const char *arg = argv[i];
+        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) {
+            command_help(c);
+            return -1;
+        }
+        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
+                          !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
+                          !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
+                          !strcmp(arg, "--seed");
+        if (!strcmp(arg, "-j") && !strstr(c->options, "-j ")) {
+            fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
+            return 2;
+        }
+        if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
+            fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
+                    *c->options ? c->options : "no options");
+            return 2;
+        }
+        if (takes_value && i + 1 >= argc) {
+            fprintf(stderr, "footsim %s: %s needs a value\n", c->name, arg);
+            return 2;
+        }
+        if (!strcmp(arg, "--height") && i + 2 >= argc) {
+            fprintf(stderr, "footsim %s: --height needs two values, X and Y in metres\n", c->name);
+            return 2;
+        }
+        if (!strcmp(arg, "--out"))
+            a->out = argv[++i];
+        else if (!strcmp(arg, "--height")) {
+            a->height_x = argv[++i];
+            a->height_y = argv[++i];
+        } else if (!strcmp(arg, "--png"))
+            a->png = argv[++i];
+        else if (!strcmp(arg, "--scenario"))
+            a->scenario = argv[++i];
+        else if (!strcmp(arg, "--seed"))
+            a->seed = argv[++i];
+        else if (!strcmp(arg, "-j"))
+            a->jobs = argv[++i];
+        else if (!strncmp(arg, "-j", 2) && strstr(c->options, "-j "))
+            a->jobs = arg + 2;
+        else if (!strcmp(arg, "--quick"))
+            a->quick = 1;
+        else if (!strcmp(arg, "--json"))
+            a->json = 1;
+        else if (!strcmp(arg, "--frames"))
+            a->frames = 1;
+        else if (!strcmp(arg, "--video"))
+            a->video = a->frames = 1;
+        else if (!strcmp(arg, "--fps"))
+            a->fps = argv[++i];
+        else if (!strcmp(arg, "--size"))
+            a->size = argv[++i];
+        else if (!strcmp(arg, "--camera"))
+            a->camera = argv[++i];
+        else if (!strcmp(arg, "--set")) {
+            if (a->nset == CLI_MAX_SET) {
+                fprintf(stderr, "footsim %s: at most %d --set options\n", c->name, CLI_MAX_SET);
+                return 2;
+            }
+            a->set[a->nset++] = argv[++i];
+        } else if (c->input && !a->input)
+            a->input = arg;
+        else if (c->input && strchr(c->input, ' ') && !a->input2)
+            a->input2 = arg;
+        else {
+            fprintf(stderr, "footsim %s: unexpected argument '%s'; see 'footsim %s --help'\n", c->name, arg, c->name);
+            return 2;
+        }
+    }
+    if (c->input && !a->input) {
+        fprintf(stderr, "footsim %s: give a %s file; see 'footsim %s --help'\n", c->name, c->input, c->name);
+        return 2;
+    }
+    return 0;
+}
+
+int cli_report(int status, const char *message)
+{
+    fprintf(stderr, "footsim: %s\n", message);
+    return status;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage(argc < 2 ? stderr : stdout);
+        return argc < 2 ? FS_BAD_INPUT : 0;
+    }
+    for (int i = 0; i < NCOMMANDS; i++) {
+        if (strcmp(argv[1], commands[i].name))
+            continue;
+        cli_args a = {.command = commands[i].name};
+        int s = parse_args(&commands[i], argc - 2, argv + 2, &a);
+        if (s)
+            return s < 0 ? 0 : s;
+        fs_ode_init();
+        s = commands[i].run(&a);
+        fs_ode_close();
+        return s;
+    }
+    fprintf(stderr, "footsim: unknown command '%s'\n\n", argv[1]);
+    usage(stderr);
+    return FS_BAD_INPUT;
+}

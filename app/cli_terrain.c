@@ -1,0 +1,111 @@
+/* cli_terrain.c: the terrain subcommand: heights, a picture, a summary. */
+#include "cli.h"
+
+#include "footsim/io/fs_png.h"
+#include "footsim/model/fs_scenario.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* The region a picture shows when no scenario gives one, m: around a foot at the origin. */
+static const double DEFAULT_REGION[4] = {-0.06, 0.16, -0.08, 0.08};
+enum { MAP_WIDTH_PX = 880 };
+
+static int parse_coordinate(const char *text, const char *name, double *out)
+{
+    char *end;
+    errno = 0;
+    *out = strtod(text, &end);
+    if (*end || end == text || errno || !isfinite(*out)) {
+        fprintf(stderr, "footsim: --height %s: '%s' is not a finite number of metres\n", name, text);
+        return 0;
+    }
+    return 1;
+}
+
+static int print_height(fs_terrain *t, const cli_args *a)
+{
+    double x, y;
+    if (!parse_coordinate(a->height_x, "X", &x) || !parse_coordinate(a->height_y, "Y", &y))
+        return FS_BAD_INPUT;
+    fs_error err;
+    double cell = 0.01;
+    if (fs_terrain_crop(t, x - cell, x + cell, y - cell, y + cell, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    printf("%.9g\n", fs_terrain_height(t, x, y));
+    return 0;
+}
+
+static int write_map(fs_terrain *t, const cli_args *a)
+{
+    fs_error err;
+    double region[4], foot[4], *outline = NULL;
+    for (int k = 0; k < 4; k++)
+        region[k] = DEFAULT_REGION[k];
+    if (a->scenario) {
+        static fs_scenario sc;
+        if (fs_scenario_load(a->scenario, NULL, 0, &sc, &err) != FS_OK)
+            return cli_report(err.status, err.message);
+        fs_scenario_footprint(&sc, foot);
+        double m = sc.def.region_margin_m;
+        region[0] = foot[0] - m, region[1] = foot[1] + m, region[2] = foot[2] - m, region[3] = foot[3] + m;
+        outline = foot;
+        fs_scenario_free(&sc);
+    }
+    if (fs_terrain_crop(t, region[0], region[1], region[2], region[3], &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    int w = MAP_WIDTH_PX, h = (int)lround(w * (region[3] - region[2]) / (region[1] - region[0]));
+    unsigned char *rgb = malloc((size_t)w * h * 3);
+    if (!rgb)
+        return cli_report(FS_IO, "out of memory");
+    double z[2];
+    fs_terrain_map(t, region, outline, w, h, rgb, z);
+    fs_status s = fs_png_write_rgb(a->png, w, h, rgb, &err);
+    free(rgb);
+    if (s != FS_OK)
+        return cli_report(err.status, err.message);
+    printf("%s: %s terrain over x %.3f..%.3f m, y %.3f..%.3f m, heights %.4f..%.4f m%s\n", a->png, t->name,
+           region[0], region[1], region[2], region[3], z[0], z[1], outline ? "; white: the foot's footprint" : "");
+    return 0;
+}
+
+static int summary(fs_terrain *t)
+{
+    static const char *kinds[] = {"flat", "slope", "stepped", "rough", "simply_uneven", "complex_uneven", "heightmap"};
+    fs_error err;
+    const double *r = DEFAULT_REGION;
+    if (fs_terrain_crop(t, r[0], r[1], r[2], r[3], &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    double lo = INFINITY, hi = -INFINITY, sum = 0, sum2 = 0;
+    int n = 0;
+    for (double x = r[0]; x <= r[1]; x += 0.001)
+        for (double y = r[2]; y <= r[3]; y += 0.001, n++) {
+            double z = fs_terrain_height(t, x, y);
+            lo = fmin(lo, z), hi = fmax(hi, z), sum += z, sum2 += z * z;
+        }
+    double mean = sum / n;
+    printf("%s: %s terrain; material mu %.2f, restitution %.2f, stiffness %.3g N/m, damping %.3g N s/m\n"
+           "  over x %.2f..%.2f m, y %.2f..%.2f m: heights %.4f..%.4f m, mean %.4f m, RMS about the mean %.4f m\n",
+           t->path, kinds[t->def.kind], t->def.mu, t->def.restitution, t->def.stiffness_N_per_m,
+           t->def.damping_Ns_per_m, r[0], r[1], r[2], r[3], lo, hi, mean, sqrt(fmax(0, sum2 / n - mean * mean)));
+    return 0;
+}
+
+int cli_terrain(const cli_args *a)
+{
+    static fs_terrain t;
+    fs_error err;
+    if (fs_terrain_load(a->input, a->set, a->nset, &t, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    int s = 0;
+    if (a->height_x)
+        s = print_height(&t, a);
+    if (!s && a->png)
+        s = write_map(&t, a);
+    if (!a->height_x && !a->png)
+        s = summary(&t);
+    fs_terrain_free(&t);
+    return s;
+}

@@ -1,0 +1,84 @@
+/* fs_analysis.h: what footsim computes about a design besides running it.
+ *
+ * - fs_stiffness_*: each chain's joint-space stiffness over (midfoot, MTP), K = G^T Kdd G (paper
+ *   eqs. 1-3) from the exact geometry, the same with the paper's eq. 4 lever arms, and K measured
+ *   in ODE by torque probes with the rear foot held and gravity off.
+ * - fs_planar_*: one chain in its plane with heel and toe rolling on the ground, solved for its
+ *   static equilibrium under a load at the ankle: the stiffness model's prediction of how the foot
+ *   deflects, shared with no ODE code.
+ * - fs_reference_*: the paper's dynamic model (Sec. IV) of one chain in its plane, heel and toe
+ *   pinned at their sphere centres, integrated by GSL's rk8pd: the ground truth for the ODE model's
+ *   transient (docs/bench.md), also shared with no ODE code. */
+#ifndef FS_ANALYSIS_H
+#define FS_ANALYSIS_H
+
+#include "footsim/model/fs_scenario.h"
+
+typedef struct fs_chain_stiffness {
+    double exact[2][2];     /* N m/rad, from G = dd/dphi at the neutral pose */
+    double eq4[2][2];       /* the paper's eq. 4: anchors taken on the link axes */
+    double measured[2][2];  /* from ODE */
+    double rel_diff;        /* ||measured - exact||_F / ||exact||_F */
+    double G[3][2];         /* rows d1, d2, d3; columns midfoot, MTP; m/rad */
+} fs_chain_stiffness;
+
+/* The analytic stiffness of every chain at the neutral pose. */
+void fs_stiffness_analytic(const fs_foot_geom *g, fs_chain_stiffness out[FS_CHAINS]);
+
+/* Measures K in ODE: for each chain and joint, torques +tau and -tau about the hinge axis, the
+ * settled angle changes, K = Q dphi^-1 from the central differences. */
+fs_status fs_stiffness_measure(const fs_scenario *sc, fs_chain_stiffness out[FS_CHAINS], fs_error *err);
+
+typedef struct fs_planar_result {
+    int converged;        /* Newton converged to an equilibrium */
+    int stable;           /* the reduced stiffness there is positive definite */
+    double ankle_drop_m;  /* neutral ankle height minus loaded */
+    double midfoot_rad, mtp_rad, ankle_joint_rad; /* joint angles from the neutral pose */
+    double ball_clearance_m; /* ball sphere's lowest point above the ground */
+    double spring_force_N[3];
+    double K_reduced[2][2]; /* stiffness in (heel, talus) angles at equilibrium, N m/rad */
+} fs_planar_result;
+
+typedef struct fs_planar_load {
+    double load_N;            /* at the ankle, shared equally by the five chains */
+    double gravity_m_per_s2;
+    double tilt_rad;          /* load and gravity turned as in fs_scenario_def.tilt_deg */
+    int frictionless;         /* 1: heel and toe slide freely; 0: they roll without slipping */
+} fs_planar_load;
+
+/* Chain `chain` of the design in equilibrium under the load, as if all five chains were like it.
+ * Exact for a design whose chains are alike and unsplayed; a projection otherwise. */
+fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, int chain, const fs_planar_load *load,
+                                fs_planar_result *out, fs_error *err);
+
+/* The reference transient: chain `chain` (0-based, unsplayed) from rest, the load rising linearly
+ * over ramp_s. Masses: a fifth of heel and talus, the whole metatarsal and phalanx; a fifth of the
+ * load. */
+typedef struct fs_reference_def {
+    int chain;
+    double load_N;             /* on the whole foot, at the ankle */
+    double ramp_s;
+    double gravity_m_per_s2;
+    double tilt_rad;           /* load and gravity turned as in fs_scenario_def.tilt_deg */
+    double tolerance;          /* rk8pd's absolute and relative error bound per step */
+    double q0_offset_rad[2];   /* a start displaced from the neutral pose (heel, talus directions) */
+} fs_reference_def;
+
+typedef struct fs_reference_state {
+    double t_s;
+    double ankle_m[3];         /* the ankle joint, world coordinates */
+    double joint_rad[3];       /* ankle, midfoot, MTP from the neutral pose (positive: distal link up) */
+    double energy_J;           /* kinetic + springs + gravity + the load's potential at its current size */
+} fs_reference_state;
+
+/* Fills out[i] with the state at t = i * dt_s, i < n. FS_BAD_INPUT for a splayed chain or a
+ * non-biomimetic design; FS_NUMERICAL if the loop stops closing (the chain folds through). */
+fs_status fs_reference_run(const fs_design_def *d, const fs_foot_geom *g, const fs_reference_def *def, double dt_s,
+                           int n, fs_reference_state *out, fs_error *err);
+
+/* The chain linearised about its neutral pose with no load, gravity or damping: its two natural
+ * frequencies (rad/s, ascending) and mode shapes (unit vectors in heel and talus direction). */
+fs_status fs_reference_modes(const fs_design_def *d, const fs_foot_geom *g, int chain, double omega[2],
+                             double shape[2][2], fs_error *err);
+
+#endif

@@ -1,0 +1,127 @@
+/* fs_campaign.h: landing campaigns: feet x terrains x seeds of landing trials, their statistics,
+ * their result files, the expectations they check and the comparison against a baseline.
+ *
+ * A campaign file (docs/campaign.md) names a trial scenario, the feet ([foot.NAME] file = ...),
+ * the terrains ([terrain.NAME] file = ..., or one terrain swept over values of one of its keys),
+ * the seeds, the expectations ([expect.NAME]) and the tolerances of the comparison. Loading binds
+ * it with fs_config (file:line messages, FS_BAD_INPUT) and loads the trial scenario once for every
+ * (foot, terrain) pair, so a campaign that cannot run is refused before any trial runs.
+ *
+ * Everything written is a pure function of the campaign and the trial results, ordered by foot,
+ * terrain and seed (never by completion), numbers in fixed formats, no timestamps: the files do
+ * not depend on how many processes ran the trials. Each file is written whole or not at all, the
+ * summary (summary.json) last. */
+#ifndef FS_CAMPAIGN_H
+#define FS_CAMPAIGN_H
+
+#include "footsim/io/fs_config.h"
+#include "footsim/experiment/fs_trial.h"
+
+#include <stdio.h>
+
+enum {
+    FS_CAMPAIGN_MAX_FEET = 8,
+    FS_CAMPAIGN_MAX_TERRAINS = 64,
+    FS_CAMPAIGN_MAX_EXPECT = 32,
+    FS_CAMPAIGN_MAX_SEEDS = 100000,
+    FS_CAMPAIGN_MAX_SET = 256,
+    FS_CAMPAIGN_NMETRICS = 12
+};
+
+/* The metrics of a trial (the numeric fields of fs_trial_result but the draw), named with units;
+ * summaries give their medians, the comparison their tolerances. */
+typedef struct fs_metric {
+    const char *name;      /* "peak_force_N" */
+    const char *tolerance; /* default "relative, absolute" */
+} fs_metric;
+extern const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS];
+
+/* The value of metric m (an index into fs_campaign_metrics) in r. */
+double fs_metric_value(const fs_trial_result *r, int m);
+
+/* One foot or terrain of the campaign. */
+typedef struct fs_campaign_item {
+    char name[FS_NAME_MAX];  /* the section's NAME, or for a sweep "NAME@value" */
+    char path[FS_PATH_MAX];  /* absolute */
+    char set[FS_VALUE_MAX];  /* a sweep's override "section.key=value", or "" */
+    double sweep_value;      /* the swept value (0 without a sweep) */
+} fs_campaign_item;
+
+/* [expect.NAME]: the success rate of foot on terrain must lie in [min_success, max_success]. */
+typedef struct fs_expectation {
+    char name[FS_NAME_MAX];
+    int foot, terrain;       /* indices into the campaign's feet and terrains */
+    double min_success, max_success;
+} fs_expectation;
+
+typedef struct fs_campaign {
+    char path[FS_PATH_MAX];
+    char name[FS_NAME_MAX];            /* the file's base name without .ini */
+    char trial_path[FS_PATH_MAX];      /* the trial scenario, as the file resolves it */
+    int seeds, first_seed;             /* seeds first_seed, first_seed + 1, ... */
+    char sweep[2 * FS_NAME_MAX];       /* "section.key" swept on the terrain, or "" */
+    int sweep_choice;                  /* [campaign] sweep as bound: 0 none, n the n-th numeric terrain key */
+    int nfeet, nterrains, nexpect;
+    fs_campaign_item foot[FS_CAMPAIGN_MAX_FEET];
+    fs_campaign_item terrain[FS_CAMPAIGN_MAX_TERRAINS];
+    fs_expectation expect[FS_CAMPAIGN_MAX_EXPECT];
+    double tolerance[FS_CAMPAIGN_NMETRICS][2]; /* relative, absolute (metric's unit) */
+    const char *set[FS_CAMPAIGN_MAX_SET];      /* the command's --set meant for the trials */
+    int nset;
+} fs_campaign;
+
+/* Reads and checks path. Each of sets ("section.key=value") goes to the campaign file when its
+ * section is one of the campaign's (campaign, tolerance, foot.*, terrain.*, expect.*), otherwise
+ * to every trial (c keeps the pointers). Then loads the trial scenario for every (foot, terrain)
+ * with its overrides and frees it again: anything wrong is FS_BAD_INPUT, nothing run. */
+fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets, fs_campaign *c, fs_error *err);
+
+/* The overrides of trial (foot, terrain): scenario.design, scenario.terrain, the sweep's, then
+ * c->set. buf holds their text; out gets up to FS_CAMPAIGN_MAX_SET + 3 pointers; returns the count. */
+int fs_campaign_overrides(const fs_campaign *c, int foot, int terrain, char buf[3][FS_PATH_MAX + 32],
+                          const char **out);
+
+/* Trials are numbered foot-major: index = (foot * nterrains + terrain) * seeds + seed - first_seed. */
+int fs_campaign_ntrials(const fs_campaign *c);
+void fs_campaign_trial_of(const fs_campaign *c, int index, int *foot, int *terrain, int *seed);
+
+/* The 95 % Wilson score interval of k successes in n > 0 trials. */
+void fs_wilson(int k, int n, double *low, double *high);
+
+/* The median of n values (sorted in place); NAN when n is 0. */
+double fs_median(double *values, int n);
+
+/* One row of the summary: a foot on a terrain over all seeds. */
+typedef struct fs_campaign_row {
+    int foot, terrain;
+    int trials, landed, fell, failed_numerics;
+    double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
+    int nmetric;                           /* trials the medians are over (all but failed_numerics) */
+    double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
+} fs_campaign_row;
+
+/* Fills rows[nfeet * nterrains] (foot-major) from results[fs_campaign_ntrials(c)]. */
+void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows);
+
+/* Writes dir/trials.csv, dir/summary.csv and dir/summary.md. */
+fs_status fs_campaign_write(const fs_campaign *c, const fs_trial_result *results, const fs_campaign_row *rows,
+                            const char *dir, fs_error *err);
+
+/* Writes dir/summary.json, the file fs_campaign_compare reads; write it after all the others. */
+fs_status fs_campaign_write_summary(const fs_campaign *c, const fs_campaign_row *rows, const char *dir, fs_error *err);
+
+/* Writes dir/chart.dat and dir/chart.gp: a gnuplot script that draws success.png (or the file
+ * named by the gnuplot variable `out`) from the data: a bar chart of the feet across terrains with
+ * CI whiskers, or for a sweep each foot's rate and CI band against the swept value. */
+fs_status fs_campaign_write_chart(const fs_campaign *c, const fs_campaign_row *rows, const char *dir, fs_error *err);
+
+/* Checks every expectation, printing each with its numbers to out; returns how many failed. */
+int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *out);
+
+/* Compares two summary.json files, printing a table of what changed to out. FS_OK when every
+ * success rate lies in its baseline's [ci_low, ci_high] and every median within the baseline's
+ * tolerance (|result - baseline| <= relative * |baseline| + absolute); FS_EXPECTATION_FAILED when
+ * not, or when a row is missing on either side; FS_BAD_INPUT when a file cannot be read as a summary. */
+fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, FILE *out, fs_error *err);
+
+#endif

@@ -1,0 +1,49 @@
+/* fs_run.h: one scenario run from rest to settled, its metrics and its trajectory.
+ *
+ * fs_run builds the scenario's foot, steps it until it has been at rest for rest_hold_s (after
+ * the load has risen) or duration_s has passed, and measures. The trajectory buffer is taken
+ * before the first step; nothing is allocated while stepping. fs_run_write puts metrics.json and
+ * trajectory.csv in a folder, each written whole or not at all. */
+#ifndef FS_RUN_H
+#define FS_RUN_H
+
+#include "footsim/model/fs_scenario.h"
+
+enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES };
+
+typedef struct fs_run_result {
+    int steps;
+    double end_time_s;
+    double ankle_start_m[3], ankle_end_m[3];
+    double ankle_drop_m;       /* start height minus settled height of the ankle */
+    double settle_time_s;      /* the ankle stays within settle_band_m of its final height after this */
+    int at_rest;               /* stopped because at rest, not because duration_s ran out */
+    double hinge_angle_rad[FS_MAX_HINGES];
+    double spring_force_N[FS_MAX_SPRINGS], spring_length_m[FS_MAX_SPRINGS];
+    int contacts_end;
+    long contacts_total, collision_tests;
+    double energy_start_J, energy_end_J;
+    /* trajectory: rows of ncols doubles */
+    int ncols, nrows, capacity;
+    const char *col_name[FS_TRAJ_MAX_COLS];
+    double *rows;
+} fs_run_result;
+
+/* Something that watches a run, e.g. the renderer: fn is called with the state at t = 0, every
+ * interval_s of simulated time (rounded to whole steps) and at the end; a status other than
+ * FS_OK stops the run with that status (fn fills err). */
+typedef struct fs_sim fs_sim;
+typedef struct fs_run_observer {
+    double interval_s;
+    fs_status (*fn)(void *user, const fs_sim *sim, fs_error *err);
+    void *user;
+} fs_run_observer;
+
+/* obs may be NULL. */
+fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err);
+void fs_run_free(fs_run_result *res);
+
+/* Writes DIR/metrics.json and DIR/trajectory.csv (creating DIR and its parents). */
+fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const char *dir, fs_error *err);
+
+#endif

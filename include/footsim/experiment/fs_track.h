@@ -1,0 +1,50 @@
+/* fs_track.h: a run's path sampled at every step, and how far one path is from another.
+ *
+ * The precision benchmark (footsim bench precision) measures ODE's error this way: a scenario, or
+ * one chain of it pinned to the world, run at some step size, stepper and spring implementation,
+ * against a reference path (the planar dynamic model, or the same scenario at the finest step). */
+#ifndef FS_TRACK_H
+#define FS_TRACK_H
+
+#include "footsim/analysis/fs_analysis.h"
+#include "footsim/sim/fs_sim.h"
+
+enum { FS_TRACK_ANGLES = 3 };
+
+
+/* Sample i is the state at t = i * dt_s: the ankle (world, m) and the first FS_TRACK_ANGLES hinge
+ * angles (rad; for a pinned chain: ankle, midfoot, MTP). */
+typedef struct fs_track {
+    double dt_s;
+    int n;
+    int nangles;               /* hinge angles sampled: up to FS_TRACK_ANGLES (0 for the flat foot) */
+    double (*ankle)[3];
+    double (*angle)[FS_TRACK_ANGLES];
+    double wall_s;             /* fs_track_run: wall-clock time of the steps (not of building), s */
+    int check_class;           /* fs_track_run: fs_check_class of the run (drifting only with record_drift) */
+} fs_track;
+
+/* Runs sc built with opts (NULL: the whole foot on its ground) for duration_s at sc's step and
+ * samples every step. All memory is taken before the first step. FS_NUMERICAL when a state
+ * check fails (fs_check.h; with opts->record_drift only when it blows up; err says when); out is
+ * then freed. */
+fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double duration_s, fs_track *out,
+                       fs_error *err);
+
+/* The reference model's path as a track: n samples dt_s apart. */
+fs_status fs_track_reference(const fs_design_def *d, const fs_foot_geom *g, const fs_reference_def *def, double dt_s,
+                             int n, fs_track *out, fs_error *err);
+
+typedef struct fs_track_error {
+    double max_m, rms_m;       /* ankle position: largest and RMS distance */
+    double max_rad, rms_rad;   /* hinge angles: largest and RMS difference over all angles; NAN without */
+    int compared;              /* samples compared */
+} fs_track_error;
+
+/* Compares run with ref at run's sample times, which must fall on ref's (run.dt_s a whole
+ * multiple of ref.dt_s), up to the shorter of the two. */
+fs_status fs_track_compare(const fs_track *run, const fs_track *ref, fs_track_error *out, fs_error *err);
+
+void fs_track_free(fs_track *t);
+
+#endif

@@ -1,0 +1,55 @@
+/* fs_trial.h: one landing trial: a passive robot (a body standing for torso and leg) on a foot,
+ * let fall onto a terrain from a drawn pose, with no control, until it has landed or fallen.
+ *
+ * A trial scenario is an ordinary scenario file with a [robot] section (the body, and how it is
+ * joined to the ankle: rigidly or through an Achilles spring-damper) and a [landing] section
+ * (the ranges the pose is drawn from, and the rules that decide the outcome). The seed decides
+ * the draw and, on a random terrain, the terrain's own seed: the same scenario, overrides and
+ * seed give a bit-identical result on any machine and in any process.
+ *
+ * Outcome (docs/landing.md states the rules): landed when, at rest, the body leans less than
+ * landed_tilt_deg from upright, the foot touches the terrain and no foot shape is more than 1 mm
+ * below it; fell when the lean passes fall_tilt_deg (the trial stops there) or when it comes to
+ * rest otherwise; numerical when the state stops being finite (the message says when). */
+#ifndef FS_TRIAL_H
+#define FS_TRIAL_H
+
+#include "footsim/model/fs_scenario.h"
+
+typedef enum fs_outcome { FS_LANDED = 0, FS_FELL = 1, FS_FAILED_NUMERICS = 2 } fs_outcome;
+
+/* The drawn start of a trial. */
+typedef struct fs_trial_draw {
+    int seed;
+    double x_m, y_m, yaw_deg, pitch_deg, roll_deg;
+} fs_trial_draw;
+
+typedef struct fs_trial_result {
+    fs_trial_draw draw;
+    int outcome;                 /* fs_outcome */
+    char failure[512];           /* for FS_FAILED_NUMERICS: what happened, and when */
+    double end_time_s;           /* simulated time when the trial ended */
+    double touchdown_s;          /* first contact */
+    double peak_tilt_deg, final_tilt_deg;   /* the body's lean from upright */
+    double peak_force_N;         /* peak vertical ground force on the foot */
+    double impact_impulse_Ns;    /* vertical ground impulse from touchdown until the fall is arrested */
+    double settle_time_s;        /* from touchdown until at rest */
+    double mean_contacts, final_contacts;   /* foot-terrain contact points, mean after touchdown */
+    double ankle_drop_m;         /* ankle height at touchdown minus at the end */
+    double slip_m;               /* horizontal travel of the ankle from touchdown to the end */
+    long steps;
+} fs_trial_result;
+
+/* The pose drawn for seed from sc's [landing] ranges (pure function of the two). */
+void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw);
+
+/* Loads the trial scenario with overrides (checked as usual: FS_BAD_INPUT, nothing run), draws
+ * the pose for seed, runs the trial and fills out. A numerical failure is not an error of the
+ * call: it returns FS_OK with out->outcome = FS_FAILED_NUMERICS and out->failure set. */
+fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
+                       fs_trial_result *out, fs_error *err);
+
+/* Names of outcomes: "landed", "fell", "failed_numerics". */
+const char *fs_outcome_name(int outcome);
+
+#endif

@@ -1,0 +1,81 @@
+/* fs_config.h: INI files read into a table of keys, and bound to C structs through a schema.
+ *
+ * A file is read whole (with inih) into entries that remember their line. Command-line
+ * overrides ("section.key=value") are added on top. Binding walks a schema (one fs_key per
+ * allowed key: type, unit, range, default as text) and fills a def struct; anything the schema
+ * does not know, any malformed or out-of-range value, any duplicate, is refused with
+ * "file:line: what is wrong, and what is allowed" and FS_BAD_INPUT. Defaults are parsed and
+ * checked by the same code as file values, so a default can never be out of range. */
+#ifndef FS_CONFIG_H
+#define FS_CONFIG_H
+
+#include "footsim/base/fs_error.h"
+
+#include <stddef.h>
+
+enum { FS_NAME_MAX = 64, FS_VALUE_MAX = 256, FS_PATH_MAX = 1024, FS_LIST_MAX = 8 };
+
+typedef struct fs_entry {
+    char section[FS_NAME_MAX];
+    char name[FS_NAME_MAX];
+    char value[FS_VALUE_MAX];
+    int line;  /* line in the file, or 0 for an override from the command line */
+    int used;  /* set by binding */
+} fs_entry;
+
+typedef struct fs_config {
+    char path[FS_PATH_MAX]; /* the file as named by the user */
+    fs_entry *entries;
+    int count, capacity;
+} fs_config;
+
+typedef enum fs_key_type {
+    FS_KEY_NUMBER,  /* double, finite, in [min, max] (or (min, max] with FS_KEY_OPEN_MIN) */
+    FS_KEY_INTEGER, /* int, in [min, max] */
+    FS_KEY_LIST,    /* exactly `count` comma-separated doubles, each in range */
+    FS_KEY_CHOICE,  /* one word of `choices` ("a|b|c"), stored as its int index */
+    FS_KEY_PATH     /* a path relative to the file's folder; must name an existing file (a key
+                       whose default is "" is optional: left out, it stays "") */
+} fs_key_type;
+
+enum { FS_KEY_OPEN_MIN = 1 };
+
+typedef struct fs_key {
+    const char *section;
+    const char *name;
+    fs_key_type type;
+    size_t offset;       /* where the value goes in the def struct */
+    double min, max;
+    int flags;
+    int count;           /* FS_KEY_LIST: number of values */
+    const char *choices; /* FS_KEY_CHOICE */
+    const char *unit;    /* for messages and the key table */
+    const char *fallback;/* the default, as text */
+    const char *help;
+} fs_key;
+
+/* Reads path into cfg. Refuses a missing or unreadable file, a syntax error, a line over
+ * FS_VALUE_MAX characters, a continuation line and a key given twice in one section. */
+fs_status fs_config_load(fs_config *cfg, const char *path, fs_error *err);
+
+/* Adds a "section.key=value" override; it replaces the file's value when bound. */
+fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *err);
+
+/* Fills def from the schema's defaults, then from cfg; then refuses any entry of cfg that no
+ * key of the schema used (unknown section or key, with the known ones listed). */
+fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *def, fs_error *err);
+
+/* "file:line" (or "--set section.key", or "file ([section] key, default)") for messages about a
+ * key's value that only a later check can judge, such as a relation between two keys. */
+const char *fs_config_where(const fs_config *cfg, const char *section, const char *name, char *buf,
+                            size_t size);
+
+/* The folder of cfg's file, for resolving relative paths. */
+void fs_config_dir(const fs_config *cfg, char *buf, size_t size);
+
+void fs_config_free(fs_config *cfg);
+
+/* Writes the schema as a Markdown table (key, unit, range, default, meaning) to out. */
+void fs_config_print_keys(const fs_key *schema, int nkeys, const char *title, void *out_file);
+
+#endif

@@ -1,0 +1,129 @@
+/* fs_design.h: a foot design: its def (what the user's file says) and its geometry (what
+ * follows from the def, in world coordinates, before anything is built in ODE).
+ *
+ * The def is plain data with defaults: fs_design_load reads it from an INI file (plus --set
+ * overrides) through the schema fs_design_keys and checks it whole. fs_design_geometry turns a
+ * checked def into bodies, hinges, springs and contact shapes; the ODE builder, the stiffness
+ * model, the planar reference and the model dump all read that one geometry.
+ *
+ * Frame: x forward, y left, z up; the ground is z = 0 and the heel sphere touches it at x = 0.
+ * Each toe chain lies in its own vertical plane through its midfoot joint, turned by its splay
+ * angle about z. A joint angle is the distal body's rotation about the hinge axis, positive when
+ * the distal link turns up (toe dorsiflexion); it is 0 in the neutral pose. */
+#ifndef FS_DESIGN_H
+#define FS_DESIGN_H
+
+#include "footsim/io/fs_config.h"
+#include "footsim/base/fs_vec.h"
+
+enum { FS_CHAINS = 5, FS_SPRINGS_PER_CHAIN = 3 };
+enum { FS_MAX_BODIES = 2 + 2 * FS_CHAINS, FS_MAX_HINGES = 1 + 2 * FS_CHAINS,
+       FS_MAX_SPRINGS = FS_SPRINGS_PER_CHAIN * FS_CHAINS, FS_MAX_SPHERES = 2 + 2 * FS_CHAINS };
+
+typedef enum fs_foot_kind { FS_FOOT_BIOMIMETIC = 0, FS_FOOT_FLAT = 1 } fs_foot_kind;
+
+/* What a design file says. Units are SI; angles in the file are degrees. */
+typedef struct fs_design_def {
+    int kind;                          /* fs_foot_kind */
+    double design_load_kg;             /* the load the arch is checked under (Table I: 26 kg) */
+    double l1_m, l2_m, l3_m, l4_m;     /* heel, talus, metatarsal, phalanx (Table I) */
+    double heel_deg, talus_deg, toe_deg; /* neutral link directions above the horizontal */
+    double k_N_per_m[3];               /* d1 midfoot, d2 MTP, d3 heel to toe */
+    double c_Ns_per_m[3];
+    double d1_b_m, d1_h_m;             /* d1 anchors: distance along the links from the midfoot
+                                          joint, and offset toward the sole */
+    double d2_b_m, d2_h_m;             /* d2 anchors about the MTP joint */
+    double d3_heel_b_m, d3_heel_h_m;   /* d3 on the heel: along the heel link from the heel centre */
+    double d3_toe_b_m, d3_toe_h_m;     /* d3 on the phalanx: along it from the MTP joint */
+    double d3_heel_spread;             /* d3's heel anchor sits at this fraction of its chain's
+                                          lateral offset (the aponeurosis fans out from the heel) */
+    double lateral_m[FS_CHAINS];       /* y of each midfoot joint, chain 1 (big toe) first */
+    double splay_deg[FS_CHAINS];       /* chain plane turned about z */
+    double scale[FS_CHAINS];           /* forefoot size factor (lengths, anchors, radii, mass) */
+    double heel_kg, talus_kg, metatarsal_kg, phalanx_kg;
+    double link_width_m;               /* square cross-section of the links, for their inertia */
+    double heel_radius_m, ball_radius_m, toe_radius_m; /* contact spheres */
+    double heel_width_m;               /* between the two heel spheres; 0 for one */
+    double sole_mu;                    /* friction coefficient of the sole material */
+    double sole_stiffness_N_per_m;     /* contact stiffness of the sole material, per contact */
+    double sole_damping_Ns_per_m;
+    double flat_thickness_m;           /* the flat foot's sole plate */
+} fs_design_def;
+
+typedef struct fs_body_geom {
+    char name[32];
+    double mass_kg;
+    fs_vec3 com;         /* the body's origin, at its centre of mass */
+    double inertia[9];   /* about the COM, world axes, kg m^2 (row-major) */
+} fs_body_geom;
+
+typedef struct fs_hinge_geom {
+    char name[32];
+    int body1, body2;    /* proximal, distal */
+    fs_vec3 anchor, axis;
+} fs_hinge_geom;
+
+typedef struct fs_spring_geom {
+    char name[32];
+    int body1, body2;
+    fs_vec3 p1, p2;      /* anchors in the neutral pose */
+    double k_N_per_m, c_Ns_per_m, rest_length_m;
+} fs_spring_geom;
+
+typedef struct fs_sphere_geom {
+    char name[32];
+    int body;
+    fs_vec3 centre;
+    double radius_m;
+} fs_sphere_geom;
+
+/* Everything built from a def; a flat foot has one body, a box and no hinges or springs. */
+typedef struct fs_foot_geom {
+    int kind;
+    int nbodies, nhinges, nsprings, nspheres;
+    fs_body_geom body[FS_MAX_BODIES];
+    fs_hinge_geom hinge[FS_MAX_HINGES];
+    fs_spring_geom spring[FS_MAX_SPRINGS];
+    fs_sphere_geom sphere[FS_MAX_SPHERES];
+    int has_box;
+    fs_vec3 box_size, box_centre; /* the flat sole, on body 0 */
+    int npins;           /* hinges to the world (a pinned chain, fs_design_pinned_chain) */
+    struct { int body; fs_vec3 anchor, axis; } pin[2];
+    int ankle_body;      /* the body the load acts on */
+    fs_vec3 ankle;       /* the load's point: the ankle joint centre */
+    double total_mass_kg;
+    /* Biomimetic chains: body and hinge indices, and the neutral joint centres. */
+    struct {
+        int metatarsal, phalanx, midfoot_hinge, mtp_hinge, spring[3];
+        fs_vec3 midfoot, mtp, toe;
+        double metatarsal_deg; /* solved so the toe sphere rests on the ground */
+    } chain[FS_CHAINS];
+} fs_foot_geom;
+
+/* Body and hinge indices of the biomimetic foot. */
+enum { FS_BODY_HEEL = 0, FS_BODY_TALUS = 1 };
+
+extern const fs_key fs_design_keys[];
+extern const int fs_design_nkeys;
+
+/* Reads and checks a design file with overrides ("section.key=value", n of them). On success
+ * def and geom are filled; on failure err says where and why, and nothing else is done. */
+fs_status fs_design_load(const char *path, const char *const *overrides, int noverrides, fs_design_def *def,
+                         fs_foot_geom *geom, fs_error *err);
+
+/* The defaults, as fs_design_load would give for an empty file. */
+void fs_design_defaults(fs_design_def *def);
+
+/* Builds the geometry of a def; cfg (may be NULL) only locates keys in messages. Refuses a
+ * def whose toe cannot reach the ground or whose ball would sit below it. */
+fs_status fs_design_geometry(const fs_design_def *def, const fs_config *cfg, fs_foot_geom *geom, fs_error *err);
+
+/* One chain of a biomimetic foot alone, for comparison with the planar dynamic reference
+ * (fs_reference_run): heel, talus, metatarsal and phalanx (0-3), with a fifth of the heel's and
+ * talus's mass and inertia (they are shared by five chains), the chain's three hinges and three
+ * springs, no contact shapes, and the heel and the toe pinned to the world at their sphere centres
+ * by hinges about the chain's axis. The chain must be unsplayed. */
+fs_status fs_design_pinned_chain(const fs_design_def *d, const fs_foot_geom *foot, int chain, fs_foot_geom *out,
+                                 fs_error *err);
+
+#endif

@@ -1,0 +1,84 @@
+/* fs_scenario.h: an experiment described by a file: which foot, what ground, what load, and
+ * how to integrate. fs_scenario_load reads and checks the file and the design it names, and
+ * refuses anything wrong before any simulation starts.
+ *
+ * Overrides ("section.key=value") go to the scenario, the terrain or the design, whichever has
+ * that section (their sections are distinct), so `--set springs.k_d1_N_per_m=9000` reaches the
+ * foot and `--set material.mu=0.5` the ground through the scenario. */
+#ifndef FS_SCENARIO_H
+#define FS_SCENARIO_H
+
+#include "footsim/model/fs_design.h"
+#include "footsim/model/fs_terrain.h"
+
+typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
+
+typedef struct fs_scenario_def {
+    int kind;                  /* 0 experiment (run, trial), 1 walk (the walking machine) */
+    char design_path[FS_PATH_MAX];
+    char terrain_path[FS_PATH_MAX];
+    double start_x_m, start_y_m, yaw_deg, pitch_deg, roll_deg; /* where the foot starts */
+    double drop_m;             /* gap between the foot's lowest point and the terrain under it */
+    double region_margin_m;    /* the heightfield is cut to the footprint plus this margin */
+    double load_kg;            /* applied vertically at the ankle */
+    double tilt_deg;           /* the load and gravity turned about the lateral axis; positive
+                                  tilts the foot toe-up relative to them */
+    double ramp_s;             /* the load rises linearly over this time */
+    double duration_s, step_s;
+    int stepper, iterations;
+    int springs;               /* fs_spring_impl */
+    double gravity_m_per_s2;
+    double log_interval_s;
+    double rest_speed_m_per_s; /* at rest once every body is slower than this ... */
+    double rest_hold_s;        /* ... for this long, after the ramp: the run then stops */
+    double settle_band_m;      /* settled once the ankle stays this close to its final height */
+    int max_contacts;          /* per foot geom against the ground */
+    double joint_erp, joint_cfm; /* ODE's hinge error reduction and constraint force mixing */
+    double contact_layer_m;    /* ODE's contact surface layer */
+    int tile_cells;            /* heightfield tiles' size, cells a side */
+    /* [robot]: a passive body (torso and leg) on the ankle; none when its mass is 0 */
+    double robot_kg, robot_com_height_m, robot_com_forward_m;
+    double robot_inertia_kgm2[3];
+    int robot_joint;           /* 0 rigid, 1 achilles: an ankle hinge and a heel-to-leg spring-damper */
+    double achilles_k_N_per_m, achilles_c_Ns_per_m, achilles_leg_anchor_m;
+    /* [landing]: the drawn pose and the rules of a landing trial */
+    double land_x_range_m, land_y_range_m, land_yaw_range_deg, land_tilt_range_deg;
+    double landed_tilt_deg, fall_tilt_deg;
+    /* [walk]: the walking machine (Fig. 16) */
+    int walk_steps;
+    double step_length_m, walk_period_s, stance_fraction, lift_m, press_m;
+    double suspension_k_N_per_m, suspension_c_Ns_per_m, walk_fall_tilt_deg;
+    /* [check]: the bounds of the state checks after every step (fs_check.h) */
+    double check_max_speed_m_per_s, check_max_loop_error_m, check_energy_margin_J, check_energy_margin_rel;
+    int check_energy_every;
+    /* what a run may skip (the speed benchmark measures both ways) */
+    int collide_all;           /* 0: foot shapes against the ground only; 1: every pair, foot-foot too */
+    double auto_disable_s;     /* > 0: ODE disables bodies slower than rest_speed_m_per_s for this long */
+} fs_scenario_def;
+
+typedef struct fs_scenario {
+    char path[FS_PATH_MAX];
+    char name[FS_NAME_MAX];    /* the file's base name without .ini */
+    fs_scenario_def def;
+    fs_design_def design;
+    fs_foot_geom geom;
+    fs_terrain terrain;        /* cut to the region the foot can reach */
+} fs_scenario;
+
+extern const fs_key fs_scenario_keys[];
+extern const int fs_scenario_nkeys;
+
+fs_status fs_scenario_load(const char *path, const char *const *overrides, int noverrides, fs_scenario *sc,
+                           fs_error *err);
+
+/* A scenario with every default but the design, for commands that take a design alone. */
+fs_status fs_scenario_for_design(const char *design_path, const char *const *overrides, int noverrides,
+                                 fs_scenario *sc, fs_error *err);
+
+/* Releases what a loaded scenario holds (its terrain's samples). */
+void fs_scenario_free(fs_scenario *sc);
+
+/* The rectangle [xmin, xmax] x [ymin, ymax] the foot covers at its start pose. */
+void fs_scenario_footprint(const fs_scenario *sc, double box[4]);
+
+#endif

@@ -1,0 +1,100 @@
+/* fs_terrain.h: the ground a foot lands on, described by a file in terrains/ and built exactly
+ * where a test can know the answer and cheaply where the scene needs no more.
+ *
+ * Kinds: flat (an ODE plane), slope (a tilted plane), stepped (boxes: sharp edges), and the
+ * heightfield kinds rough, simply_uneven, complex_uneven and heightmap. A heightfield kind is a
+ * height function of (x, y) alone, sampled on a fixed world lattice (multiples of resolution_m
+ * from the lattice origin), so cutting it to a region never changes it: the same seed gives the
+ * same surface wherever it is cut. fs_terrain_crop samples the lattice over the region a scenario
+ * can reach; fs_terrain_height then returns the surface ODE collides with: the plane or step
+ * height, or the triangulated samples (each lattice cell split along its rising diagonal, as ODE
+ * splits it). Outside the cropped region it returns the height function itself. */
+#ifndef FS_TERRAIN_H
+#define FS_TERRAIN_H
+
+#include "footsim/io/fs_config.h"
+
+typedef enum fs_terrain_kind {
+    FS_TERRAIN_FLAT, FS_TERRAIN_SLOPE, FS_TERRAIN_STEPPED, FS_TERRAIN_ROUGH,
+    FS_TERRAIN_SIMPLY_UNEVEN, FS_TERRAIN_COMPLEX_UNEVEN, FS_TERRAIN_HEIGHTMAP
+} fs_terrain_kind;
+
+typedef enum fs_step_pattern { FS_STEPS_UP = 0, FS_STEPS_DOWN = 1, FS_STEPS_UP_DOWN = 2 } fs_step_pattern;
+
+enum { FS_MAX_ROCKS = 256 };
+
+typedef struct fs_terrain_def {
+    int kind;                       /* fs_terrain_kind */
+    double slope_deg;               /* slope: rising toward +x */
+    double step_rise_m, step_run_m, step_start_x_m;
+    int step_count, step_pattern;   /* stepped */
+    double rms_m, correlation_m, resolution_m; /* rough (and the base of complex_uneven) */
+    int seed;
+    double patch_x_min_m, patch_x_max_m; /* the roughness only between these x, faded in over
+                                            one correlation length */
+    double bump_height_m, bump_radius_m, bump_x_m, bump_y_m; /* simply_uneven */
+    int rock_count;                 /* complex_uneven */
+    double rock_height_min_m, rock_height_max_m, rock_radius_min_m, rock_radius_max_m, rock_field_m;
+    char heightmap_path[FS_PATH_MAX];
+    double heightmap_scale_m, heightmap_pixel_m, heightmap_x0_m, heightmap_y0_m;
+    double mu, restitution, stiffness_N_per_m, damping_Ns_per_m; /* the ground's material */
+} fs_terrain_def;
+
+typedef struct fs_rock { double x, y, height, radius; } fs_rock;
+
+typedef struct fs_terrain {
+    char path[FS_PATH_MAX];
+    char name[FS_NAME_MAX];
+    fs_terrain_def def;
+    fs_rock rock[FS_MAX_ROCKS];     /* complex_uneven: drawn from the seed */
+    int img_w, img_h;               /* heightmap: the image, heights in m, row 0 at the largest y */
+    double *img;
+    /* the cropped lattice: nx * ny samples, z[j * nx + i] at (x0 + i dx, y0 + j dx) */
+    int nx, ny;
+    long i0, j0;                    /* lattice index of sample (0, 0) */
+    double x0, y0, dx;
+    double *z;
+    double zmin, zmax;
+    /* the highest sample of each block of FS_TERRAIN_BLOCK x FS_TERRAIN_BLOCK samples, bx * by of
+     * them, zblock[b * bx + a] over samples [a B, a B + B) x [b B, b B + B): a search for samples
+     * above a height skips the blocks below it */
+    int bx, by;
+    double *zblock;
+} fs_terrain;
+
+enum { FS_TERRAIN_BLOCK = 8 };
+
+extern const fs_key fs_terrain_keys[];
+extern const int fs_terrain_nkeys;
+
+/* Reads and checks a terrain file with overrides; reads its heightmap image. Nothing is sampled
+ * until fs_terrain_crop. An empty path gives the defaults: a flat plane of default material. */
+fs_status fs_terrain_load(const char *path, const char *const *overrides, int noverrides, fs_terrain *t,
+                          fs_error *err);
+
+/* Samples a heightfield kind over [xmin, xmax] x [ymin, ymax] (grown to whole lattice cells);
+ * a no-op for planes and steps. Refuses a region of more than FS_TERRAIN_MAX_SAMPLES samples. */
+enum { FS_TERRAIN_MAX_SAMPLES = 4000000 };
+fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, double ymax, fs_error *err);
+
+/* The surface ODE collides with, at (x, y), m. */
+double fs_terrain_height(const fs_terrain *t, double x, double y);
+
+/* The height function the lattice samples (for planes and steps, the same as the surface). */
+double fs_terrain_function(const fs_terrain *t, double x, double y);
+
+int fs_terrain_is_heightfield(const fs_terrain *t);
+
+void fs_terrain_free(fs_terrain *t);
+
+/* Whether a section belongs to terrain files (for routing --set overrides). */
+int fs_terrain_has_section(const char *section, size_t len);
+
+#endif
+
+/* A shaded top-down picture of the surface over region [xmin, xmax, ymin, ymax]: heights as
+ * colours (low blue-green to high sand), lit from the north-west; when outline is not NULL, the
+ * rectangle [xmin, xmax, ymin, ymax] it gives is drawn in white (a footprint). rgb holds w*h*3
+ * bytes, row 0 at the largest y. Returns the lowest and highest height drawn in zrange. */
+void fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
+                    unsigned char *rgb, double zrange[2]);

@@ -1,0 +1,25 @@
+/* fs_ground.h: a terrain built as ODE collision geometry.
+ *
+ * fs_ground_build puts the terrain's shapes into space: a plane (flat, slope), a plane and boxes
+ * (stepped: sharp edges), or heightfields over the terrain's cropped lattice, turned from ODE's
+ * y-up to footsim's z-up, with a base under their lowest sample so nothing passes beneath.
+ *
+ * A heightfield comes as square tiles of tile_cells cells that share their edge samples: ODE
+ * sorts every triangle plane under a box's bounding box against every other one (quadratic), so a
+ * flat sole over one large heightfield costs milliseconds a step; over tiles, a fraction of that.
+ * The terrain must outlive the space: the tiles read its samples. fs_ground_destroy (after the
+ * space) frees the tiles' data. */
+#ifndef FS_GROUND_H
+#define FS_GROUND_H
+
+#include "footsim/model/fs_terrain.h"
+
+#include <ode/ode.h>
+
+typedef struct fs_ground fs_ground;
+
+/* NULL when the terrain needs no heightfield data (planes, steps) or memory ran out (*ok = 0). */
+fs_ground *fs_ground_build(dSpaceID space, const fs_terrain *t, int tile_cells, int *ok);
+void fs_ground_destroy(fs_ground *g);
+
+#endif

@@ -1,0 +1,142 @@
+/* fs_sim.h: a foot built in ODE from its geometry, over a ground, and stepped.
+ *
+ * The geometry (fs_foot_geom) and the scenario are the constant model; everything that changes
+ * during a run lives in the ODE world that fs_sim_build creates. All memory is taken at build
+ * time: fs_sim_step allocates nothing (ODE's own step works in its preallocated arena).
+ *
+ * One step is a fixed sequence of stages: external loads, springs, collision (foot against
+ * ground only), the ODE step, and the state checks of fs_check.h (finite, speed, loop closure,
+ * energy). fs_sim_profile times them. */
+#ifndef FS_SIM_H
+#define FS_SIM_H
+
+#include "footsim/sim/fs_check.h"
+#include "footsim/model/fs_scenario.h"
+#include "footsim/sim/fs_scene.h"
+#include "footsim/sim/fs_spring.h"
+
+#include <ode/ode.h>
+
+enum { FS_MAX_CONTACTS = 256, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * 64 };
+
+typedef struct fs_sim_options {
+    int with_ground;        /* 0: no ground (the stiffness probes) */
+    int hold_rear_foot;     /* 1: heel and talus kinematic, fixed where they are */
+    int pinned_chain;       /* c (1-5): chain c alone, heel and toe pinned to the world, a fifth of the
+                               load and no ground (fs_design_pinned_chain); 0: the whole foot */
+    int record_drift;       /* 1: a drifting state is recorded, not stopped at (fs_check.h) */
+} fs_sim_options;
+
+typedef struct fs_sim {
+    const fs_scenario *sc;
+    const fs_foot_geom *geom; /* the scenario's, or own_geom for a pinned chain */
+    fs_foot_geom own_geom;
+    dWorldID world;
+    dSpaceID space;        /* the foot's shapes */
+    dSpaceID ground;       /* the terrain's shapes (plane, boxes or heightfield); NULL without ground */
+    struct fs_ground *heightfield; /* the heightfield tiles' data, or NULL */
+    double R0[9], t0[3];   /* the start pose: world = R0 * design + t0 */
+    dJointGroupID contact_group;
+    dBodyID body[FS_MAX_BODIES];
+    dJointID hinge[FS_MAX_HINGES];
+    dJointID pin[2];       /* a pinned chain's hinges to the world */
+    dGeomID shape[FS_MAX_SPHERES + 1];
+    int nshapes;
+    fs_spring spring[FS_MAX_SPRINGS];
+    dBodyID robot;         /* the passive body on the ankle, or NULL */
+    dJointID robot_joint;  /* fixed, or the ankle hinge */
+    fs_spring achilles;    /* with robot.joint = achilles */
+    int has_achilles;
+    double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
+    dVector3 ankle_local;  /* the load's point on the ankle body */
+    dVector3 down;         /* unit direction of the load and gravity */
+    dContact contact_template;
+    double time_s;
+    double load_N;         /* the load's weight; fs_sim_step ramps it in */
+    int contacts_now;      /* contact points in the last step */
+    dJointFeedback *feedback; /* FS_MAX_STEP_CONTACTS, filled by the last step */
+    double contact_pos[FS_MAX_STEP_CONTACTS][3];
+    double *ground_grid;   /* planes and steps sampled for fs_sim_scene (heightfields use theirs) */
+    fs_scene_ground scene_ground;
+    long contacts_total, collision_tests;
+    fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
+    struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_profile) */
+    double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
+} fs_sim;
+
+/* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */
+fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err);
+void fs_sim_destroy(fs_sim *sim);
+
+/* Advances by the scenario's step; FS_NUMERICAL (with the body or hinge and the time named) if
+ * a check of fs_check.h fails. */
+fs_status fs_sim_step(fs_sim *sim, fs_error *err);
+
+/* The load's force now (it rises over ramp_s), N; it acts along down. */
+double fs_sim_load_now_N(const fs_sim *sim);
+/* Where the time of the steps goes. The stages of fs_sim_step, in order, and what their code is:
+ * ODE's (collision: dSpaceCollide2 over the ground space with the dCollide calls of footsim's
+ * callback; the ODE step: dWorldStep or dWorldQuickStep and emptying the contact group) or
+ * footsim's own (the rest, and FS_STAGE_CALLER: the time between one step's end and the next
+ * one's start, which is the caller's measurements, logging and rest test). */
+typedef enum fs_stage {
+    FS_STAGE_LOADS,     /* the load ramped and applied */
+    FS_STAGE_SPRINGS,   /* spring-dampers prepared for the step */
+    FS_STAGE_COLLISION, /* ODE: foot shapes against the ground space */
+    FS_STAGE_CONTACTS,  /* box vertex contacts, merging and selecting, contact joints made */
+    FS_STAGE_ODE,       /* ODE: the step */
+    FS_STAGE_CHECK,     /* the state checks (fs_check.h) */
+    FS_STAGE_CALLER,    /* between steps: the caller's own work */
+    FS_NSTAGES
+} fs_stage;
+
+typedef struct fs_profile {
+    double stage_s[FS_NSTAGES]; /* wall time in each stage, summed over every profiled step, s */
+    long laps[FS_NSTAGES];      /* how many timed intervals each sum has (each holds one clock read) */
+    long steps;
+} fs_profile;
+
+/* Profiling is process-wide and off by default. fs_sim_profile(1) clears the sums, and every
+ * fs_sim built after it adds the time of each of its steps' stages to them (CLOCK_MONOTONIC);
+ * fs_sim_profile(0) stops that for sims built afterwards. Off, each stage costs one untaken branch.
+ * Timing never changes a result. fs_sim_profile_read copies the sums. Not thread-safe. */
+void fs_sim_profile(int on);
+
+/* Seconds on the monotonic clock (CLOCK_MONOTONIC): what profiling, fs_track_run and the
+ * benchmarks time with. */
+double fs_clock_s(void);
+void fs_sim_profile_read(fs_profile *out);
+
+/* The load's point (the ankle) in world coordinates now. */
+void fs_sim_ankle(const fs_sim *sim, double p[3]);
+
+/* Energy now: kinetic, gravitational (relative to z = 0) and stored in the springs, J. */
+double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, double *elastic);
+
+/* A bound on the fastest point of any body: COM speed plus angular speed times its reach, m/s. */
+double fs_sim_max_speed(const fs_sim *sim);
+
+/* The same for body i (0 .. nbodies - 1; nbodies: the robot, its reach com_height_m), m/s. */
+double fs_sim_body_speed(const fs_sim *sim, int i);
+
+/* The ground's total force on the foot during the last step, N. */
+void fs_sim_ground_force(const fs_sim *sim, double force[3]);
+
+/* Fills scene with the state now (shapes, links, springs with their forces, contacts with their
+ * forces, the load). */
+void fs_sim_scene(const fs_sim *sim, fs_scene *scene);
+
+/* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. */
+double fs_sim_robot_tilt(const fs_sim *sim);
+
+/* How far the foot's contact shapes reach below the terrain surface now, m (negative: above). */
+double fs_sim_penetration(const fs_sim *sim);
+
+/* Joint angle of hinge i from the neutral pose, rad (positive: distal link turned up). */
+double fs_sim_hinge_angle(const fs_sim *sim, int i);
+
+/* The model as ODE holds it after building sc (masses, inertias, poses, joints, springs,
+ * shapes), in SI units and world coordinates; the caller frees it with cJSON_Delete. */
+struct cJSON *fs_model_json(const fs_scenario *sc, fs_error *err);
+
+#endif

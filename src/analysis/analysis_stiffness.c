@@ -1,0 +1,141 @@
+/* analysis_stiffness.c: each chain's joint stiffness, from the geometry and measured in ODE. */
+#include "footsim/analysis/fs_analysis.h"
+
+#include "footsim/sim/fs_sim.h"
+
+#include <math.h>
+#include <string.h>
+
+/* How a point on `body` moves per unit rotation of joint j (0 midfoot, 1 MTP) of chain i. */
+static fs_vec3 point_rate(const fs_foot_geom *g, int i, int j, int body, fs_vec3 p)
+{
+    int distal = j == 0 ? (body == g->chain[i].metatarsal || body == g->chain[i].phalanx) : body == g->chain[i].phalanx;
+    if (!distal)
+        return fs_v3(0, 0, 0);
+    const fs_hinge_geom *h = &g->hinge[j == 0 ? g->chain[i].midfoot_hinge : g->chain[i].mtp_hinge];
+    return fs_cross(h->axis, fs_sub(p, h->anchor));
+}
+
+/* An anchor moved onto its link's axis (the paper's eq. 4 attaches springs on the axes). */
+static fs_vec3 on_axis(const fs_foot_geom *g, int i, int body, fs_vec3 p)
+{
+    fs_vec3 from, to;
+    if (body == g->chain[i].metatarsal) {
+        from = g->chain[i].midfoot;
+        to = g->chain[i].mtp;
+    } else if (body == g->chain[i].phalanx) {
+        from = g->chain[i].mtp;
+        to = g->chain[i].toe;
+    } else {
+        return p; /* the rear foot does not move with the chain's joints */
+    }
+    fs_vec3 e = fs_sub(to, from);
+    e = fs_scale(e, 1.0 / fs_norm(e));
+    return fs_add(from, fs_scale(e, fs_dot(fs_sub(p, from), e)));
+}
+
+static void stiffness_from_G(const fs_foot_geom *g, int i, const double G[3][2], double K[2][2])
+{
+    memset(K, 0, 4 * sizeof(double));
+    for (int k = 0; k < 3; k++) {
+        double kk = g->spring[g->chain[i].spring[k]].k_N_per_m;
+        for (int r = 0; r < 2; r++)
+            for (int c = 0; c < 2; c++)
+                K[r][c] += kk * G[k][r] * G[k][c];
+    }
+}
+
+static void chain_G(const fs_foot_geom *g, int i, int paper, double G[3][2])
+{
+    for (int k = 0; k < 3; k++) {
+        const fs_spring_geom *s = &g->spring[g->chain[i].spring[k]];
+        fs_vec3 u = fs_sub(s->p2, s->p1);
+        u = fs_scale(u, 1.0 / fs_norm(u));
+        fs_vec3 p1 = paper ? on_axis(g, i, s->body1, s->p1) : s->p1;
+        fs_vec3 p2 = paper ? on_axis(g, i, s->body2, s->p2) : s->p2;
+        for (int j = 0; j < 2; j++)
+            G[k][j] = fs_dot(u, fs_sub(point_rate(g, i, j, s->body2, p2), point_rate(g, i, j, s->body1, p1)));
+    }
+}
+
+void fs_stiffness_analytic(const fs_foot_geom *g, fs_chain_stiffness out[FS_CHAINS])
+{
+    for (int i = 0; i < FS_CHAINS; i++) {
+        double Gp[3][2];
+        chain_G(g, i, 0, out[i].G);
+        chain_G(g, i, 1, Gp);
+        stiffness_from_G(g, i, (const double(*)[2])out[i].G, out[i].exact);
+        stiffness_from_G(g, i, (const double(*)[2])Gp, out[i].eq4);
+    }
+}
+
+/* ---- measured in ODE ------------------------------------------------------------------------ */
+
+/* Torque tau about joint j of every chain, held until still; the joint angles that result. */
+static fs_status probe(const fs_scenario *sc, int j, double tau, double angles[FS_CHAINS][2], fs_error *err)
+{
+    fs_sim sim;
+    fs_sim_options opts = {.with_ground = 0, .hold_rear_foot = 1};
+    fs_status s = fs_sim_build(&sim, sc, &opts, err);
+    const fs_foot_geom *g = sim.geom;
+    const double settle_s = 2.0, still_m_per_s = 1e-12;
+    while (s == FS_OK && sim.time_s < settle_s) {
+        for (int i = 0; i < FS_CHAINS; i++) {
+            const fs_hinge_geom *h = &g->hinge[j == 0 ? g->chain[i].midfoot_hinge : g->chain[i].mtp_hinge];
+            dBodyAddTorque(sim.body[h->body2], tau * h->axis.x, tau * h->axis.y, tau * h->axis.z);
+            dBodyAddTorque(sim.body[h->body1], -tau * h->axis.x, -tau * h->axis.y, -tau * h->axis.z);
+        }
+        s = fs_sim_step(&sim, err);
+        if (sim.time_s > 0.1 && fs_sim_max_speed(&sim) < still_m_per_s)
+            break;
+    }
+    for (int i = 0; s == FS_OK && i < FS_CHAINS; i++) {
+        angles[i][0] = fs_sim_hinge_angle(&sim, g->chain[i].midfoot_hinge);
+        angles[i][1] = fs_sim_hinge_angle(&sim, g->chain[i].mtp_hinge);
+    }
+    fs_sim_destroy(&sim);
+    return s;
+}
+
+fs_status fs_stiffness_measure(const fs_scenario *sc_in, fs_chain_stiffness out[FS_CHAINS], fs_error *err)
+{
+    fs_scenario sc = *sc_in;
+    sc.def.gravity_m_per_s2 = 0;
+    sc.def.load_kg = 0;
+    sc.geom = sc_in->geom;
+    /* a probe about 1e-3 rad deep: linear, yet far above the solver's residuals */
+    double scale = 0;
+    for (int i = 0; i < FS_CHAINS; i++)
+        scale = fmax(scale, out[i].exact[0][0] + out[i].exact[1][1]);
+    double tau = 1e-3 * scale / 2;
+    double plus[2][FS_CHAINS][2], minus[2][FS_CHAINS][2];
+    for (int j = 0; j < 2; j++) {
+        fs_status s = probe(&sc, j, tau, plus[j], err);
+        if (s == FS_OK)
+            s = probe(&sc, j, -tau, minus[j], err);
+        if (s != FS_OK)
+            return s;
+    }
+    for (int i = 0; i < FS_CHAINS; i++) {
+        /* columns of D: angle changes per probe; K D = tau I */
+        double D[2][2];
+        for (int j = 0; j < 2; j++)
+            for (int r = 0; r < 2; r++)
+                D[r][j] = (plus[j][i][r] - minus[j][i][r]) / 2;
+        double det = D[0][0] * D[1][1] - D[0][1] * D[1][0];
+        double (*K)[2] = out[i].measured;
+        K[0][0] = tau * D[1][1] / det;
+        K[0][1] = -tau * D[0][1] / det;
+        K[1][0] = -tau * D[1][0] / det;
+        K[1][1] = tau * D[0][0] / det;
+        double num = 0, den = 0;
+        for (int r = 0; r < 2; r++)
+            for (int c = 0; c < 2; c++) {
+                double e = K[r][c] - out[i].exact[r][c];
+                num += e * e;
+                den += out[i].exact[r][c] * out[i].exact[r][c];
+            }
+        out[i].rel_diff = sqrt(num / den);
+    }
+    return FS_OK;
+}

@@ -1,0 +1,54 @@
+/* base_error.c: error messages and ODE's handlers routed through footsim. */
+#include "footsim/base/fs_error.h"
+
+#include <ode/ode.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+fs_status fs_fail(fs_error *err, fs_status status, const char *fmt, ...)
+{
+    if (err) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err->message, sizeof err->message, fmt, ap);
+        va_end(ap);
+        err->status = status;
+    }
+    return status;
+}
+
+static char ode_context[256] = "ODE";
+
+void fs_ode_context(const char *context) { snprintf(ode_context, sizeof ode_context, "%s", context); }
+
+/* ODE calls exit() or abort() after its error and debug handlers return, so these never return. */
+static void ode_fatal(const char *kind, int errnum, const char *msg, va_list ap)
+{
+    fprintf(stderr, "footsim: %s: ODE %s %d: ", ode_context, kind, errnum);
+    vfprintf(stderr, msg, ap);
+    fprintf(stderr, "\n  the simulation is numerically broken; try a smaller step_s or the implicit springs\n");
+    exit(FS_NUMERICAL);
+}
+
+static void ode_error_handler(int errnum, const char *msg, va_list ap) { ode_fatal("error", errnum, msg, ap); }
+
+static void ode_debug_handler(int errnum, const char *msg, va_list ap) { ode_fatal("internal check", errnum, msg, ap); }
+
+static void ode_message_handler(int errnum, const char *msg, va_list ap)
+{
+    /* Messages are warnings: keep them on stderr, tagged with what footsim was doing. */
+    fprintf(stderr, "footsim: %s: ODE message %d: ", ode_context, errnum);
+    vfprintf(stderr, msg, ap);
+    fputc('\n', stderr);
+}
+
+void fs_ode_init(void)
+{
+    dSetErrorHandler(ode_error_handler);
+    dSetDebugHandler(ode_debug_handler);
+    dSetMessageHandler(ode_message_handler);
+    dInitODE2(0);
+}
+
+void fs_ode_close(void) { dCloseODE(); }

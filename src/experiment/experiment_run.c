@@ -1,0 +1,231 @@
+/* experiment_run.c: a scenario run to rest, its metrics, and writing them. */
+#include "footsim/experiment/fs_run.h"
+
+#include "footsim/io/fs_output.h"
+#include "footsim/sim/fs_sim.h"
+
+#include <cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void name_columns(fs_run_result *res, const fs_foot_geom *g)
+{
+    static const char *fixed[] = {"t_s", "ankle_x_m", "ankle_y_m", "ankle_z_m", "contacts"};
+    static char hinge_names[FS_MAX_HINGES][48];
+    res->ncols = 0;
+    for (int i = 0; i < 5; i++)
+        res->col_name[res->ncols++] = fixed[i];
+    for (int i = 0; i < g->nhinges; i++) {
+        snprintf(hinge_names[i], sizeof hinge_names[i], "%s_rad", g->hinge[i].name);
+        res->col_name[res->ncols++] = hinge_names[i];
+    }
+}
+
+static void log_row(fs_run_result *res, const fs_sim *sim)
+{
+    if (res->nrows == res->capacity)
+        return;
+    double *row = res->rows + (size_t)res->nrows * res->ncols, p[3];
+    fs_sim_ankle(sim, p);
+    row[0] = sim->time_s;
+    row[1] = p[0];
+    row[2] = p[1];
+    row[3] = p[2];
+    row[4] = sim->contacts_now;
+    for (int i = 0; i < sim->geom->nhinges; i++)
+        row[5 + i] = fs_sim_hinge_angle(sim, i);
+    res->nrows++;
+}
+
+/* The last logged time at which the ankle was farther than band from its final height. */
+static double settle_time(const fs_run_result *res, double band)
+{
+    double zf = res->ankle_end_m[2], t = 0;
+    for (int r = 0; r < res->nrows; r++) {
+        const double *row = res->rows + (size_t)r * res->ncols;
+        if (fabs(row[3] - zf) > band)
+            t = row[0];
+    }
+    return t;
+}
+
+static void measure_end(fs_run_result *res, const fs_sim *sim)
+{
+    fs_sim_ankle(sim, res->ankle_end_m);
+    res->end_time_s = sim->time_s;
+    res->ankle_drop_m = res->ankle_start_m[2] - res->ankle_end_m[2];
+    for (int i = 0; i < sim->geom->nhinges; i++)
+        res->hinge_angle_rad[i] = fs_sim_hinge_angle(sim, i);
+    for (int i = 0; i < sim->geom->nsprings; i++) {
+        fs_spring_state st = fs_spring_measure(&sim->spring[i]);
+        res->spring_force_N[i] = st.force_N;
+        res->spring_length_m[i] = st.length_m;
+    }
+    res->contacts_end = sim->contacts_now;
+    res->contacts_total = sim->contacts_total;
+    res->collision_tests = sim->collision_tests;
+    res->energy_end_J = fs_sim_energy(sim, NULL, NULL, NULL);
+}
+
+static fs_status observe(const fs_run_observer *obs, const fs_sim *sim, fs_error *err)
+{
+    return obs && obs->fn ? obs->fn(obs->user, sim, err) : FS_OK;
+}
+
+fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err)
+{
+    const fs_scenario_def *d = &sc->def;
+    memset(res, 0, sizeof *res);
+    name_columns(res, &sc->geom);
+    long nsteps = (long)ceil(d->duration_s / d->step_s - 1e-9);
+    long every = lround(d->log_interval_s / d->step_s);
+    if (every < 1)
+        every = 1;
+    res->capacity = (int)(nsteps / every + 2);
+    res->rows = malloc((size_t)res->capacity * res->ncols * sizeof *res->rows);
+    if (!res->rows)
+        return fs_fail(err, FS_BAD_INPUT, "%s: duration_s / log_interval_s asks for too many trajectory rows",
+                       sc->path);
+    fs_sim sim;
+    fs_status s = fs_sim_build(&sim, sc, NULL, err);
+    if (s != FS_OK)
+        return s;
+    fs_sim_ankle(&sim, res->ankle_start_m);
+    res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
+    log_row(res, &sim);
+    long watch = obs ? lround(obs->interval_s / d->step_s) : 0;
+    if (watch < 1)
+        watch = 1;
+    s = observe(obs, &sim, err);
+    double rest_since = -1;
+    long step;
+    for (step = 1; s == FS_OK && step <= nsteps; step++) {
+        s = fs_sim_step(&sim, err);
+        if (s != FS_OK)
+            break;
+        if (step % every == 0)
+            log_row(res, &sim);
+        if (obs && step % watch == 0 && (s = observe(obs, &sim, err)) != FS_OK)
+            break;
+        /* at rest once every body is slow for rest_hold_s, after the load has fully risen */
+        if (sim.time_s >= d->ramp_s && fs_sim_max_speed(&sim) < d->rest_speed_m_per_s) {
+            if (rest_since < 0)
+                rest_since = sim.time_s;
+            if (sim.time_s - rest_since >= d->rest_hold_s) {
+                res->at_rest = 1;
+                break;
+            }
+        } else {
+            rest_since = -1;
+        }
+    }
+    res->steps = (int)(step > nsteps ? nsteps : step);
+    if (s == FS_OK) {
+        if (res->nrows == 0 || res->rows[(size_t)(res->nrows - 1) * res->ncols] != sim.time_s)
+            log_row(res, &sim);
+        measure_end(res, &sim);
+        res->settle_time_s = settle_time(res, d->settle_band_m);
+        if (obs && res->steps % watch != 0)
+            s = observe(obs, &sim, err);
+    }
+    fs_sim_destroy(&sim);
+    return s;
+}
+
+void fs_run_free(fs_run_result *res)
+{
+    free(res->rows);
+    res->rows = NULL;
+}
+
+/* ---- output --------------------------------------------------------------------------------- */
+
+static cJSON *vec3_json(const double v[3]) { return cJSON_CreateDoubleArray(v, 3); }
+
+static cJSON *metrics_json(const fs_scenario *sc, const fs_run_result *res)
+{
+    const fs_foot_geom *g = &sc->geom;
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddStringToObject(root, "scenario", sc->name);
+    cJSON_AddStringToObject(root, "design", sc->def.design_path);
+    cJSON_AddStringToObject(root, "foot", g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic");
+    cJSON_AddNumberToObject(root, "load_kg", sc->def.load_kg);
+    cJSON_AddNumberToObject(root, "tilt_deg", sc->def.tilt_deg);
+    cJSON_AddNumberToObject(root, "step_s", sc->def.step_s);
+    cJSON_AddStringToObject(root, "springs", sc->def.springs == 0 ? "implicit" : "explicit");
+    cJSON_AddNumberToObject(root, "steps", res->steps);
+    cJSON_AddNumberToObject(root, "end_time_s", res->end_time_s);
+    cJSON_AddBoolToObject(root, "at_rest", res->at_rest);
+    cJSON_AddNumberToObject(root, "ankle_drop_m", res->ankle_drop_m);
+    cJSON_AddNumberToObject(root, "settle_time_s", res->settle_time_s);
+    cJSON_AddItemToObject(root, "ankle_start_m", vec3_json(res->ankle_start_m));
+    cJSON_AddItemToObject(root, "ankle_end_m", vec3_json(res->ankle_end_m));
+    cJSON_AddNumberToObject(root, "contacts_end", res->contacts_end);
+    cJSON_AddNumberToObject(root, "contacts_total", (double)res->contacts_total);
+    cJSON_AddNumberToObject(root, "collision_tests", (double)res->collision_tests);
+    cJSON_AddNumberToObject(root, "energy_start_J", res->energy_start_J);
+    cJSON_AddNumberToObject(root, "energy_end_J", res->energy_end_J);
+    if (g->nhinges > 0)
+        cJSON_AddNumberToObject(root, "ankle_joint_rad", res->hinge_angle_rad[0]);
+    cJSON *chains = cJSON_AddArrayToObject(root, "chains");
+    for (int i = 0; g->kind == FS_FOOT_BIOMIMETIC && i < FS_CHAINS; i++) {
+        cJSON *c = cJSON_CreateObject();
+        cJSON_AddNumberToObject(c, "chain", i + 1);
+        cJSON_AddNumberToObject(c, "midfoot_rad", res->hinge_angle_rad[g->chain[i].midfoot_hinge]);
+        cJSON_AddNumberToObject(c, "mtp_rad", res->hinge_angle_rad[g->chain[i].mtp_hinge]);
+        static const char *names[3] = {"d1_force_N", "d2_force_N", "d3_force_N"};
+        for (int k = 0; k < 3; k++)
+            cJSON_AddNumberToObject(c, names[k], res->spring_force_N[g->chain[i].spring[k]]);
+        cJSON_AddItemToArray(chains, c);
+    }
+    return root;
+}
+
+static fs_status write_json(const char *path, cJSON *root, fs_error *err)
+{
+    char *text = cJSON_Print(root);
+    if (!text)
+        return fs_fail(err, FS_IO, "%s: out of memory", path);
+    size_t n = strlen(text);
+    text[n] = '\n'; /* replace the terminator: the file ends with a newline */
+    fs_status s = fs_write_atomic(path, text, n + 1, err);
+    free(text);
+    return s;
+}
+
+static fs_status write_trajectory(const fs_run_result *res, const char *path, fs_error *err)
+{
+    char temp[4200];
+    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
+    if (!f)
+        return FS_IO;
+    for (int c = 0; c < res->ncols; c++)
+        fprintf(f, "%s%s", c ? "," : "", res->col_name[c]);
+    fputc('\n', f);
+    for (int r = 0; r < res->nrows; r++) {
+        const double *row = res->rows + (size_t)r * res->ncols;
+        for (int c = 0; c < res->ncols; c++)
+            fprintf(f, c == 4 ? "%s%.0f" : "%s%.17g", c ? "," : "", row[c]);
+        fputc('\n', f);
+    }
+    return fs_commit_file(f, temp, path, 1, err);
+}
+
+fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const char *dir, fs_error *err)
+{
+    fs_status s = fs_make_dirs(dir, err);
+    if (s != FS_OK)
+        return s;
+    char path[4096];
+    snprintf(path, sizeof path, "%s/trajectory.csv", dir);
+    s = write_trajectory(res, path, err);
+    if (s != FS_OK)
+        return s;
+    snprintf(path, sizeof path, "%s/metrics.json", dir);
+    cJSON *root = metrics_json(sc, res);
+    s = write_json(path, root, err);
+    cJSON_Delete(root);
+    return s;
+}

@@ -1,0 +1,116 @@
+/* experiment_track.c: a run's path sampled at every step, and the distance between two paths. */
+#include "footsim/experiment/fs_track.h"
+
+#include "footsim/sim/fs_check.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static fs_status track_alloc(fs_track *t, double dt_s, int n, int nangles, fs_error *err)
+{
+    memset(t, 0, sizeof *t);
+    t->dt_s = dt_s;
+    t->n = n;
+    t->nangles = nangles;
+    t->ankle = calloc((size_t)n, sizeof *t->ankle);
+    t->angle = calloc((size_t)n, sizeof *t->angle);
+    if (!t->ankle || !t->angle) {
+        fs_track_free(t);
+        return fs_fail(err, FS_BAD_INPUT, "out of memory for a path of %d samples", n);
+    }
+    return FS_OK;
+}
+
+void fs_track_free(fs_track *t)
+{
+    free(t->ankle);
+    free(t->angle);
+    memset(t, 0, sizeof *t);
+}
+
+static void sample(const fs_sim *sim, fs_track *t, int i)
+{
+    fs_sim_ankle(sim, t->ankle[i]);
+    for (int k = 0; k < t->nangles; k++)
+        t->angle[i][k] = fs_sim_hinge_angle(sim, k);
+}
+
+fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double duration_s, fs_track *out,
+                       fs_error *err)
+{
+    double h = sc->def.step_s;
+    int steps = (int)ceil(duration_s / h - 1e-9);
+    int nangles = sc->geom.nhinges < FS_TRACK_ANGLES ? sc->geom.nhinges : FS_TRACK_ANGLES;
+    fs_status s = track_alloc(out, h, steps + 1, nangles, err);
+    if (s != FS_OK)
+        return s;
+    fs_sim sim;
+    s = fs_sim_build(&sim, sc, opts, err);
+    if (s == FS_OK) {
+        sample(&sim, out, 0);
+        double start = fs_clock_s();
+        for (int i = 1; i <= steps && s == FS_OK; i++) {
+            s = fs_sim_step(&sim, err);
+            if (s == FS_OK)
+                sample(&sim, out, i);
+        }
+        out->wall_s = fs_clock_s() - start;
+        out->check_class = fs_check_class_of(sim.check.first_drift);
+    }
+    fs_sim_destroy(&sim);
+    if (s != FS_OK)
+        fs_track_free(out);
+    return s;
+}
+
+fs_status fs_track_reference(const fs_design_def *d, const fs_foot_geom *g, const fs_reference_def *def, double dt_s,
+                             int n, fs_track *out, fs_error *err)
+{
+    fs_reference_state *r = calloc((size_t)n, sizeof *r);
+    if (!r)
+        return fs_fail(err, FS_BAD_INPUT, "out of memory for a reference of %d samples", n);
+    fs_status s = fs_reference_run(d, g, def, dt_s, n, r, err);
+    if (s == FS_OK)
+        s = track_alloc(out, dt_s, n, FS_TRACK_ANGLES, err);
+    for (int i = 0; s == FS_OK && i < n; i++) {
+        memcpy(out->ankle[i], r[i].ankle_m, sizeof out->ankle[i]);
+        memcpy(out->angle[i], r[i].joint_rad, sizeof out->angle[i]);
+    }
+    free(r);
+    return s;
+}
+
+fs_status fs_track_compare(const fs_track *run, const fs_track *ref, fs_track_error *out, fs_error *err)
+{
+    memset(out, 0, sizeof *out);
+    double ratio = run->dt_s / ref->dt_s;
+    long stride = lround(ratio);
+    if (stride < 1 || fabs(ratio - (double)stride) > 1e-6 * ratio)
+        return fs_fail(err, FS_BAD_INPUT, "a step of %g s does not fall on the reference's %g s samples; give a whole "
+                       "multiple of it", run->dt_s, ref->dt_s);
+    if (run->nangles != ref->nangles)
+        return fs_fail(err, FS_BAD_INPUT, "paths with %d and %d hinge angles cannot be compared", run->nangles,
+                       ref->nangles);
+    int nangles = run->nangles;
+    double sum_m = 0, sum_rad = 0;
+    for (long i = 0; i < run->n && i * stride < ref->n; i++) {
+        const double *a = run->ankle[i], *b = ref->ankle[i * stride];
+        double d = sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+        out->max_m = fmax(out->max_m, d);
+        sum_m += d * d;
+        for (int k = 0; k < nangles; k++) {
+            double e = fabs(run->angle[i][k] - ref->angle[i * stride][k]);
+            out->max_rad = fmax(out->max_rad, e);
+            sum_rad += e * e;
+        }
+        out->compared++;
+    }
+    if (out->compared) {
+        out->rms_m = sqrt(sum_m / out->compared);
+        out->rms_rad = nangles ? sqrt(sum_rad / (out->compared * nangles)) : NAN;
+    }
+    if (!nangles)
+        out->max_rad = NAN;
+    return FS_OK;
+}

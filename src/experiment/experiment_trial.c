@@ -1,0 +1,164 @@
+/* experiment_trial.c: landing trials: draw a pose, drop the robot on its foot, decide the outcome. */
+#include "footsim/experiment/fs_trial.h"
+
+#include "footsim/sim/fs_sim.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#define DEG (M_PI / 180.0)
+
+/* No foot shape may end deeper below the terrain than this and count as landed, m. */
+static const double LANDED_MAX_PENETRATION_M = 1e-3;
+
+const char *fs_outcome_name(int outcome)
+{
+    static const char *names[] = {"landed", "fell", "failed_numerics"};
+    return outcome >= 0 && outcome <= 2 ? names[outcome] : "unknown";
+}
+
+/* Uniform in [-1, 1) from the seed and a stream number: the same on every machine. */
+static double symmetric(int seed, int stream)
+{
+    uint64_t z = ((uint64_t)(uint32_t)seed << 8) + (uint64_t)stream + 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return 2.0 * ((double)(z >> 11) * (1.0 / 9007199254740992.0)) - 1.0;
+}
+
+void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw)
+{
+    const fs_scenario_def *d = &sc->def;
+    memset(draw, 0, sizeof *draw);
+    draw->seed = seed;
+    draw->x_m = d->start_x_m + d->land_x_range_m * symmetric(seed, 1);
+    draw->y_m = d->start_y_m + d->land_y_range_m * symmetric(seed, 2);
+    draw->yaw_deg = d->yaw_deg + d->land_yaw_range_deg * symmetric(seed, 3);
+    draw->pitch_deg = d->pitch_deg + d->land_tilt_range_deg * symmetric(seed, 4);
+    draw->roll_deg = d->roll_deg + d->land_tilt_range_deg * symmetric(seed, 5);
+}
+
+/* What a trial watches while it runs. */
+typedef struct watch {
+    int touched;
+    int arrested;       /* the descent after touchdown has been stopped */
+    double touch_ankle[3];
+    double contact_sum;
+    long contact_steps;
+    double rest_since;
+} watch;
+
+static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, double h)
+{
+    double f[3];
+    fs_sim_ground_force(sim, f);
+    double tilt = fs_sim_robot_tilt(sim) / DEG;
+    out->peak_tilt_deg = fmax(out->peak_tilt_deg, tilt);
+    if (!w->touched && sim->contacts_now > 0) {
+        w->touched = 1;
+        out->touchdown_s = sim->time_s;
+        fs_sim_ankle(sim, w->touch_ankle);
+    }
+    if (!w->touched)
+        return;
+    out->peak_force_N = fmax(out->peak_force_N, f[2]);
+    w->contact_sum += sim->contacts_now;
+    w->contact_steps++;
+    /* the impact: the vertical impulse until the robot (or the foot) stops going down */
+    dBodyID lead = sim->robot ? sim->robot : sim->body[sim->geom->ankle_body];
+    if (!w->arrested) {
+        out->impact_impulse_Ns += f[2] * h;
+        w->arrested = dBodyGetLinearVel(lead)[2] >= 0;
+    }
+}
+
+static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
+{
+    double a[3];
+    fs_sim_ankle(sim, a);
+    out->end_time_s = sim->time_s;
+    out->final_tilt_deg = fs_sim_robot_tilt(sim) / DEG;
+    out->final_contacts = sim->contacts_now;
+    out->mean_contacts = w->contact_steps ? w->contact_sum / w->contact_steps : 0;
+    if (w->touched) {
+        out->ankle_drop_m = w->touch_ankle[2] - a[2];
+        out->slip_m = hypot(a[0] - w->touch_ankle[0], a[1] - w->touch_ankle[1]);
+        out->settle_time_s = (w->rest_since >= 0 ? w->rest_since : sim->time_s) - out->touchdown_s;
+    }
+}
+
+/* Steps until fallen, or at rest after touchdown, or out of time; classifies. */
+static fs_status run_trial(const fs_scenario *sc, fs_trial_result *out, fs_error *err)
+{
+    const fs_scenario_def *d = &sc->def;
+    fs_sim sim;
+    fs_status s = fs_sim_build(&sim, sc, NULL, err);
+    if (s != FS_OK)
+        return s;
+    watch w = {.rest_since = -1};
+    long nsteps = (long)ceil(d->duration_s / d->step_s - 1e-9);
+    int at_rest = 0, fell = 0;
+    for (long i = 0; i < nsteps && !at_rest && !fell; i++) {
+        fs_error step_err;
+        if (fs_sim_step(&sim, &step_err) != FS_OK) {
+            out->outcome = FS_FAILED_NUMERICS;
+            snprintf(out->failure, sizeof out->failure, "seed %d: %.480s", out->draw.seed, step_err.message);
+            break;
+        }
+        out->steps = i + 1;
+        observe_step(&sim, &w, out, d->step_s);
+        fell = fs_sim_robot_tilt(&sim) > d->fall_tilt_deg * DEG;
+        /* at rest: every body slow for rest_hold_s, after touchdown */
+        if (w.touched && fs_sim_max_speed(&sim) < d->rest_speed_m_per_s) {
+            if (w.rest_since < 0)
+                w.rest_since = sim.time_s;
+            at_rest = sim.time_s - w.rest_since >= d->rest_hold_s;
+        } else {
+            w.rest_since = -1;
+        }
+    }
+    finish(&sim, &w, out);
+    if (out->outcome != FS_FAILED_NUMERICS) {
+        int upright = out->final_tilt_deg < d->landed_tilt_deg;
+        int on_ground = sim.contacts_now > 0 && fs_sim_penetration(&sim) <= LANDED_MAX_PENETRATION_M;
+        out->outcome = !fell && at_rest && upright && on_ground ? FS_LANDED : FS_FELL;
+    }
+    fs_sim_destroy(&sim);
+    return FS_OK;
+}
+
+fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
+                       fs_trial_result *out, fs_error *err)
+{
+    enum { MAX_OVERRIDES = 240, DRAWN = 6 };
+    static fs_scenario sc;
+    memset(out, 0, sizeof *out);
+    if (noverrides > MAX_OVERRIDES)
+        return fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides in a trial", MAX_OVERRIDES);
+    /* the ranges to draw from, then the scenario again with the drawn pose and terrain seed */
+    fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, &sc, err);
+    if (s != FS_OK)
+        return s;
+    fs_trial_draw_pose(&sc, seed, &out->draw);
+    fs_scenario_free(&sc);
+    char text[DRAWN][64];
+    snprintf(text[0], sizeof text[0], "start.x_m=%.17g", out->draw.x_m);
+    snprintf(text[1], sizeof text[1], "start.y_m=%.17g", out->draw.y_m);
+    snprintf(text[2], sizeof text[2], "start.yaw_deg=%.17g", out->draw.yaw_deg);
+    snprintf(text[3], sizeof text[3], "start.pitch_deg=%.17g", out->draw.pitch_deg);
+    snprintf(text[4], sizeof text[4], "start.roll_deg=%.17g", out->draw.roll_deg);
+    snprintf(text[5], sizeof text[5], "rough.seed=%d", seed);
+    const char *all[MAX_OVERRIDES + DRAWN];
+    for (int i = 0; i < noverrides; i++)
+        all[i] = overrides[i];
+    for (int i = 0; i < DRAWN; i++)
+        all[noverrides + i] = text[i];
+    s = fs_scenario_load(scenario_path, all, noverrides + DRAWN, &sc, err);
+    if (s == FS_OK)
+        s = run_trial(&sc, out, err);
+    fs_scenario_free(&sc);
+    return s;
+}

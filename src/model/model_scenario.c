@@ -1,0 +1,216 @@
+/* model_scenario.c: the scenario schema and loading a scenario with its design. */
+#include "footsim/model/fs_scenario.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#define F(member) offsetof(fs_scenario_def, member)
+#define NUM(sec, name, member, lo, hi, flags, unit, dflt, help) \
+    {sec, name, FS_KEY_NUMBER, F(member), lo, hi, flags, 0, NULL, unit, dflt, help}
+#define POS FS_KEY_OPEN_MIN
+
+const fs_key fs_scenario_keys[] = {
+    {"scenario", "design", FS_KEY_PATH, F(design_path), 0, 0, 0, 0, NULL, "", "feet/biomimetic.ini",
+     "design file, relative to the scenario's folder"},
+    {"scenario", "terrain", FS_KEY_PATH, F(terrain_path), 0, 0, 0, 0, NULL, "", "",
+     "terrain file, relative to the scenario's folder; none: a flat plane of default material"},
+    {"scenario", "kind", FS_KEY_CHOICE, F(kind), 0, 0, 0, 0, "experiment|walk", "", "experiment",
+     "experiment: run, trial and campaign use it; walk: the walking machine (footsim walk)"},
+    NUM("start", "x_m", start_x_m, -100, 100, 0, "m", "0", "where the foot's heel contact starts"),
+    NUM("start", "y_m", start_y_m, -100, 100, 0, "m", "0", "where the foot's heel contact starts"),
+    NUM("start", "yaw_deg", yaw_deg, -180, 180, 0, "deg", "0", "the foot turned about z"),
+    NUM("start", "pitch_deg", pitch_deg, -45, 45, 0, "deg", "0", "the foot pitched, toe down positive"),
+    NUM("start", "roll_deg", roll_deg, -45, 45, 0, "deg", "0", "the foot rolled about x, left side up positive"),
+    NUM("start", "drop_m", drop_m, 0, 10, 0, "m", "0", "gap between the foot's lowest point and the highest terrain under it"),
+    NUM("start", "region_margin_m", region_margin_m, 0, 10, 0, "m", "0.05", "the heightfield covers the footprint plus this margin"),
+    NUM("load", "mass_kg", load_kg, 0, 1e4, 0, "kg", "26", "mass whose weight acts vertically at the ankle (Table I)"),
+    NUM("load", "tilt_deg", tilt_deg, -45, 45, 0, "deg", "0", "the foot tilted against the load: load and gravity turned about the lateral axis"),
+    NUM("load", "ramp_s", ramp_s, 0, 100, 0, "s", "0.02", "the load rises linearly over this time"),
+    NUM("run", "duration_s", duration_s, 0, 1e5, POS, "s", "1.0", "longest simulated time"),
+    NUM("run", "step_s", step_s, 1e-7, 0.1, 0, "s", "1e-4", "integration step"),
+    {"run", "stepper", FS_KEY_CHOICE, F(stepper), 0, 0, 0, 0, "step|quickstep", "", "step",
+     "step: dWorldStep (direct); quickstep: dWorldQuickStep (iterative)"},
+    {"run", "iterations", FS_KEY_INTEGER, F(iterations), 1, 10000, 0, 0, NULL, "", "50", "dWorldQuickStep iterations"},
+    {"run", "springs", FS_KEY_CHOICE, F(springs), 0, 0, 0, 0, "implicit|explicit", "", "implicit",
+     "spring-damper implementation: implicit (soft DBall rows) or explicit (forces)"},
+    NUM("run", "gravity_m_per_s2", gravity_m_per_s2, 0, 100, 0, "m/s^2", "9.81", "gravitational acceleration"),
+    NUM("run", "log_interval_s", log_interval_s, 0, 10, POS, "s", "1e-3", "time between trajectory rows"),
+    NUM("run", "rest_speed_m_per_s", rest_speed_m_per_s, 0, 10, 0, "m/s", "1e-4", "the run stops once every body is slower than this ..."),
+    NUM("run", "rest_hold_s", rest_hold_s, 0, 100, 0, "s", "0.05", "... for this long after the load has risen"),
+    NUM("run", "settle_band_m", settle_band_m, 0, 1, POS, "m", "1e-5", "settled once the ankle stays this close to its final height"),
+    NUM("run", "joint_erp", joint_erp, 0, 1, 0, "", "0.2", "error reduction of ODE's hinges and contacts' defaults"),
+    NUM("run", "joint_cfm", joint_cfm, 0, 1, 0, "", "1e-10", "constraint force mixing of ODE's hinges"),
+    NUM("run", "contact_layer_m", contact_layer_m, 0, 1e-3, 0, "m",
+        "1e-9", "depth ODE lets contacts sink before pushing back; keeps stiff contacts from chattering on and off"),
+    {"run", "tile_cells", FS_KEY_INTEGER, F(tile_cells), 2, 4096, 0, 0, NULL, "", "8",
+     "a heightfield is built as square tiles of this many cells a side (speed only)"},
+    NUM("robot", "mass_kg", robot_kg, 0, 1e4, 0, "kg", "0", "the passive body on the ankle (0: none); half of the paper's 52 kg person is 26"),
+    NUM("robot", "com_height_m", robot_com_height_m, 0, 10, POS, "m", "0.4", "its centre of mass above the ankle"),
+    NUM("robot", "com_forward_m", robot_com_forward_m, -1, 1, 0, "m", "0.035", "its centre of mass ahead of the ankle (puts the ZMP inside the footprint)"),
+    {"robot", "inertia_kgm2", FS_KEY_LIST, F(robot_inertia_kgm2), 0, 1e4, FS_KEY_OPEN_MIN, 3, NULL, "kg m^2", "1.4, 1.4, 0.1",
+     "its principal moments of inertia about x, y, z at the centre of mass"},
+    {"robot", "joint", FS_KEY_CHOICE, F(robot_joint), 0, 0, 0, 0, "rigid|achilles", "", "rigid",
+     "rigid: fixed to the ankle body; achilles: an ankle hinge with a heel-to-leg spring-damper"},
+    NUM("robot", "achilles_k_N_per_m", achilles_k_N_per_m, 0, 1e9, POS, "N/m", "1e6", "Achilles tendon stiffness (2 cm behind the ankle: k (0.02 m)^2 must beat m g com_height)"),
+    NUM("robot", "achilles_c_Ns_per_m", achilles_c_Ns_per_m, 0, 1e7, 0, "N s/m", "2000", "Achilles tendon damping"),
+    NUM("robot", "achilles_leg_anchor_m", achilles_leg_anchor_m, 0, 10, POS, "m", "0.1", "where the tendon meets the leg, above the ankle"),
+    NUM("landing", "x_range_m", land_x_range_m, 0, 10, 0, "m", "0.01", "landing position drawn within +- this of start.x_m"),
+    NUM("landing", "y_range_m", land_y_range_m, 0, 10, 0, "m", "0.01", "landing position drawn within +- this of start.y_m"),
+    NUM("landing", "yaw_range_deg", land_yaw_range_deg, 0, 180, 0, "deg", "10", "yaw drawn within +- this"),
+    NUM("landing", "tilt_range_deg", land_tilt_range_deg, 0, 45, 0, "deg", "2", "pitch and roll each drawn within +- this"),
+    NUM("landing", "landed_tilt_deg", landed_tilt_deg, 0, 90, POS, "deg", "15", "landed: at rest leaning less than this from upright"),
+    NUM("landing", "fall_tilt_deg", fall_tilt_deg, 0, 180, POS, "deg", "45", "fell: the lean passed this (the trial stops)"),
+    {"walk", "steps", FS_KEY_INTEGER, F(walk_steps), 1, 1000, 0, 0, NULL, "", "8", "walking machine: steps to take"},
+    NUM("walk", "step_length_m", step_length_m, 0, 10, POS, "m", "0.06", "forward travel of the foot each step"),
+    NUM("walk", "period_s", walk_period_s, 0, 100, POS, "s", "1.0", "one step: stance then swing"),
+    NUM("walk", "stance_fraction", stance_fraction, 0, 1, POS, "", "0.6", "share of the period the foot stands (60 % in human gait)"),
+    NUM("walk", "lift_m", lift_m, 0, 1, POS, "m", "0.02", "the actuator lifts the foot this high in swing"),
+    NUM("walk", "press_m", press_m, 0, 1, 0, "m", "0.004", "and lowers the carriage this far below first contact in stance"),
+    NUM("walk", "suspension_k_N_per_m", suspension_k_N_per_m, 0, 1e9, POS, "N/m", "3e4", "the leg's suspension to the carriage"),
+    NUM("walk", "suspension_c_Ns_per_m", suspension_c_Ns_per_m, 0, 1e7, 0, "N s/m", "1000", "its damping"),
+    NUM("walk", "fall_tilt_deg", walk_fall_tilt_deg, 0, 180, POS, "deg", "30", "a step fails when the ankle body tilts more than this"),
+    {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "8",
+     "contact points kept per foot shape against the terrain (after merging duplicates)"},
+    NUM("check", "max_speed_m_per_s", check_max_speed_m_per_s, 0, 1e6, POS, "m/s", "100",
+        "blown up: any point of a body faster than this (a 10 m fall lands at 14 m/s)"),
+    NUM("check", "max_loop_error_m", check_max_loop_error_m, 0, 1, POS, "m", "1e-3",
+        "drifting: a hinge's two anchors this far apart (the shortest link is 15 mm)"),
+    NUM("check", "energy_margin_J", check_energy_margin_J, 0, 1e9, POS, "J", "1",
+        "drifting: energy above its start plus the load's and drivers' work by more than this ..."),
+    NUM("check", "energy_margin_rel", check_energy_margin_rel, 0, 10, 0, "", "0.1",
+        "... plus this fraction of the work put in (docs/bench.md derives both)"),
+    {"check", "energy_every", FS_KEY_INTEGER, F(check_energy_every), 1, 1000000, 0, 0, NULL, "", "1",
+     "the energy check runs every this many steps (the other checks every step)"},
+    {"run", "collide", FS_KEY_CHOICE, F(collide_all), 0, 0, 0, 0, "ground|all", "", "ground",
+     "ground: each foot shape against the terrain only; all: every pair of shapes, foot against foot too "
+     "(slower; what footsim bench speed compares)"},
+    NUM("run", "auto_disable_s", auto_disable_s, 0, 100, 0, "s", "0",
+        "0: off; else ODE stops stepping a body slower than rest_speed_m_per_s (turning slower than that "
+        "over 1 cm) for this long"),
+};
+const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);
+
+static int has_section(const fs_key *keys, int n, const char *assignment)
+{
+    const char *dot = strchr(assignment, '.');
+    size_t len = dot ? (size_t)(dot - assignment) : strlen(assignment);
+    for (int i = 0; i < n; i++)
+        if (strlen(keys[i].section) == len && !strncmp(keys[i].section, assignment, len))
+            return 1;
+    return 0;
+}
+
+static void base_name(const char *path, char *out, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    if (n >= size)
+        n = size - 1;
+    memcpy(out, base, n);
+    out[n] = 0;
+}
+
+/* Which of the three files an override belongs to: 0 scenario, 1 terrain, 2 design. */
+static int override_target(const char *assignment)
+{
+    if (has_section(fs_scenario_keys, fs_scenario_nkeys, assignment))
+        return 0;
+    return has_section(fs_terrain_keys, fs_terrain_nkeys, assignment) ? 1 : 2;
+}
+
+static fs_status crop_terrain(fs_scenario *sc, fs_error *err)
+{
+    double box[4];
+    fs_scenario_footprint(sc, box);
+    double m = sc->def.region_margin_m;
+    if (sc->def.kind == 1) /* the walking machine's path */
+        box[1] += sc->def.walk_steps * sc->def.step_length_m;
+    return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
+}
+
+fs_status fs_scenario_load(const char *path, const char *const *overrides, int noverrides, fs_scenario *sc,
+                           fs_error *err)
+{
+    enum { MAX_OVERRIDES = 256 };
+    if (noverrides > MAX_OVERRIDES)
+        return fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides", MAX_OVERRIDES);
+    const char *part[3][MAX_OVERRIDES];
+    int n[3] = {0, 0, 0};
+    for (int i = 0; i < noverrides; i++) {
+        int t = override_target(overrides[i]);
+        part[t][n[t]++] = overrides[i];
+    }
+    memset(sc, 0, sizeof *sc);
+    snprintf(sc->path, sizeof sc->path, "%s", path);
+    base_name(path, sc->name, sizeof sc->name);
+    fs_config cfg;
+    fs_status s = fs_config_load(&cfg, path, err);
+    for (int i = 0; s == FS_OK && i < n[0]; i++)
+        s = fs_config_override(&cfg, part[0][i], err);
+    if (s == FS_OK)
+        s = fs_config_bind(&cfg, fs_scenario_keys, fs_scenario_nkeys, &sc->def, err);
+    if (s == FS_OK && sc->def.log_interval_s < sc->def.step_s) {
+        char where[FS_PATH_MAX + 80];
+        s = fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g; make it at least one step",
+                    fs_config_where(&cfg, "run", "log_interval_s", where, sizeof where), sc->def.log_interval_s,
+                    sc->def.step_s);
+    }
+    fs_config_free(&cfg);
+    if (s == FS_OK)
+        s = fs_design_load(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, err);
+    if (s == FS_OK)
+        s = fs_terrain_load(sc->def.terrain_path, part[1], n[1], &sc->terrain, err);
+    if (s == FS_OK)
+        s = crop_terrain(sc, err);
+    return s;
+}
+
+void fs_scenario_free(fs_scenario *sc) { fs_terrain_free(&sc->terrain); }
+
+void fs_scenario_footprint(const fs_scenario *sc, double box[4])
+{
+    const fs_foot_geom *g = &sc->geom;
+    double yaw = sc->def.yaw_deg * M_PI / 180, c = cos(yaw), s = sin(yaw);
+    box[0] = box[2] = INFINITY;
+    box[1] = box[3] = -INFINITY;
+    /* every contact shape's extent, turned by the yaw and moved to the start */
+    for (int i = 0; i < g->nspheres + 4 * g->has_box; i++) {
+        double x, y, r;
+        if (i < g->nspheres) {
+            x = g->sphere[i].centre.x;
+            y = g->sphere[i].centre.y;
+            r = g->sphere[i].radius_m;
+        } else {
+            int k = i - g->nspheres;
+            x = g->box_centre.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x;
+            y = g->box_centre.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y;
+            r = 0;
+        }
+        double wx = sc->def.start_x_m + c * x - s * y, wy = sc->def.start_y_m + s * x + c * y;
+        box[0] = fmin(box[0], wx - r);
+        box[1] = fmax(box[1], wx + r);
+        box[2] = fmin(box[2], wy - r);
+        box[3] = fmax(box[3], wy + r);
+    }
+}
+
+fs_status fs_scenario_for_design(const char *design_path, const char *const *overrides, int noverrides,
+                                 fs_scenario *sc, fs_error *err)
+{
+    memset(sc, 0, sizeof *sc);
+    snprintf(sc->path, sizeof sc->path, "%s", design_path);
+    base_name(design_path, sc->name, sizeof sc->name);
+    fs_config empty = {.path = "(scenario defaults)"};
+    /* Every key but the design path (the first) takes its default: a flat plane of default material. */
+    fs_status s = fs_config_bind(&empty, fs_scenario_keys + 1, fs_scenario_nkeys - 1, &sc->def, err);
+    if (s == FS_OK)
+        s = fs_terrain_load("", NULL, 0, &sc->terrain, err);
+    if (s != FS_OK)
+        return s;
+    snprintf(sc->def.design_path, sizeof sc->def.design_path, "%s", design_path);
+    return fs_design_load(design_path, overrides, noverrides, &sc->design, &sc->geom, err);
+}

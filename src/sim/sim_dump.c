@@ -1,0 +1,136 @@
+/* sim_dump.c: the model as ODE holds it, as JSON. */
+
+#include "footsim/sim/fs_sim.h"
+
+#include <cJSON.h>
+#include <string.h>
+
+static cJSON *vec(const double *v, int n) { return cJSON_CreateDoubleArray(v, n); }
+
+static const char *body_name(const fs_sim *sim, dBodyID b)
+{
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        if (sim->body[i] == b)
+            return sim->geom->body[i].name;
+    return "world";
+}
+
+static cJSON *bodies_json(const fs_sim *sim)
+{
+    cJSON *arr = cJSON_CreateArray();
+    for (int i = 0; i < sim->geom->nbodies; i++) {
+        dBodyID b = sim->body[i];
+        dMass m;
+        dBodyGetMass(b, &m);
+        double I[9], p[3], q[4];
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                I[3 * r + c] = m.I[4 * r + c];
+        memcpy(p, dBodyGetPosition(b), sizeof p);
+        memcpy(q, dBodyGetQuaternion(b), sizeof q);
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "name", sim->geom->body[i].name);
+        cJSON_AddNumberToObject(o, "mass_kg", m.mass);
+        cJSON_AddItemToObject(o, "inertia_kgm2", vec(I, 9));
+        cJSON_AddItemToObject(o, "pos_m", vec(p, 3));
+        cJSON_AddItemToObject(o, "quat_wxyz", vec(q, 4));
+        cJSON_AddItemToArray(arr, o);
+    }
+    return arr;
+}
+
+static cJSON *joints_json(const fs_sim *sim)
+{
+    cJSON *arr = cJSON_CreateArray();
+    for (int i = 0; i < sim->geom->nhinges; i++) {
+        dJointID j = sim->hinge[i];
+        dVector3 a, x;
+        dJointGetHingeAnchor(j, a);
+        dJointGetHingeAxis(j, x);
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "name", sim->geom->hinge[i].name);
+        cJSON_AddStringToObject(o, "type", "hinge");
+        cJSON_AddStringToObject(o, "body1", body_name(sim, dJointGetBody(j, 0)));
+        cJSON_AddStringToObject(o, "body2", body_name(sim, dJointGetBody(j, 1)));
+        cJSON_AddItemToObject(o, "anchor_m", vec(a, 3));
+        cJSON_AddItemToObject(o, "axis", vec(x, 3));
+        cJSON_AddItemToArray(arr, o);
+    }
+    return arr;
+}
+
+static cJSON *springs_json(const fs_sim *sim)
+{
+    cJSON *arr = cJSON_CreateArray();
+    for (int i = 0; i < sim->geom->nsprings; i++) {
+        const fs_spring *s = &sim->spring[i];
+        double p1[3], p2[3];
+        fs_spring_anchors(s, p1, p2);
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "name", sim->geom->spring[i].name);
+        cJSON_AddStringToObject(o, "body1", body_name(sim, s->body1));
+        cJSON_AddStringToObject(o, "body2", s->body2 ? body_name(sim, s->body2) : "world");
+        cJSON_AddItemToObject(o, "anchor1_m", vec(p1, 3));
+        cJSON_AddItemToObject(o, "anchor2_m", vec(p2, 3));
+        cJSON_AddNumberToObject(o, "k_N_per_m", s->k);
+        cJSON_AddNumberToObject(o, "c_Ns_per_m", s->c);
+        cJSON_AddNumberToObject(o, "rest_length_m", s->rest);
+        cJSON_AddItemToArray(arr, o);
+    }
+    return arr;
+}
+
+static cJSON *geoms_json(const fs_sim *sim)
+{
+    cJSON *arr = cJSON_CreateArray();
+    for (int i = 0; i < sim->nshapes; i++) {
+        dGeomID g = sim->shape[i];
+        double size[3], p[3], q[4];
+        int n;
+        const char *type;
+        if (dGeomGetClass(g) == dSphereClass) {
+            type = "sphere";
+            size[0] = dGeomSphereGetRadius(g);
+            n = 1;
+        } else {
+            dVector3 l;
+            dGeomBoxGetLengths(g, l);
+            memcpy(size, l, sizeof size);
+            type = "box";
+            n = 3;
+        }
+        dQuaternion qq;
+        memcpy(p, dGeomGetPosition(g), sizeof p);
+        dGeomGetQuaternion(g, qq);
+        memcpy(q, qq, sizeof q);
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "body", body_name(sim, dGeomGetBody(g)));
+        cJSON_AddStringToObject(o, "type", type);
+        cJSON_AddItemToObject(o, "size_m", vec(size, n));
+        cJSON_AddItemToObject(o, "pos_m", vec(p, 3));
+        cJSON_AddItemToObject(o, "quat_wxyz", vec(q, 4));
+        cJSON_AddItemToArray(arr, o);
+    }
+    return arr;
+}
+
+cJSON *fs_model_json(const fs_scenario *sc, fs_error *err)
+{
+    fs_sim sim;
+    fs_sim_options opts = {.with_ground = 0, .hold_rear_foot = 0};
+    if (fs_sim_build(&sim, sc, &opts, err) != FS_OK)
+        return NULL;
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddStringToObject(root, "design", sc->def.design_path);
+    cJSON_AddStringToObject(root, "foot", sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic");
+    cJSON_AddStringToObject(root, "frame", "x forward, y left, z up; ground z = 0");
+    cJSON_AddNumberToObject(root, "total_mass_kg", sc->geom.total_mass_kg);
+    double ankle[3] = {sc->geom.ankle.x, sc->geom.ankle.y, sc->geom.ankle.z};
+    cJSON_AddItemToObject(root, "ankle_m", vec(ankle, 3));
+    cJSON_AddItemToObject(root, "bodies", bodies_json(&sim));
+    cJSON_AddItemToObject(root, "joints", joints_json(&sim));
+    cJSON_AddItemToObject(root, "springs", springs_json(&sim));
+    cJSON_AddItemToObject(root, "geoms", geoms_json(&sim));
+    fs_sim_destroy(&sim);
+    return root;
+}

@@ -1,0 +1,91 @@
+/* sim_spring.c: spring-damper joints, implicit (soft DBall) and explicit (forces). */
+#include "footsim/sim/fs_spring.h"
+
+#include <math.h>
+#include <string.h>
+
+void fs_spring_init(fs_spring *s, dWorldID world, fs_spring_impl impl, dBodyID body1, dBodyID body2,
+                    const double p1[3], const double p2[3], double k, double c, double rest)
+{
+    memset(s, 0, sizeof *s);
+    s->impl = impl;
+    s->body1 = body1;
+    s->body2 = body2;
+    s->k = k;
+    s->c = c;
+    s->rest = rest;
+    dBodyGetPosRelPoint(body1, p1[0], p1[1], p1[2], s->local1);
+    if (body2)
+        dBodyGetPosRelPoint(body2, p2[0], p2[1], p2[2], s->local2);
+    else
+        memcpy(s->local2, p2, 3 * sizeof(double));
+    if (impl == FS_SPRING_IMPLICIT) {
+        s->joint = dJointCreateDBall(world, 0);
+        dJointAttach(s->joint, body1, body2);
+        dJointSetDBallAnchor1(s->joint, p1[0], p1[1], p1[2]);
+        dJointSetDBallAnchor2(s->joint, p2[0], p2[1], p2[2]);
+        dJointSetDBallDistance(s->joint, rest);
+    }
+}
+
+void fs_spring_anchors(const fs_spring *s, double p1[3], double p2[3])
+{
+    dVector3 a, b;
+    dBodyGetRelPointPos(s->body1, s->local1[0], s->local1[1], s->local1[2], a);
+    if (s->body2)
+        dBodyGetRelPointPos(s->body2, s->local2[0], s->local2[1], s->local2[2], b);
+    else
+        memcpy(b, s->local2, sizeof b);
+    memcpy(p1, a, 3 * sizeof(double));
+    memcpy(p2, b, 3 * sizeof(double));
+}
+
+/* Anchor positions, the unit vector from anchor 1 to 2, the length and its rate. */
+static double spring_line(const fs_spring *s, double p1[3], double p2[3], double u[3], double *rate)
+{
+    dVector3 v1, v2 = {0, 0, 0, 0};
+    fs_spring_anchors(s, p1, p2);
+    dBodyGetRelPointVel(s->body1, s->local1[0], s->local1[1], s->local1[2], v1);
+    if (s->body2)
+        dBodyGetRelPointVel(s->body2, s->local2[0], s->local2[1], s->local2[2], v2);
+    double len = 0;
+    for (int i = 0; i < 3; i++) {
+        u[i] = p2[i] - p1[i];
+        len += u[i] * u[i];
+    }
+    len = sqrt(len);
+    double r = 0;
+    for (int i = 0; i < 3; i++) {
+        u[i] = len > 0 ? u[i] / len : 0;
+        r += u[i] * (v2[i] - v1[i]);
+    }
+    *rate = r;
+    return len;
+}
+
+void fs_spring_prepare(fs_spring *s, double h)
+{
+    if (s->impl == FS_SPRING_IMPLICIT) {
+        if (s->step != h) {
+            double denom = h * s->k + s->c;
+            dJointSetDBallParam(s->joint, dParamERP, h * s->k / denom);
+            dJointSetDBallParam(s->joint, dParamCFM, 1.0 / denom);
+            s->step = h;
+        }
+        return;
+    }
+    double p1[3], p2[3], u[3], rate;
+    double len = spring_line(s, p1, p2, u, &rate);
+    double f = s->k * (len - s->rest) + s->c * rate;
+    dBodyAddForceAtPos(s->body1, f * u[0], f * u[1], f * u[2], p1[0], p1[1], p1[2]);
+    if (s->body2)
+        dBodyAddForceAtPos(s->body2, -f * u[0], -f * u[1], -f * u[2], p2[0], p2[1], p2[2]);
+}
+
+fs_spring_state fs_spring_measure(const fs_spring *s)
+{
+    double p1[3], p2[3], u[3], rate;
+    double len = spring_line(s, p1, p2, u, &rate);
+    double stretch = len - s->rest;
+    return (fs_spring_state){len, rate, s->k * stretch + s->c * rate, 0.5 * s->k * stretch * stretch};
+}
