@@ -24,6 +24,7 @@ typedef struct cli_args {
     const char *seed;               /* --seed N */
     const char *jobs;               /* -j N: worker processes (campaign) */
     int quick;                      /* --quick: a smaller sweep (bench) */
+    int replace;                    /* --replace: replace a non-empty --out footsim did not make */
 } cli_args;
 
 /* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open
@@ -40,6 +41,10 @@ int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir);
 /* render-compare A B: both runs side by side in DIR/frames/, and DIR/filmstrip.png
  * (app/cli_compare.c; app/cli_render.c without the renderer: exit 2). */
 int cli_render_compare(const cli_args *a);
+
+/* What each command writes in its results folder (NULL-terminated): an earlier version's folder,
+ * without the marker, is recognised by these (fs_outdir_open). */
+extern const char *const cli_run_files[], *const cli_campaign_files[], *const cli_compare_files[];
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);
@@ -71,8 +76,9 @@ double cli_load_average(void);
 /* Whether an executable is on PATH. */
 int cli_have_program(const char *name);
 
-/* Runs 'gnuplot -e "out='TMP'" SCRIPT' in dir and renames TMP to dir/png_name: the chart whole or
- * not at all. Without gnuplot, or when it fails, says so (naming `who`) and returns 0. */
+/* Runs 'gnuplot -e "out='TMP'" SCRIPT' in dir and installs TMP as dir/png_name once it is a whole
+ * PNG (fs_png_check): the chart whole or not at all. Without gnuplot, or when it fails, says so
+ * (naming `who`) and returns 0; a damaged chart (a full disk) is FS_IO, said. */
 int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who);
 
 /* Prints "footsim: message" to stderr and returns the status. */

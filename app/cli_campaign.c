@@ -304,7 +304,7 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
 }
 
 /* Summarizes, writes every file (summary.json last), checks the expectations. */
-static int finish(const fs_campaign *c, const fs_trial_result *results, const char *dir)
+static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdir *out)
 {
     int nrows = c->nfeet * c->nterrains;
     fs_campaign_row *rows = malloc((size_t)nrows * sizeof *rows);
@@ -312,17 +312,20 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, const ch
         return cli_report(FS_IO, "out of memory");
     fs_campaign_summarize(c, results, rows);
     fs_error err;
-    fs_status s = fs_campaign_write(c, results, rows, dir, &err);
+    /* everything goes into the partial folder, swapped in whole at the end */
+    fs_status s = fs_campaign_write(c, results, rows, out->partial, &err);
     if (s == FS_OK)
-        s = fs_campaign_write_chart(c, rows, dir, &err);
-    if (s == FS_OK)
-        cli_gnuplot(dir, "chart.gp", "success.png", "campaign");
-    if (s == FS_OK)
-        s = fs_campaign_write_summary(c, rows, dir, &err);
-    if (s != FS_OK) {
+        s = fs_campaign_write_chart(c, rows, out->partial, &err);
+    int g = s == FS_OK ? cli_gnuplot(out->partial, "chart.gp", "success.png", "campaign") : 0;
+    if (s == FS_OK && !g)
+        s = fs_campaign_write_summary(c, rows, out->partial, &err);
+    if (s == FS_OK && !g)
+        s = fs_outdir_commit(out, &err);
+    if (s != FS_OK || g) {
         free(rows);
-        return fail(&err);
+        return g ? g : fail(&err);
     }
+    const char *dir = out->path;
     printf("campaign %s: %d trials\n", c->name, fs_campaign_ntrials(c));
     print_rows(c, rows);
     int failed = 0;
@@ -349,13 +352,15 @@ int cli_campaign(const cli_args *a)
         return fail(&err);
     char dir[FS_PATH_MAX + 64];
     snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c.name);
-    if (fs_make_dirs(dir, &err) != FS_OK)
+    static fs_outdir out;
+    if (fs_outdir_open(&out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK)
         return fail(&err);
     pool *p = calloc(1, sizeof *p);
     int ntrials = fs_campaign_ntrials(&c);
     fs_trial_result *results = p ? calloc((size_t)ntrials, sizeof *results) : NULL;
     if (!results) {
         free(p);
+        fs_outdir_abort(&out);
         return cli_report(FS_IO, "out of memory");
     }
     const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED");
@@ -364,7 +369,8 @@ int cli_campaign(const cli_args *a)
     if (run_trials(p, jobs, &err) != FS_OK)
         s = fail(&err);
     else
-        s = finish(&c, results, dir);
+        s = finish(&c, results, &out);
+    fs_outdir_abort(&out); /* when it was not committed */
     free(results);
     free(p);
     return s;

@@ -13,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 /* The stiffness model and ODE must agree this closely (issue 2's acceptance bound). */
 static const double STIFFNESS_TOLERANCE = 0.01;
@@ -30,44 +29,39 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);
+    else if (!strcmp(sc->name, ".") || !strcmp(sc->name, "..") || !sc->name[0])
+        return cli_report(FS_BAD_INPUT, "run: the scenario's name cannot name a results folder; give --out DIR");
     else
         snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
-    /* the folder must be writable, and the frame options right, before anything is simulated;
-     * everything goes to a partial folder beside it, swapped in whole at the end */
-    char partial[FS_PATH_MAX + 96];
-    snprintf(partial, sizeof partial, "%s.partial.%ld", dir, (long)getpid());
-    int existed = access(dir, F_OK) == 0; /* a failed run leaves no new (empty) results folder */
-    if (fs_make_dirs(dir, &err) != FS_OK || fs_make_dirs(partial, &err) != FS_OK)
+    /* the folder must be one footsim may replace, and the frame options right, before anything is
+     * simulated; everything goes to a partial folder beside it, swapped in whole at the end */
+    static fs_outdir out;
+    if (fs_outdir_open(&out, dir, cli_run_files, a->replace, "--out", &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     if (a->frames) {
-        int fs = cli_frames_open(a, sc, partial, &frames, &observer);
+        int fs = cli_frames_open(a, sc, out.partial, &frames, &observer);
         if (fs) {
-            fs_remove_tree(partial);
-            if (!existed)
-                rmdir(dir);
+            fs_outdir_abort(&out);
             return fs;
         }
         obs = &observer;
     }
     fs_status rs = fs_run(sc, obs, res, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, dir) : 0;
-    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, partial, &err)) == FS_OK)
-        rs = fs_commit_dir(partial, dir, &err);
-    else
-        fs_remove_tree(partial);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, out.partial, &err)) == FS_OK)
+        rs = fs_outdir_commit(&out, &err);
     if (rs != FS_OK || fstatus) {
-        if (!existed)
-            rmdir(dir);
+        fs_outdir_abort(&out);
         fs_run_free(res);
         return fstatus ? fstatus : fail(&err);
     }
     printf("%s: %s foot, %.1f kg at %.0f deg: ankle drop %.3f mm, settled after %.3f s (%s at t = %.3f s)\n"
            "  results: %s/metrics.json, %s/trajectory.csv\n",
            sc->name, sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", sc->def.load_kg, sc->def.tilt_deg,
-           res->ankle_drop_m * 1e3, res->settle_time_s, res->at_rest ? "at rest" : "stopped", res->end_time_s, dir,
-           dir);
+           res->ankle_drop_m * 1e3, res->settle_time_s, res->at_rest ? "at rest" : "stopped", res->end_time_s,
+           out.path, out.path);
     return 0;
 }
 

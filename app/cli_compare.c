@@ -170,9 +170,6 @@ static int load_pair(const cli_args *a, fs_scenario sc[2], char *dir, size_t siz
                               foot_name(&sc[1]));
     if (n >= (int)size)
         return cli_report(FS_BAD_INPUT, "--out: path too long");
-    fs_error err;
-    if (fs_make_dirs(dir, &err) != FS_OK)
-        return cli_report(err.status, err.message);
     return 0;
 }
 
@@ -199,27 +196,36 @@ int cli_render_compare(const cli_args *a)
                                         "(the same file twice with --set b:foot.kind=flat compares the feet)");
     static fs_scenario sc[2];
     static char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
+    static fs_outdir out;
+    fs_error err;
     cli_frame_opts o;
     fs_render *r[2] = {NULL, NULL};
     scene_store run[2] = {{0}, {0}};
     int s = load_pair(a, sc, dir, sizeof dir);
+    /* the folder must be one footsim may replace before anything is simulated; everything goes to
+     * a partial folder beside it, swapped in whole at the end: a failure leaves the old one */
+    if (!s && fs_outdir_open(&out, dir, cli_compare_files, a->replace, "--out", &err) != FS_OK)
+        s = cli_report(err.status, err.message);
     if (!s)
-        s = prepare(a, sc, dir, &o, frames_dir, r);
+        s = prepare(a, sc, out.partial, &o, frames_dir, r);
     for (int k = 0; k < 2 && !s; k++)
         s = run_stored(&sc[k], o.fps, &run[k]);
     if (!s)
         s = write_frames(r[0], &o, run, frames_dir);
     if (!s)
-        s = write_filmstrip(r[1], &o, run, dir);
+        s = write_filmstrip(r[1], &o, run, out.partial);
+    if (!s && o.video)
+        s = cli_frames_video(out.partial, frames_dir, o.fps, run[0].n > run[1].n ? run[0].n : run[1].n, dir);
+    if (!s && fs_outdir_commit(&out, &err) != FS_OK)
+        s = cli_report(err.status, err.message);
     if (!s) {
         int n = run[0].n > run[1].n ? run[0].n : run[1].n;
-        printf("render-compare: %s (%s foot, left) beside %s (%s foot, right)\n  frames: %s/000000.png ... %06d.png "
+        printf("render-compare: %s (%s foot, left) beside %s (%s foot, right)\n  frames: %s/frames/000000.png ... %06d.png "
                "(%d at %g per simulated second, %dx%d, camera %s)\n  filmstrip: %s/filmstrip.png\n",
-               sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), frames_dir, n - 1, n, o.fps, o.width,
-               o.height, fs_render_camera_names[o.camera], dir);
-        if (o.video)
-            s = cli_frames_video(dir, frames_dir, o.fps, n, dir);
+               sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), out.path, n - 1, n, o.fps, o.width,
+               o.height, fs_render_camera_names[o.camera], out.path);
     }
+    fs_outdir_abort(&out); /* when it was not committed */
     for (int k = 0; k < 2; k++) {
         fs_render_close(r[k]);
         store_free(&run[k]);

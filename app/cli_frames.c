@@ -6,7 +6,6 @@
 #include "footsim/experiment/fs_run.h"
 #include "footsim/sim/fs_sim.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <spawn.h>
@@ -73,41 +72,14 @@ int cli_frame_opts_parse(const cli_args *a, double step_s, int min_w, cli_frame_
 
 /* ---- the folder and the files --------------------------------------------------------------- */
 
-/* A frame's file name: six digits and .png. */
-static int is_frame_name(const char *name)
-{
-    for (int i = 0; i < 6; i++)
-        if (name[i] < '0' || name[i] > '9')
-            return 0;
-    return !strcmp(name + 6, ".png");
-}
-
 int cli_frames_folder(const char *dir, char *frames_dir, size_t size)
 {
     fs_error err;
     if (snprintf(frames_dir, size, "%s/frames", dir) >= (int)size)
         return cli_report(FS_BAD_INPUT, "--out: path too long");
+    /* dir is a fresh partial folder (fs_outdir_open): no earlier run's frames can mix in */
     if (fs_make_dirs(frames_dir, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    /* an earlier run's frames would otherwise mix with this run's */
-    DIR *d = opendir(frames_dir);
-    for (struct dirent *e; d && (e = readdir(d));) {
-        char path[CLI_FRAMES_PATH];
-        if (is_frame_name(e->d_name) && snprintf(path, sizeof path, "%s/%s", frames_dir, e->d_name) < (int)sizeof path)
-            remove(path);
-    }
-    if (d)
-        closedir(d);
-    /* a frame can be written there */
-    char probe[CLI_FRAMES_PATH], temp[CLI_FRAMES_PATH + 64];
-    snprintf(probe, sizeof probe, "%s/000000.png", frames_dir);
-    FILE *f = fs_open_temp(probe, temp, sizeof temp, &err);
-    if (!f) {
-        fprintf(stderr, "footsim: %s: cannot write frames there (%s); choose a writable --out\n", frames_dir,
-                err.message);
-        return FS_BAD_INPUT;
-    }
-    fs_commit_file(f, temp, probe, 0, &err);
     return 0;
 }
 
@@ -159,12 +131,26 @@ int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nf
                shown_dir);
         return 0;
     }
-    if (s != 0 || rename(temp, path) != 0) {
+    fs_error err;
+    if (s != 0) {
         remove(temp);
         fprintf(stderr, "footsim: %s: ffmpeg could not encode the frames (status %d); the frames are in %s/\n", path,
                 s, frames_dir);
         return FS_IO;
     }
+    /* ffmpeg may end well having written part of it (a full disk): an MP4 starts with its ftyp box */
+    char head[8] = {0};
+    FILE *f = fopen(temp, "rb");
+    int whole = f && fread(head, 1, sizeof head, f) == sizeof head && !memcmp(head + 4, "ftyp", 4);
+    if (f)
+        fclose(f);
+    if (!whole) {
+        remove(temp);
+        fprintf(stderr, "footsim: %s: ffmpeg's video came out damaged; nothing was installed\n", path);
+        return FS_IO;
+    }
+    if (fs_commit_temp(temp, path, &err) != FS_OK)
+        return cli_report(err.status, err.message);
     printf("  video: %s/video.mp4\n", shown_dir);
     return 0;
 }

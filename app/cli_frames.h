@@ -22,8 +22,7 @@ typedef struct cli_frame_opts {
  * to 8192) and --camera; fills the defaults (60, 1280x720, side). */
 int cli_frame_opts_parse(const cli_args *a, double step_s, int min_w, cli_frame_opts *o);
 
-/* Makes DIR/frames, removes the NNNNNN.png an earlier run left there and checks that a frame
- * can be written; frames_dir gets the folder's path. */
+/* Makes DIR/frames (DIR a fresh partial results folder); frames_dir gets the folder's path. */
 int cli_frames_folder(const char *dir, char *frames_dir, size_t size);
 
 /* Writes r's frame as frames_dir/NNNNNN.png (index, six digits), whole or not at all. */

@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
+#include "footsim/io/fs_output.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -14,14 +15,19 @@ typedef struct command {
     const char *help;
 } command;
 
+const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames", "video.mp4", NULL};
+const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
+                                          "chart.dat", "chart.gp", NULL};
+const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
+
 static const command commands[] = {
-    {"run", cli_run, "SCENARIO", "--out --set --frames --fps --size --camera --video",
+    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --video",
      "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
      "  (default DIR: results/runs/<scenario name>/).\n"
      "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
      "  (1280x720), seen by --camera side|front|three-quarter|follow (side); --video also encodes\n"
      "  DIR/video.mp4 with ffmpeg."},
-    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --set --fps --size --camera --video",
+    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --video",
      "Runs both scenarios and writes their frames side by side (A left, B right) to DIR/frames/ and key\n"
      "  frames from touch-down to rest to DIR/filmstrip.png (default DIR: results/compare/A-foot_vs_B-foot/).\n"
      "  --set a:KEY=V changes A only, b:KEY=V B only, KEY=V both. Frame options as for run."},
@@ -38,7 +44,7 @@ static const command commands[] = {
     {"trial", cli_trial, "SCENARIO", "--seed --json --set",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed or fell) and the metrics."},
-    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --set",
+    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: all cores) and writes DIR/summary.md, summary.csv, summary.json,\n"
      "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
@@ -79,7 +85,9 @@ static void usage(FILE *out)
 static void command_help(const command *c)
 {
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
-    if (strstr(c->options, "--out"))
+    if (strstr(c->options, "--replace"))
+        printf(" [--out DIR [--replace]]");
+    else if (strstr(c->options, "--out"))
         printf(" [--out DIR]");
     if (strstr(c->options, "-j "))
         printf(" [-j N]");
@@ -94,6 +102,10 @@ static void command_help(const command *c)
     if (strstr(c->options, "--set"))
         printf(" [--set section.key=value]...");
     printf("\n\n  %s\n", c->help);
+    if (strstr(c->options, "--replace"))
+        printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
+               "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",
+               FS_MARKER);
     if (strstr(c->options, "--set"))
         printf("\n  --set overrides one value of the file (or, for a scenario, of its design) without editing\n"
                "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
@@ -129,6 +141,10 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             fprintf(stderr, "footsim %s: --height needs two values, X and Y in metres\n", c->name);
             return 2;
         }
+        if (!strcmp(arg, "--out") && a->out) {
+            fprintf(stderr, "footsim %s: --out given twice (%s and %s); give one folder\n", c->name, a->out, argv[i + 1]);
+            return 2;
+        }
         if (!strcmp(arg, "--out"))
             a->out = argv[++i];
         else if (!strcmp(arg, "--height")) {
@@ -144,6 +160,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->jobs = argv[++i];
         else if (!strncmp(arg, "-j", 2) && strstr(c->options, "-j "))
             a->jobs = arg + 2;
+        else if (!strcmp(arg, "--replace"))
+            a->replace = 1;
         else if (!strcmp(arg, "--quick"))
             a->quick = 1;
         else if (!strcmp(arg, "--json"))

@@ -1,6 +1,7 @@
 /* cli_terrain.c: the terrain subcommand: heights, a picture, a summary. */
 #include "cli.h"
 
+#include "footsim/io/fs_output.h"
 #include "footsim/io/fs_png.h"
 #include "footsim/model/fs_scenario.h"
 
@@ -97,6 +98,8 @@ int cli_terrain(const cli_args *a)
 {
     static fs_terrain t;
     fs_error err;
+    if (a->png && fs_check_file_target(a->png, "--png", &err) != FS_OK)
+        return cli_report(err.status, err.message);
     if (fs_terrain_load(a->input, a->set, a->nset, &t, &err) != FS_OK)
         return cli_report(err.status, err.message);
     int s = 0;

@@ -271,24 +271,21 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
 
 /* ---- the outputs -------------------------------------------------------------------------- */
 
-/* An output file written whole or not at all (fs_open_temp, then fs_commit_file). */
-typedef struct out_file { FILE *f; char path[2 * FS_PATH_MAX], temp[2 * FS_PATH_MAX + 64]; } out_file;
+/* What the output files are made of (each written whole or not at all by fs_write_in). */
+typedef struct report {
+    const row *rows;
+    int n;
+    const scene *scenes;
+    int nscenes;
+    const char *machine;
+    int quick;
+} report;
 
-static FILE *open_out(out_file *o, const char *dir, const char *name, fs_error *err)
+static int fill_csv(FILE *f, const void *user)
 {
-    snprintf(o->path, sizeof o->path, "%s/%s", dir, name);
-    o->f = fs_open_temp(o->path, o->temp, sizeof o->temp, err);
-    return o->f;
-}
-
-static fs_status close_out(out_file *o, fs_error *err) { return fs_commit_file(o->f, o->temp, o->path, 1, err); }
-
-static fs_status write_csv(const char *dir, const row *rows, int n, fs_error *err)
-{
-    out_file o;
-    FILE *f = open_out(&o, dir, "precision.csv", err);
-    if (!f)
-        return FS_IO;
+    const report *x = user;
+    const row *rows = x->rows;
+    int n = x->n;
     fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
             "wall_s,wall_per_sim_s,rtf,status,pareto,default\n");
     for (int i = 0; i < n; i++) {
@@ -302,7 +299,7 @@ static fs_status write_csv(const char *dir, const row *rows, int n, fs_error *er
             fprintf(f, "%s,%s,%d,%s,%g,inf,inf,inf,inf,,,,blown_up,0,%d\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, r->is_default);
     }
-    return close_out(&o, err);
+    return 1;
 }
 
 static void describe(FILE *f, const row *r)
@@ -377,13 +374,13 @@ static void goal(FILE *f, const row *rows, int n, const scene *s)
         fprintf(f, "\n");
 }
 
-static fs_status write_md(const char *dir, const row *rows, int n, const scene *scenes, int nscenes,
-                          const char *machine, int quick, fs_error *err)
+static int fill_md(FILE *f, const void *user)
 {
-    out_file o;
-    FILE *f = open_out(&o, dir, "precision.md", err);
-    if (!f)
-        return FS_IO;
+    const report *x = user;
+    const row *rows = x->rows;
+    const scene *scenes = x->scenes;
+    int n = x->n, nscenes = x->nscenes, quick = x->quick;
+    const char *machine = x->machine;
     char date[32];
     time_t now = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
@@ -407,11 +404,15 @@ static fs_status write_md(const char *dir, const row *rows, int n, const scene *
     fprintf(f, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
             "from nowhere: `status` in the CSV; neither is put on a front); `footsim bench stability` maps where.\n",
         blown, n, drifting);
-    return close_out(&o, err);
+    return 1;
 }
 
-static fs_status write_chart(const char *dir, const row *rows, int n, const scene *scenes, int nscenes, fs_error *err)
+static int fill_chart(FILE *f, const void *user)
 {
+    const report *x = user;
+    const row *rows = x->rows;
+    const scene *scenes = x->scenes;
+    int n = x->n, nscenes = x->nscenes;
     static const char head[] =
         "# 'gnuplot precision.gp' in this folder draws precision.png from precision.csv.\n"
         "if (!exists(\"out\")) out = 'precision.png'\n"
@@ -442,10 +443,6 @@ static fs_status write_chart(const char *dir, const row *rows, int n, const scen
         "     '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
         "title 'scenario default', \\\n"
         "     $front%d using 1:2 with lines lw 2 lc rgb 'black' title 'Pareto front'\n";
-    out_file o;
-    FILE *f = open_out(&o, dir, "precision.gp", err);
-    if (!f)
-        return FS_IO;
     fprintf(f, "%s", head);
     /* each front as a block of its own (real-time factor, error), fastest last: a line through
      * filtered rows of the CSV would break at every row filtered out */
@@ -464,10 +461,7 @@ static fs_status write_chart(const char *dir, const row *rows, int n, const scen
         fprintf(f, panel, scenes[c].title, c);
     }
     fprintf(f, "unset multiplot\n");
-    fs_status s = close_out(&o, err);
-    if (s == FS_OK)
-        cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
-    return s;
+    return 1;
 }
 
 int cli_bench_precision(const cli_args *a, const char *dir)
@@ -493,12 +487,15 @@ int cli_bench_precision(const cli_args *a, const char *dir)
                               "feet/biomimetic.ini", 1, landing_s, &err);
     if (s == FS_OK)
         s = sweep(scenes, NSCENES, a->quick, rows, &nrows, &err);
+    const report x = {rows, nrows, scenes, NSCENES, machine, a->quick};
     if (s == FS_OK)
-        s = write_csv(dir, rows, nrows, &err);
+        s = fs_write_in(dir, "precision.csv", fill_csv, &x, &err);
     if (s == FS_OK)
-        s = write_md(dir, rows, nrows, scenes, NSCENES, machine, a->quick, &err);
+        s = fs_write_in(dir, "precision.md", fill_md, &x, &err);
     if (s == FS_OK)
-        s = write_chart(dir, rows, nrows, scenes, NSCENES, &err);
+        s = fs_write_in(dir, "precision.gp", fill_chart, &x, &err);
+    if (s == FS_OK)
+        cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
     for (int c = 0; c < NSCENES; c++)
         fs_track_free(&scenes[c].ref);
     if (s != FS_OK)

@@ -487,18 +487,6 @@ static void speed_gp(FILE *f)
                "unset multiplot\n");
 }
 
-static fs_status write_file(const char *dir, const char *name, void (*fill)(FILE *, const void *), const void *data,
-                            fs_error *err)
-{
-    char path[FS_PATH_MAX + 64], temp[FS_PATH_MAX + 128];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
-    if (!f)
-        return FS_IO;
-    fill(f, data);
-    return fs_commit_file(f, temp, path, !ferror(f), err);
-}
-
 /* Everything the files need, for write_file's fill functions. */
 typedef struct report {
     const context *c;
@@ -508,22 +496,22 @@ typedef struct report {
     int nk;
 } report;
 
-static void fill_speed_csv(FILE *f, const void *d) { const report *r = d; speed_csv(f, r->c, r->t, r->n); }
-static void fill_skips_csv(FILE *f, const void *d) { const report *r = d; skips_csv(f, r->c, r->k, r->nk); }
-static void fill_speed_md(FILE *f, const void *d) { const report *r = d; speed_md(f, r->c, r->t, r->n, r->k, r->nk); }
-static void fill_speed_gp(FILE *f, const void *d) { (void)d; speed_gp(f); }
+static int fill_speed_csv(FILE *f, const void *d) { const report *r = d; speed_csv(f, r->c, r->t, r->n); return 1; }
+static int fill_skips_csv(FILE *f, const void *d) { const report *r = d; skips_csv(f, r->c, r->k, r->nk); return 1; }
+static int fill_speed_md(FILE *f, const void *d) { const report *r = d; speed_md(f, r->c, r->t, r->n, r->k, r->nk); return 1; }
+static int fill_speed_gp(FILE *f, const void *d) { (void)d; speed_gp(f); return 1; }
 
 static fs_status write_report(const char *dir, const report *r, fs_error *err)
 {
-    fs_status s = write_file(dir, "speed.csv", fill_speed_csv, r, err);
+    fs_status s = fs_write_in(dir, "speed.csv", fill_speed_csv, r, err);
     if (s == FS_OK)
-        s = write_file(dir, "skips.csv", fill_skips_csv, r, err);
+        s = fs_write_in(dir, "skips.csv", fill_skips_csv, r, err);
     if (s == FS_OK)
-        s = write_file(dir, "speed.gp", fill_speed_gp, r, err);
+        s = fs_write_in(dir, "speed.gp", fill_speed_gp, r, err);
     if (s == FS_OK)
         cli_gnuplot(dir, "speed.gp", "speed.png", "bench speed");
     if (s == FS_OK)
-        s = write_file(dir, "speed.md", fill_speed_md, r, err);
+        s = fs_write_in(dir, "speed.md", fill_speed_md, r, err);
     return s;
 }
 

@@ -277,13 +277,20 @@ static int grid(int quick, config *cfg)
 
 /* ---- files ------------------------------------------------------------------------------------ */
 
-static fs_status write_csv(const char *dir, const config *cfg, const outcome *out, int n, fs_error *err)
+/* What the files are made of (each written whole or not at all by fs_write_in). */
+typedef struct report {
+    const config *cfg;
+    const outcome *out;
+    int n, quick, jobs;
+    double wall_s;
+} report;
+
+static int fill_csv(FILE *f, const void *user)
 {
-    char path[FS_PATH_MAX + 32], temp[FS_PATH_MAX + 96];
-    snprintf(path, sizeof path, "%s/stability.csv", dir);
-    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
-    if (!f)
-        return FS_IO;
+    const report *x = user;
+    const config *cfg = x->cfg;
+    const outcome *out = x->out;
+    int n = x->n;
     fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,class,class_code,reason,"
                "where,time_s,drift_reason,drift_time_s,steps,max_loop_err_m,max_energy_excess_J,energy_bound_J,"
                "max_speed_m_per_s,explicit_limit_s\n");
@@ -299,7 +306,7 @@ static fs_status write_csv(const char *dir, const config *cfg, const outcome *ou
                 fs_check_kind_name((fs_check_kind)o->drift), o->drift_time_s, o->steps, o->loop_m, o->excess_J,
                 o->bound_J, o->speed_m_per_s, o->limit_s);
     }
-    return fs_commit_file(f, temp, path, !ferror(f), err);
+    return 1;
 }
 
 /* The column of a slice's quantity in stability.csv (1-based, for gnuplot). */
@@ -425,14 +432,14 @@ static void count_classes(const outcome *out, int n, int counts[3])
         counts[out[i].cls]++;
 }
 
-static fs_status write_summary(const char *dir, const config *cfg, const outcome *out, int n, int quick,
-                               double wall_s, int jobs, fs_error *err)
+static int fill_summary(FILE *f, const void *user)
 {
-    char path[FS_PATH_MAX + 32], temp[FS_PATH_MAX + 96], machine[512];
-    snprintf(path, sizeof path, "%s/stability.md", dir);
-    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
-    if (!f)
-        return FS_IO;
+    const report *x = user;
+    const config *cfg = x->cfg;
+    const outcome *out = x->out;
+    int n = x->n, quick = x->quick, jobs = x->jobs;
+    double wall_s = x->wall_s;
+    char machine[512];
     cli_machine(machine, sizeof machine);
     int counts[3];
     count_classes(out, n, counts);
@@ -465,7 +472,7 @@ static fs_status write_summary(const char *dir, const config *cfg, const outcome
         slice_table(f, cfg, out, n, s, quick);
     fprintf(f, "\n`stability.csv` has every run (class, the check that failed, where and when, the worst loop "
                "error, energy excess and speed); `stability_<slice>.gp` draws each chart.\n");
-    return fs_commit_file(f, temp, path, !ferror(f), err);
+    return 1;
 }
 
 /* ---- the command ------------------------------------------------------------------------------ */
@@ -492,8 +499,9 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     double duration = a->quick ? DURATION_QUICK_S : DURATION_FULL_S, t0 = fs_clock_s();
     fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
     fs_status s = run_all(cfg, out, n, jobs, &base.design, duration, &err);
+    report x = {cfg, out, n, a->quick, jobs, 0};
     if (s == FS_OK)
-        s = write_csv(dir, cfg, out, n, &err);
+        s = fs_write_in(dir, "stability.csv", fill_csv, &x, &err);
     for (int i = 0; s == FS_OK && i < NSLICES; i++) {
         char gp[64], png[64];
         snprintf(gp, sizeof gp, "stability_%s.gp", SLICES[i].name);
@@ -501,8 +509,9 @@ int cli_bench_stability(const cli_args *a, const char *dir)
         if ((s = write_script(dir, i, &err)) == FS_OK)
             cli_gnuplot(dir, gp, png, "bench stability");
     }
+    x.wall_s = fs_clock_s() - t0;
     if (s == FS_OK)
-        s = write_summary(dir, cfg, out, n, a->quick, fs_clock_s() - t0, jobs, &err);
+        s = fs_write_in(dir, "stability.md", fill_summary, &x, &err);
     free(out);
     if (s != FS_OK)
         return fail(&err);

@@ -562,18 +562,24 @@ typedef struct out_ctx {
     const fs_campaign_row *rows;
 } out_ctx;
 
+/* A fill function of out_ctx for fs_write_file. */
+typedef struct out_fill {
+    int (*fill)(FILE *, const out_ctx *);
+    const out_ctx *ctx;
+} out_fill;
+
+static int fill_adapter(FILE *f, const void *user)
+{
+    const out_fill *x = user;
+    return x->fill(f, x->ctx);
+}
+
 /* Writes dir/name through fill, whole or not at all. */
 static fs_status write_file(const char *dir, const char *name, int (*fill)(FILE *, const out_ctx *),
                             const out_ctx *ctx, fs_error *err)
 {
-    char path[FS_PATH_MAX + 64], temp[FS_PATH_MAX + 96];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
-    if (!f)
-        return FS_IO;
-    int ok = fill(f, ctx);
-    fs_status s = fs_commit_file(f, temp, path, ok, err);
-    return s == FS_OK && !ok ? fs_fail(err, FS_IO, "%s: out of memory", path) : s;
+    const out_fill x = {fill, ctx};
+    return fs_write_in(dir, name, fill_adapter, &x, err);
 }
 
 /* A number for CSV: exact (%.17g), or empty when there is none. */

@@ -195,12 +195,9 @@ static fs_status write_json(const char *path, cJSON *root, fs_error *err)
     return s;
 }
 
-static fs_status write_trajectory(const fs_run_result *res, const char *path, fs_error *err)
+static int fill_trajectory(FILE *f, const void *user)
 {
-    char temp[4200];
-    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
-    if (!f)
-        return FS_IO;
+    const fs_run_result *res = user;
     for (int c = 0; c < res->ncols; c++)
         fprintf(f, "%s%s", c ? "," : "", res->col_name[c]);
     fputc('\n', f);
@@ -210,7 +207,12 @@ static fs_status write_trajectory(const fs_run_result *res, const char *path, fs
             fprintf(f, c == 4 ? "%s%.0f" : "%s%.17g", c ? "," : "", row[c]);
         fputc('\n', f);
     }
-    return fs_commit_file(f, temp, path, 1, err);
+    return 1;
+}
+
+static fs_status write_trajectory(const fs_run_result *res, const char *path, fs_error *err)
+{
+    return fs_write_file(path, fill_trajectory, res, err);
 }
 
 fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const char *dir, fs_error *err)

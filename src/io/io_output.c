@@ -1,20 +1,83 @@
-/* io_output.c: atomic writes, atomic folders and folder creation. */
+/* io_output.c: files written whole through one writer, results folders replaced whole, and the
+ * temporary files and folders of both removed on every exit path footsim controls. */
 #define _GNU_SOURCE /* renameat2: swapping two folders in one step (Linux) */
 #include "footsim/io/fs_output.h"
 
+#include <dirent.h>
+#include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
-#include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* ---- what to remove at exit --------------------------------------------------------------------- */
+
+/* Temporary files and partial folders of this process, removed by an atexit handler unless they
+ * were committed: ODE's error handler ends the process with exit(). A forked worker inherits the
+ * list but never removes its parent's entries (owner). */
+enum { PENDING_MAX = 32 };
+typedef struct pending {
+    char path[FS_OUT_PATH + 64];
+    int tree;
+    pid_t owner;
+} pending;
+static pending pend[PENDING_MAX];
+static int npend, atexit_set;
+
+static void cleanup_at_exit(void)
+{
+    for (int i = 0; i < npend; i++) {
+        if (!pend[i].path[0] || pend[i].owner != getpid())
+            continue;
+        if (pend[i].tree)
+            fs_remove_tree(pend[i].path);
+        else
+            unlink(pend[i].path);
+        pend[i].path[0] = 0;
+    }
+}
+
+static void remember(const char *path, int tree)
+{
+    if (!atexit_set)
+        atexit_set = atexit(cleanup_at_exit) == 0;
+    int slot = -1;
+    for (int i = 0; i < npend && slot < 0; i++)
+        if (!pend[i].path[0])
+            slot = i;
+    if (slot < 0 && npend < PENDING_MAX)
+        slot = npend++;
+    if (slot >= 0) {
+        snprintf(pend[slot].path, sizeof pend[slot].path, "%s", path);
+        pend[slot].tree = tree;
+        pend[slot].owner = getpid();
+    }
+}
+
+static void forget(const char *path)
+{
+    for (int i = 0; i < npend; i++)
+        if (pend[i].owner == getpid() && !strcmp(pend[i].path, path))
+            pend[i].path[0] = 0;
+}
+
+/* ---- folders ------------------------------------------------------------------------------------ */
+
+static const char *type_name(mode_t m)
+{
+    return S_ISDIR(m) ? "a folder" : S_ISLNK(m) ? "a symbolic link" : S_ISFIFO(m) ? "a FIFO" : S_ISSOCK(m) ? "a socket"
+         : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device" : "a regular file";
+}
+
 fs_status fs_make_dirs(const char *dir, fs_error *err)
 {
-    char buf[4096];
+    char buf[FS_OUT_PATH];
     if (snprintf(buf, sizeof buf, "%s", dir) >= (int)sizeof buf)
-        return fs_fail(err, FS_BAD_INPUT, "--out %s: path too long", dir);
+        return fs_fail(err, FS_BAD_INPUT, "%.64s...: path too long", dir);
     for (char *p = buf + 1;; p++) {
         if (*p == '/' || *p == 0) {
             char saved = *p;
@@ -28,49 +91,14 @@ fs_status fs_make_dirs(const char *dir, fs_error *err)
         }
     }
     struct stat st;
-    if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode))
-        return fs_fail(err, FS_BAD_INPUT, "%s: not a folder; choose another --out", dir);
-    if (access(buf, W_OK) != 0)
-        return fs_fail(err, FS_BAD_INPUT, "%s: folder is not writable; choose another --out", dir);
+    if (stat(buf, &st) != 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s: cannot create folder (%s); choose a writable --out", dir, strerror(errno));
+    if (!S_ISDIR(st.st_mode))
+        return fs_fail(err, FS_BAD_INPUT, "%s: is %s, not a folder; choose another --out", dir, type_name(st.st_mode));
+    if (access(buf, W_OK | X_OK) != 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s: folder cannot be written (%s); choose another --out", dir,
+                       strerror(errno));
     return FS_OK;
-}
-
-FILE *fs_open_temp(const char *path, char *temp, size_t size, fs_error *err)
-{
-    if (snprintf(temp, size, "%s.tmp.%ld", path, (long)getpid()) >= (int)size) {
-        fs_fail(err, FS_IO, "%s: path too long", path);
-        return NULL;
-    }
-    FILE *f = fopen(temp, "w");
-    if (!f)
-        fs_fail(err, FS_IO, "%s: cannot write (%s)", temp, strerror(errno));
-    return f;
-}
-
-fs_status fs_commit_file(FILE *f, const char *temp, const char *path, int ok, fs_error *err)
-{
-    int failed = ferror(f) || fflush(f) != 0 || fsync(fileno(f)) != 0;
-    failed |= fclose(f) != 0;
-    if (!ok || failed) {
-        remove(temp);
-        return ok ? fs_fail(err, FS_IO, "%s: write failed (%s)", path, strerror(errno)) : FS_OK;
-    }
-    if (rename(temp, path) != 0) {
-        int e = errno;
-        remove(temp);
-        return fs_fail(err, FS_IO, "%s: cannot replace (%s)", path, strerror(e));
-    }
-    return FS_OK;
-}
-
-fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_error *err)
-{
-    char temp[4200];
-    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
-    if (!f)
-        return FS_IO;
-    fwrite(data, 1, len, f);
-    return fs_commit_file(f, temp, path, 1, err);
 }
 
 static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
@@ -81,16 +109,461 @@ static int remove_entry(const char *path, const struct stat *st, int flag, struc
 
 void fs_remove_tree(const char *dir) { nftw(dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS); }
 
-fs_status fs_commit_dir(const char *partial, const char *final, fs_error *err)
+/* The folder part of path ("." when there is none). */
+static void parent_of(const char *path, char *out, size_t size)
 {
-    /* swap the two folders in one step, then remove the old one; or move the new one in */
-    if (renameat2(AT_FDCWD, partial, AT_FDCWD, final, RENAME_EXCHANGE) == 0) {
-        fs_remove_tree(partial);
-        return FS_OK;
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        snprintf(out, size, ".");
+    else if (slash == path)
+        snprintf(out, size, "/");
+    else
+        snprintf(out, size, "%.*s", (int)(slash - path), path);
+}
+
+static int fsync_path(const char *path)
+{
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return -1;
+    int r = fsync(fd);
+    /* some filesystems cannot fsync a folder; that is not a failure of the write */
+    if (r != 0 && (errno == EINVAL || errno == EROFS || errno == EBADF))
+        r = 0;
+    close(fd);
+    return r;
+}
+
+static fs_status write_error(fs_error *err, const char *path, int e)
+{
+    if (e == ENOSPC)
+        return fs_fail(err, FS_IO, "%s: cannot write: No space left on device; free some space and run again", path);
+    return fs_fail(err, FS_IO, "%s: cannot write (%s)", path, strerror(e ? e : EIO));
+}
+
+/* ---- files -------------------------------------------------------------------------------------- */
+
+fs_status fs_check_file_target(const char *path, const char *what, fs_error *err)
+{
+    struct stat st;
+    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: is %s; footsim writes only regular files: give a file's path", what,
+                       path, type_name(st.st_mode));
+    char dir[FS_OUT_PATH];
+    parent_of(path, dir, sizeof dir);
+    if (stat(dir, &st) != 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: folder %s: %s; give a path in an existing folder", what, path, dir,
+                       strerror(errno));
+    if (!S_ISDIR(st.st_mode))
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: %s is %s, not a folder", what, path, dir, type_name(st.st_mode));
+    if (access(dir, W_OK | X_OK) != 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: folder %s cannot be written (%s); give a writable place", what, path,
+                       dir, strerror(errno));
+    return FS_OK;
+}
+
+fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
+{
+    if (snprintf(temp, size, "%s.tmp.%ld", path, (long)getpid()) >= (int)size)
+        return fs_fail(err, FS_IO, "%.64s...: path too long", path);
+    remember(temp, 0);
+    return FS_OK;
+}
+
+fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err)
+{
+    struct stat st;
+    fs_status s = FS_OK;
+    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        s = fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, type_name(st.st_mode));
+    else if (fsync_path(temp) != 0)
+        s = write_error(err, path, errno);
+    else if (rename(temp, path) != 0)
+        s = fs_fail(err, FS_IO, "%s: cannot replace (%s)", path, strerror(errno));
+    if (s != FS_OK) {
+        unlink(temp);
+        forget(temp);
+        return s;
     }
-    if (errno == ENOENT && rename(partial, final) == 0)
-        return FS_OK;
+    forget(temp);
+    char dir[FS_OUT_PATH];
+    parent_of(path, dir, sizeof dir);
+    if (fsync_path(dir) != 0)
+        return write_error(err, dir, errno);
+    return FS_OK;
+}
+
+fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_error *err)
+{
+    char temp[FS_OUT_PATH + 64];
+    struct stat st;
+    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, type_name(st.st_mode));
+    if (fs_temp_name(path, temp, sizeof temp, err) != FS_OK)
+        return FS_IO;
+    unlink(temp); /* one a killed run of the same pid left */
+    int fd = open(temp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        int e = errno;
+        if (fd >= 0)
+            close(fd);
+        forget(temp);
+        unlink(temp);
+        return write_error(err, path, e);
+    }
+    errno = 0;
+    int ok = fill(f, user);
     int e = errno;
-    fs_remove_tree(partial);
-    return fs_fail(err, FS_IO, "%s: cannot put the results in place (%s)", final, strerror(e));
+    int failed = ferror(f) || fflush(f) != 0;
+    if (failed)
+        e = errno ? errno : e;
+    if (!failed && fsync(fileno(f)) != 0)
+        failed = 1, e = errno;
+    if (fclose(f) != 0 && !failed)
+        failed = 1, e = errno;
+    if (!ok || failed) {
+        unlink(temp);
+        forget(temp);
+        if (failed)
+            return write_error(err, path, e);
+        return fs_fail(err, FS_IO, "%s: its content could not be made (out of memory)", path);
+    }
+    return fs_commit_temp(temp, path, err);
+}
+
+fs_status fs_write_in(const char *dir, const char *name, fs_fill_fn fill, const void *user, fs_error *err)
+{
+    char path[FS_OUT_PATH];
+    if (snprintf(path, sizeof path, "%s/%s", dir, name) >= (int)sizeof path)
+        return fs_fail(err, FS_IO, "%.64s.../%s: path too long", dir, name);
+    return fs_write_file(path, fill, user, err);
+}
+
+typedef struct bytes {
+    const char *data;
+    size_t len;
+} bytes;
+
+static int fill_bytes(FILE *f, const void *user)
+{
+    const bytes *b = user;
+    return fwrite(b->data, 1, b->len, f) == b->len;
+}
+
+fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_error *err)
+{
+    bytes b = {data, len};
+    return fs_write_file(path, fill_bytes, &b, err);
+}
+
+/* ---- results folders ---------------------------------------------------------------------------- */
+
+fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *option, fs_error *err)
+{
+    size_t n = strlen(dir);
+    if (n == 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s '': give a folder's path", option);
+    if (n >= size || n >= FS_OUT_PATH - 64)
+        return fs_fail(err, FS_BAD_INPUT, "%s %.64s...: path too long", option, dir);
+    /* drop repeated slashes and "." components */
+    char buf[FS_OUT_PATH];
+    size_t k = 0;
+    int absolute = dir[0] == '/';
+    if (absolute)
+        buf[k++] = '/';
+    for (const char *p = dir; *p;) {
+        while (*p == '/')
+            p++;
+        size_t len = strcspn(p, "/");
+        if (len == 0)
+            break;
+        if (!(len == 1 && p[0] == '.')) {
+            if (k > 0 && buf[k - 1] != '/')
+                buf[k++] = '/';
+            memcpy(buf + k, p, len);
+            k += len;
+        }
+        p += len;
+    }
+    buf[k] = 0;
+    if (k == 0)
+        snprintf(buf, sizeof buf, ".");
+    const char *last = strrchr(buf, '/');
+    last = last ? last + 1 : buf;
+    if (!strcmp(last, "..") || !strcmp(buf, ".")) {
+        /* the folder a final ".." (or ".") names: resolve it, as it must exist */
+        char *real = realpath(buf, NULL);
+        if (!real)
+            return fs_fail(err, FS_BAD_INPUT, "%s %s: %s; give the folder's own path", option, dir, strerror(errno));
+        snprintf(buf, sizeof buf, "%s", real);
+        free(real);
+    }
+    if (!strcmp(buf, "/"))
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: the root folder cannot be a results folder; give a folder of its own",
+                       option, dir);
+    if (snprintf(out, size, "%s", buf) >= (int)size)
+        return fs_fail(err, FS_BAD_INPUT, "%s %.64s...: path too long", option, dir);
+    return FS_OK;
+}
+
+/* A name an earlier footsim wrote in a results folder: one of `known`, a frame, or a leftover
+ * temporary file of its own. */
+static int known_name(const char *name, const char *const *known)
+{
+    for (int i = 0; known && known[i]; i++)
+        if (!strcmp(name, known[i]))
+            return 1;
+    return strstr(name, ".tmp.") != NULL;
+}
+
+/* Whether folder `path` holds only what footsim writes (frames/ only NNNNNN.png). Fills `odd`
+ * with the first name that is not. Returns -1 when it cannot be read. */
+static int only_footsim_files(const char *path, const char *const *known, int *count, char *odd, size_t size)
+{
+    DIR *d = opendir(path);
+    if (!d)
+        return -1;
+    int ok = 1;
+    *count = 0;
+    odd[0] = 0;
+    for (struct dirent *e; (e = readdir(d));) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+            continue;
+        (*count)++;
+        if (!strcmp(e->d_name, FS_MARKER))
+            continue;
+        if (known_name(e->d_name, known))
+            continue;
+        if (ok)
+            snprintf(odd, size, "%s", e->d_name);
+        ok = 0;
+    }
+    closedir(d);
+    return ok;
+}
+
+static int has_marker(const char *path)
+{
+    char m[FS_OUT_PATH + 32];
+    snprintf(m, sizeof m, "%s/%s", path, FS_MARKER);
+    FILE *f = fopen(m, "r");
+    if (!f)
+        return 0;
+    char line[128] = "";
+    int format = 0;
+    int ok = fgets(line, sizeof line, f) && sscanf(line, "footsim results folder, format %d", &format) == 1 &&
+             format >= 1;
+    fclose(f);
+    return ok;
+}
+
+/* The folders and lock files a killed run left beside path: removed (the lock is ours). An
+ * old folder whose swap was cut short is put back when path is missing. */
+static void sweep_leftovers(const char *path)
+{
+    char dir[FS_OUT_PATH], prefix[FS_OUT_PATH + 256];
+    parent_of(path, dir, sizeof dir);
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct stat st;
+    int missing = lstat(path, &st) != 0;
+    for (struct dirent *e; (e = readdir(d));) {
+        const char *kind = NULL;
+        size_t n = strlen(base);
+        if (strncmp(e->d_name, base, n))
+            continue;
+        if (!strncmp(e->d_name + n, ".partial.", 9))
+            kind = "partial";
+        else if (!strncmp(e->d_name + n, ".old.", 5))
+            kind = "old";
+        else
+            continue;
+        const char *pid = e->d_name + n + (kind[0] == 'p' ? 9 : 5);
+        if (!*pid || strspn(pid, "0123456789") != strlen(pid))
+            continue;
+        snprintf(prefix, sizeof prefix, "%s/%s", dir, e->d_name);
+        if (kind[0] == 'o' && missing && rename(prefix, path) == 0) {
+            missing = 0;
+            continue;
+        }
+        fs_remove_tree(prefix);
+    }
+    closedir(d);
+}
+
+/* Takes the lock path.lock (kept open): refuses when another footsim holds it. */
+static fs_status take_lock(fs_outdir *o, const char *option, fs_error *err)
+{
+    for (int tries = 0; tries < 8; tries++) {
+        int fd = open(o->lock, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+        if (fd < 0)
+            return fs_fail(err, FS_BAD_INPUT, "%s %s: cannot make the lock file %s (%s); choose a writable place",
+                           option, o->path, o->lock, strerror(errno));
+        if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+            char pid[32] = "";
+            ssize_t n = read(fd, pid, sizeof pid - 1);
+            pid[n > 0 ? n : 0] = 0;
+            pid[strcspn(pid, "\n")] = 0;
+            close(fd);
+            return fs_fail(err, FS_BAD_INPUT,
+                           "%s %s: another footsim (process %s) is writing this folder; wait for it to end, or "
+                           "choose another %s", option, o->path, *pid ? pid : "?", option);
+        }
+        /* the lock file may have been removed by the holder just before we locked it: then retry */
+        struct stat a, b;
+        if (fstat(fd, &a) == 0 && stat(o->lock, &b) == 0 && a.st_ino == b.st_ino && a.st_dev == b.st_dev) {
+            char pid[32];
+            int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
+            if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) { /* only for messages */
+            }
+            o->lock_fd = fd;
+            return FS_OK;
+        }
+        close(fd);
+    }
+    return fs_fail(err, FS_BAD_INPUT, "%s %s: cannot take the lock %s; try again", option, o->path, o->lock);
+}
+
+static void release_lock(fs_outdir *o)
+{
+    if (o->lock_fd >= 0) {
+        unlink(o->lock);
+        close(o->lock_fd);
+    }
+    o->lock_fd = -1;
+}
+
+static int fill_marker(FILE *f, const void *user)
+{
+    (void)user;
+    fprintf(f, "footsim results folder, format %d\n"
+               "footsim replaces this folder whole when asked to write here again; a folder without this file\n"
+               "is never replaced unless --replace is given.\n", FS_MARKER_FORMAT);
+    return 1;
+}
+
+fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
+                         fs_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->lock_fd = -1;
+    fs_status s = fs_normalise_dir(dir, o->path, sizeof o->path, option, err);
+    if (s != FS_OK)
+        return s;
+    char parent[FS_OUT_PATH];
+    parent_of(o->path, parent, sizeof parent);
+    if ((s = fs_make_dirs(parent, err)) != FS_OK)
+        return s;
+    struct stat st;
+    if (lstat(o->path, &st) == 0) {
+        if (S_ISLNK(st.st_mode))
+            return fs_fail(err, FS_BAD_INPUT, "%s %s: is a symbolic link; footsim replaces only folders it made: give "
+                           "the folder's own path", option, dir);
+        if (!S_ISDIR(st.st_mode))
+            return fs_fail(err, FS_BAD_INPUT, "%s %s: is %s, not a results folder; choose another %s", option, dir,
+                           type_name(st.st_mode), option);
+        int count;
+        char odd[256];
+        int mine = only_footsim_files(o->path, known, &count, odd, sizeof odd);
+        if (mine < 0)
+            return fs_fail(err, FS_BAD_INPUT, "%s %s: cannot read the folder (%s); choose another %s", option, dir,
+                           strerror(errno), option);
+        if (count > 0 && !has_marker(o->path) && !mine && !replace)
+            return fs_fail(err, FS_BAD_INPUT,
+                           "%s %s: a folder footsim did not make (it holds '%s' and no %s marker); footsim replaces "
+                           "only its own results folders, whole: choose another %s, or add --replace to replace it "
+                           "and everything in it", option, dir, odd, FS_MARKER, option);
+    }
+    snprintf(o->lock, sizeof o->lock, "%s.lock", o->path);
+    if ((s = take_lock(o, option, err)) != FS_OK)
+        return s;
+    sweep_leftovers(o->path);
+    snprintf(o->partial, sizeof o->partial, "%s.partial.%ld", o->path, (long)getpid());
+    if (mkdir(o->partial, 0777) != 0) {
+        s = fs_fail(err, FS_BAD_INPUT, "%s %s: cannot create %s (%s); choose a writable %s", option, dir, o->partial,
+                    strerror(errno), option);
+        release_lock(o);
+        return s;
+    }
+    remember(o->partial, 1);
+    remember(o->lock, 0);
+    o->open = 1;
+    char marker[FS_OUT_PATH + 80];
+    snprintf(marker, sizeof marker, "%s/%s", o->partial, FS_MARKER);
+    if ((s = fs_write_file(marker, fill_marker, NULL, err)) != FS_OK)
+        fs_outdir_abort(o);
+    return s;
+}
+
+void fs_outdir_abort(fs_outdir *o)
+{
+    if (!o->open)
+        return;
+    fs_remove_tree(o->partial);
+    forget(o->partial);
+    forget(o->lock);
+    release_lock(o);
+    o->open = 0;
+}
+
+/* Swaps partial and path in one step; where the filesystem cannot (EINVAL: NFS, some FUSE) or
+ * FOOTSIM_TEST_NO_EXCHANGE is set (tests), moves the old folder aside, the new one in, and the
+ * old one back if that fails. On success old names the folder to remove ("" when none). */
+static int swap_in(const char *partial, const char *path, char *old, size_t size)
+{
+    old[0] = 0;
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return rename(partial, path);
+    if (!getenv("FOOTSIM_TEST_NO_EXCHANGE")) {
+        if (renameat2(AT_FDCWD, partial, AT_FDCWD, path, RENAME_EXCHANGE) == 0) {
+            snprintf(old, size, "%s", partial);
+            return 0;
+        }
+        if (errno != EINVAL && errno != ENOSYS)
+            return -1;
+    }
+    char aside[FS_OUT_PATH + 48];
+    snprintf(aside, sizeof aside, "%s.old.%ld", path, (long)getpid());
+    if (rename(path, aside) != 0)
+        return -1;
+    if (rename(partial, path) != 0) {
+        int e = errno;
+        if (rename(aside, path) != 0) { /* left as path.old.<pid>: the next run puts it back */
+        }
+        errno = e;
+        return -1;
+    }
+    snprintf(old, size, "%s", aside);
+    return 0;
+}
+
+fs_status fs_outdir_commit(fs_outdir *o, fs_error *err)
+{
+    if (!o->open)
+        return fs_fail(err, FS_IO, "%s: no results to put in place", o->path);
+    char parent[FS_OUT_PATH], old[FS_OUT_PATH + 64];
+    parent_of(o->path, parent, sizeof parent);
+    fs_status s = FS_OK;
+    if (fsync_path(o->partial) != 0)
+        s = write_error(err, o->path, errno);
+    else if (swap_in(o->partial, o->path, old, sizeof old) != 0)
+        s = fs_fail(err, FS_IO, "%s: cannot put the results in place (%s)", o->path, strerror(errno));
+    else if (fsync_path(parent) != 0)
+        s = write_error(err, parent, errno);
+    if (s != FS_OK) {
+        fs_outdir_abort(o);
+        return s;
+    }
+    if (old[0])
+        fs_remove_tree(old);
+    forget(o->partial);
+    forget(o->lock);
+    release_lock(o);
+    o->open = 0;
+    return FS_OK;
 }

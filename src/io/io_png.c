@@ -4,6 +4,7 @@
 #include "footsim/io/fs_output.h"
 
 #include <png.h>
+#include <sys/statvfs.h>
 #include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
@@ -86,31 +87,39 @@ done:
     return status;
 }
 
-/* Encodes h rows of w pixels (3 or 4 bytes each, RGB first; stride bytes apart) to f as RGB. */
-static int encode(FILE *f, const unsigned char *pixels, int w, int h, int channels, long stride, int bottom_up,
-                  int level)
+/* What to encode: h rows of w pixels (3 or 4 bytes each, RGB first; stride bytes apart). */
+typedef struct image {
+    const unsigned char *pixels;
+    int w, h, channels, bottom_up, level;
+    long stride;
+} image;
+
+/* Encodes the image to f as RGB (an fs_fill_fn). */
+static int encode(FILE *f, const void *user)
 {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    const image *im = user;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, png_quiet_error, png_quiet_warning);
     png_infop info = png ? png_create_info_struct(png) : NULL;
     if (!info) {
         png_destroy_write_struct(&png, NULL);
         return 0;
     }
     if (setjmp(png_jmpbuf(png))) {
+        /* a write error (a full disk): ferror(f) tells fs_write_file, which names it */
         png_destroy_write_struct(&png, &info);
-        return 0;
+        return ferror(f) ? 1 : 0;
     }
     png_init_io(png, f);
     /* speed over size at low levels: a fast zlib level and the cheapest useful row filter */
-    png_set_compression_level(png, level);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
-    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+    png_set_compression_level(png, im->level);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, im->level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
+    png_set_IHDR(png, info, (png_uint_32)im->w, (png_uint_32)im->h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
     png_write_info(png, info);
-    if (channels == 4)
+    if (im->channels == 4)
         png_set_filler(png, 0, PNG_FILLER_AFTER);
-    for (int y = 0; y < h; y++)
-        png_write_row(png, pixels + (size_t)(bottom_up ? h - 1 - y : y) * (size_t)stride);
+    for (int y = 0; y < im->h; y++)
+        png_write_row(png, im->pixels + (size_t)(im->bottom_up ? im->h - 1 - y : y) * (size_t)im->stride);
     png_write_end(png, NULL);
     png_destroy_write_struct(&png, &info);
     return 1;
@@ -119,16 +128,31 @@ static int encode(FILE *f, const unsigned char *pixels, int w, int h, int channe
 fs_status fs_png_write(const char *path, const unsigned char *pixels, int w, int h, int channels, long stride,
                        int bottom_up, int level, fs_error *err)
 {
-    char temp[4200];
-    FILE *f = fs_open_temp(path, temp, sizeof temp, err);
-    if (!f)
-        return FS_IO;
-    int ok = encode(f, pixels, w, h, channels, stride, bottom_up, level);
-    fs_status s = fs_commit_file(f, temp, path, ok, err);
-    return ok ? s : fs_fail(err, FS_IO, "%s: PNG encoding failed", path);
+    const image im = {pixels, w, h, channels, bottom_up, level, stride};
+    return fs_write_file(path, encode, &im, err);
 }
 
 fs_status fs_png_write_rgb(const char *path, int w, int h, const unsigned char *rgb, fs_error *err)
 {
     return fs_png_write(path, rgb, w, h, 3, (long)w * 3, 0, 6, err);
+}
+
+fs_status fs_png_check(const char *path, const char *shown, fs_error *err)
+{
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+    unsigned char head[16], tail[12];
+    FILE *f = fopen(path, "rb");
+    int ok = f && fread(head, 1, sizeof head, f) == sizeof head && !png_sig_cmp(head, 0, 8) &&
+             !memcmp(head + 12, "IHDR", 4) && fseek(f, -12, SEEK_END) == 0 && fread(tail, 1, 12, f) == 12 &&
+             !memcmp(tail, iend, 12);
+    if (f)
+        fclose(f);
+    if (ok)
+        return FS_OK;
+    struct statvfs v;
+    if (statvfs(path, &v) == 0 && v.f_bavail == 0)
+        return fs_fail(err, FS_IO, "%s: cannot write: No space left on device (the chart came out truncated); free "
+                       "some space and run again", shown);
+    return fs_fail(err, FS_IO, "%s: the chart came out damaged (not a whole PNG: no signature, IHDR or IEND); "
+                   "nothing was installed", shown);
 }

@@ -1,7 +1,21 @@
-/* fs_output.h: results written whole or not at all.
+/* fs_output.h: results written whole or not at all, only where footsim may write.
  *
- * fs_write_atomic writes text to "path.tmp.<pid>" and renames it over path, so a reader (or a
- * run killed half way) sees either the old complete file or the new one. */
+ * Files. fs_write_file is the one way footsim writes a file: the content goes to "path.tmp.<pid>"
+ * through a callback, is flushed and fsync'd, and is renamed over path, whose folder is then
+ * fsync'd; a reader, or a run killed at any moment, sees the old complete file or the new one.
+ * The target must be absent or a regular file: a device, FIFO, folder or symbolic link is never
+ * replaced. A temporary file is removed on every exit path footsim controls: an error, exit()
+ * (ODE's error handler) included; one left by a kill -9 is removed by the next write of the same
+ * path. A full disk is reported as "No space left on device" (FS_IO). fs_commit_temp installs a
+ * file another program wrote (gnuplot, ffmpeg) the same way.
+ *
+ * Folders. A results folder (run, campaign, render-compare) is replaced whole: fs_outdir_open
+ * checks the target before anything is simulated (FS_BAD_INPUT: a symbolic link, not a folder, a
+ * non-empty folder footsim did not make, another footsim writing it), takes a lock on it, and makes
+ * a partial folder beside it holding the marker file FS_MARKER; fs_outdir_commit swaps the partial
+ * folder in, in one step (renameat2 RENAME_EXCHANGE; where the filesystem refuses that, EINVAL,
+ * two renames that never lose the old folder), and removes the old one. A folder footsim made is
+ * one with the marker, or one an earlier version made (no marker, only the files of `known`). */
 #ifndef FS_OUTPUT_H
 #define FS_OUTPUT_H
 
@@ -10,24 +24,64 @@
 #include <stddef.h>
 #include <stdio.h>
 
-/* Creates dir and its missing parents. */
+enum { FS_OUT_PATH = 4096 };
+
+/* The marker file of a results folder, and its format version (the file's first line reads
+ * "footsim results folder, format 1"). */
+#define FS_MARKER ".footsim-results"
+enum { FS_MARKER_FORMAT = 1 };
+
+/* Creates dir and its missing parents; refuses (FS_BAD_INPUT) when it cannot, naming why. */
 fs_status fs_make_dirs(const char *dir, fs_error *err);
 
-/* Writes len bytes of data to path atomically. */
+/* Writes path through fill (which returns 1, or 0 when it could not produce the content), whole
+ * or not at all. */
+typedef int (*fs_fill_fn)(FILE *f, const void *user);
+fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_error *err);
+
+/* fs_write_file of dir/name. */
+fs_status fs_write_in(const char *dir, const char *name, fs_fill_fn fill, const void *user, fs_error *err);
+
+/* Writes len bytes of data to path, through fs_write_file. */
 fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_error *err);
 
-/* Opens "path.tmp.<pid>" for writing; fs_commit_file closes it and renames it to path (or
- * removes it when ok is 0). For outputs too large to build in memory. */
-FILE *fs_open_temp(const char *path, char *temp, size_t size, fs_error *err);
-fs_status fs_commit_file(FILE *f, const char *temp, const char *path, int ok, fs_error *err);
+/* Refuses (FS_BAD_INPUT) a path footsim must not write a file at: a device, FIFO, socket,
+ * folder or symbolic link, or a file in a folder that does not exist or cannot be written. */
+fs_status fs_check_file_target(const char *path, const char *what, fs_error *err);
 
-/* A folder of results written whole or not at all: write everything into `partial` (a sibling of
- * `final`), then fs_commit_dir swaps it with `final` in one step (renameat2 RENAME_EXCHANGE) and
- * removes the old one. A reader, or a run killed at any moment, sees the old folder complete or the
- * new one complete. On failure `partial` is removed. */
-fs_status fs_commit_dir(const char *partial, const char *final, fs_error *err);
+/* A temporary name for path beside it ("path.tmp.<pid>"), removed at exit unless committed. */
+fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err);
 
-/* Removes a folder and everything in it (best effort). */
+/* fsyncs temp and renames it over path (a regular file or nothing), then fsyncs the folder. On
+ * failure temp is removed. */
+fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err);
+
+/* Removes a folder and everything in it (best effort; never follows symbolic links). */
 void fs_remove_tree(const char *dir);
+
+typedef struct fs_outdir {
+    char path[FS_OUT_PATH];        /* the results folder, normalised */
+    char partial[FS_OUT_PATH + 48];/* where everything is written: path.partial.<pid> */
+    char lock[FS_OUT_PATH + 16];   /* path.lock, held while writing */
+    int lock_fd;
+    int open;
+} fs_outdir;
+
+/* Checks and prepares the results folder dir (see above); `known` (NULL-terminated) names the
+ * files and folders an earlier footsim wrote there, `replace` lets a non-empty folder without the
+ * marker be replaced on purpose (--replace). `option` names the option in messages ("--out"). */
+fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
+                         fs_error *err);
+
+/* Puts the partial folder in place of the results folder, whole (see above); on failure the old
+ * folder stays and the partial one is removed. */
+fs_status fs_outdir_commit(fs_outdir *o, fs_error *err);
+
+/* Gives up: removes the partial folder, releases the lock. Safe to call twice. */
+void fs_outdir_abort(fs_outdir *o);
+
+/* Normalises a folder path: no trailing slash, no "." components or repeated slashes; a final
+ * ".." is resolved. Refuses the root and the empty path. */
+fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *option, fs_error *err);
 
 #endif

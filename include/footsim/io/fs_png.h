@@ -17,4 +17,9 @@ fs_status fs_png_write(const char *path, const unsigned char *pixels, int w, int
 /* Writes w*h RGB pixels (row 0 at the top) to path, whole or not at all. */
 fs_status fs_png_write_rgb(const char *path, int w, int h, const unsigned char *rgb, fs_error *err);
 
+/* Checks that path (written by another program) is a whole PNG file: the signature, an IHDR
+ * chunk first and an IEND chunk last. `shown` names it in messages. A damaged file is FS_IO, and
+ * said to be "No space left on device" when its filesystem has no space left. */
+fs_status fs_png_check(const char *path, const char *shown, fs_error *err);
+
 #endif

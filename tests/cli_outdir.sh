@@ -1,0 +1,101 @@
+#!/bin/sh
+# Issue 16, findings 1, 5 and 10: footsim replaces only results folders it made, refuses anything
+# else at --out before simulating (exit 2), normalises the path, holds a lock while writing, and
+# swaps safely where renameat2(RENAME_EXCHANGE) is refused. Every target is made here, in $tmp.
+# Usage: cli_outdir.sh path/to/footsim (run from the source folder).
+. "$(dirname "$0")/cli_check.sh"
+src=$PWD
+case $fs in /*) ;; *) fs=$PWD/$fs ;; esac
+short="--set run.duration_s=0.02"
+# finding 1: a folder holding the user's files (the reproducer: scenarios/, terrains/, notes.txt)
+mkdir -p "$tmp/thesis/scenarios/feet" "$tmp/thesis/terrains"
+cp scenarios/static_load.ini "$tmp/thesis/scenarios/" && cp scenarios/feet/*.ini "$tmp/thesis/scenarios/feet/"
+cp terrains/flat.ini "$tmp/thesis/terrains/" && echo "my notes" >"$tmp/thesis/notes.txt"
+(cd "$tmp/thesis" && "$fs" run scenarios/static_load.ini $short --out "$PWD" >/dev/null 2>"$tmp/err1")
+s1=$?
+check '[ "$s1" -eq 2 ] && grep -q "a folder footsim did not make" "$tmp/err1"'
+(cd "$tmp/thesis" && "$fs" run scenarios/static_load.ini $short --out scenarios >/dev/null 2>/dev/null)
+s2=$?
+check '[ "$s2" -eq 2 ] && [ -f "$tmp/thesis/notes.txt" ] && [ -f "$tmp/thesis/scenarios/static_load.ini" ]'
+check '[ -f "$tmp/thesis/terrains/flat.ini" ] && [ ! -e "$tmp/thesis/metrics.json" ]'
+check '[ -z "$(ls -a "$tmp/thesis" | grep -e partial -e lock)" ]'
+# campaign and render-compare refuse it the same way, before any trial or frame
+"$fs" campaign scenarios/landing_ci.ini --set campaign.seeds=1 -j 1 --out "$tmp/thesis" >/dev/null 2>"$tmp/err2"
+s3=$?
+check '[ "$s3" -eq 2 ] && grep -q "did not make" "$tmp/err2" && [ -f "$tmp/thesis/notes.txt" ]'
+# --replace replaces it on purpose
+mkdir "$tmp/mine" && echo x >"$tmp/mine/notes.txt"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/mine" --replace >/dev/null
+check '[ -f "$tmp/mine/metrics.json" ] && [ ! -e "$tmp/mine/notes.txt" ] && [ -f "$tmp/mine/.footsim-results" ]'
+# a folder an earlier version made (its files, no marker) is recognised and replaced
+mkdir "$tmp/old" && echo '{}' >"$tmp/old/metrics.json" && echo t >"$tmp/old/trajectory.csv"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/old" >/dev/null
+check '[ -f "$tmp/old/.footsim-results" ] && grep -q ankle_drop_m "$tmp/old/metrics.json"'
+# an empty folder is fine
+mkdir "$tmp/empty"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/empty" >/dev/null
+check '[ -f "$tmp/empty/metrics.json" ]'
+# finding 5: a trailing slash, "/./" and a scenario named "..ini" are put in place or refused up front
+"$fs" run scenarios/static_load.ini $short --out "$tmp/slash/" >/dev/null
+s4=$?
+check '[ "$s4" -eq 0 ] && [ -f "$tmp/slash/metrics.json" ]'
+"$fs" run scenarios/static_load.ini $short --out "$tmp/slash/./" >/dev/null
+s5=$?
+check '[ "$s5" -eq 0 ] && [ -f "$tmp/slash/metrics.json" ] && [ -z "$(ls -a "$tmp/slash" | grep partial)" ]'
+mkdir "$tmp/dots" && cp scenarios/static_load.ini "$tmp/dots/..ini"
+sed -i "s|^design = .*|design = $src/scenarios/feet/biomimetic.ini|; s|^terrain = .*|terrain = $src/terrains/flat.ini|" "$tmp/dots/..ini"
+(cd "$tmp/dots" && "$fs" run ..ini $short >/dev/null 2>"$tmp/err3")
+s6=$?
+check '[ "$s6" -eq 2 ] && grep -q "give --out" "$tmp/err3"'
+# finding 10: a symbolic link, a regular file, a FIFO at --out are refused, and left as they were
+mkdir "$tmp/target" && echo keep >"$tmp/target/keep.txt" && ln -s "$tmp/target" "$tmp/link"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/link" --replace >/dev/null 2>"$tmp/err4"
+s7=$?
+check '[ "$s7" -eq 2 ] && grep -q "symbolic link" "$tmp/err4" && [ -L "$tmp/link" ] && [ -f "$tmp/target/keep.txt" ]'
+echo data >"$tmp/file" && mkfifo "$tmp/fifo"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/file" >/dev/null 2>"$tmp/err5"
+s8=$?
+check '[ "$s8" -eq 2 ] && grep -q "is a regular file, not a results folder" "$tmp/err5" && [ "$(cat "$tmp/file")" = data ]'
+"$fs" run scenarios/static_load.ini $short --out "$tmp/fifo" >/dev/null 2>"$tmp/err6"
+s9=$?
+check '[ "$s9" -eq 2 ] && grep -q "is a FIFO" "$tmp/err6" && [ -p "$tmp/fifo" ]'
+# terrain --png never replaces a symbolic link, a FIFO or a device node
+"$fs" terrain terrains/flat.ini --png "$tmp/fifo" >/dev/null 2>"$tmp/err7"
+s10=$?
+check '[ "$s10" -eq 2 ] && grep -q "is a FIFO" "$tmp/err7" && [ -p "$tmp/fifo" ]'
+ln -s "$tmp/file" "$tmp/pnglink"
+"$fs" terrain terrains/flat.ini --png "$tmp/pnglink" >/dev/null 2>/dev/null
+s11=$?
+check '[ "$s11" -eq 2 ] && [ -L "$tmp/pnglink" ] && [ "$(cat "$tmp/file")" = data ]'
+if mknod "$tmp/null" c 1 3 2>/dev/null; then
+    "$fs" terrain terrains/flat.ini --png "$tmp/null" >/dev/null 2>"$tmp/err8"
+    s12=$?
+    check '[ "$s12" -eq 2 ] && grep -q "character device" "$tmp/err8" && [ -c "$tmp/null" ]'
+else
+    echo "skipped: mknod is not allowed here (the device-node case of finding 10)"
+fi
+# the lock: a second footsim writing the same folder is refused while the first holds it
+mkdir "$tmp/locked"
+if command -v flock >/dev/null; then
+    flock "$tmp/locked.lock" sleep 3 &
+    holder=$!
+    sleep 0.5
+    "$fs" run scenarios/static_load.ini $short --out "$tmp/locked" >/dev/null 2>"$tmp/err9"
+    s13=$?
+    check '[ "$s13" -eq 2 ] && grep -q "another footsim" "$tmp/err9" && [ ! -e "$tmp/locked/metrics.json" ]'
+    wait $holder
+else
+    echo "skipped: no flock(1) to hold the lock (the lock case)"
+fi
+# where renameat2(RENAME_EXCHANGE) is refused (EINVAL on NFS), the two-rename swap still replaces whole
+FOOTSIM_TEST_NO_EXCHANGE=1 "$fs" run scenarios/static_load.ini $short --set load.mass_kg=5 --out "$tmp/mine" >/dev/null
+check 'grep -q "\"load_kg\":[[:space:]]*5" "$tmp/mine/metrics.json" && [ -z "$(ls -a "$tmp" | grep -e "mine\.old" -e "mine\.partial")" ]'
+# leftovers of a killed run (partial and old folders beside it) are cleared by the next run
+mkdir "$tmp/mine.partial.99999" "$tmp/mine.old.99998"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/mine" >/dev/null
+check '[ -z "$(ls -a "$tmp" | grep -e "mine\.old" -e "mine\.partial")" ] && [ -f "$tmp/mine/metrics.json" ]'
+# the committed results folders carry the marker
+for d in results/landing results/roughness results/baseline; do
+    check "[ -f $d/.footsim-results ]"
+done
+finish
