@@ -2,27 +2,8 @@
 # The footsim command refuses bad input with "file:line: ..." on stderr and exit status 2, and
 # writes nothing. Usage: cli_bad_input.sh path/to/footsim [render|norender] (run from the source
 # folder; the second argument says whether footsim was built with the renderer).
-fs=$1
 renderer=${2:-render}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-
-# expect STATUS PATTERN -- ARGS...: exit status and a pattern that stderr must contain
-expect() {
-    want=$1 pattern=$2
-    shift 3
-    "$fs" "$@" >"$tmp/out" 2>"$tmp/err"
-    got=$?
-    if [ "$got" -eq "$want" ] && grep -q -- "$pattern" "$tmp/err"; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-        echo "FAIL: footsim $* gave status $got (wanted $want); stderr:" >&2
-        cat "$tmp/err" >&2
-        echo "  (wanted it to contain: $pattern)" >&2
-    fi
-}
+. "$(dirname "$0")/cli_check.sh"
 
 printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[load]\nmass_kg = -26\n' "$PWD" >"$tmp/neg.ini"
 printf '[scenario]\ndesign = nowhere.ini\n' >"$tmp/nodesign.ini"
@@ -31,7 +12,7 @@ printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[run]\nstep_s = 1
 expect 2 "$tmp/neg.ini:4: mass_kg = '-26' is out of range" -- run "$tmp/neg.ini" --out "$tmp/o1"
 expect 2 "$tmp/nodesign.ini:2: design = 'nowhere.ini': no such file" -- run "$tmp/nodesign.ini" --out "$tmp/o2"
 expect 2 "$tmp/dup.ini:5: \[run\] step_s is given twice" -- run "$tmp/dup.ini" --out "$tmp/o3"
-expect 2 "missing.ini: No such file" -- run missing.ini --out "$tmp/o4"
+expect 2 "missing.ini: cannot open an .ini file (No such file or directory)" -- run missing.ini --out "$tmp/o4"
 expect 2 "--set springs.k_d2_N_per_m: k_d2_N_per_m = '0' is out of range" -- run scenarios/static_load.ini --set springs.k_d2_N_per_m=0 --out "$tmp/o5"
 expect 2 "unknown option --frobnicate" -- run scenarios/static_load.ini --frobnicate
 expect 2 "give a SCENARIO file" -- run

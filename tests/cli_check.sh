@@ -1,11 +1,27 @@
 # Sourced by the cli_*.sh tests: $fs the footsim command (the test's first argument), $tmp a folder
-# removed at exit, check 'CONDITION' to count a check, and finish to report "N passed, N failed" and
+# removed at exit, check 'CONDITION' to count a check, expect STATUS PATTERN -- ARGS to run footsim
+# and check its exit status and stderr, and finish to report "N passed, N failed" and
 # set the exit status.
 fs=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0 failed=0
 check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1" >&2; fi; }
+# expect STATUS PATTERN -- ARGS...: footsim ARGS exits STATUS with PATTERN on stderr
+expect() {
+    want=$1 pattern=$2
+    shift 3
+    "$fs" "$@" >"$tmp/out" 2>"$tmp/err"
+    got=$?
+    if [ "$got" -eq "$want" ] && grep -q -- "$pattern" "$tmp/err"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAIL: footsim $* gave status $got (wanted $want); stderr:" >&2
+        cat "$tmp/err" >&2
+        echo "  (wanted it to contain: $pattern)" >&2
+    fi
+}
 finish() {
   echo "$passed passed, $failed failed"
   [ "$failed" -eq 0 ]

@@ -20,16 +20,23 @@ static const char *write_file(const char *name, const char *text)
     return path;
 }
 
-/* Loads text as a design; expects refusal at `line` (0: a --set or no line) with `words` in it. */
-static void refused_design(const char *text, int line, const char *words)
+/* Loads n bytes (NUL bytes allowed) as a design; expects refusal at `line` with `words`. */
+static void refused_bytes(const char *bytes, size_t n, int line, const char *words)
 {
-    const char *path = write_file("design.ini", text);
+    char path[128];
+    snprintf(path, sizeof path, "%s/design.ini", dir);
+    FILE *f = fopen(path, "wb");
+    fwrite(bytes, 1, n, f);
+    fclose(f);
     static fs_design_def def;
     static fs_foot_geom geom;
     fs_error err = {0};
     CHECK(fs_design_load(path, NULL, 0, &def, &geom, &err) == FS_BAD_INPUT);
     fs_check_refusal(err.message, path, line, words);
 }
+
+/* Loads text as a design; expects refusal at `line` (0: a --set or no line) with `words` in it. */
+static void refused_design(const char *text, int line, const char *words) { refused_bytes(text, strlen(text), line, words); }
 
 static void good_files_load(void)
 {
@@ -43,10 +50,54 @@ static void good_files_load(void)
     CHECK(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
     CHECK(fs_scenario_load("scenarios/tilt10.ini", NULL, 0, &sc, &err) == FS_OK);
     CHECK_NEAR(sc.def.tilt_deg, 10, 0);
-    /* an empty design is the defaults: Table I */
-    CHECK(fs_design_load(write_file("empty.ini", "; nothing\n"), NULL, 0, &def, &geom, &err) == FS_OK);
+    /* a design giving one key takes the defaults for the rest: Table I */
+    CHECK(fs_design_load(write_file("one.ini", "; one key\n[links]\nl1_m = 0.02\n"), NULL, 0, &def, &geom, &err) == FS_OK);
     CHECK(def.l1_m == 0.02 && def.l2_m == 0.02 && def.l3_m == 0.04 && def.l4_m == 0.015);
     CHECK(def.k_N_per_m[0] == 12000 && def.c_Ns_per_m[2] == 200 && def.design_load_kg == 26);
+    /* CRLF line ends and a byte order mark are read as the same file */
+    CHECK(fs_design_load(write_file("crlf.ini", "\xEF\xBB\xBF[links]\r\nl1_m = 0.03\r\n"), NULL, 0, &def, &geom, &err) == FS_OK);
+    CHECK(def.l1_m == 0.03);
+}
+
+/* Issue 16, finding 2: files that were silently misread are refused where they go wrong. */
+static void misread_files_are_refused(void)
+{
+    refused_design("[links]\rl1_m = 0.03\r", 1, "carriage return that does not end a line");
+    refused_design("[links] l1_m = 0.03\n", 1, "text after ']'");
+    refused_design("[links]\nl1_m = 0.03\n[ghost]\n", 3, "[ghost] has no keys");
+    refused_design("[links]\n[chains]\nscale = 1, 1, 1, 1, 1\n", 1, "[links] has no keys");
+    refused_design("", 1, "no keys");
+    refused_design(" \n\t\n\n", 1, "no keys");
+    refused_design("\xEF\xBB\xBF", 1, "no keys");
+    refused_design("; only a comment\n", 1, "no keys");
+    static const char tilt[] = "[links]\nl1_m = 0.03\0garbage\n";
+    refused_bytes(tilt, sizeof tilt - 1, 2, "a NUL byte (column 12)");
+    /* a NUL hiding an over-long line whose tail would have read as a key of its own */
+    char hidden[600];
+    size_t n = (size_t)snprintf(hidden, sizeof hidden, "[foot]\nkind = biomimetic");
+    hidden[n++] = 0;
+    memset(hidden + n, 'x', 300);
+    n += 300;
+    n += (size_t)snprintf(hidden + n, sizeof hidden - n, "kind = flat\n");
+    refused_bytes(hidden, n, 2, "a NUL byte");
+    char nuls[100] = {0};
+    refused_bytes(nuls, sizeof nuls, 1, "a NUL byte (column 1)");
+}
+
+/* Issue 16, finding 8: reading is linear in the keys; a file over the caps is refused. */
+static void caps_are_refused(void)
+{
+    size_t cap = 20 * FS_CONFIG_MAX_KEYS + 64;
+    char *text = malloc(cap);
+    size_t n = (size_t)snprintf(text, cap, "[links]\n");
+    for (int i = 0; i <= FS_CONFIG_MAX_KEYS; i++)
+        n += (size_t)snprintf(text + n, cap - n, "k%d = 1\n", i);
+    refused_design(text, FS_CONFIG_MAX_KEYS + 2, "more than 10000 keys");
+    free(text);
+    text = calloc(1, FS_CONFIG_MAX_BYTES + 2);
+    memset(text, ';', FS_CONFIG_MAX_BYTES + 1);
+    refused_design(text, 0, "bytes; an .ini file may have at most 1048576");
+    free(text);
 }
 
 static void unknown_names_are_refused(void)
@@ -73,8 +124,8 @@ static void malformed_values_are_refused(void)
     longline[sizeof longline - 2] = '\n';
     longline[sizeof longline - 1] = 0;
     char text[512];
-    snprintf(text, sizeof text, "[links]\n%s", longline);
-    refused_design(text, 2, "longer than");
+    snprintf(text, sizeof text, "[links]\nl1_m = 0.02\n%s", longline);
+    refused_design(text, 3, "longer than");
 }
 
 static void out_of_range_values_are_refused(void)
@@ -133,6 +184,6 @@ static void teardown(void)
     CHECK(system(cmd) == 0);
 }
 
-FS_TEST_MAIN(TEST(setup), TEST(good_files_load), TEST(unknown_names_are_refused), TEST(malformed_values_are_refused),
+FS_TEST_MAIN(TEST(setup), TEST(good_files_load), TEST(unknown_names_are_refused), TEST(malformed_values_are_refused), TEST(misread_files_are_refused), TEST(caps_are_refused),
              TEST(out_of_range_values_are_refused), TEST(missing_files_are_refused),
              TEST(overrides_are_checked_like_files), TEST(teardown))

@@ -1,6 +1,8 @@
 /* io_config.c: INI files read with inih into entries with line numbers, bound through a schema. */
 #include "footsim/io/fs_config.h"
 
+#include "footsim/io/fs_input.h"
+
 #include <ini.h>
 #include <errno.h>
 #include <math.h>
@@ -11,8 +13,14 @@
 
 /* ---- reading ---------------------------------------------------------------------------- */
 
+/* The bytes of a file are checked before inih sees them (a NUL would end a line early and hide
+ * its tail, a bare CR would join every line into one, text after ']' would be dropped), then fed
+ * to inih line by line from memory. Entries are found through a hash index over (section, key),
+ * rebuilt whenever a public function starts (callers may edit or remove entries), so reading
+ * and binding are linear in the number of keys. */
+
 typedef struct reader {
-    FILE *file;
+    const char *text, *end, *pos;
     fs_config *cfg;
     int line;       /* line most recently handed to inih */
     int long_line;  /* first line longer than the buffer, or 0 */
@@ -20,28 +28,76 @@ typedef struct reader {
     fs_status status;
 } reader;
 
-/* inih's line source: counts lines so the handler knows where each key stands. */
+/* inih's line source over memory: counts lines so the handler knows where each key stands. */
 static char *read_line(char *buf, int size, void *stream)
 {
     reader *r = stream;
-    if (!fgets(buf, size, r->file))
+    if (r->pos >= r->end)
         return NULL;
     r->line++;
-    size_t n = strlen(buf);
-    if (n == (size_t)size - 1 && buf[n - 1] != '\n' && !feof(r->file)) {
+    const char *nl = memchr(r->pos, '\n', (size_t)(r->end - r->pos));
+    const char *stop = nl ? nl + 1 : r->end;
+    size_t n = (size_t)(stop - r->pos);
+    if (n > (size_t)size - 1) {
         if (!r->long_line)
-            r->long_line = r->line;
-        int c; /* skip the rest of the over-long line; it is refused after parsing */
-        while ((c = fgetc(r->file)) != EOF && c != '\n') {}
+            r->long_line = r->line; /* the rest is skipped; the line is refused after parsing */
+        n = (size_t)size - 1;
     }
+    memcpy(buf, r->pos, n);
+    buf[n] = 0;
+    r->pos = stop;
     return buf;
+}
+
+static unsigned hash_key(const char *section, const char *name)
+{
+    unsigned h = 2166136261u;
+    for (const char *p = section; *p; p++)
+        h = (h ^ (unsigned char)*p) * 16777619u;
+    h = (h ^ 0xff) * 16777619u;
+    for (const char *p = name; *p; p++)
+        h = (h ^ (unsigned char)*p) * 16777619u;
+    return h;
+}
+
+static void index_insert(fs_config *cfg, int i)
+{
+    unsigned mask = (unsigned)cfg->nslots - 1, h = hash_key(cfg->entries[i].section, cfg->entries[i].name) & mask;
+    while (cfg->slots[h] >= 0)
+        h = (h + 1) & mask;
+    cfg->slots[h] = i;
+}
+
+/* Rebuilds the index for the entries as they are now, at a load factor of at most one half. */
+static int index_rebuild(fs_config *cfg, int want)
+{
+    int n = 16;
+    while (n < 2 * want)
+        n *= 2;
+    if (n != cfg->nslots) {
+        int *s = realloc(cfg->slots, (size_t)n * sizeof *s);
+        if (!s)
+            return 0;
+        cfg->slots = s;
+        cfg->nslots = n;
+    }
+    for (int i = 0; i < n; i++)
+        cfg->slots[i] = -1;
+    for (int i = 0; i < cfg->count; i++)
+        index_insert(cfg, i);
+    return 1;
 }
 
 static fs_entry *find_entry(fs_config *cfg, const char *section, const char *name)
 {
-    for (int i = 0; i < cfg->count; i++)
-        if (!strcmp(cfg->entries[i].section, section) && !strcmp(cfg->entries[i].name, name))
-            return &cfg->entries[i];
+    if (!cfg->nslots)
+        return NULL;
+    unsigned mask = (unsigned)cfg->nslots - 1;
+    for (unsigned h = hash_key(section, name) & mask; cfg->slots[h] >= 0; h = (h + 1) & mask) {
+        fs_entry *e = &cfg->entries[cfg->slots[h]];
+        if (!strcmp(e->section, section) && !strcmp(e->name, name))
+            return e;
+    }
     return NULL;
 }
 
@@ -55,6 +111,8 @@ static fs_entry *add_entry(fs_config *cfg)
         cfg->entries = e;
         cfg->capacity = cap;
     }
+    if (2 * (cfg->count + 1) > cfg->nslots && !index_rebuild(cfg, cfg->count + 1))
+        return NULL;
     fs_entry *e = &cfg->entries[cfg->count++];
     memset(e, 0, sizeof *e);
     return e;
@@ -78,6 +136,11 @@ static int on_key(void *user, const char *section, const char *name, const char 
                             r->cfg->path, r->line, section, name, old->line);
         return 0;
     }
+    if (r->cfg->count >= FS_CONFIG_MAX_KEYS) {
+        r->status = fs_fail(r->err, FS_BAD_INPUT, "%s:%d: more than %d keys; a footsim file has at most %d",
+                            r->cfg->path, r->line, FS_CONFIG_MAX_KEYS, FS_CONFIG_MAX_KEYS);
+        return 0;
+    }
     fs_entry *e = add_entry(r->cfg);
     if (!e) {
         r->status = fs_fail(r->err, FS_BAD_INPUT, "%s:%d: out of memory", r->cfg->path, r->line);
@@ -85,12 +148,66 @@ static int on_key(void *user, const char *section, const char *name, const char 
     }
     if (!copy_text(e->section, sizeof e->section, section) || !copy_text(e->name, sizeof e->name, name) ||
         !copy_text(e->value, sizeof e->value, value)) {
+        r->cfg->count--;
         r->status = fs_fail(r->err, FS_BAD_INPUT, "%s:%d: section, key or value too long (at most %d characters)",
                             r->cfg->path, r->line, FS_NAME_MAX - 1);
         return 0;
     }
     e->line = r->line;
+    index_insert(r->cfg, r->cfg->count - 1);
     return 1;
+}
+
+static int blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+/* Checks the bytes and the shape of every line before inih reads them: no NUL, no bare CR, nothing
+ * after a section's ']', no section without keys, at least one key. */
+static fs_status check_text(const char *path, const char *text, size_t len, fs_error *err)
+{
+    int line = 1, keys = 0, section_line = 0, section_keys = 0;
+    char section[FS_NAME_MAX] = "";
+    for (size_t i = 0; i < len;) {
+        size_t end = i;
+        while (end < len && text[end] != '\n') {
+            if (text[end] == 0)
+                return fs_fail(err, FS_BAD_INPUT, "%s:%d: a NUL byte (column %zu); an INI file is text: remove it",
+                               path, line, end - i + 1);
+            if (text[end] == '\r' && !(end + 1 < len && text[end + 1] == '\n'))
+                return fs_fail(err, FS_BAD_INPUT, "%s:%d: a carriage return that does not end a line (old Mac line "
+                               "ends?); save the file with LF or CRLF line ends", path, line);
+            end++;
+        }
+        size_t p = i;
+        while (p < end && blank(text[p]))
+            p++;
+        if (p < end && text[p] == '[') {
+            const char *close = memchr(text + p, ']', end - p);
+            if (!close)
+                return fs_fail(err, FS_BAD_INPUT, "%s:%d: a section line without ']'; write [section]", path, line);
+            size_t q = (size_t)(close - text) + 1;
+            while (q < end && blank(text[q]))
+                q++;
+            if (q < end && text[q] != ';' && text[q] != '#')
+                return fs_fail(err, FS_BAD_INPUT, "%s:%d: text after ']' ('%.*s'); put each key on a line of its own "
+                               "below [section]", path, line, (int)(end - q > 40 ? 40 : end - q), text + q);
+            if (section_line && section_keys == 0)
+                return fs_fail(err, FS_BAD_INPUT, "%s:%d: [%s] has no keys; give its keys, or remove the section",
+                               path, section_line, section);
+            snprintf(section, sizeof section, "%.*s", (int)(close - (text + p) - 1), text + p + 1);
+            section_line = line, section_keys = 0;
+        } else if (p < end && text[p] != ';' && text[p] != '#') {
+            keys++, section_keys++;
+        }
+        i = end + 1;
+        line++;
+    }
+    if (section_line && section_keys == 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s:%d: [%s] has no keys; give its keys, or remove the section", path,
+                       section_line, section);
+    if (keys == 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s:1: no keys (the file is empty, or blank, or only comments); give the "
+                       "file's [sections] and keys", path);
+    return FS_OK;
 }
 
 fs_status fs_config_load(fs_config *cfg, const char *path, fs_error *err)
@@ -98,30 +215,36 @@ fs_status fs_config_load(fs_config *cfg, const char *path, fs_error *err)
     memset(cfg, 0, sizeof *cfg);
     if (!copy_text(cfg->path, sizeof cfg->path, path))
         return fs_fail(err, FS_BAD_INPUT, "%.64s...: path too long", path);
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return fs_fail(err, FS_BAD_INPUT, "%s: %s; give the path of an existing .ini file", path, strerror(errno));
-    if (!S_ISREG(st.st_mode))
-        return fs_fail(err, FS_BAD_INPUT, "%s: not a regular file; give the path of an .ini file", path);
-    reader r = {.cfg = cfg, .err = err, .status = FS_OK};
-    r.file = fopen(path, "r");
-    if (!r.file)
-        return fs_fail(err, FS_BAD_INPUT, "%s: %s", path, strerror(errno));
-    /* A continuation line would silently join two values: refuse it as a syntax error. */
-    ini_allow_multiline = 0;
-    int bad = ini_parse_stream(read_line, &r, on_key, &r);
-    fclose(r.file);
-    if (r.status != FS_OK)
-        return r.status;
-    if (r.long_line && (bad == 0 || r.long_line <= bad))
-        return fs_fail(err, FS_BAD_INPUT, "%s:%d: line longer than %d characters; shorten it", path, r.long_line,
-                       ini_max_line - 3);
-    if (bad > 0)
-        return fs_fail(err, FS_BAD_INPUT,
-                       "%s:%d: not an INI line; write `[section]`, `key = value` or a `;` comment", path, bad);
-    if (bad < 0)
-        return fs_fail(err, FS_BAD_INPUT, "%s: cannot be read", path);
-    return FS_OK;
+    char *text;
+    size_t len;
+    fs_status s = fs_read_regular(path, FS_CONFIG_MAX_BYTES, "an .ini file", &text, &len, err);
+    if (s != FS_OK)
+        return s;
+    const char *start = text;
+    if (len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3)) /* a UTF-8 byte order mark: skipped */
+        start += 3;
+    s = check_text(path, start, len - (size_t)(start - text), err);
+    reader r = {.text = start, .end = text + len, .pos = start, .cfg = cfg, .err = err, .status = FS_OK};
+    int bad = 0;
+    if (s == FS_OK) {
+        /* A continuation line would silently join two values: refuse it as a syntax error. */
+        ini_allow_multiline = 0;
+        bad = ini_parse_stream(read_line, &r, on_key, &r);
+    }
+    free(text);
+    if (s == FS_OK && r.status != FS_OK)
+        s = r.status;
+    else if (s == FS_OK && r.long_line && (bad == 0 || r.long_line <= bad))
+        s = fs_fail(err, FS_BAD_INPUT, "%s:%d: line longer than %d characters; shorten it", path, r.long_line,
+                    ini_max_line - 3);
+    else if (s == FS_OK && bad > 0)
+        s = fs_fail(err, FS_BAD_INPUT, "%s:%d: not an INI line; write `[section]`, `key = value` or a `;` comment",
+                    path, bad);
+    else if (s == FS_OK && bad < 0)
+        s = fs_fail(err, FS_BAD_INPUT, "%s: cannot be read", path);
+    if (s != FS_OK)
+        fs_config_free(cfg);
+    return s;
 }
 
 fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *err)
@@ -139,6 +262,8 @@ fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *e
     section[ns] = 0;
     memcpy(name, dot + 1, nn);
     name[nn] = 0;
+    if (!index_rebuild(cfg, cfg->count + 1))
+        return fs_fail(err, FS_BAD_INPUT, "--set %s: out of memory", assignment);
     fs_entry *e = find_entry(cfg, section, name);
     if (!e) {
         e = add_entry(cfg);
@@ -149,14 +274,17 @@ fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *e
     }
     strcpy(e->value, eq + 1);
     e->line = 0;
+    index_rebuild(cfg, cfg->count);
     return FS_OK;
 }
 
 void fs_config_free(fs_config *cfg)
 {
     free(cfg->entries);
+    free(cfg->slots);
     cfg->entries = NULL;
-    cfg->count = cfg->capacity = 0;
+    cfg->slots = NULL;
+    cfg->count = cfg->capacity = cfg->nslots = 0;
 }
 
 void fs_config_dir(const fs_config *cfg, char *buf, size_t size)
@@ -179,7 +307,10 @@ static const char *where_entry(const fs_config *cfg, const fs_entry *e, char *bu
 
 const char *fs_config_where(const fs_config *cfg, const char *section, const char *name, char *buf, size_t size)
 {
-    const fs_entry *e = find_entry((fs_config *)cfg, section, name);
+    const fs_entry *e = NULL;
+    for (int i = 0; i < cfg->count && !e; i++) /* cfg is const here: no index; a message is rare */
+        if (!strcmp(cfg->entries[i].section, section) && !strcmp(cfg->entries[i].name, name))
+            e = &cfg->entries[i];
     if (e)
         return where_entry(cfg, e, buf, size);
     snprintf(buf, size, "%s ([%s] %s, default)", cfg->path, section, name);
@@ -357,6 +488,8 @@ fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *
 {
     char dir[FS_PATH_MAX], where[FS_PATH_MAX + 80];
     fs_config_dir(cfg, dir, sizeof dir);
+    if (!index_rebuild(cfg, cfg->count)) /* entries may have been edited since the last look */
+        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory", cfg->path);
     for (int i = 0; i < nkeys; i++) {
         const fs_key *k = &schema[i];
         fs_entry *e = find_entry(cfg, k->section, k->name);

@@ -15,6 +15,9 @@
 
 enum { FS_NAME_MAX = 64, FS_VALUE_MAX = 256, FS_PATH_MAX = 1024, FS_LIST_MAX = 8 };
 
+/* Caps on a file (docs/keys.md): bytes and keys. */
+enum { FS_CONFIG_MAX_BYTES = 1024 * 1024, FS_CONFIG_MAX_KEYS = 10000 };
+
 typedef struct fs_entry {
     char section[FS_NAME_MAX];
     char name[FS_NAME_MAX];
@@ -27,6 +30,7 @@ typedef struct fs_config {
     char path[FS_PATH_MAX]; /* the file as named by the user */
     fs_entry *entries;
     int count, capacity;
+    int *slots, nslots;     /* hash index over (section, name); rebuilt by each public function */
 } fs_config;
 
 typedef enum fs_key_type {
@@ -54,8 +58,12 @@ typedef struct fs_key {
     const char *help;
 } fs_key;
 
-/* Reads path into cfg. Refuses a missing or unreadable file, a syntax error, a line over
- * FS_VALUE_MAX characters, a continuation line and a key given twice in one section. */
+/* Reads path into cfg. Refuses, with file:line and the real reason: a missing, unreadable or
+ * not regular file, one over FS_CONFIG_MAX_BYTES or FS_CONFIG_MAX_KEYS keys, a NUL byte, a
+ * carriage return that does not end a line, text after a section's ']', a section without keys,
+ * a file without keys (empty, blank, only comments or a byte order mark), a syntax error, a line
+ * over FS_VALUE_MAX characters, a continuation line and a key given twice in one section. A
+ * UTF-8 byte order mark is skipped. Time and memory are linear in the file's size. */
 fs_status fs_config_load(fs_config *cfg, const char *path, fs_error *err);
 
 /* Adds a "section.key=value" override; it replaces the file's value when bound. */

@@ -1,0 +1,39 @@
+#!/bin/sh
+# Issue 16: hostile input files through the command. Each case is a finding's reproducer; each must
+# be refused with exit 2 and file:line before anything is simulated or written.
+# Usage: cli_files.sh path/to/footsim (run from the source folder).
+. "$(dirname "$0")/cli_check.sh"
+src=$PWD
+# scenario NAME DESIGN_FILE [extra lines]: a static-load scenario on that design
+scenario() {
+    printf '[scenario]\ndesign = %s\nterrain = %s/terrains/flat.ini\n[run]\nduration_s = 0.02\n%b' "$2" "$src" "${3:-}" >"$tmp/s_$1.ini"
+}
+
+# ---- finding 2: files silently misread -----------------------------------------------------------
+printf '[links]\rl1_m = 0.03\r' >"$tmp/cr.ini"
+scenario cr "$tmp/cr.ini"
+expect 2 "$tmp/cr.ini:1: a carriage return that does not end a line" -- run "$tmp/s_cr.ini" --out "$tmp/o"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[load] mass_kg = 5\n' "$src" >"$tmp/after.ini"
+expect 2 "$tmp/after.ini:3: text after ']'" -- run "$tmp/after.ini" --out "$tmp/o"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[load]\ntilt_deg = 5\0garbage\n' "$src" >"$tmp/nul.ini"
+expect 2 "$tmp/nul.ini:4: a NUL byte" -- run "$tmp/nul.ini" --out "$tmp/o"
+{ printf '[foot]\nkind = biomimetic\0'; head -c 300 /dev/zero | tr '\0' x; printf 'kind = flat\n'; } >"$tmp/hidden.ini"
+scenario hidden "$tmp/hidden.ini"
+expect 2 "$tmp/hidden.ini:2: a NUL byte" -- run "$tmp/s_hidden.ini" --out "$tmp/o"
+head -c 100 /dev/zero >"$tmp/nuls.ini"
+expect 2 "$tmp/nuls.ini:1: a NUL byte" -- model "$tmp/nuls.ini"
+: >"$tmp/empty.ini"
+printf ' \n\t\n' >"$tmp/blank.ini"
+printf '\357\273\277' >"$tmp/bom.ini"
+for f in empty blank bom; do
+    expect 2 "$tmp/$f.ini:1: no keys" -- model "$tmp/$f.ini"
+    expect 2 "$tmp/$f.ini:1: no keys" -- terrain "$tmp/$f.ini"
+done
+printf '[links]\nl1_m = 0.02\n[unknown_section]\n' >"$tmp/unknown.ini"
+expect 2 "$tmp/unknown.ini:3: \[unknown_section\] has no keys" -- model "$tmp/unknown.ini"
+# a NUL that hid an over-long line injected "seeds = 2" into a campaign
+{ printf '[campaign]\ntrial = %s/scenarios/landing_trial.ini\nseeds = 1 ;\0' "$src"; head -c 300 /dev/zero | tr '\0' x
+  printf 'seeds = 2\n[foot.flat]\nfile = %s/scenarios/feet/flat.ini\n[terrain.flat]\nfile = %s/terrains/flat.ini\n' "$src" "$src"; } >"$tmp/camp.ini"
+expect 2 "$tmp/camp.ini:3: a NUL byte" -- campaign "$tmp/camp.ini" --out "$tmp/c"
+check '[ ! -e "$tmp/o" ] && [ ! -e "$tmp/c" ]'
+finish
