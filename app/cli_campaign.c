@@ -5,7 +5,8 @@
  * results through another of its own, one trial at a time, so the fast take more. A worker
  * that dies (an ODE error exits with status 3) marks its trial failed_numerics, saying which
  * trial, which seed and how it ended; a fresh worker takes its place and the campaign goes on.
- * FOOTSIM_TEST_CRASH_SEED=N (for tests) makes a worker exit with status 3 on seed N. */
+ * FOOTSIM_TEST_CRASH_SEED=N (for tests) makes a worker exit with status 3 on seed N;
+ * FOOTSIM_TEST_KILL_IN_WRITE kills the campaign with SIGKILL half way through writing its files. */
 #include "cli.h"
 
 #include "footsim/campaign/fs_campaign.h"
@@ -314,6 +315,8 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdi
     fs_error err;
     /* everything goes into the partial folder, swapped in whole at the end */
     fs_status s = fs_campaign_write(c, results, rows, out->partial, &err);
+    if (getenv("FOOTSIM_TEST_KILL_IN_WRITE"))
+        raise(SIGKILL); /* tests: a kill in the middle of writing the results */
     if (s == FS_OK)
         s = fs_campaign_write_chart(c, rows, out->partial, &err);
     int g = s == FS_OK ? cli_gnuplot(out->partial, "chart.gp", "success.png", "campaign") : 0;

@@ -9,6 +9,7 @@
 #include "footsim/sim/fs_sim.h"
 
 #include <cJSON.h>
+#include <ode/ode.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,6 +49,8 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
         }
         obs = &observer;
     }
+    if (getenv("FOOTSIM_TEST_ODE_ERROR"))
+        dDebug(1, "FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
     fs_status rs = fs_run(sc, obs, res, &err);
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
     if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, out.partial, &err)) == FS_OK)

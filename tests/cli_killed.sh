@@ -1,0 +1,38 @@
+#!/bin/sh
+# Issue 16, findings 3 and 9: a campaign killed while writing leaves its old folder whole (no mixed
+# folder, no temporary file in it); a render-compare that fails numerically leaves the old frames
+# and filmstrip; an ODE error leaves no folder and no partial folder; a stopped worker is killed by
+# the watchdog, counted and named. Usage: cli_killed.sh path/to/footsim [render|norender].
+. "$(dirname "$0")/cli_check.sh"
+renderer=${2:-render}
+src=$PWD
+printf '[campaign]\ntrial = %s/scenarios/campaign_test_trial.ini\nseeds = 2\n[foot.bio]\nfile = %s/scenarios/feet/biomimetic.ini\n[terrain.flat]\nfile = %s/terrains/flat.ini\n' \
+    "$src" "$src" "$src" >"$tmp/camp.ini"
+short="--set run.duration_s=0.05"
+# finding 3: a campaign killed in its write phase
+"$fs" campaign "$tmp/camp.ini" $short -j 1 --out "$tmp/c" >/dev/null 2>&1
+cp "$tmp/c/summary.json" "$tmp/summary_before.json" && cp "$tmp/c/trials.csv" "$tmp/trials_before.csv"
+FOOTSIM_TEST_KILL_IN_WRITE=1 "$fs" campaign "$tmp/camp.ini" $short --set campaign.seeds=3 -j 1 --out "$tmp/c" >/dev/null 2>&1
+status=$?
+check '[ "$status" -eq 137 ] || [ "$status" -gt 128 ]'
+check 'cmp -s "$tmp/summary_before.json" "$tmp/c/summary.json" && cmp -s "$tmp/trials_before.csv" "$tmp/c/trials.csv"'
+check '[ -z "$(ls -a "$tmp/c" | grep "\.tmp\.")" ]'
+# the next campaign clears what the killed one left beside the folder, and replaces it whole
+"$fs" campaign "$tmp/camp.ini" $short --set campaign.seeds=3 -j 1 --out "$tmp/c" >/dev/null 2>&1
+check '[ -z "$(ls -a "$tmp" | grep -e "^c\.partial" -e "^c\.lock")" ]'
+check '[ "$(grep -c "^bio,flat," "$tmp/c/trials.csv")" -eq 3 ] && grep -q "\"trials\":[[:space:]]*3" "$tmp/c/summary.json"'
+# finding 9: an ODE internal error (exit 3 from ODE's handler) leaves no folder and no partial one
+FOOTSIM_TEST_ODE_ERROR=1 "$fs" run scenarios/static_load.ini $short --out "$tmp/ode" >/dev/null 2>&1
+status=$?
+check '[ "$status" -eq 3 ] && [ ! -e "$tmp/ode" ] && [ -z "$(ls -a "$tmp" | grep -e "^ode\.")" ]'
+# finding 3: render-compare failing numerically leaves the old frames and filmstrip
+if [ "$renderer" = render ]; then
+    rc="render-compare scenarios/static_load.ini scenarios/static_load.ini --size 64x32 --fps 50"
+    "$fs" $rc $short --out "$tmp/rc" >/dev/null 2>&1
+    n_before=$(ls "$tmp/rc/frames" | wc -l)
+    "$fs" $rc --set run.springs=explicit --set run.step_s=1e-3 --set run.duration_s=0.3 --out "$tmp/rc" >/dev/null 2>&1
+    status=$?
+    check '[ "$status" -eq 3 ] && [ -f "$tmp/rc/filmstrip.png" ] && [ "$(ls "$tmp/rc/frames" | wc -l)" -eq "$n_before" ] && [ "$n_before" -gt 0 ]'
+    check '[ -z "$(ls -a "$tmp" | grep -e "^rc\.")" ]'
+fi
+finish
