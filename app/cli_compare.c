@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 enum { FILMSTRIP_FRAMES = 5 };
 
@@ -43,15 +44,33 @@ static fs_status store_scene(void *user, const fs_sim *sim, fs_error *err)
     return FS_OK;
 }
 
-/* Runs sc, keeping a snapshot every 1/fps simulated seconds. */
+/* Takes room for both runs' snapshots (one every 1/fps simulated seconds), before either runs:
+ * frames are bounded by memory, at most half of the machine's. */
+static int reserve(const fs_scenario sc[2], double fps, scene_store st[2])
+{
+    double bytes = 0, frames[2];
+    for (int k = 0; k < 2; k++) {
+        const fs_scenario_def *d = &sc[k].def;
+        double steps = ceil(d->duration_s / d->step_s), every = fmax(1, round(1 / (fps * d->step_s)));
+        frames[k] = floor(steps / every) + 3;
+        bytes += frames[k] * sizeof *st[k].scene;
+    }
+    double memory = (double)sysconf(_SC_PHYS_PAGES) * (double)sysconf(_SC_PAGESIZE);
+    if (frames[0] > CLI_MAX_FRAMES || frames[1] > CLI_MAX_FRAMES || bytes > memory / 2)
+        return cli_report(FS_BAD_INPUT, "render-compare: duration_s x --fps asks for too many frames to keep "
+                                        "(over 999999, or over half of this machine's memory); lower --fps");
+    for (int k = 0; k < 2; k++) {
+        st[k].cap = (int)frames[k];
+        st[k].scene = malloc((size_t)st[k].cap * sizeof *st[k].scene);
+        if (!st[k].scene)
+            return cli_report(FS_BAD_INPUT, "render-compare: out of memory for the frames; lower --fps");
+    }
+    return 0;
+}
+
+/* Runs sc, keeping a snapshot every 1/fps simulated seconds, in st (reserved). */
 static int run_stored(const fs_scenario *sc, double fps, scene_store *st)
 {
-    const fs_scenario_def *d = &sc->def;
-    long steps = (long)ceil(d->duration_s / d->step_s), every = lround(1 / (fps * d->step_s));
-    st->cap = (int)(steps / (every < 1 ? 1 : every) + 3);
-    st->scene = malloc((size_t)st->cap * sizeof *st->scene);
-    if (!st->scene)
-        return cli_report(FS_BAD_INPUT, "render-compare: too many frames to keep; lower --fps");
     fs_run_observer obs = {1 / fps, store_scene, st};
     fs_run_result res;
     fs_error err;
@@ -208,6 +227,8 @@ int cli_render_compare(const cli_args *a)
         s = cli_report(err.status, err.message);
     if (!s)
         s = prepare(a, sc, out.partial, &o, frames_dir, r);
+    if (!s)
+        s = reserve(sc, o.fps, run);
     for (int k = 0; k < 2 && !s; k++)
         s = run_stored(&sc[k], o.fps, &run[k]);
     if (!s)

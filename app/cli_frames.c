@@ -188,6 +188,9 @@ int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, c
     if (!f)
         return cli_report(FS_IO, "out of memory");
     int s = cli_frame_opts_parse(a, sc->def.step_s, 1, &f->o);
+    if (!s && floor(sc->def.duration_s * f->o.fps) + 2 > CLI_MAX_FRAMES)
+        s = cli_report(FS_BAD_INPUT, "--fps: duration_s x fps asks for more than 999999 frames (six-digit names); "
+                                     "lower --fps or shorten run.duration_s");
     if (!s && snprintf(f->dir, sizeof f->dir, "%s", dir) >= (int)sizeof f->dir)
         s = cli_report(FS_BAD_INPUT, "--out: path too long");
     if (!s)

@@ -9,7 +9,8 @@
 
 #include <stddef.h>
 
-enum { CLI_FRAMES_PATH = 4200, CLI_PNG_LEVEL = 1 /* zlib level of frames: speed over size */ };
+enum { CLI_FRAMES_PATH = 4200, CLI_PNG_LEVEL = 1 /* zlib level of frames: speed over size */,
+       CLI_MAX_FRAMES = 999999 /* frames are named with six digits */ };
 
 typedef struct cli_frame_opts {
     int width, height;

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Issue 16: hostile input files through the command. Each case is a finding's reproducer; each must
 # be refused with exit 2 and file:line before anything is simulated or written.
-# Usage: cli_files.sh path/to/footsim (run from the source folder).
+# Usage: cli_files.sh path/to/footsim [render|norender] (run from the source folder).
+renderer=${2:-render}
 . "$(dirname "$0")/cli_check.sh"
 src=$PWD
 # scenario NAME DESIGN_FILE [extra lines]: a static-load scenario on that design
@@ -35,5 +36,19 @@ expect 2 "$tmp/unknown.ini:3: \[unknown_section\] has no keys" -- model "$tmp/un
 { printf '[campaign]\ntrial = %s/scenarios/landing_trial.ini\nseeds = 1 ;\0' "$src"; head -c 300 /dev/zero | tr '\0' x
   printf 'seeds = 2\n[foot.flat]\nfile = %s/scenarios/feet/flat.ini\n[terrain.flat]\nfile = %s/terrains/flat.ini\n' "$src" "$src"; } >"$tmp/camp.ini"
 expect 2 "$tmp/camp.ini:3: a NUL byte" -- campaign "$tmp/camp.ini" --out "$tmp/c"
-check '[ ! -e "$tmp/o" ] && [ ! -e "$tmp/c" ]'
+
+# ---- finding 6: sizes bounded up front (steps, trajectory rows, trials, frames) ---------------------
+sl=scenarios/static_load.ini
+expect 2 "run.duration_s: duration_s / step_s = 4.295e+09 steps; a run may take at most 1e+09" -- run $sl \
+    --set run.step_s=1e-5 --set run.log_interval_s=1e-5 --set run.duration_s=42949.67794 --out "$tmp/o"
+expect 2 "trajectory rows .* at most 1.07 GB" -- run $sl --set run.step_s=1e-5 --set run.log_interval_s=1e-5 \
+    --set run.duration_s=1000 --out "$tmp/o"
+expect 2 "2200000 trials; a campaign may run at most 1000000" -- campaign scenarios/roughness.ini \
+    --set campaign.seeds=100000 --out "$tmp/c"
+expect 2 "at most 1e+09" -- walk scenarios/walking.ini --set walk.steps=1000 --set walk.period_s=100 --set run.step_s=1e-7
+if [ "$renderer" = render ]; then
+    expect 2 "more than 999999 frames" -- run $sl --frames --fps 10000 --set run.duration_s=100 --out "$tmp/o"
+    expect 2 "too many frames to keep" -- render-compare $sl $sl --fps 10000 --set run.duration_s=100 --out "$tmp/o"
+fi
+check '[ ! -e "$tmp/o" ] && [ ! -e "$tmp/c" ] && [ -z "$(ls -a "$tmp" | grep -e "partial" -e "lock")" ]'
 finish

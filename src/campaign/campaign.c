@@ -296,6 +296,11 @@ static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_
                        c->nfeet ? "terrain" : "foot", c->nfeet ? "terrain.flat" : "foot.biomimetic");
     if ((long)c->first_seed + c->seeds - 1 > INT_MAX)
         return fs_fail(err, FS_BAD_INPUT, "%s: first_seed + seeds passes %d", cfg->path, INT_MAX);
+    long ntrials = (long)c->nfeet * c->nterrains * c->seeds;
+    if (ntrials > FS_CAMPAIGN_MAX_TRIALS)
+        return fs_fail(err, FS_BAD_INPUT, "%s: %d feet x %d terrains x %d seeds = %ld trials; a campaign may run at "
+                       "most %d: fewer seeds, or split it", fs_config_where(cfg, "campaign", "seeds", where, sizeof where),
+                       c->nfeet, c->nterrains, c->seeds, ntrials, FS_CAMPAIGN_MAX_TRIALS);
     for (int i = 0; i < c->nfeet; i++)
         if (!c->foot[i].path[0])
             return fs_fail(err, FS_BAD_INPUT, "%s: [foot.%s] has no file; give file = the design", cfg->path,

@@ -83,11 +83,17 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
     long every = lround(d->log_interval_s / d->step_s);
     if (every < 1)
         every = 1;
+    /* the trajectory is kept in memory: bounded before the first step */
+    double bytes = ((double)nsteps / every + 2) * res->ncols * sizeof *res->rows;
+    if (nsteps > FS_MAX_STEPS || bytes > FS_TRAJ_MAX_BYTES)
+        return fs_fail(err, FS_BAD_INPUT, "%s: duration_s / log_interval_s asks for %.3g trajectory rows (%.3g GB); "
+                       "at most %.3g GB: a longer log_interval_s or a shorter duration_s", sc->path,
+                       (double)nsteps / every + 2, bytes / 1e9, FS_TRAJ_MAX_BYTES / 1e9);
     res->capacity = (int)(nsteps / every + 2);
     res->rows = malloc((size_t)res->capacity * res->ncols * sizeof *res->rows);
     if (!res->rows)
-        return fs_fail(err, FS_BAD_INPUT, "%s: duration_s / log_interval_s asks for too many trajectory rows",
-                       sc->path);
+        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory for %d trajectory rows; a longer log_interval_s",
+                       sc->path, res->capacity);
     fs_sim sim;
     fs_status s = fs_sim_build(&sim, sc, NULL, err);
     if (s != FS_OK)

@@ -159,6 +159,20 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
                     fs_config_where(&cfg, "run", "log_interval_s", where, sizeof where), sc->def.log_interval_s,
                     sc->def.step_s);
     }
+    if (s == FS_OK) {
+        /* a run's length in steps, bounded before anything is built (counters and buffers are sized by it) */
+        const fs_scenario_def *d = &sc->def;
+        int walk = d->kind == 1;
+        double steps = (walk ? d->walk_steps * d->walk_period_s : d->duration_s) / d->step_s;
+        if (steps > FS_MAX_STEPS) {
+            char where[FS_PATH_MAX + 80];
+            s = fs_fail(err, FS_BAD_INPUT, "%s: %s / step_s = %.4g steps; a run may take at most %.0e: %s, or a longer "
+                        "step_s", fs_config_where(&cfg, walk ? "walk" : "run", walk ? "period_s" : "duration_s", where,
+                                                  sizeof where),
+                        walk ? "steps x period_s" : "duration_s", steps, (double)FS_MAX_STEPS,
+                        walk ? "fewer or shorter steps" : "a shorter duration_s");
+        }
+    }
     fs_config_free(&cfg);
     if (s == FS_OK)
         s = fs_design_load(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, err);

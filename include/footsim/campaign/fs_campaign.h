@@ -24,6 +24,7 @@ enum {
     FS_CAMPAIGN_MAX_TERRAINS = 64,
     FS_CAMPAIGN_MAX_EXPECT = 32,
     FS_CAMPAIGN_MAX_SEEDS = 100000,
+    FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x seeds (docs/keys.md) */
     FS_CAMPAIGN_MAX_SET = 256,
     FS_CAMPAIGN_NMETRICS = 12
 };

@@ -11,6 +11,10 @@
 
 enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES };
 
+/* The most memory a run's trajectory may take (docs/keys.md); a run asking for more is refused
+ * (FS_BAD_INPUT) before its first step. */
+#define FS_TRAJ_MAX_BYTES (1024.0 * 1024 * 1024)
+
 typedef struct fs_run_result {
     int steps;
     double end_time_s;

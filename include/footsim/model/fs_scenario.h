@@ -11,6 +11,9 @@
 #include "footsim/model/fs_design.h"
 #include "footsim/model/fs_terrain.h"
 
+/* The most steps one run, trial or walk may take (docs/keys.md): refused before it starts. */
+enum { FS_MAX_STEPS = 1000000000 };
+
 typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
 
 typedef struct fs_scenario_def {
