@@ -51,4 +51,13 @@ if [ "$renderer" = render ]; then
     expect 2 "too many frames to keep" -- render-compare $sl $sl --fps 10000 --set run.duration_s=100 --out "$tmp/o"
 fi
 check '[ ! -e "$tmp/o" ] && [ ! -e "$tmp/c" ] && [ -z "$(ls -a "$tmp" | grep -e "partial" -e "lock")" ]'
+
+# ---- finding 9: only regular files of bounded size are read (a FIFO blocked, /dev/zero filled memory) --
+mkfifo "$tmp/fifo.json"
+real_fs=$fs fs="$tmp/footsim_timeout" # a hang ends after 20 s (status 124) instead of stalling the suite
+printf '#!/bin/sh\nexec timeout 20 "%s" "$@"\n' "$real_fs" >"$fs" && chmod +x "$fs"
+expect 2 "fifo.json: is a FIFO; give a summary.json" -- compare "$tmp/fifo.json" results/baseline/landing.json
+expect 2 "/dev/zero: is a character device" -- compare /dev/zero results/baseline/landing.json
+expect 2 "fifo.json: is a FIFO; give an .ini file" -- model "$tmp/fifo.json"
+fs=$real_fs
 finish

@@ -25,6 +25,13 @@ check '[ "$(grep -c "^bio,flat," "$tmp/c/trials.csv")" -eq 3 ] && grep -q "\"tri
 FOOTSIM_TEST_ODE_ERROR=1 "$fs" run scenarios/static_load.ini $short --out "$tmp/ode" >/dev/null 2>&1
 status=$?
 check '[ "$status" -eq 3 ] && [ ! -e "$tmp/ode" ] && [ -z "$(ls -a "$tmp" | grep -e "^ode\.")" ]'
+# finding 9: a worker stopped (SIGSTOP) in a trial is killed by the watchdog, counted and named;
+# the campaign finishes instead of waiting forever
+FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=2 "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/w" >/dev/null 2>"$tmp/werr"
+status=$?
+check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 2 s and was killed by the watchdog" "$tmp/werr"'
+check 'grep -q "1 worker made no progress" "$tmp/werr" && [ "$(grep -c "failed_numerics" "$tmp/w/trials.csv")" -eq 1 ]'
+check 'grep "failed_numerics" "$tmp/w/trials.csv" | grep -q "^bio,flat,2,"'
 # finding 3: render-compare failing numerically leaves the old frames and filmstrip
 if [ "$renderer" = render ]; then
     rc="render-compare scenarios/static_load.ini scenarios/static_load.ini --size 64x32 --fps 50"

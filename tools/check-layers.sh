@@ -1,6 +1,6 @@
 #!/bin/sh
 # Checks that no file includes a header from a layer above its own (docs/architecture.md).
-# Layers, lowest first: base io model sim analysis experiment campaign; render sits on sim beside
+# Layers, lowest first: base exec io model sim analysis experiment campaign; render sits on sim beside
 # analysis and above; app/ (the command) and tests/ may include anything. A file's layer is its
 # folder (src/LAYER/, include/footsim/LAYER/, render/); a footsim header's layer is its folder under
 # include/footsim/. Exit 1 with every offending line listed, 0 when the layering holds.
@@ -8,8 +8,8 @@ set -eu
 cd "$(dirname "$0")/.."
 rank() {
   case "$1" in
-    base) echo 0 ;; io) echo 1 ;; model) echo 2 ;; sim) echo 3 ;; analysis) echo 4 ;;
-    render) echo 4 ;; experiment) echo 5 ;; campaign) echo 6 ;; *) echo 99 ;;
+    base) echo 0 ;; exec) echo 1 ;; io) echo 2 ;; model) echo 3 ;; sim) echo 4 ;; analysis) echo 5 ;;
+    render) echo 5 ;; experiment) echo 6 ;; campaign) echo 7 ;; *) echo 99 ;;
   esac
 }
 bad=0
@@ -20,7 +20,7 @@ for f in $(find src include/footsim render -name '*.c' -o -name '*.h' | sort); d
     render/*) layer=render ;;
   esac
   own=$(rank "$layer")
-  [ "$own" -eq 99 ] && { echo "$f: not in a layer folder (base io model sim analysis experiment campaign render)"; bad=1; continue; }
+  [ "$own" -eq 99 ] && { echo "$f: not in a layer folder (base exec io model sim analysis experiment campaign render)"; bad=1; continue; }
   grep -n '#include "footsim/' "$f" | while IFS= read -r line; do
     inc=$(echo "$line" | sed 's|.*#include "footsim/\([^/]*\)/.*|\1|')
     r=$(rank "$inc")

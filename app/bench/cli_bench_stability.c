@@ -7,25 +7,23 @@
  * scaled, static_load.ini) and drop (the landing robot let fall, landing_trial.ini at its mean
  * pose). A run steps its scenario for a fixed time with the run-time checks of fs_check.h, which
  * record a drift and stop at a blow-up: the classifier and the run-time checks are one piece of
- * code. Each run is a forked child: an ODE error (which exits the process), a crash or a hang
- * (killed after CHILD_LIMIT_S) is a blown-up run and the sweep goes on; results do not depend on
- * -j. Files: DIR/stability.csv, stability_<slice>.gp and .png, stability.md, each whole or not at
+ * code. The runs go to footsim's pool of worker processes (fs_pool.h): an ODE error (which exits
+ * the process), a crash or a hang (killed by the pool's watchdog) is a blown-up run and the sweep
+ * goes on; results do not depend on -j. Files: DIR/stability.csv, stability_<slice>.gp and .png, stability.md, each whole or not at
  * all. */
 #include "cli.h"
 
+#include "footsim/exec/fs_pool.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/sim/fs_sim.h"
 
-#include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-enum { NSLICES = 4, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, CHILD_LIMIT_S = 300 };
+enum { NSLICES = 4, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64 };
 
 /* A swept quantity and its values (full sweep, then --quick). */
 typedef struct slice {
@@ -144,118 +142,74 @@ static void run_config(const config *c, const fs_design_def *base, double durati
     fs_scenario_free(&sc);
 }
 
-/* ---- the pool of children --------------------------------------------------------------------- */
+/* ---- the runs, in footsim's pool of worker processes -------------------------------------------- */
 
-typedef struct child {
-    pid_t pid;
-    int fd, index;
-} child;
+typedef struct sweep {
+    const config *cfg;
+    outcome *out;
+    const fs_design_def *base;
+    double duration, t0;
+} sweep;
 
-static int start_child(const config *c, const fs_design_def *base, double duration, int index, child *ch)
+/* In a worker: one configuration. */
+static void run_task(int index, void *result, void *user)
 {
-    int fd[2];
-    if (pipe(fd) != 0)
-        return 0;
-    fflush(stdout);
-    fflush(stderr);
-    pid_t pid = fork();
-    if (pid == 0) {
-        close(fd[0]);
-        alarm(CHILD_LIMIT_S);
-        static outcome o;
-        run_config(c, base, duration, &o);
-        /* smaller than PIPE_BUF and the pipe's buffer: written whole, and without waiting */
-        _exit(write(fd[1], &o, sizeof o) == (ssize_t)sizeof o ? 0 : FS_IO);
-    }
-    close(fd[1]);
-    if (pid < 0) {
-        close(fd[0]);
-        return 0;
-    }
-    *ch = (child){pid, fd[0], index};
-    return 1;
+    const sweep *w = user;
+    run_config(&w->cfg[index], w->base, w->duration, result);
 }
 
-/* The outcome of a child that has ended: what it sent, or how it died (a blown-up run). */
-static void finish_child(const child *ch, int status, const config *c, outcome *o)
+/* In the parent: a run's outcome, or the refused scenario that stops the sweep (a bug here). */
+static fs_status take_task(int index, const void *result, void *user, fs_error *err)
 {
-    ssize_t got = read(ch->fd, o, sizeof *o);
-    close(ch->fd);
-    if (got == (ssize_t)sizeof *o && WIFEXITED(status) && WEXITSTATUS(status) == 0)
-        return;
+    const sweep *w = user;
+    const outcome *o = result;
+    if (o->status != FS_OK)
+        return fs_fail(err, (fs_status)o->status, "%s", o->error);
+    w->out[index] = *o;
+    return FS_OK;
+}
+
+/* In the parent: a run whose worker died (an ODE error, a crash) or hung: a blown-up run. */
+static void task_died(int index, const fs_pool_death *d, void *user)
+{
+    const sweep *w = user;
+    const config *c = &w->cfg[index];
+    outcome *o = &w->out[index];
     memset(o, 0, sizeof *o);
     o->cls = FS_CHECK_BLOWN_UP;
     o->time_s = o->drift_time_s = o->sim_time_s = o->loop_m = o->excess_J = o->bound_J = NAN;
     o->speed_m_per_s = o->limit_s = NAN;
-    if (WIFEXITED(status))
-        snprintf(o->reason, sizeof o->reason, WEXITSTATUS(status) == FS_NUMERICAL ? "ode_error" : "exit_%d",
-                 WEXITSTATUS(status));
+    if (d->timed_out)
+        snprintf(o->reason, sizeof o->reason, "timed_out");
+    else if (d->exited)
+        snprintf(o->reason, sizeof o->reason, d->status == FS_NUMERICAL ? "ode_error" : "exit_%d", d->status);
     else
-        snprintf(o->reason, sizeof o->reason, WTERMSIG(status) == SIGALRM ? "timed_out" : "signal_%d",
-                 WTERMSIG(status));
-    fprintf(stderr, "footsim bench stability: the run %s, %s, %s springs, h = %g s, %s = %g %s\n", o->reason,
-            STEPPERS[c->stepper], SPRINGS[c->springs], c->step_s, SLICES[c->slice].name, c->value,
+        snprintf(o->reason, sizeof o->reason, "signal_%d", d->signal);
+    fprintf(stderr, "footsim bench stability: the run %s (%s), %s, %s springs, h = %g s, %s = %g %s\n", o->reason,
+            d->how, STEPPERS[c->stepper], SPRINGS[c->springs], c->step_s, SLICES[c->slice].name, c->value,
             "(counted as blown_up)");
 }
 
-static void progress(int done, int n, double t0)
+static void progress(int done, int n, void *user)
 {
+    const sweep *w = user;
     int tty = isatty(STDERR_FILENO);
-    if (!tty && done % 50 != 0 && done != n)
+    if (done == 0 || (!tty && done % 50 != 0 && done != n))
         return;
     fprintf(stderr, tty ? "\rfootsim bench stability: %d/%d runs, %.0f s" : "footsim bench stability: %d/%d runs, %.0f s\n",
-            done, n, fs_clock_s() - t0);
+            done, n, fs_clock_s() - w->t0);
     if (tty && done == n)
         fputc('\n', stderr);
 }
 
-/* Ends the children still running (after a failure) and collects them. */
-static void stop_children(child *ch, int running)
-{
-    for (int i = 0; i < running; i++) {
-        kill(ch[i].pid, SIGKILL);
-        waitpid(ch[i].pid, NULL, 0);
-        close(ch[i].fd);
-    }
-}
-
-/* Runs every configuration in up to jobs children at a time. */
+/* Runs every configuration in up to jobs workers. */
 static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, const fs_design_def *base,
                          double duration, fs_error *err)
 {
-    child ch[MAX_WORKERS];
-    int next = 0, done = 0, running = 0;
-    double t0 = fs_clock_s();
-    while (done < n) {
-        while (running < jobs && next < n) {
-            if (!start_child(&cfg[next], base, duration, next, &ch[running])) {
-                int e = errno;
-                stop_children(ch, running);
-                return fs_fail(err, FS_IO, "cannot start a child process (%s)", strerror(e));
-            }
-            next++, running++;
-        }
-        int status;
-        pid_t pid = waitpid(-1, &status, 0);
-        if (pid < 0) {
-            int e = errno;
-            stop_children(ch, running);
-            return fs_fail(err, FS_IO, "waitpid: %s", strerror(e));
-        }
-        for (int i = 0; i < running; i++)
-            if (ch[i].pid == pid) {
-                finish_child(&ch[i], status, &cfg[ch[i].index], &out[ch[i].index]);
-                const outcome *o = &out[ch[i].index];
-                ch[i] = ch[--running];
-                if (o->status != FS_OK) {
-                    stop_children(ch, running);
-                    return fs_fail(err, (fs_status)o->status, "%s", o->error);
-                }
-                progress(++done, n, t0);
-                break;
-            }
-    }
-    return FS_OK;
+    sweep w = {cfg, out, base, duration, fs_clock_s()};
+    fs_pool_spec spec = {.ntasks = n, .jobs = jobs, .result_size = sizeof(outcome), .user = &w, .run = run_task,
+                         .done = take_task, .died = task_died, .progress = progress};
+    return fs_pool_run(&spec, NULL, err);
 }
 
 /* ---- the grid --------------------------------------------------------------------------------- */

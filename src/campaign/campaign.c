@@ -2,6 +2,7 @@
  * medians), result files, expectations and the comparison of two summaries. */
 #include "footsim/campaign/fs_campaign.h"
 
+#include "footsim/io/fs_input.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/model/fs_scenario.h"
 
@@ -886,28 +887,12 @@ int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *o
 
 static cJSON *read_summary(const char *path, fs_error *err)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fs_fail(err, FS_BAD_INPUT, "%s: %s; give a summary.json written by footsim campaign", path, strerror(errno));
+    char *text;
+    size_t len;
+    /* a regular file of bounded size: a FIFO or /dev/zero is refused, not waited on or read forever */
+    if (fs_read_regular(path, FS_SUMMARY_MAX_BYTES, "a summary.json written by footsim campaign", &text, &len, err) !=
+        FS_OK)
         return NULL;
-    }
-    char *text = NULL;
-    size_t len = 0, cap = 0, n;
-    char chunk[8192];
-    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0) {
-        if (len + n + 1 > cap) {
-            cap = 2 * (len + n + 1);
-            char *t = realloc(text, cap);
-            if (!t)
-                break;
-            text = t;
-        }
-        memcpy(text + len, chunk, n);
-        len += n;
-    }
-    fclose(f);
-    if (text)
-        text[len] = 0;
     cJSON *root = text ? cJSON_Parse(text) : NULL;
     free(text);
     if (!root || !cJSON_IsArray(cJSON_GetObjectItemCaseSensitive(root, "rows"))) {

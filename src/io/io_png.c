@@ -1,6 +1,7 @@
 /* io_png.c: PNG reading and writing with libpng. */
 #include "footsim/io/fs_png.h"
 
+#include "footsim/io/fs_input.h"
 #include "footsim/io/fs_output.h"
 
 #include <png.h>
@@ -21,9 +22,10 @@ static void png_quiet_warning(png_structp png, png_const_charp message) { (void)
 fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, double **values, fs_error *err)
 {
     *values = NULL;
-    FILE *f = fopen(path, "rb");
+    fs_error why;
+    FILE *f = fs_open_regular(path, FS_PNG_MAX_BYTES, "a grayscale PNG heightmap", &why);
     if (!f)
-        return fs_fail(err, FS_BAD_INPUT, "%s: cannot open heightmap %s; give an existing PNG file", where, path);
+        return fs_fail(err, FS_BAD_INPUT, "%s: heightmap %s", where, why.message);
     unsigned char sig[8];
     if (fread(sig, 1, 8, f) != 8 || png_sig_cmp(sig, 0, 8)) {
         fclose(f);

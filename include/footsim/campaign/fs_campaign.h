@@ -25,6 +25,7 @@ enum {
     FS_CAMPAIGN_MAX_EXPECT = 32,
     FS_CAMPAIGN_MAX_SEEDS = 100000,
     FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x seeds (docs/keys.md) */
+    FS_SUMMARY_MAX_BYTES = 64 * 1024 * 1024, /* a summary.json compare reads */
     FS_CAMPAIGN_MAX_SET = 256,
     FS_CAMPAIGN_NMETRICS = 12
 };

@@ -5,6 +5,9 @@
 
 #include "footsim/base/fs_error.h"
 
+/* The largest heightmap file read, bytes (a regular file; 16 Mpixels of 16 bits uncompressed). */
+#define FS_PNG_MAX_BYTES (64L * 1024 * 1024)
+
 /* Reads an 8- or 16-bit grayscale PNG; *values (malloc'd, w*h, row 0 first) are in [0, 1]. */
 fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, double **values, fs_error *err);
 
