@@ -1,9 +1,11 @@
 # Thin wrapper over CMake: the README's two commands, `make demo` and `make test`.
 BUILD ?= build
 CMAKE_FLAGS ?=
+# extra ctest arguments, e.g. CTEST_ARGS='-L fast'
+CTEST_ARGS ?=
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps configure build demo test asan clean
+.PHONY: all deps configure build demo test check asan clean
 
 all: build
 
@@ -23,7 +25,11 @@ demo: build
 	$(BUILD)/footsim demo
 
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+# Only the tests labelled fast (under a minute in all): for the edit-build-check loop.
+check: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L fast $(CTEST_ARGS)
 
 # The whole suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.
 asan:

@@ -1,20 +1,34 @@
 /* fs_test.h: footsim's tiny test harness. Each test file defines TEST functions and lists them in
  * FS_TEST_MAIN; the runner prints each failure with its file and line and ends with the line
- * "N passed, N failed" that CI reads. */
+ * "N passed, N failed" that CI reads.
+ *
+ * CHECK records a failure and goes on; REQUIRE records it and ends the test function at once (what
+ * follows would run on data that was never made: a failed load, build or run). */
 #ifndef FS_TEST_H
 #define FS_TEST_H
 
 #include <math.h>
+#include <setjmp.h>
 #include <stdio.h>
 #include <string.h>
 
 static int fs_test_failures;
+static jmp_buf fs_test_abort; /* where a failed REQUIRE returns to: the runner */
 
 #define CHECK(cond)                                                                          \
     do {                                                                                     \
         if (!(cond)) {                                                                       \
             fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond);         \
             fs_test_failures++;                                                              \
+        }                                                                                    \
+    } while (0)
+
+#define REQUIRE(cond)                                                                        \
+    do {                                                                                     \
+        if (!(cond)) {                                                                       \
+            fprintf(stderr, "%s:%d: requirement failed, test ended: %s\n", __FILE__, __LINE__, #cond); \
+            fs_test_failures++;                                                              \
+            longjmp(fs_test_abort, 1);                                                       \
         }                                                                                    \
     } while (0)
 
@@ -40,6 +54,13 @@ static inline void fs_check_refusal(const char *message, const char *path, int l
     }
 }
 
+/* Runs one test function; a failed REQUIRE inside it comes back here. */
+static inline void fs_test_run_one(void (*fn)(void))
+{
+    if (!setjmp(fs_test_abort))
+        fn();
+}
+
 typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case;
 
 /* `test_x NAME` runs only the tests whose name contains NAME. */
@@ -53,7 +74,7 @@ typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case
             if (argc > 1 && !strstr(cases[i].name, argv[1]))                                 \
                 continue;                                                                    \
             int before = fs_test_failures;                                                   \
-            cases[i].fn();                                                                   \
+            fs_test_run_one(cases[i].fn);                                                    \
             int ok = fs_test_failures == before;                                             \
             printf("%s %s\n", ok ? "ok  " : "FAIL", cases[i].name);                          \
             ok ? passed++ : failed++;                                                        \

@@ -127,7 +127,7 @@ static void write_summary(const char *dir, void (*change)(fs_campaign_row *))
     summarized(&c, rows);
     if (change)
         change(rows);
-    CHECK(fs_make_dirs(dir, &err) == FS_OK);
+    REQUIRE(fs_make_dirs(dir, &err) == FS_OK);
     CHECK(fs_campaign_write_summary(&c, rows, dir, &err) == FS_OK);
 }
 
@@ -179,14 +179,14 @@ static void test_load(void)
 {
     static fs_campaign c;
     fs_error err;
-    CHECK(fs_campaign_load("scenarios/landing_ci.ini", NULL, 0, &c, &err) == FS_OK);
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", NULL, 0, &c, &err) == FS_OK);
     CHECK(c.nfeet == 2 && c.nterrains == 3 && c.seeds == 5 && c.first_seed == 1 && !c.sweep[0]);
     CHECK(!strcmp(c.foot[1].name, "flat") && !strcmp(c.terrain[2].name, "complex_uneven"));
     CHECK(c.foot[0].path[0] == '/');
     CHECK(fs_campaign_ntrials(&c) == 30);
     const char *sets[] = {"campaign.seeds=2", "run.step_s=2e-4", "expect.e.foot=flat", "expect.e.terrain=flat",
                           "tolerance.peak_force_N=0.2, 3"};
-    CHECK(fs_campaign_load("scenarios/landing_ci.ini", sets, 5, &c, &err) == FS_OK);
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", sets, 5, &c, &err) == FS_OK);
     CHECK(c.seeds == 2 && c.nset == 1 && !strcmp(c.set[0], "run.step_s=2e-4"));
     CHECK(c.nexpect == 1 && c.expect[0].foot == 1 && c.expect[0].terrain == 0 && c.expect[0].min_success == 0);
     CHECK(c.tolerance[4][0] == 0.2 && c.tolerance[4][1] == 3);
@@ -201,7 +201,7 @@ static void test_sweep(void)
 {
     static fs_campaign c;
     fs_error err;
-    CHECK(fs_campaign_load("scenarios/roughness.ini", NULL, 0, &c, &err) == FS_OK);
+    REQUIRE(fs_campaign_load("scenarios/roughness.ini", NULL, 0, &c, &err) == FS_OK);
     CHECK(!strcmp(c.sweep, "rough.rms_m") && c.nterrains == 11);
     CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set, "rough.rms_m=0.003"));
     CHECK(c.terrain[10].sweep_value == 0.02);

@@ -45,7 +45,7 @@ static void test_small_oscillation_frequency(void)
         const int per = 400, periods = 10, n = per * periods + 1;
         fs_reference_def def = {CHAIN, 0, 0, 0, 0, 1e-12, {amp * shape[k][0], amp * shape[k][1]}};
         fs_reference_state *s = calloc((size_t)n, sizeof *s);
-        CHECK(fs_reference_run(&d, &g, &def, period / per, n, s, &err) == FS_OK);
+        REQUIRE(fs_reference_run(&d, &g, &def, period / per, n, s, &err) == FS_OK);
         /* the ankle joint angle swings about 0: time its upward zero crossings */
         double first = -1, last = -1;
         int crossings = 0;
@@ -108,9 +108,9 @@ static void test_tolerance_halved(void)
     enum { N = 201 };
     static fs_reference_state a[N], b[N];
     fs_reference_def def = {CHAIN, 26 * 9.81, 0.02, 9.81, 0, 1e-10, {0, 0}};
-    CHECK(fs_reference_run(&d, &g, &def, 1e-3, N, a, &err) == FS_OK);
+    REQUIRE(fs_reference_run(&d, &g, &def, 1e-3, N, a, &err) == FS_OK);
     def.tolerance = 5e-11;
-    CHECK(fs_reference_run(&d, &g, &def, 1e-3, N, b, &err) == FS_OK);
+    REQUIRE(fs_reference_run(&d, &g, &def, 1e-3, N, b, &err) == FS_OK);
     double diff = 0;
     for (int i = 0; i < N; i++)
         for (int k = 0; k < 3; k++)
@@ -127,14 +127,14 @@ static void test_ode_against_reference(void)
     const char *set[] = {"run.step_s=1e-5", "run.stepper=step", "run.springs=implicit"};
     static fs_scenario sc;
     fs_error err;
-    CHECK(fs_scenario_load("scenarios/static_load.ini", set, 3, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 3, &sc, &err) == FS_OK);
     const double T = 0.2, dt = 1e-5;
     fs_reference_def def = {CHAIN, sc.def.load_kg * sc.def.gravity_m_per_s2, sc.def.ramp_s, sc.def.gravity_m_per_s2,
                             0, 1e-10, {0, 0}};
     fs_track ref, run;
     CHECK(fs_track_reference(&sc.design, &sc.geom, &def, dt, (int)lround(T / dt) + 1, &ref, &err) == FS_OK);
     fs_sim_options opts = {.pinned_chain = CHAIN + 1};
-    CHECK(fs_track_run(&sc, &opts, T, &run, &err) == FS_OK);
+    REQUIRE(fs_track_run(&sc, &opts, T, &run, &err) == FS_OK);
     fs_track_error e;
     CHECK(fs_track_compare(&run, &ref, &e, &err) == FS_OK);
     double travel = 0, swing = 0, speed = 0, rate = 0;

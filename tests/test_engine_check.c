@@ -11,8 +11,8 @@
 static void build(fs_scenario *sc, fs_sim *sim, const char **set, int nset)
 {
     fs_error err;
-    CHECK(fs_scenario_load("scenarios/static_load.ini", set, nset, sc, &err) == FS_OK);
-    CHECK(fs_sim_build(sim, sc, NULL, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, nset, sc, &err) == FS_OK);
+    REQUIRE(fs_sim_build(sim, sc, NULL, &err) == FS_OK);
 }
 
 /* Built and stepped once (the checks' reference taken); returns the named body. */

@@ -29,20 +29,20 @@ static void static_load_hashes_to_its_committed_value(void)
     static fs_scenario sc;
     fs_error err;
     fs_run_result r;
-    CHECK(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
-    CHECK(fs_run(&sc, NULL, &r, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
+    REQUIRE(fs_run(&sc, NULL, &r, &err) == FS_OK);
     uint64_t h = hash_rows(&r);
     fs_run_free(&r);
     fs_scenario_free(&sc);
     if (getenv("FS_HASH_UPDATE")) {
         FILE *f = fopen(HASH_FILE, "w");
-        CHECK(f != NULL);
+        REQUIRE(f != NULL);
         fprintf(f, "%016" PRIx64 "\n", h);
         fclose(f);
         return;
     }
     FILE *f = fopen(HASH_FILE, "r");
-    CHECK(f != NULL);
+    REQUIRE(f != NULL);
     uint64_t want = 0;
     CHECK(f && fscanf(f, "%" SCNx64, &want) == 1);
     if (f)
@@ -59,8 +59,8 @@ static double quickstep_end(const char *duration)
     fs_error err;
     fs_run_result r;
     const char *set[] = {"run.stepper=quickstep", duration};
-    CHECK(fs_scenario_load("scenarios/static_load.ini", set, 2, &sc, &err) == FS_OK);
-    CHECK(fs_run(&sc, NULL, &r, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 2, &sc, &err) == FS_OK);
+    REQUIRE(fs_run(&sc, NULL, &r, &err) == FS_OK);
     double z = r.ankle_end_m[2];
     fs_run_free(&r);
     fs_scenario_free(&sc);

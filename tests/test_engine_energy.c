@@ -12,10 +12,10 @@ static void fall(const char *springs, const char *step, double *gain, double *in
     fs_error err;
     const char *set[] = {"springs.c_d1_Ns_per_m=0", "springs.c_d2_Ns_per_m=0", "springs.c_d3_Ns_per_m=0",
                          "load.mass_kg=0", springs, step};
-    CHECK(fs_scenario_load("scenarios/static_load.ini", set, 6, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 6, &sc, &err) == FS_OK);
     fs_sim sim;
     fs_sim_options opts = {.with_ground = 0, .hold_rear_foot = 0};
-    CHECK(fs_sim_build(&sim, &sc, &opts, &err) == FS_OK);
+    REQUIRE(fs_sim_build(&sim, &sc, &opts, &err) == FS_OK);
     /* set every toe swinging about its MTP joint at 20 rad/s */
     for (int i = 0; i < FS_CHAINS; i++) {
         const fs_hinge_geom *h = &sc.geom.hinge[sc.geom.chain[i].mtp_hinge];

@@ -14,8 +14,8 @@ static void run_static(const char **set, int n, fs_run_result *r)
 {
     static fs_scenario sc;
     fs_error err;
-    CHECK(fs_scenario_load("scenarios/static_load.ini", set, n, &sc, &err) == FS_OK);
-    CHECK(fs_run(&sc, NULL, r, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, n, &sc, &err) == FS_OK);
+    REQUIRE(fs_run(&sc, NULL, r, &err) == FS_OK);
     fs_scenario_free(&sc);
 }
 
@@ -103,8 +103,8 @@ static void foot_pairs_change_no_result(void)
     const char *trial[] = {"scenario.terrain=../terrains/complex_uneven.ini", "run.collide=all"};
     fs_trial_result ta, tb;
     fs_error err;
-    CHECK(fs_trial_run("scenarios/landing_trial.ini", trial, 1, 1, &ta, &err) == FS_OK);
-    CHECK(fs_trial_run("scenarios/landing_trial.ini", trial, 2, 1, &tb, &err) == FS_OK);
+    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", trial, 1, 1, &ta, &err) == FS_OK);
+    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", trial, 2, 1, &tb, &err) == FS_OK);
     CHECK(ta.steps == tb.steps && !memcmp(&ta.ankle_drop_m, &tb.ankle_drop_m, sizeof ta.ankle_drop_m) &&
           !memcmp(&ta.peak_force_N, &tb.peak_force_N, sizeof ta.peak_force_N));
 }

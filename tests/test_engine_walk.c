@@ -10,9 +10,9 @@ static void machine_takes_its_steps(void)
     const char *set[] = {"walk.steps=3", "scenario.terrain=../terrains/flat.ini", "foot.kind=flat"};
     static fs_scenario sc;
     fs_error err;
-    CHECK(fs_scenario_load("scenarios/walking.ini", set, 3, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/walking.ini", set, 3, &sc, &err) == FS_OK);
     fs_walk_result r;
-    CHECK(fs_walk_run(&sc, &r, &err) == FS_OK);
+    REQUIRE(fs_walk_run(&sc, &r, &err) == FS_OK);
     CHECK(r.steps_completed + r.falls == 3);
     CHECK(r.steps_completed == 3);
     CHECK(r.rough_steps == 0);
@@ -26,7 +26,7 @@ static void only_walk_scenarios_walk(void)
 {
     static fs_scenario sc;
     fs_error err;
-    CHECK(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
     fs_walk_result r;
     CHECK(fs_walk_run(&sc, &r, &err) == FS_BAD_INPUT);
     fs_scenario_free(&sc);
@@ -44,9 +44,9 @@ static void carriage_work_closes_the_energy_balance(void)
                              explicit_springs ? "run.step_s=2e-5" : "run.step_s=1e-4"};
         static fs_scenario sc;
         fs_error err = {FS_OK, ""};
-        CHECK(fs_scenario_load("scenarios/walking.ini", set, 5, &sc, &err) == FS_OK);
+        REQUIRE(fs_scenario_load("scenarios/walking.ini", set, 5, &sc, &err) == FS_OK);
         fs_walk_result r;
-        CHECK(fs_walk_run(&sc, &r, &err) == FS_OK);
+        REQUIRE(fs_walk_run(&sc, &r, &err) == FS_OK);
         if (err.status != FS_OK)
             fprintf(stderr, "  %s\n", err.message);
         fs_scenario_free(&sc);

@@ -43,19 +43,19 @@ static void good_files_load(void)
     static fs_design_def def;
     static fs_foot_geom geom;
     fs_error err;
-    CHECK(fs_design_load("scenarios/feet/biomimetic.ini", NULL, 0, &def, &geom, &err) == FS_OK);
-    CHECK(fs_design_load("scenarios/feet/flat.ini", NULL, 0, &def, &geom, &err) == FS_OK);
+    REQUIRE(fs_design_load("scenarios/feet/biomimetic.ini", NULL, 0, &def, &geom, &err) == FS_OK);
+    REQUIRE(fs_design_load("scenarios/feet/flat.ini", NULL, 0, &def, &geom, &err) == FS_OK);
     CHECK(def.kind == FS_FOOT_FLAT);
     static fs_scenario sc;
-    CHECK(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
-    CHECK(fs_scenario_load("scenarios/tilt10.ini", NULL, 0, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/tilt10.ini", NULL, 0, &sc, &err) == FS_OK);
     CHECK_NEAR(sc.def.tilt_deg, 10, 0);
     /* a design giving one key takes the defaults for the rest: Table I */
-    CHECK(fs_design_load(write_file("one.ini", "; one key\n[links]\nl1_m = 0.02\n"), NULL, 0, &def, &geom, &err) == FS_OK);
+    REQUIRE(fs_design_load(write_file("one.ini", "; one key\n[links]\nl1_m = 0.02\n"), NULL, 0, &def, &geom, &err) == FS_OK);
     CHECK(def.l1_m == 0.02 && def.l2_m == 0.02 && def.l3_m == 0.04 && def.l4_m == 0.015);
     CHECK(def.k_N_per_m[0] == 12000 && def.c_Ns_per_m[2] == 200 && def.design_load_kg == 26);
     /* CRLF line ends and a byte order mark are read as the same file */
-    CHECK(fs_design_load(write_file("crlf.ini", "\xEF\xBB\xBF[links]\r\nl1_m = 0.03\r\n"), NULL, 0, &def, &geom, &err) == FS_OK);
+    REQUIRE(fs_design_load(write_file("crlf.ini", "\xEF\xBB\xBF[links]\r\nl1_m = 0.03\r\n"), NULL, 0, &def, &geom, &err) == FS_OK);
     CHECK(def.l1_m == 0.03);
 }
 
@@ -157,7 +157,7 @@ static void overrides_are_checked_like_files(void)
     static fs_scenario sc;
     fs_error err;
     const char *ok[] = {"springs.k_d1_N_per_m=9000", "run.step_s=5e-5"};
-    CHECK(fs_scenario_load("scenarios/static_load.ini", ok, 2, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", ok, 2, &sc, &err) == FS_OK);
     CHECK(sc.design.k_N_per_m[0] == 9000 && sc.def.step_s == 5e-5);
     const char *bad[][1] = {{"springs.k_d1_N_per_m=-1"}, {"springs.k_d9_N_per_m=1"}, {"nosection=1"},
                             {"run.stepper=rk4"}, {"warp.speed=9"}};

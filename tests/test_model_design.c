@@ -45,9 +45,9 @@ static void built_foot_rests_on_heel_and_toes(void)
     static fs_scenario sc;
     fs_error err;
     const char *set[] = {"load.mass_kg=0"};
-    CHECK(fs_scenario_load("scenarios/static_load.ini", set, 1, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 1, &sc, &err) == FS_OK);
     fs_sim sim;
-    CHECK(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
     for (int i = 0; i < 5000; i++)
         CHECK(fs_sim_step(&sim, &err) == FS_OK);
     const fs_foot_geom *g = &sc.geom;

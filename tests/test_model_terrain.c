@@ -96,7 +96,7 @@ static void spheres_rest_on_the_surface(void)
         terrain_path(path, sizeof path, terrains[i]);
         static fs_terrain t;
         fs_error err;
-        CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_OK);
+        REQUIRE(fs_terrain_load(path, NULL, 0, &t, &err) == FS_OK);
         CHECK(fs_terrain_crop(&t, -0.1, 0.2, -0.1, 0.1, &err) == FS_OK);
         for (size_t p = 0; p < sizeof pts / sizeof pts[0]; p++) {
             double c[3];
@@ -124,9 +124,9 @@ static void nothing_tunnels(void)
                                  "start.yaw_deg=7"};
             static fs_scenario sc;
             fs_error err;
-            CHECK(fs_scenario_load("scenarios/static_load.ini", set, 6, &sc, &err) == FS_OK);
+            REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 6, &sc, &err) == FS_OK);
             fs_sim sim;
-            CHECK(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+            REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
             for (int step = 0; step < 7000; step++)
                 CHECK(fs_sim_step(&sim, &err) == FS_OK);
             double worst = fs_sim_penetration(&sim);
@@ -150,9 +150,9 @@ static void same_seed_same_ground(void)
     static fs_terrain a, b, c;
     fs_error err;
     const char *seed2[] = {"rough.seed=2"};
-    CHECK(fs_terrain_load("terrains/complex_uneven.ini", NULL, 0, &a, &err) == FS_OK);
-    CHECK(fs_terrain_load("terrains/complex_uneven.ini", NULL, 0, &b, &err) == FS_OK);
-    CHECK(fs_terrain_load("terrains/complex_uneven.ini", seed2, 1, &c, &err) == FS_OK);
+    REQUIRE(fs_terrain_load("terrains/complex_uneven.ini", NULL, 0, &a, &err) == FS_OK);
+    REQUIRE(fs_terrain_load("terrains/complex_uneven.ini", NULL, 0, &b, &err) == FS_OK);
+    REQUIRE(fs_terrain_load("terrains/complex_uneven.ini", seed2, 1, &c, &err) == FS_OK);
     CHECK(fs_terrain_crop(&a, -0.05, 0.10, -0.04, 0.04, &err) == FS_OK);
     CHECK(fs_terrain_crop(&b, 0.00, 0.15, -0.02, 0.06, &err) == FS_OK);
     CHECK(fs_terrain_crop(&c, -0.05, 0.10, -0.04, 0.04, &err) == FS_OK);
@@ -175,8 +175,8 @@ static void same_seed_same_ground(void)
     fs_run_result r[2];
     for (int k = 0; k < 2; k++) {
         static fs_scenario sc;
-        CHECK(fs_scenario_load("scenarios/static_load.ini", set, 3, &sc, &err) == FS_OK);
-        CHECK(fs_run(&sc, NULL, &r[k], &err) == FS_OK);
+        REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 3, &sc, &err) == FS_OK);
+        REQUIRE(fs_run(&sc, NULL, &r[k], &err) == FS_OK);
         fs_scenario_free(&sc);
     }
     CHECK(r[0].nrows == r[1].nrows && r[0].nrows > 10);
@@ -196,9 +196,9 @@ static void contact_cap_is_enough(void)
             static fs_scenario sc;
             fs_error err;
             fs_run_result r;
-            CHECK(fs_scenario_load("scenarios/static_load.ini", set, 5, &sc, &err) == FS_OK);
+            REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 5, &sc, &err) == FS_OK);
             CHECK(sc.def.max_contacts * (k ? 1 : 8) == 64);
-            CHECK(fs_run(&sc, NULL, &r, &err) == FS_OK);
+            REQUIRE(fs_run(&sc, NULL, &r, &err) == FS_OK);
             CHECK(r.at_rest);
             memcpy(end[k], r.ankle_end_m, sizeof end[k]);
             fs_run_free(&r);

@@ -48,7 +48,7 @@ static void test_size_and_not_blank(void)
     CHECK(fs_render_write_png(r, path, 1, &err) == FS_OK);
     unsigned char *img;
     int w = 0, h = 0;
-    CHECK(fs_render_png_read(path, &img, &w, &h, &err) == FS_OK);
+    REQUIRE(fs_render_png_read(path, &img, &w, &h, &err) == FS_OK);
     remove(path);
     CHECK(w == 97 && h == 61);
     /* not blank: many pixels far from the top-left (background) one */
@@ -79,8 +79,8 @@ static void test_projection(void)
     static fs_sim sim;
     static fs_scene s, empty;
     fs_error err;
-    CHECK(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
-    CHECK(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
+    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
     fs_sim_scene(&sim, &s);
     empty = s;
     empty.nshapes = empty.nlinks = empty.nsprings = empty.ncontacts = 0;
