@@ -57,7 +57,7 @@ static void run_one(int index, void *result, void *user)
     const char *ov[FS_CAMPAIGN_MAX_SET + 3];
     int n = fs_campaign_overrides(c, foot, terrain, buf, ov);
     fs_error err = {FS_OK, ""};
-    m->status = fs_trial_run(c->trial_path, ov, n, seed, &m->result, &err);
+    m->status = fs_trial_run(c->trial_path, ov, n, seed, NULL, &m->result, &err);
     snprintf(m->error, sizeof m->error, "%s", err.message);
 }
 
@@ -151,7 +151,7 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdi
     int nrows = c->nfeet * c->nterrains;
     fs_campaign_row *rows = malloc((size_t)nrows * sizeof *rows);
     if (!rows)
-        return cli_report(FS_IO, "out of memory");
+        return cli_report(FS_NO_MEMORY, "out of memory");
     fs_campaign_summarize(c, results, rows);
     fs_error err;
     /* everything goes into the partial folder, swapped in whole at the end */
@@ -203,7 +203,7 @@ int cli_campaign(const cli_args *a)
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
     if (!results) {
         fs_outdir_abort(&out);
-        return cli_report(FS_IO, "out of memory");
+        return cli_report(FS_NO_MEMORY, "out of memory");
     }
     const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED"), *stop = getenv("FOOTSIM_TEST_STOP_SEED");
     campaign_run run = {&c, results, crash ? atoi(crash) : -1, stop ? atoi(stop) : -1, isatty(STDERR_FILENO)};

@@ -86,7 +86,7 @@ static int print_json(cJSON *root)
 {
     char *text = cJSON_Print(root);
     if (!text)
-        return cli_report(FS_IO, "out of memory");
+        return cli_report(FS_NO_MEMORY, "out of memory");
     puts(text);
     free(text);
     return 0;
@@ -219,7 +219,7 @@ int cli_trial(const cli_args *a)
         return cli_report(FS_BAD_INPUT, "--seed: give a whole number from 0 to 2147483647");
     fs_trial_result r;
     fs_error err;
-    if (fs_trial_run(a->input, a->set, a->nset, (int)seed, &r, &err) != FS_OK)
+    if (fs_trial_run(a->input, a->set, a->nset, (int)seed, NULL, &r, &err) != FS_OK)
         return fail(&err);
     if (a->json) {
         cJSON *o = cJSON_CreateObject();
@@ -262,7 +262,7 @@ int cli_walk(const cli_args *a)
     if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK)
         return fail(&err);
     fs_walk_result r;
-    fs_status s = fs_walk_run(&sc, &r, &err);
+    fs_status s = fs_walk_run(&sc, NULL, &r, &err);
     const char *foot = sc.geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
     fs_scenario_free(&sc);
     if (s != FS_OK)

@@ -37,7 +37,7 @@ static fs_status store_scene(void *user, const fs_sim *sim, fs_error *err)
     if (!st->heights && nh) {
         st->heights = malloc(nh * sizeof *st->heights);
         if (!st->heights)
-            return fs_fail(err, FS_IO, "render-compare: out of memory for the ground");
+            return fs_fail(err, FS_NO_MEMORY, "render-compare: out of memory for the ground");
         memcpy(st->heights, s->ground.heights, nh * sizeof *st->heights);
     }
     s->ground.heights = st->heights;
@@ -63,7 +63,7 @@ static int reserve(const fs_scenario sc[2], double fps, scene_store st[2])
         st[k].cap = (int)frames[k];
         st[k].scene = malloc((size_t)st[k].cap * sizeof *st[k].scene);
         if (!st[k].scene)
-            return cli_report(FS_BAD_INPUT, "render-compare: out of memory for the frames; lower --fps");
+            return cli_report(FS_NO_MEMORY, "render-compare: out of memory for the frames; lower --fps");
     }
     return 0;
 }
@@ -71,7 +71,7 @@ static int reserve(const fs_scenario sc[2], double fps, scene_store st[2])
 /* Runs sc, keeping a snapshot every 1/fps simulated seconds, in st (reserved). */
 static int run_stored(const fs_scenario *sc, double fps, scene_store *st)
 {
-    fs_run_observer obs = {1 / fps, store_scene, st};
+    fs_run_observer obs = {.interval_s = 1 / fps, .fn = store_scene, .user = st};
     fs_run_result res;
     fs_error err;
     fs_status s = fs_run(sc, &obs, &res, &err);

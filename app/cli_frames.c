@@ -186,7 +186,7 @@ int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, c
     *frames = NULL;
     cli_frames *f = calloc(1, sizeof *f);
     if (!f)
-        return cli_report(FS_IO, "out of memory");
+        return cli_report(FS_NO_MEMORY, "out of memory");
     int s = cli_frame_opts_parse(a, sc->def.step_s, 1, &f->o);
     if (!s && floor(sc->def.duration_s * f->o.fps) + 2 > CLI_MAX_FRAMES)
         s = cli_report(FS_BAD_INPUT, "--fps: duration_s x fps asks for more than 999999 frames (six-digit names); "
@@ -201,7 +201,7 @@ int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, c
         free(f);
         return s;
     }
-    *obs = (fs_run_observer){1 / f->o.fps, draw_frame, f};
+    *obs = (fs_run_observer){.interval_s = 1 / f->o.fps, .fn = draw_frame, .user = f};
     *frames = f;
     return 0;
 }

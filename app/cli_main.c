@@ -79,7 +79,7 @@ static void usage(FILE *out)
         fprintf(out, "  %-10s %s %s\n", commands[i].name, commands[i].input ? commands[i].input : "",
                 commands[i].options);
     fprintf(out, "\n'footsim COMMAND --help' says more. Exit status: 0 ok, 1 expectations failed, 2 bad input,\n"
-                 "3 numerical failure, 4 results could not be written.\n");
+                 "3 numerical failure, 4 results could not be written, 5 out of memory.\n");
 }
 
 static void command_help(const command *c)

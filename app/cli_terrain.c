@@ -60,7 +60,7 @@ static int write_map(fs_terrain *t, const cli_args *a)
     int w = MAP_WIDTH_PX, h = (int)lround(w * (region[3] - region[2]) / (region[1] - region[0]));
     unsigned char *rgb = malloc((size_t)w * h * 3);
     if (!rgb)
-        return cli_report(FS_IO, "out of memory");
+        return cli_report(FS_NO_MEMORY, "out of memory");
     double z[2];
     fs_terrain_map(t, region, outline, w, h, rgb, z);
     fs_status s = fs_png_write_rgb(a->png, w, h, rgb, &err);

@@ -7,6 +7,7 @@
 #include "fs_test.h"
 
 #include "footsim/experiment/fs_run.h"
+#include "footsim/sim/fs_sim.h"
 
 #include <inttypes.h>
 #include <stdint.h>
@@ -77,4 +78,84 @@ static void quickstep_does_not_depend_on_earlier_runs(void)
     CHECK(memcmp(&first, &again, sizeof first) == 0);
 }
 
-FS_TEST_MAIN(TEST(static_load_hashes_to_its_committed_value), TEST(quickstep_does_not_depend_on_earlier_runs))
+/* FNV-1a over every body's position, orientation and velocities now. */
+static uint64_t state_hash(const fs_sim *sim, uint64_t h)
+{
+    for (int i = 0; i <= sim->geom->nbodies; i++) {
+        dBodyID b = i < sim->geom->nbodies ? sim->body[i] : sim->robot;
+        if (!b)
+            continue;
+        const dReal *v[4] = {dBodyGetPosition(b), dBodyGetRotation(b), dBodyGetLinearVel(b), dBodyGetAngularVel(b)};
+        const int n[4] = {3, 12, 3, 3};
+        for (int k = 0; k < 4; k++) {
+            const unsigned char *p = (const unsigned char *)v[k];
+            for (size_t j = 0; j < n[k] * sizeof(dReal); j++)
+                h = (h ^ p[j]) * 1099511628211ULL;
+        }
+    }
+    return h;
+}
+
+enum { NSIMS = 3, REENTRANT_STEPS = 1200 };
+
+/* Three different simulations (even ground; the biomimetic foot dropped on rough ground, where
+ * the contact scratch works hardest; the flat foot on complex uneven ground), each hashed after
+ * every step into one value per sim. interleaved: one step of each in turn; otherwise each alone. */
+static void hash_sims(int interleaved, uint64_t out[NSIMS])
+{
+    static const char *sets[NSIMS][4] = {
+        {"run.duration_s=1", NULL, NULL, NULL},
+        {"scenario.terrain=../terrains/rough.ini", "start.drop_m=0.01", "start.yaw_deg=5", NULL},
+        {"scenario.terrain=../terrains/complex_uneven.ini", "foot.kind=flat", "start.drop_m=0.01", NULL},
+    };
+    static fs_scenario sc[NSIMS];
+    fs_sim sim[NSIMS];
+    fs_error err;
+    for (int k = 0; k < NSIMS; k++) {
+        int n = 0;
+        while (n < 4 && sets[k][n])
+            n++;
+        REQUIRE(fs_scenario_load("scenarios/static_load.ini", sets[k], n, &sc[k], &err) == FS_OK);
+        out[k] = 1469598103934665603ULL;
+    }
+    if (interleaved) {
+        for (int k = 0; k < NSIMS; k++)
+            REQUIRE(fs_sim_build(&sim[k], &sc[k], NULL, &err) == FS_OK);
+        for (int i = 0; i < REENTRANT_STEPS; i++)
+            for (int k = 0; k < NSIMS; k++) {
+                REQUIRE(fs_sim_step(&sim[k], &err) == FS_OK);
+                out[k] = state_hash(&sim[k], out[k]);
+            }
+        for (int k = 0; k < NSIMS; k++)
+            fs_sim_destroy(&sim[k]);
+    } else {
+        for (int k = 0; k < NSIMS; k++) {
+            REQUIRE(fs_sim_build(&sim[k], &sc[k], NULL, &err) == FS_OK);
+            for (int i = 0; i < REENTRANT_STEPS; i++) {
+                REQUIRE(fs_sim_step(&sim[k], &err) == FS_OK);
+                out[k] = state_hash(&sim[k], out[k]);
+            }
+            fs_sim_destroy(&sim[k]);
+        }
+    }
+    for (int k = 0; k < NSIMS; k++)
+        fs_scenario_free(&sc[k]);
+}
+
+/* Re-entrancy: simulations built in one process and stepped interleaved give, step by step, the
+ * bits each gives alone (everything a step uses lives in its fs_sim; fs_sim.h). */
+static void interleaved_sims_give_the_bits_of_each_alone(void)
+{
+    uint64_t alone[NSIMS], together[NSIMS];
+    hash_sims(0, alone);
+    hash_sims(1, together);
+    for (int k = 0; k < NSIMS; k++) {
+        if (alone[k] != together[k])
+            fprintf(stderr, "  sim %d: %016" PRIx64 " alone, %016" PRIx64 " interleaved\n", k, alone[k], together[k]);
+        CHECK(alone[k] == together[k]);
+    }
+    CHECK(alone[0] != alone[1] && alone[1] != alone[2]); /* three different runs, or the test proves nothing */
+}
+
+FS_TEST_MAIN(TEST(static_load_hashes_to_its_committed_value), TEST(quickstep_does_not_depend_on_earlier_runs),
+             TEST(interleaved_sims_give_the_bits_of_each_alone))

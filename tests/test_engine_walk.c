@@ -12,7 +12,7 @@ static void machine_takes_its_steps(void)
     fs_error err;
     REQUIRE(fs_scenario_load("scenarios/walking.ini", set, 3, &sc, &err) == FS_OK);
     fs_walk_result r;
-    REQUIRE(fs_walk_run(&sc, &r, &err) == FS_OK);
+    REQUIRE(fs_walk_run(&sc, NULL, &r, &err) == FS_OK);
     CHECK(r.steps_completed + r.falls == 3);
     CHECK(r.steps_completed == 3);
     CHECK(r.rough_steps == 0);
@@ -28,7 +28,7 @@ static void only_walk_scenarios_walk(void)
     fs_error err;
     REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
     fs_walk_result r;
-    CHECK(fs_walk_run(&sc, &r, &err) == FS_BAD_INPUT);
+    CHECK(fs_walk_run(&sc, NULL, &r, &err) == FS_BAD_INPUT);
     fs_scenario_free(&sc);
 }
 
@@ -46,7 +46,7 @@ static void carriage_work_closes_the_energy_balance(void)
         fs_error err = {FS_OK, ""};
         REQUIRE(fs_scenario_load("scenarios/walking.ini", set, 5, &sc, &err) == FS_OK);
         fs_walk_result r;
-        REQUIRE(fs_walk_run(&sc, &r, &err) == FS_OK);
+        REQUIRE(fs_walk_run(&sc, NULL, &r, &err) == FS_OK);
         if (err.status != FS_OK)
             fprintf(stderr, "  %s\n", err.message);
         fs_scenario_free(&sc);

@@ -1,6 +1,6 @@
 /* cli_bench_speed.c: 'footsim bench speed': steps per second and real-time factor of each shipped
  * scenario on one core, where a step's time goes (ODE's collision, ODE's step, footsim's own code:
- * fs_sim_profile), and what each thing a run skips saves, each measured with and without.
+ * fs_observer.h), and what each thing a run skips saves, each measured with and without.
  *
  * Every time is the wall time of loading the scenario, building the world, stepping and measuring
  * (what 'footsim run', 'trial' or 'walk' spends before writing files), the median of repeated
@@ -150,7 +150,7 @@ static fs_status run_engine(const fs_scenario *sc, runner how, const fs_run_obse
 {
     if (how == BY_WALK) {
         fs_walk_result w;
-        fs_status s = fs_walk_run(sc, &w, err);
+        fs_status s = fs_walk_run(sc, obs, &w, err);
         *o = (outcome){lround(w.end_time_s / sc->def.step_s), w.end_time_s, 0,
                        {w.peak_force_N, w.rough_contacts_mean, w.peak_tilt_deg, w.steps_completed, w.falls}};
         return s;
@@ -164,10 +164,11 @@ static fs_status run_engine(const fs_scenario *sc, runner how, const fs_run_obse
     return FS_OK;
 }
 
-static fs_status run_trial(const char *path, const char **set, int n, outcome *o, fs_error *err)
+static fs_status run_trial(const char *path, const char **set, int n, const fs_run_observer *obs, outcome *o,
+                           fs_error *err)
 {
     fs_trial_result t;
-    fs_status s = fs_trial_run(path, set, n, 1, &t, err);
+    fs_status s = fs_trial_run(path, set, n, 1, obs, &t, err);
     if (s == FS_OK && t.outcome == FS_FAILED_NUMERICS)
         s = fs_fail(err, FS_NUMERICAL, "%s", t.failure);
     *o = (outcome){t.steps, t.end_time_s, 0, {t.ankle_drop_m, t.slip_m, t.peak_force_N, t.final_tilt_deg, t.outcome}};
@@ -183,7 +184,7 @@ static fs_status run_once(const scene *sc, const char *const *extra, const fs_ru
     double t0 = fs_clock_s();
     fs_status s;
     if (sc->how == BY_TRIAL) {
-        s = run_trial(sc->path, set, n, o, err);
+        s = run_trial(sc->path, set, n, obs, o, err);
     } else {
         static fs_scenario loaded;
         s = fs_scenario_load(sc->path, set, n, &loaded, err);
@@ -231,7 +232,7 @@ static double median(double *v, int n)
     return v[(n - 1) / 2];
 }
 
-/* What one interval of fs_sim_profile costs beyond the code it times: a clock read, s (the
+/* What one interval of the profile costs beyond the code it times: a clock read, s (the
  * median of 9 batches). */
 static double clock_read_s(void)
 {
@@ -262,11 +263,8 @@ static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double 
     fs_status s = FS_OK;
     for (int i = 0; i < n && s == FS_OK; i++) {
         outcome o;
-        fs_profile p;
-        fs_sim_profile(1);
-        s = run_once(sc, NULL, NULL, &o, err);
-        fs_sim_profile(0);
-        fs_sim_profile_read(&p);
+        fs_profile p = {0};
+        s = run_once(sc, NULL, &(fs_run_observer){.profile = &p}, &o, err);
         take_clock_off(&p, *read_s);
         for (int k = 0; k < FS_NSTAGES; k++)
             stage[k][i] = p.stage_s[k];
@@ -279,7 +277,7 @@ static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double 
     return s;
 }
 
-/* `runs` runs (their median), then `profiled` runs with fs_sim_profile on. */
+/* `runs` runs (their median), then `profiled` runs with a profile (fs_observer.h). */
 static fs_status time_scene(const scene *sc, int runs, int profiled, timing *t, fs_error *err)
 {
     outcome o[MAX_RUNS];
@@ -462,7 +460,7 @@ static void speed_md(FILE *f, const context *c, const timing *t, int n, const sk
                "1-minute load average %.2f at the start, %.2f at the end.\n\n",
             c->command, c->date, c->machine, c->load_start, c->load_end);
     fprintf(f, "Each time is the median wall time of repeated runs (speed.csv says how many) of loading, building, "
-               "stepping and measuring; the shares of the step loop come from further runs with fs_sim_profile on (each stage's median, less the cost of the clock reads that timed it, calibrated per scene: speed.csv's clock_read_ns; profiled_wall_s is their median wall time).\n\n");
+               "stepping and measuring; the shares of the step loop come from further runs with a profile (fs_observer.h) (each stage's median, less the cost of the clock reads that timed it, calibrated per scene: speed.csv's clock_read_ns; profiled_wall_s is their median wall time).\n\n");
     speed_md_table(f, t, n);
     fprintf(f, "\nfootsim's own code takes at most %.1f %% of a step (%s): %s the 10 %% bound.\n\n", own,
             t[w].sc->name, own < 10 ? "under" : "OVER");

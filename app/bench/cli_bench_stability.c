@@ -449,7 +449,7 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     int n = grid(a->quick, cfg);
     outcome *out = calloc((size_t)n, sizeof *out);
     if (!out)
-        return cli_report(FS_IO, "out of memory");
+        return cli_report(FS_NO_MEMORY, "out of memory");
     double duration = a->quick ? DURATION_QUICK_S : DURATION_FULL_S, t0 = fs_clock_s();
     fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
     fs_status s = run_all(cfg, out, n, jobs, &base.design, duration, &err);

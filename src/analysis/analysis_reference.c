@@ -312,7 +312,7 @@ fs_status fs_reference_run(const fs_design_def *d, const fs_foot_geom *g, const 
     gsl_odeiv2_driver *drv = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-7, def->tolerance,
                                                            def->tolerance);
     if (!drv)
-        return fs_fail(err, FS_NUMERICAL, "the reference integrator could not be set up (out of memory)");
+        return fs_fail(err, FS_NO_MEMORY, "the reference integrator could not be set up (out of memory)");
     double t = 0;
     for (int i = 0; i < n && s == FS_OK; i++) {
         double t1 = i * dt_s;

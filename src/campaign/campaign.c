@@ -374,7 +374,7 @@ static fs_status check_trials(const fs_campaign *c, fs_error *err)
 {
     fs_scenario *sc = malloc(sizeof *sc);
     if (!sc)
-        return fs_fail(err, FS_BAD_INPUT, "out of memory");
+        return fs_fail(err, FS_NO_MEMORY, "out of memory");
     fs_status s = FS_OK;
     for (int f = 0; f < c->nfeet && s == FS_OK; f++)
         for (int t = 0; t < c->nterrains && s == FS_OK; t++) {
@@ -459,7 +459,7 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
     }
     binder *b = calloc(1, sizeof *b);
     if (!b)
-        s = s == FS_OK ? fs_fail(err, FS_BAD_INPUT, "out of memory") : s;
+        s = s == FS_OK ? fs_fail(err, FS_NO_MEMORY, "out of memory") : s;
     if (s == FS_OK)
         s = bind_file(&cfg, b, c, err);
     if (s == FS_OK)

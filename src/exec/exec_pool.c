@@ -218,7 +218,7 @@ fs_status fs_pool_run(const fs_pool_spec *spec, fs_pool_stats *stats, fs_error *
     int *who = calloc((size_t)(p.nworkers > 0 ? p.nworkers : 1), sizeof *who);
     if (!p.w || !p.buf || !fds || !who) {
         free(p.w), free(p.buf), free(fds), free(who);
-        return fs_fail(err, FS_IO, "out of memory for the worker pool");
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the worker pool");
     }
     void (*old_pipe)(int) = signal(SIGPIPE, SIG_IGN);
     for (int i = 0; i < p.nworkers; i++)

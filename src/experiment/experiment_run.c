@@ -13,13 +13,12 @@
 static void name_columns(fs_run_result *res, const fs_foot_geom *g)
 {
     static const char *fixed[] = {"t_s", "ankle_x_m", "ankle_y_m", "ankle_z_m", "contacts"};
-    static char hinge_names[FS_MAX_HINGES][48];
     res->ncols = 0;
     for (int i = 0; i < 5; i++)
         res->col_name[res->ncols++] = fixed[i];
     for (int i = 0; i < g->nhinges; i++) {
-        snprintf(hinge_names[i], sizeof hinge_names[i], "%s_rad", g->hinge[i].name);
-        res->col_name[res->ncols++] = hinge_names[i];
+        snprintf(res->hinge_col[i], sizeof res->hinge_col[i], "%s_rad", g->hinge[i].name);
+        res->col_name[res->ncols++] = res->hinge_col[i];
     }
 }
 
@@ -69,11 +68,6 @@ static void measure_end(fs_run_result *res, const fs_sim *sim)
     res->energy_end_J = fs_sim_energy(sim, NULL, NULL, NULL);
 }
 
-static fs_status observe(const fs_run_observer *obs, const fs_sim *sim, fs_error *err)
-{
-    return obs && obs->fn ? obs->fn(obs->user, sim, err) : FS_OK;
-}
-
 fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
@@ -92,19 +86,18 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
     res->capacity = (int)(nsteps / every + 2);
     res->rows = malloc((size_t)res->capacity * res->ncols * sizeof *res->rows);
     if (!res->rows)
-        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory for %d trajectory rows; a longer log_interval_s",
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for %d trajectory rows; a longer log_interval_s",
                        sc->path, res->capacity);
+    fs_sim_options opts = fs_observer_sim_options(obs);
     fs_sim sim;
-    fs_status s = fs_sim_build(&sim, sc, NULL, err);
+    fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
     fs_sim_ankle(&sim, res->ankle_start_m);
     res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
     log_row(res, &sim);
-    long watch = obs ? lround(obs->interval_s / d->step_s) : 0;
-    if (watch < 1)
-        watch = 1;
-    s = observe(obs, &sim, err);
+    long watch = fs_observer_every(obs, d->step_s);
+    s = fs_observer_call(obs, &sim, err);
     double rest_since = -1;
     long step;
     for (step = 1; s == FS_OK && step <= nsteps; step++) {
@@ -113,7 +106,7 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
             break;
         if (step % every == 0)
             log_row(res, &sim);
-        if (obs && step % watch == 0 && (s = observe(obs, &sim, err)) != FS_OK)
+        if (obs && step % watch == 0 && (s = fs_observer_call(obs, &sim, err)) != FS_OK)
             break;
         /* at rest once every body is slow for rest_hold_s, after the load has fully risen */
         if (sim.time_s >= d->ramp_s && fs_sim_max_speed(&sim) < d->rest_speed_m_per_s) {
@@ -134,7 +127,7 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
         measure_end(res, &sim);
         res->settle_time_s = settle_time(res, d->settle_band_m);
         if (obs && res->steps % watch != 0)
-            s = observe(obs, &sim, err);
+            s = fs_observer_call(obs, &sim, err);
     }
     fs_sim_destroy(&sim);
     return s;
@@ -193,7 +186,7 @@ static fs_status write_json(const char *path, cJSON *root, fs_error *err)
 {
     char *text = cJSON_Print(root);
     if (!text)
-        return fs_fail(err, FS_IO, "%s: out of memory", path);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", path);
     size_t n = strlen(text);
     text[n] = '\n'; /* replace the terminator: the file ends with a newline */
     fs_status s = fs_write_atomic(path, text, n + 1, err);

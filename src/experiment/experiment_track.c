@@ -17,7 +17,7 @@ static fs_status track_alloc(fs_track *t, double dt_s, int n, int nangles, fs_er
     t->angle = calloc((size_t)n, sizeof *t->angle);
     if (!t->ankle || !t->angle) {
         fs_track_free(t);
-        return fs_fail(err, FS_BAD_INPUT, "out of memory for a path of %d samples", n);
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for a path of %d samples", n);
     }
     return FS_OK;
 }
@@ -69,7 +69,7 @@ fs_status fs_track_reference(const fs_design_def *d, const fs_foot_geom *g, cons
 {
     fs_reference_state *r = calloc((size_t)n, sizeof *r);
     if (!r)
-        return fs_fail(err, FS_BAD_INPUT, "out of memory for a reference of %d samples", n);
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for a reference of %d samples", n);
     fs_status s = fs_reference_run(d, g, def, dt_s, n, r, err);
     if (s == FS_OK)
         s = track_alloc(out, dt_s, n, FS_TRACK_ANGLES, err);

@@ -91,17 +91,20 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
 }
 
 /* Steps until fallen, or at rest after touchdown, or out of time; classifies. */
-static fs_status run_trial(const fs_scenario *sc, fs_trial_result *out, fs_error *err)
+static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
+    fs_sim_options opts = fs_observer_sim_options(obs);
     fs_sim sim;
-    fs_status s = fs_sim_build(&sim, sc, NULL, err);
+    fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
     watch w = {.rest_since = -1};
     long nsteps = (long)ceil(d->duration_s / d->step_s - 1e-9);
+    long every = fs_observer_every(obs, d->step_s);
     int at_rest = 0, fell = 0;
-    for (long i = 0; i < nsteps && !at_rest && !fell; i++) {
+    s = fs_observer_call(obs, &sim, err);
+    for (long i = 0; i < nsteps && !at_rest && !fell && s == FS_OK; i++) {
         fs_error step_err;
         if (fs_sim_step(&sim, &step_err) != FS_OK) {
             out->outcome = FS_FAILED_NUMERICS;
@@ -109,6 +112,8 @@ static fs_status run_trial(const fs_scenario *sc, fs_trial_result *out, fs_error
             break;
         }
         out->steps = i + 1;
+        if (out->steps % every == 0 && (s = fs_observer_call(obs, &sim, err)) != FS_OK)
+            break;
         observe_step(&sim, &w, out, d->step_s);
         fell = fs_sim_robot_tilt(&sim) > d->fall_tilt_deg * DEG;
         /* at rest: every body slow for rest_hold_s, after touchdown */
@@ -119,6 +124,12 @@ static fs_status run_trial(const fs_scenario *sc, fs_trial_result *out, fs_error
         } else {
             w.rest_since = -1;
         }
+    }
+    if (s == FS_OK && out->steps % every != 0)
+        s = fs_observer_call(obs, &sim, err); /* the end, if not just seen */
+    if (s != FS_OK) {
+        fs_sim_destroy(&sim);
+        return s;
     }
     finish(&sim, &w, out);
     if (out->outcome != FS_FAILED_NUMERICS) {
@@ -131,19 +142,23 @@ static fs_status run_trial(const fs_scenario *sc, fs_trial_result *out, fs_error
 }
 
 fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
-                       fs_trial_result *out, fs_error *err)
+                       const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
 {
     enum { MAX_OVERRIDES = 240, DRAWN = 6 };
-    static fs_scenario sc;
     memset(out, 0, sizeof *out);
     if (noverrides > MAX_OVERRIDES)
         return fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides in a trial", MAX_OVERRIDES);
+    fs_scenario *sc = malloc(sizeof *sc); /* the caller's, not the process's: trials are re-entrant */
+    if (!sc)
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", scenario_path);
     /* the ranges to draw from, then the scenario again with the drawn pose and terrain seed */
-    fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, &sc, err);
-    if (s != FS_OK)
+    fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, sc, err);
+    if (s != FS_OK) {
+        free(sc);
         return s;
-    fs_trial_draw_pose(&sc, seed, &out->draw);
-    fs_scenario_free(&sc);
+    }
+    fs_trial_draw_pose(sc, seed, &out->draw);
+    fs_scenario_free(sc);
     char text[DRAWN][64];
     snprintf(text[0], sizeof text[0], "start.x_m=%.17g", out->draw.x_m);
     snprintf(text[1], sizeof text[1], "start.y_m=%.17g", out->draw.y_m);
@@ -156,9 +171,10 @@ fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, 
         all[i] = overrides[i];
     for (int i = 0; i < DRAWN; i++)
         all[noverrides + i] = text[i];
-    s = fs_scenario_load(scenario_path, all, noverrides + DRAWN, &sc, err);
+    s = fs_scenario_load(scenario_path, all, noverrides + DRAWN, sc, err);
     if (s == FS_OK)
-        s = run_trial(&sc, out, err);
-    fs_scenario_free(&sc);
+        s = run_trial(sc, obs, out, err);
+    fs_scenario_free(sc);
+    free(sc);
     return s;
 }

@@ -68,17 +68,19 @@ static double ankle_tilt(const fs_sim *sim)
     return acos(fmax(-1.0, fmin(1.0, R[10])));
 }
 
-fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
+fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk_result *out, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
     memset(out, 0, sizeof *out);
     if (d->kind != 1 || d->robot_kg <= 0)
         return fs_fail(err, FS_BAD_INPUT, "%s: a walking machine needs [scenario] kind = walk and a [robot] mass_kg > 0",
                        sc->path);
+    fs_sim_options opts = fs_observer_sim_options(obs);
     fs_sim sim;
-    fs_status s = fs_sim_build(&sim, sc, NULL, err);
+    fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
+    long every = fs_observer_every(obs, d->step_s);
     /* the carriage: kinematic, above the body, joined by a vertical slider and the suspension */
     const dReal *p = dBodyGetPosition(sim.robot);
     double start[3] = {p[0], p[1], p[2] + 0.1};
@@ -100,8 +102,9 @@ fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
     const fs_terrain_def *td = &sc->terrain.def;
     double rough_sum = 0, flat_sum = 0, tilt_max = 0;
     int flat_steps = 0, last_step = -1, judged = 0;
-    long nsteps = (long)ceil(d->walk_steps * d->walk_period_s / d->step_s);
-    for (long i = 0; i < nsteps && s == FS_OK; i++) {
+    long nsteps = (long)ceil(d->walk_steps * d->walk_period_s / d->step_s), i;
+    s = fs_observer_call(obs, &sim, err);
+    for (i = 0; i < nsteps && s == FS_OK; i++) {
         double x, z, phase, t = sim.time_s + d->step_s;
         int step;
         carriage_path(d, t, &x, &z, &step, &phase);
@@ -114,7 +117,7 @@ fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
             suspension_force(&suspension, drive.susp);
         /* the step's checks take the carriage's work into their energy balance (carriage_work) */
         s = fs_sim_step(&sim, err);
-        if (s != FS_OK)
+        if (s != FS_OK || ((i + 1) % every == 0 && (s = fs_observer_call(obs, &sim, err)) != FS_OK))
             break;
         double f[3];
         fs_sim_ground_force(&sim, f);
@@ -140,6 +143,8 @@ fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err)
             }
         }
     }
+    if (s == FS_OK && i % every != 0)
+        s = fs_observer_call(obs, &sim, err); /* the end, if not just seen */
     out->rough_contacts_mean = out->rough_steps ? rough_sum / out->rough_steps : 0;
     out->flat_contacts_mean = flat_steps ? flat_sum / flat_steps : 0;
     out->peak_tilt_deg = tilt_max / DEG;

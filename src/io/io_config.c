@@ -143,7 +143,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
     }
     fs_entry *e = add_entry(r->cfg);
     if (!e) {
-        r->status = fs_fail(r->err, FS_BAD_INPUT, "%s:%d: out of memory", r->cfg->path, r->line);
+        r->status = fs_fail(r->err, FS_NO_MEMORY, "%s:%d: out of memory", r->cfg->path, r->line);
         return 0;
     }
     if (!copy_text(e->section, sizeof e->section, section) || !copy_text(e->name, sizeof e->name, name) ||
@@ -263,12 +263,12 @@ fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *e
     memcpy(name, dot + 1, nn);
     name[nn] = 0;
     if (!index_rebuild(cfg, cfg->count + 1))
-        return fs_fail(err, FS_BAD_INPUT, "--set %s: out of memory", assignment);
+        return fs_fail(err, FS_NO_MEMORY, "--set %s: out of memory", assignment);
     fs_entry *e = find_entry(cfg, section, name);
     if (!e) {
         e = add_entry(cfg);
         if (!e)
-            return fs_fail(err, FS_BAD_INPUT, "--set %s: out of memory", assignment);
+            return fs_fail(err, FS_NO_MEMORY, "--set %s: out of memory", assignment);
         strcpy(e->section, section);
         strcpy(e->name, name);
     }
@@ -489,7 +489,7 @@ fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *
     char dir[FS_PATH_MAX], where[FS_PATH_MAX + 80];
     fs_config_dir(cfg, dir, sizeof dir);
     if (!index_rebuild(cfg, cfg->count)) /* entries may have been edited since the last look */
-        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory", cfg->path);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", cfg->path);
     for (int i = 0; i < nkeys; i++) {
         const fs_key *k = &schema[i];
         fs_entry *e = find_entry(cfg, k->section, k->name);

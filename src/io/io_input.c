@@ -83,7 +83,7 @@ fs_status fs_read_regular(const char *path, long max_bytes, const char *what, ch
     int e = errno;
     fclose(f);
     if (!buf)
-        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory reading %s", path, what);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory reading %s", path, what);
     if (bad) {
         free(buf);
         return fs_fail(err, FS_BAD_INPUT, "%s: cannot read %s (%s)", path, what, strerror(e));

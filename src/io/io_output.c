@@ -227,7 +227,7 @@ fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_
         forget(temp);
         if (failed)
             return write_error(err, path, e);
-        return fs_fail(err, FS_IO, "%s: its content could not be made (out of memory)", path);
+        return fs_fail(err, FS_NO_MEMORY, "%s: its content could not be made (out of memory)", path);
     }
     return fs_commit_temp(temp, path, err);
 }

@@ -64,7 +64,7 @@ fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, 
     out = malloc((size_t)width * height * sizeof *out);
     pixels = malloc(stride * height);
     if (!rows || !out || !pixels) {
-        status = fs_fail(err, FS_BAD_INPUT, "%s: %s: out of memory", where, path);
+        status = fs_fail(err, FS_NO_MEMORY, "%s: %s: out of memory", where, path);
         goto done;
     }
     for (png_uint_32 r = 0; r < height; r++)

@@ -124,7 +124,7 @@ static fs_status rough_patch(const fs_terrain_def *d, long i0, long j0, int nx, 
     int r = k.r, wx = nx + 2 * r;
     double *rows = malloc((size_t)wx * ny * sizeof *rows);
     if (!rows)
-        return fs_fail(err, FS_BAD_INPUT, "rough terrain: out of memory");
+        return fs_fail(err, FS_NO_MEMORY, "rough terrain: out of memory");
     /* filter along y first, for every column the x pass will need */
     for (int j = 0; j < ny; j++)
         for (int c = 0; c < wx; c++) {
@@ -266,7 +266,7 @@ static fs_status block_tops(fs_terrain *t, fs_error *err)
     t->by = (t->ny + B - 1) / B;
     t->zblock = malloc((size_t)t->bx * t->by * sizeof *t->zblock);
     if (!t->zblock)
-        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory for %d x %d samples", t->path, t->nx, t->ny);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for %d x %d samples", t->path, t->nx, t->ny);
     for (int k = 0; k < t->bx * t->by; k++)
         t->zblock[k] = -INFINITY;
     for (int j = 0; j < t->ny; j++)
@@ -307,7 +307,7 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
     t->dx = dx;
     t->z = calloc((size_t)t->nx * t->ny, sizeof *t->z);
     if (!t->z)
-        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory for %d x %d samples", t->path, t->nx, t->ny);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for %d x %d samples", t->path, t->nx, t->ny);
     if (has_roughness(t)) {
         fs_status s = rough_patch(&t->def, i0, j0, t->nx, t->ny, t->z, err);
         if (s != FS_OK)

@@ -250,7 +250,7 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
     double dy = box[3] - box[2] + 2 * m;
     sim->ground_grid = malloc((size_t)nx * ny * sizeof *sim->ground_grid);
     if (!sim->ground_grid)
-        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory", sim->sc->path);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sim->sc->path);
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++)
             sim->ground_grid[j * nx + i] = fs_terrain_height(t, box[0] - m + i * dx, box[2] - m + j * dy);
@@ -269,21 +269,15 @@ static void auto_disable(dWorldID world, const fs_scenario_def *s)
     dWorldSetAutoDisableTime(world, s->auto_disable_s);
 }
 
+/* Contacts of one foot shape with all terrain geoms in one step: the sim's own scratch, so two
+ * simulations can step in one process. */
+typedef struct fs_contact_scratch {
+    fs_sim *sim;
+    int n;
+    dContactGeom c[FS_MAX_CONTACTS];
+} gathered;
+
 /* ---- profiling ---------------------------------------------------------------------------- */
-
-static fs_profile profile_sums; /* one per process, like the benchmark that reads it */
-static int profile_on;
-
-void fs_sim_profile(int on)
-{
-    profile_on = on;
-    if (on)
-        memset(&profile_sums, 0, sizeof profile_sums);
-}
-
-void fs_sim_profile_read(fs_profile *out) { *out = profile_sums; }
-
-static fs_profile *profile_sink(void) { return profile_on ? &profile_sums : NULL; }
 
 double fs_clock_s(void)
 {
@@ -305,16 +299,14 @@ static void lap(fs_sim *sim, fs_stage stage)
     sim->profile_mark = t;
 }
 
-fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
+static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
 {
-    fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
-    if (!opts)
-        opts = &normal;
-    memset(sim, 0, sizeof *sim);
-    fs_ode_context(sc->path); /* ODE's complaints name the scenario */
+    snprintf(sim->ode_context, sizeof sim->ode_context, "%s", sc->path);
+    fs_ode_context(sim->ode_context); /* ODE's complaints name the scenario */
     sim->feedback = calloc(FS_MAX_STEP_CONTACTS, sizeof *sim->feedback);
-    if (!sim->feedback)
-        return fs_fail(err, FS_BAD_INPUT, "%s: out of memory", sc->path);
+    sim->scratch = malloc(sizeof *sim->scratch);
+    if (!sim->feedback || !sim->scratch)
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sc->path);
     sim->sc = sc;
     sim->geom = &sc->geom;
     sim->check.record_drift = opts->record_drift;
@@ -357,7 +349,7 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         int ok;
         sim->heightfield = fs_ground_build(sim->ground, &sc->terrain, s->tile_cells, &ok);
         if (!ok)
-            return fs_fail(err, FS_BAD_INPUT, "%s: out of memory for the terrain", sc->path);
+            return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the terrain", sc->path);
     }
     for (int i = 0; i < sim->geom->nbodies; i++)
         build_body(sim, i);
@@ -374,8 +366,18 @@ fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     sim->load_N = s->load_kg * s->gravity_m_per_s2 / share;
     contact_template(sim);
     body_reach(sim);
-    sim->profile = profile_sink();
+    sim->profile = opts->profile;
     return scene_ground(sim, err);
+}
+
+fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
+{
+    fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
+    memset(sim, 0, sizeof *sim);
+    fs_status s = build(sim, sc, opts ? opts : &normal, err);
+    if (s != FS_OK)
+        fs_sim_destroy(sim); /* whatever was made so far: a failed build leaves nothing behind */
+    return s;
 }
 
 void fs_sim_destroy(fs_sim *sim)
@@ -390,7 +392,9 @@ void fs_sim_destroy(fs_sim *sim)
     if (sim->world)
         dWorldDestroy(sim->world);
     free(sim->feedback);
+    free(sim->scratch);
     free(sim->ground_grid);
+    fs_ode_context_leave(sim->ode_context);
     memset(sim, 0, sizeof *sim);
 }
 
@@ -404,12 +408,6 @@ void fs_sim_ankle(const fs_sim *sim, double p[3])
 
 /* ---- the step ----------------------------------------------------------------------------- */
 
-/* Contacts of one foot shape with all terrain geoms in one step. */
-typedef struct gathered {
-    fs_sim *sim;
-    int n;
-    dContactGeom c[FS_MAX_CONTACTS];
-} gathered;
 
 static void gather(void *data, dGeomID a, dGeomID b)
 {
@@ -565,25 +563,25 @@ static void collide(fs_sim *sim)
 {
     const fs_terrain *t = &sim->sc->terrain;
     double merge_m = fs_terrain_is_heightfield(t) ? 1e-3 * t->dx : 1e-9;
-    static gathered g; /* one per process: a step is not re-entrant */
+    gathered *g = sim->scratch;
     for (int s = 0; s < sim->nshapes; s++) {
-        g.sim = sim;
-        g.n = 0;
+        g->sim = sim;
+        g->n = 0;
         lap(sim, FS_STAGE_CONTACTS);
-        dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, &g, gather);
+        dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, g, gather);
         lap(sim, FS_STAGE_COLLISION);
-        int from_ode = g.n;
+        int from_ode = g->n;
         if (t->z && dGeomGetClass(sim->shape[s]) == dBoxClass)
-            box_vertex_contacts(t, sim->shape[s], &g);
-        int n = select_contacts(&g, sim->sc->def.max_contacts, merge_m, from_ode);
+            box_vertex_contacts(t, sim->shape[s], g);
+        int n = select_contacts(g, sim->sc->def.max_contacts, merge_m, from_ode);
         dBodyID body = dGeomGetBody(sim->shape[s]);
         for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
             dContact ct = sim->contact_template;
-            ct.geom = g.c[i];
+            ct.geom = g->c[i];
             dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
             dJointAttach(j, body, 0);
             dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
-            memcpy(sim->contact_pos[sim->contacts_now], g.c[i].pos, 3 * sizeof(double));
+            memcpy(sim->contact_pos[sim->contacts_now], g->c[i].pos, 3 * sizeof(double));
             sim->contacts_now++;
         }
     }
@@ -614,6 +612,7 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
     const fs_scenario_def *s = &sim->sc->def;
     double h = s->step_s;
     lap(sim, FS_STAGE_CALLER);
+    fs_ode_context(sim->ode_context); /* this sim is the one ODE may complain about now */
     /* external loads */
     apply_load(sim);
     lap(sim, FS_STAGE_LOADS);

@@ -14,7 +14,8 @@ typedef enum fs_status {
     FS_EXPECTATION_FAILED = 1, /* an experiment ran, but its stated expectations failed */
     FS_BAD_INPUT = 2,          /* refused before anything was simulated or written */
     FS_NUMERICAL = 3,          /* the simulation produced a non-finite or exploding state */
-    FS_IO = 4                  /* a result could not be written */
+    FS_IO = 4,                 /* a result could not be written */
+    FS_NO_MEMORY = 5           /* the system refused memory footsim needed (nothing was written) */
 } fs_status;
 
 enum { FS_ERROR_MAX = 1024 };
@@ -38,7 +39,12 @@ fs_status fs_fail(fs_error *err, fs_status status, const char *fmt, ...)
 void fs_ode_init(void);
 void fs_ode_close(void);
 
-/* Names what footsim is doing, for ODE's complaints ("scenarios/static_load.ini, t = 0.31 s"). */
+/* Names what footsim is doing, for ODE's complaints ("scenarios/static_load.ini"). ODE's handlers
+ * are process-wide and take no user data, so the name of the simulation being stepped is the one
+ * piece of state footsim keeps outside a simulation: a pointer per thread, to text the caller owns
+ * (an fs_sim sets it to its own name before each ODE call and leaves it when destroyed).
+ * fs_ode_context_leave(context) forgets context if it is the current one. */
 void fs_ode_context(const char *context);
+void fs_ode_context_leave(const char *context);
 
 #endif

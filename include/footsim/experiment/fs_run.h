@@ -7,6 +7,7 @@
 #ifndef FS_RUN_H
 #define FS_RUN_H
 
+#include "footsim/experiment/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
 enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES };
@@ -29,21 +30,12 @@ typedef struct fs_run_result {
     double energy_start_J, energy_end_J;
     /* trajectory: rows of ncols doubles */
     int ncols, nrows, capacity;
-    const char *col_name[FS_TRAJ_MAX_COLS];
+    const char *col_name[FS_TRAJ_MAX_COLS]; /* point into the fixed names or hinge_col */
+    char hinge_col[FS_MAX_HINGES][48];      /* the hinge columns' names, owned by the result */
     double *rows;
 } fs_run_result;
 
-/* Something that watches a run, e.g. the renderer: fn is called with the state at t = 0, every
- * interval_s of simulated time (rounded to whole steps) and at the end; a status other than
- * FS_OK stops the run with that status (fn fills err). */
-typedef struct fs_sim fs_sim;
-typedef struct fs_run_observer {
-    double interval_s;
-    fs_status (*fn)(void *user, const fs_sim *sim, fs_error *err);
-    void *user;
-} fs_run_observer;
-
-/* obs may be NULL. */
+/* obs (fs_observer.h) may be NULL. */
 fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err);
 void fs_run_free(fs_run_result *res);
 

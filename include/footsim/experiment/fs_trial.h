@@ -14,6 +14,7 @@
 #ifndef FS_TRIAL_H
 #define FS_TRIAL_H
 
+#include "footsim/experiment/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
 typedef enum fs_outcome { FS_LANDED = 0, FS_FELL = 1, FS_FAILED_NUMERICS = 2 } fs_outcome;
@@ -45,9 +46,10 @@ void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw);
 
 /* Loads the trial scenario with overrides (checked as usual: FS_BAD_INPUT, nothing run), draws
  * the pose for seed, runs the trial and fills out. A numerical failure is not an error of the
- * call: it returns FS_OK with out->outcome = FS_FAILED_NUMERICS and out->failure set. */
+ * call: it returns FS_OK with out->outcome = FS_FAILED_NUMERICS and out->failure set. obs
+ * (fs_observer.h) may be NULL; an observer's own failure is returned as its status. */
 fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
-                       fs_trial_result *out, fs_error *err);
+                       const fs_run_observer *obs, fs_trial_result *out, fs_error *err);
 
 /* Names of outcomes: "landed", "fell", "failed_numerics". */
 const char *fs_outcome_name(int outcome);

@@ -11,6 +11,7 @@
 #ifndef FS_WALK_H
 #define FS_WALK_H
 
+#include "footsim/experiment/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
 typedef struct fs_walk_result {
@@ -23,7 +24,8 @@ typedef struct fs_walk_result {
     double end_time_s;
 } fs_walk_result;
 
-/* Runs the walking machine of a walk scenario ([scenario] kind = walk, a [robot] and a [walk]). */
-fs_status fs_walk_run(const fs_scenario *sc, fs_walk_result *out, fs_error *err);
+/* Runs the walking machine of a walk scenario ([scenario] kind = walk, a [robot] and a [walk]).
+ * obs (fs_observer.h) may be NULL. */
+fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk_result *out, fs_error *err);
 
 #endif

@@ -6,7 +6,15 @@
  *
  * One step is a fixed sequence of stages: external loads, springs, collision (foot against
  * ground only), the ODE step, and the state checks of fs_check.h (finite, speed, loop closure,
- * energy). fs_sim_profile times them. */
+ * energy). fs_sim_options.profile times them.
+ *
+ * Re-entrant: everything a simulation uses lives in its fs_sim (contact scratch, profile, names),
+ * so simulations may be built and stepped interleaved in one process and give the bits each gives
+ * alone. The one process-wide piece is ODE's message handler's context (fs_error.h), which each
+ * step points at its own sim. Workers still run as processes (fs_pool.h): ODE ends the process
+ * after its error handler and keeps one random generator, which fs_sim_build reseeds — so the
+ * guarantee holds for dWorldStep (the default); QuickStep sims interleaved share that generator.
+ * test_engine_determinism steps three sims interleaved against each alone. */
 #ifndef FS_SIM_H
 #define FS_SIM_H
 
@@ -25,6 +33,7 @@ typedef struct fs_sim_options {
     int pinned_chain;       /* c (1-5): chain c alone, heel and toe pinned to the world, a fifth of the
                                load and no ground (fs_design_pinned_chain); 0: the whole foot */
     int record_drift;       /* 1: a drifting state is recorded, not stopped at (fs_check.h) */
+    struct fs_profile *profile; /* where this sim's step time goes (added to), or NULL: not timed */
 } fs_sim_options;
 
 typedef struct fs_sim {
@@ -60,7 +69,9 @@ typedef struct fs_sim {
     fs_scene_ground scene_ground;
     long contacts_total, collision_tests;
     fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
-    struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_profile) */
+    struct fs_contact_scratch *scratch; /* one shape's contacts while a step gathers them */
+    char ode_context[FS_PATH_MAX]; /* what ODE's complaints name while this sim steps: its scenario */
+    struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_options.profile) */
     double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
 } fs_sim;
 
@@ -96,16 +107,13 @@ typedef struct fs_profile {
     long steps;
 } fs_profile;
 
-/* Profiling is process-wide and off by default. fs_sim_profile(1) clears the sums, and every
- * fs_sim built after it adds the time of each of its steps' stages to them (CLOCK_MONOTONIC);
- * fs_sim_profile(0) stops that for sims built afterwards. Off, each stage costs one untaken branch.
- * Timing never changes a result. fs_sim_profile_read copies the sums. Not thread-safe. */
-void fs_sim_profile(int on);
+/* Profiling is per simulation and off by default: a sim built with fs_sim_options.profile set
+ * adds the time of each of its steps' stages to that fs_profile (CLOCK_MONOTONIC; the caller
+ * zeroes it first). Off, each stage costs one untaken branch. Timing never changes a result. */
 
 /* Seconds on the monotonic clock (CLOCK_MONOTONIC): what profiling, fs_track_run and the
  * benchmarks time with. */
 double fs_clock_s(void);
-void fs_sim_profile_read(fs_profile *out);
 
 /* The load's point (the ankle) in world coordinates now. */
 void fs_sim_ankle(const fs_sim *sim, double p[3]);
