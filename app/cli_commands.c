@@ -26,8 +26,11 @@ static int fail(const fs_error *err) { return cli_report(err->status, err->messa
 static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
 {
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK)
+    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "run", &err) != FS_OK)
         return fail(&err);
+    if (!a->frames && (a->fps || a->size || a->camera))
+        fprintf(stderr, "footsim run: warning: %s is unused without --frames; add --frames to draw frames\n",
+                a->fps ? "--fps" : a->size ? "--size" : "--camera");
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);
@@ -259,7 +262,7 @@ int cli_walk(const cli_args *a)
 {
     static fs_scenario sc;
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK || fs_scenario_require(&sc, "walk", &err) != FS_OK)
         return fail(&err);
     fs_walk_result r;
     fs_status s = fs_walk_run(&sc, &r, &err);

@@ -140,8 +140,12 @@ fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, 
         return fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides in a trial", MAX_OVERRIDES);
     /* the ranges to draw from, then the scenario again with the drawn pose and terrain seed */
     fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, &sc, err);
-    if (s != FS_OK)
+    if (s == FS_OK)
+        s = fs_scenario_require(&sc, "trial", err);
+    if (s != FS_OK) {
+        fs_scenario_free(&sc);
         return s;
+    }
     fs_trial_draw_pose(&sc, seed, &out->draw);
     fs_scenario_free(&sc);
     char text[DRAWN][64];
