@@ -311,9 +311,11 @@ fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *
  * temporary file of its own. */
 static int known_name(const char *name, const char *const *known)
 {
-    for (int i = 0; known && known[i]; i++)
-        if (!strcmp(name, known[i]))
+    for (int i = 0; known && known[i]; i++) {
+        size_t n = strlen(known[i]);
+        if (n && known[i][n - 1] == '*' ? !strncmp(name, known[i], n - 1) : !strcmp(name, known[i]))
             return 1;
+    }
     return strstr(name, ".tmp.") != NULL;
 }
 
@@ -446,20 +448,19 @@ static int fill_marker(FILE *f, const void *user)
     return 1;
 }
 
-fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
-                         fs_error *err)
+/* Refuses a target footsim must not replace or write into: a symbolic link, not a folder, a
+ * non-empty folder without the marker and not an earlier version's (unless replace). Makes its
+ * parent. `path` is normalised, `dir` as given. */
+static fs_status check_target(const char *path, const char *dir, const char *const *known, int replace,
+                              const char *option, int shared, fs_error *err)
 {
-    memset(o, 0, sizeof *o);
-    o->lock_fd = -1;
-    fs_status s = fs_normalise_dir(dir, o->path, sizeof o->path, option, err);
+    char parent[FS_OUT_PATH];
+    parent_of(path, parent, sizeof parent);
+    fs_status s = fs_make_dirs(parent, err);
     if (s != FS_OK)
         return s;
-    char parent[FS_OUT_PATH];
-    parent_of(o->path, parent, sizeof parent);
-    if ((s = fs_make_dirs(parent, err)) != FS_OK)
-        return s;
     struct stat st;
-    if (lstat(o->path, &st) == 0) {
+    if (lstat(path, &st) == 0) {
         if (S_ISLNK(st.st_mode))
             return fs_fail(err, FS_BAD_INPUT, "%s %s: is a symbolic link; footsim replaces only folders it made: give "
                            "the folder's own path", option, dir);
@@ -468,16 +469,30 @@ fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known
                            type_name(st.st_mode), option);
         int count;
         char odd[256];
-        int mine = only_footsim_files(o->path, known, &count, odd, sizeof odd);
+        int mine = only_footsim_files(path, known, &count, odd, sizeof odd);
         if (mine < 0)
             return fs_fail(err, FS_BAD_INPUT, "%s %s: cannot read the folder (%s); choose another %s", option, dir,
                            strerror(errno), option);
-        if (count > 0 && !has_marker(o->path) && !mine && !replace)
+        if (count > 0 && !has_marker(path) && !mine && !replace)
             return fs_fail(err, FS_BAD_INPUT,
-                           "%s %s: a folder footsim did not make (it holds '%s' and no %s marker); footsim replaces "
-                           "only its own results folders, whole: choose another %s, or add --replace to replace it "
-                           "and everything in it", option, dir, odd, FS_MARKER, option);
+                           "%s %s: a folder footsim did not make (it holds '%s' and no %s marker); footsim %s "
+                           "only its own results folders: choose another %s, or add --replace to %s", option, dir,
+                           odd, FS_MARKER, shared ? "writes into" : "replaces, whole,", option,
+                           shared ? "write its files into it anyway" : "replace it and everything in it");
     }
+    return FS_OK;
+}
+
+fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
+                         fs_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->lock_fd = -1;
+    fs_status s = fs_normalise_dir(dir, o->path, sizeof o->path, option, err);
+    if (s != FS_OK)
+        return s;
+    if ((s = check_target(o->path, dir, known, replace, option, 0, err)) != FS_OK)
+        return s;
     snprintf(o->lock, sizeof o->lock, "%s.lock", o->path);
     if ((s = take_lock(o, option, err)) != FS_OK)
         return s;
@@ -566,4 +581,19 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err)
     release_lock(o);
     o->open = 0;
     return FS_OK;
+}
+
+fs_status fs_outdir_shared(const char *dir, const char *const *known, int replace, const char *option, fs_error *err)
+{
+    char path[FS_OUT_PATH], marker[FS_OUT_PATH + 32];
+    fs_status s = fs_normalise_dir(dir, path, sizeof path, option, err);
+    if (s == FS_OK)
+        s = check_target(path, dir, known, replace, option, 1, err);
+    if (s == FS_OK)
+        s = fs_make_dirs(path, err);
+    snprintf(marker, sizeof marker, "%s/%s", path, FS_MARKER);
+    struct stat st;
+    if (s == FS_OK && lstat(marker, &st) != 0)
+        s = fs_write_file(marker, fill_marker, NULL, err);
+    return s;
 }
