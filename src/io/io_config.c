@@ -131,6 +131,8 @@ static int copy_text(char *dst, size_t size, const char *src)
 static int on_key(void *user, const char *section, const char *name, const char *value)
 {
     reader *r = user;
+    if (r->status != FS_OK) /* inih reads on after a refusal: the first one stands */
+        return 0;
     fs_entry *old = find_entry(r->cfg, section, name);
     if (old) {
         r->status = fs_fail(r->err, FS_BAD_INPUT, "%s:%d: [%s] %s is given twice (first on line %d); keep one",
