@@ -306,7 +306,9 @@ int cli_keys(const cli_args *a)
            "| a run's trajectory in memory (rows x columns x 8 bytes) | %.0f MiB |\n"
            "| trials of a campaign (feet x terrains x seeds) | %d |\n"
            "| frames of `run --frames` or `render-compare` (six-digit names) | %d |\n"
-           "| frames `render-compare` keeps in memory | half of the machine's memory |\n\n",
+           "| frames `render-compare` keeps in memory | half of the machine's memory |\n"
+           "| a number | decimal; 0 or a normal double, 2.2e-308 to 1.8e308 in magnitude (hexadecimal and subnormals refused) |\n"
+           "| `terrain --height X Y` | metres from -1000 to 1000 |\n\n",
            FS_CONFIG_MAX_BYTES, FS_CONFIG_MAX_KEYS, (double)FS_MAX_STEPS, FS_TRAJ_MAX_BYTES / (1024.0 * 1024),
            FS_CAMPAIGN_MAX_TRIALS, 999999);
     return 0;
