@@ -4,6 +4,8 @@
 #include "footsim/io/fs_output.h"
 
 #include <dirent.h>
+#include <signal.h>
+#include <sys/syscall.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
@@ -16,9 +18,10 @@
 
 /* ---- what to remove at exit --------------------------------------------------------------------- */
 
-/* Temporary files and partial folders of this process, removed by an atexit handler unless they
- * were committed: ODE's error handler ends the process with exit(). A forked worker inherits the
- * list but never removes its parent's entries (owner). */
+/* Temporary files and partial folders of this process, removed by an atexit handler (ODE's error
+ * handler ends the process with exit()) and by a handler of SIGINT, SIGTERM and SIGHUP unless
+ * they were committed. A forked worker inherits the list but never removes its parent's entries
+ * (owner). */
 enum { PENDING_MAX = 32 };
 typedef struct pending {
     char path[FS_OUT_PATH + 64];
@@ -41,10 +44,67 @@ static void cleanup_at_exit(void)
     }
 }
 
+/* Removes a folder and everything in it with system calls only (no malloc, no stdio): safe in a
+ * signal handler. Folders nest at most `depth` deep (a results folder: frames/ in it). */
+static void remove_tree_raw(int parent, const char *name, int depth)
+{
+    int fd = openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd >= 0) {
+        char buf[4096];
+        for (;;) {
+            long n = syscall(SYS_getdents64, fd, buf, sizeof buf);
+            if (n <= 0)
+                break;
+            for (long off = 0; off < n;) {
+                struct dirent64 *e = (struct dirent64 *)(buf + off);
+                off += e->d_reclen;
+                if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+                    continue;
+                if (unlinkat(fd, e->d_name, 0) != 0 && depth > 0)
+                    remove_tree_raw(fd, e->d_name, depth - 1);
+            }
+        }
+        close(fd);
+    }
+    unlinkat(parent, name, AT_REMOVEDIR);
+}
+
+/* SIGINT, SIGTERM, SIGHUP: what this process left half done is removed, then the signal ends it
+ * as it would have. */
+static void cleanup_on_signal(int sig)
+{
+    for (int i = 0; i < npend; i++) {
+        if (!pend[i].path[0] || pend[i].owner != getpid())
+            continue;
+        if (pend[i].tree)
+            remove_tree_raw(AT_FDCWD, pend[i].path, 4);
+        else
+            unlink(pend[i].path);
+    }
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void catch_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (int i = 0; i < 3; i++) {
+        struct sigaction old, sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = cleanup_on_signal;
+        sigemptyset(&sa.sa_mask);
+        /* a signal the caller ignores stays ignored */
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_DFL)
+            sigaction(sigs[i], &sa, NULL);
+    }
+}
+
 static void remember(const char *path, int tree)
 {
-    if (!atexit_set)
+    if (!atexit_set) {
         atexit_set = atexit(cleanup_at_exit) == 0;
+        catch_signals();
+    }
     int slot = -1;
     for (int i = 0; i < npend && slot < 0; i++)
         if (!pend[i].path[0])
@@ -52,8 +112,9 @@ static void remember(const char *path, int tree)
     if (slot < 0 && npend < PENDING_MAX)
         slot = npend++;
     if (slot >= 0) {
-        snprintf(pend[slot].path, sizeof pend[slot].path, "%s", path);
+        pend[slot].owner = 0; /* a signal arriving now skips the entry until it is whole */
         pend[slot].tree = tree;
+        snprintf(pend[slot].path, sizeof pend[slot].path, "%s", path);
         pend[slot].owner = getpid();
     }
 }
