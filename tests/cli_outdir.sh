@@ -35,6 +35,14 @@ check '[ -f "$tmp/mine/metrics.json" ] && [ ! -e "$tmp/mine/notes.txt" ] && [ -f
 mkdir "$tmp/old" && echo '{}' >"$tmp/old/metrics.json" && echo t >"$tmp/old/trajectory.csv"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/old" >/dev/null
 check '[ -f "$tmp/old/.footsim-results" ] && grep -q ankle_drop_m "$tmp/old/metrics.json"'
+# ... frames too, but not a file of the user's hidden among them
+mkdir -p "$tmp/oldf/frames" && echo '{}' >"$tmp/oldf/metrics.json" && echo p >"$tmp/oldf/frames/000000.png"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/oldf" >/dev/null
+check '[ -f "$tmp/oldf/.footsim-results" ] && [ ! -e "$tmp/oldf/frames" ]'
+mkdir -p "$tmp/oldg/frames" && echo '{}' >"$tmp/oldg/metrics.json" && echo mine >"$tmp/oldg/frames/notes.txt"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/oldg" >/dev/null 2>"$tmp/errg"
+sg=$?
+check '[ "$sg" -eq 2 ] && grep -q "frames/notes.txt" "$tmp/errg" && [ -f "$tmp/oldg/frames/notes.txt" ]'
 # an empty folder is fine
 mkdir "$tmp/empty"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/empty" >/dev/null

@@ -380,6 +380,28 @@ static int known_name(const char *name, const char *const *known)
     return strstr(name, ".tmp.") != NULL;
 }
 
+/* Whether path/frames holds only frames (NNNNNN.png) and footsim's temporary files; fills odd with
+ * the first other name. */
+static int only_frames(const char *path, char *odd, size_t size)
+{
+    char frames[FS_OUT_PATH + 16];
+    snprintf(frames, sizeof frames, "%s/frames", path);
+    DIR *d = opendir(frames);
+    if (!d)
+        return 0;
+    int ok = 1;
+    for (struct dirent *e; ok && (e = readdir(d));) {
+        const char *n = e->d_name;
+        if (!strcmp(n, ".") || !strcmp(n, "..") || strstr(n, ".tmp."))
+            continue;
+        ok = strlen(n) == 10 && strspn(n, "0123456789") == 6 && !strcmp(n + 6, ".png");
+        if (!ok)
+            snprintf(odd, size, "frames/%.200s", n);
+    }
+    closedir(d);
+    return ok;
+}
+
 /* Whether folder `path` holds only what footsim writes (frames/ only NNNNNN.png). Fills `odd`
  * with the first name that is not. Returns -1 when it cannot be read. */
 static int only_footsim_files(const char *path, const char *const *known, int *count, char *odd, size_t size)
@@ -396,9 +418,9 @@ static int only_footsim_files(const char *path, const char *const *known, int *c
         (*count)++;
         if (!strcmp(e->d_name, FS_MARKER))
             continue;
-        if (known_name(e->d_name, known))
+        if (known_name(e->d_name, known) && (strcmp(e->d_name, "frames") || only_frames(path, odd, size)))
             continue;
-        if (ok)
+        if (ok && (strcmp(e->d_name, "frames") || !odd[0]))
             snprintf(odd, size, "%s", e->d_name);
         ok = 0;
     }
