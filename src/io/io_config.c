@@ -72,6 +72,12 @@ static void index_insert(fs_config *cfg, int i)
 /* Rebuilds the index for the entries as they are now, at a load factor of at most one half. */
 static int index_rebuild(fs_config *cfg, int want)
 {
+    if (want == 0 && cfg->count == 0) { /* nothing to find: no index (a config built by hand owns nothing) */
+        free(cfg->slots);
+        cfg->slots = NULL;
+        cfg->nslots = 0;
+        return 1;
+    }
     int n = 16;
     while (n < 2 * want)
         n *= 2;
