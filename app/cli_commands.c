@@ -26,8 +26,11 @@ static int fail(const fs_error *err) { return cli_report(err->status, err->messa
 static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
 {
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK)
+    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "run", &err) != FS_OK)
         return fail(&err);
+    if (!a->frames && (a->fps || a->size || a->camera))
+        fprintf(stderr, "footsim run: warning: %s is unused without --frames; add --frames to draw frames\n",
+                a->fps ? "--fps" : a->size ? "--size" : "--camera");
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);
@@ -259,7 +262,7 @@ int cli_walk(const cli_args *a)
 {
     static fs_scenario sc;
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK)
+    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK || fs_scenario_require(&sc, "walk", &err) != FS_OK)
         return fail(&err);
     fs_walk_result r;
     fs_status s = fs_walk_run(&sc, NULL, &r, &err);
@@ -303,7 +306,9 @@ int cli_keys(const cli_args *a)
            "| a run's trajectory in memory (rows x columns x 8 bytes) | %.0f MiB |\n"
            "| trials of a campaign (feet x terrains x seeds) | %d |\n"
            "| frames of `run --frames` or `render-compare` (six-digit names) | %d |\n"
-           "| frames `render-compare` keeps in memory | half of the machine's memory |\n\n",
+           "| frames `render-compare` keeps in memory | half of the machine's memory |\n"
+           "| a number | decimal; 0 or a normal double, 2.2e-308 to 1.8e308 in magnitude (hexadecimal and subnormals refused) |\n"
+           "| `terrain --height X Y` | metres from -1000 to 1000 |\n\n",
            FS_CONFIG_MAX_BYTES, FS_CONFIG_MAX_KEYS, (double)FS_MAX_STEPS, FS_TRAJ_MAX_BYTES / (1024.0 * 1024),
            FS_CAMPAIGN_MAX_TRIALS, 999999);
     return 0;

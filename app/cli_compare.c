@@ -181,7 +181,8 @@ static int load_pair(const cli_args *a, fs_scenario sc[2], char *dir, size_t siz
     const char *input[2] = {a->input, a->input2};
     for (int k = 0; k < 2; k++) {
         fs_error err;
-        if (fs_scenario_load(input[k], sets[k], nsets[k], &sc[k], &err) != FS_OK)
+        if (fs_scenario_load(input[k], sets[k], nsets[k], &sc[k], &err) != FS_OK ||
+            fs_scenario_require(&sc[k], "run", &err) != FS_OK)
             return cli_report(err.status, err.message);
     }
     int n = a->out ? snprintf(dir, size, "%s", a->out)

@@ -2,6 +2,7 @@
  * the run, and the video (the renderer's side of cli.h's cli_frames_open / cli_frames_close). */
 #include "cli_frames.h"
 
+#include "footsim/io/fs_config.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/experiment/fs_run.h"
 #include "footsim/sim/fs_sim.h"
@@ -40,9 +41,8 @@ static int parse_size(const char *text, int min_w, int *w, int *h)
 
 static int parse_fps(const char *text, double step_s, double *fps)
 {
-    char *end;
-    double v = strtod(text, &end);
-    if (end == text || *end || !isfinite(v) || v < 1 || v > 10000 || v * step_s > 1 + 1e-9) {
+    double v = 0;
+    if (fs_parse_number(text, &v) != FS_NUMBER_OK || v < 1 || v > 10000 || v * step_s > 1 + 1e-9) {
         fprintf(stderr, "footsim: --fps %s: not a frame rate; allowed: frames per simulated second from 1 to %g "
                         "(one frame per step of %g s at most)\n", text, fmin(10000, 1 / step_s), step_s);
         return FS_BAD_INPUT;

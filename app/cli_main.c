@@ -56,7 +56,7 @@ static const command commands[] = {
     {"walk", cli_walk, "SCENARIO", "--json --set",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
-    {"bench", cli_bench, "precision|stability|speed", "-j --quick --out",
+    {"bench", cli_bench, "precision|stability|speed", "-j --quick --out --replace",
      "Benchmarks (docs/bench.md), written to DIR (default: results/bench/):\n"
      "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
      "             against the planar reference model, and a landing trial against its finest run;\n"
@@ -102,7 +102,10 @@ static void command_help(const command *c)
     if (strstr(c->options, "--set"))
         printf(" [--set section.key=value]...");
     printf("\n\n  %s\n", c->help);
-    if (strstr(c->options, "--replace"))
+    if (strstr(c->options, "--replace") && !strcmp(c->name, "bench"))
+        printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
+               "  without footsim's %s marker or only bench files in it is refused unless --replace.\n", FS_MARKER);
+    else if (strstr(c->options, "--replace"))
         printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
                "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",
                FS_MARKER);

@@ -13,14 +13,20 @@
 /* The region a picture shows when no scenario gives one, m: around a foot at the origin. */
 static const double DEFAULT_REGION[4] = {-0.06, 0.16, -0.08, 0.08};
 enum { MAP_WIDTH_PX = 880 };
+/* --height takes points this far from the origin at most, m: ten times a scenario's start range */
+static const double MAX_COORDINATE_M = 1000;
 
 static int parse_coordinate(const char *text, const char *name, double *out)
 {
-    char *end;
-    errno = 0;
-    *out = strtod(text, &end);
-    if (*end || end == text || errno || !isfinite(*out)) {
-        fprintf(stderr, "footsim: --height %s: '%s' is not a finite number of metres\n", name, text);
+    fs_number n = fs_parse_number(text, out);
+    if (n != FS_NUMBER_OK) {
+        fprintf(stderr, "footsim: --height %s: '%s' %s; allowed: metres from %g to %g\n", name, text,
+                fs_number_problem(n), -MAX_COORDINATE_M, MAX_COORDINATE_M);
+        return 0;
+    }
+    if (fabs(*out) > MAX_COORDINATE_M) {
+        fprintf(stderr, "footsim: --height %s: %s m is out of range; allowed: metres from %g to %g\n", name, text,
+                -MAX_COORDINATE_M, MAX_COORDINATE_M);
         return 0;
     }
     return 1;

@@ -3,10 +3,10 @@
 # and Pareto front, and ODE's error on the pinned chain falls as the step does (first order: ten
 # times smaller step, about ten times smaller error). Usage: cli_bench_precision.sh path/to/footsim
 . "$(dirname "$0")/cli_check.sh"
-"$fs" bench precision --quick --out "$tmp" >/dev/null 2>"$tmp/err.txt"
+"$fs" bench precision --quick --out "$tmp/bench" >/dev/null 2>"$tmp/err.txt"
 status=$?
 check '[ "$status" -eq 0 ]'
-csv="$tmp/precision.csv"
+csv="$tmp/bench/precision.csv"
 check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default$"'
 # 3 steps x 2 steppers: x 2 spring implementations for the chain and the biomimetic foot, x 1 for the flat foot
 check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 30 ]'
@@ -18,8 +18,8 @@ ratio=$(awk -F, '$1 == "chain" && $2 == "step" && $4 == "implicit" && $5 == 0.00
                  $1 == "chain" && $2 == "step" && $4 == "implicit" && $5 == 0.0001 { b = $6 }
                  END { print a / b }' "$csv")
 check 'awk -v r="$ratio" "BEGIN { exit !(r > 5 && r < 20) }"'
-check 'grep -q "Goal" "$tmp/precision.md"'
-if command -v gnuplot >/dev/null 2>&1; then check '[ -s "$tmp/precision.png" ]'; fi
+check 'grep -q "Goal" "$tmp/bench/precision.md"'
+if command -v gnuplot >/dev/null 2>&1; then check '[ -s "$tmp/bench/precision.png" ]'; fi
 "$fs" bench nonsense 2>/dev/null
 status=$?
 check '[ "$status" -eq 2 ]'

@@ -60,4 +60,56 @@ expect 2 "fifo.json: is a FIFO; give a summary.json" -- compare "$tmp/fifo.json"
 expect 2 "/dev/zero: is a character device" -- compare /dev/zero results/baseline/landing.json
 expect 2 "fifo.json: is a FIFO; give an .ini file" -- model "$tmp/fifo.json"
 fs=$real_fs
+
+# ---- finding 7: every command-line coordinate range-checked (1e308 overflowed a lattice index) ------
+expect 2 "--height X: 1e308 m is out of range; allowed: metres from -1000 to 1000" -- terrain terrains/rough.ini --height 1e308 1e308
+expect 2 "--height Y: 'nan' is not a finite number" -- terrain terrains/rough.ini --height 0 nan
+
+# ---- finding 11: messages that say the real reason -----------------------------------------------
+mkdir "$tmp/adir"
+ln -s "$tmp/loop1" "$tmp/loop2" && ln -s "$tmp/loop2" "$tmp/loop1"
+expect 2 "adir: is a folder; give an .ini file" -- model "$tmp/adir"
+expect 2 "/dev/null: is a character device" -- model /dev/null
+expect 2 "loop1: cannot open an .ini file (Too many levels of symbolic links)" -- model "$tmp/loop1"
+printf '[scenario]\ndesign = adir\n' >"$tmp/dirdesign.ini"
+expect 2 "dirdesign.ini:2: design = 'adir': .*adir is a folder, not a file" -- run "$tmp/dirdesign.ini" --out "$tmp/o"
+printf '[scenario]\ndesign = loop1\n' >"$tmp/loopdesign.ini"
+expect 2 "loopdesign.ini:2: design = 'loop1': Too many levels of symbolic links" -- run "$tmp/loopdesign.ini" --out "$tmp/o"
+if [ "$(id -u)" -ne 0 ]; then
+    mkdir -p "$tmp/locked/in" && cp scenarios/feet/flat.ini "$tmp/locked/in/" && chmod 000 "$tmp/locked"
+    expect 2 "Permission denied" -- model "$tmp/locked/in/flat.ini"
+    chmod 755 "$tmp/locked"
+else
+    echo "skipped: running as root, a folder cannot be made unsearchable (the permission case of finding 11)"
+fi
+expect 2 "l1_m = '1e-308' is below the smallest normal double (2.2e-308)" -- model scenarios/feet/biomimetic.ini --set links.l1_m=1e-308
+expect 2 "from --set links.l3_m" -- model scenarios/feet/biomimetic.ini --set links.l3_m=1e-300
+check '! grep -q "[0-9]\{30\}" "$tmp/err"' # no 300-digit number for tiny geometry
+
+# ---- finding 12: nonsense refused ----------------------------------------------------------------
+"$fs" run $sl --set load.mass_kg=-0 --set run.duration_s=0.02 --out "$tmp/zero" >"$tmp/zero.txt" 2>&1
+check 'grep -q " 0.0 kg" "$tmp/zero.txt" && ! grep -q -- "-0.0 kg" "$tmp/zero.txt"'
+expect 2 "mass_kg = '0x1P-1074' is hexadecimal; write it in decimal" -- run $sl --set load.mass_kg=0x1P-1074 --out "$tmp/o"
+expect 2 "mass_kg = '4.9e-324' is below the smallest normal double" -- run $sl --set load.mass_kg=4.9e-324 --out "$tmp/o"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\nterrain = %s/terrains/heightmap.ini\n' "$src" "$src" >"$tmp/hm.ini"
+expect 2 "heightmap.ini: the heightmap covers x 100\.\.[0-9.]* m.*the foot .* is off it" -- run "$tmp/hm.ini" --set heightmap.x0_m=100 --out "$tmp/o"
+expect 2 "period_s = 5e-05 gives a stance of 3e-05 s and a swing of 2e-05 s, one shorter than step_s = 0.0001" -- walk scenarios/walking.ini --set walk.period_s=5e-5
+
+# ---- finding 13: options that contradicted each other without need --------------------------------
+"$fs" run $sl --set run.step_s=1e-2 --set run.duration_s=0.05 --out "$tmp/coarse" >/dev/null 2>"$tmp/coarse.err"
+s13=$?
+# an unset log interval follows the step: rows 0.01 s apart
+check '[ "$s13" -eq 0 ] && [ "$(sed -n 3p "$tmp/coarse/trajectory.csv" | cut -d, -f1)" = "0.01" ]'
+expect 2 "--set run.log_interval_s: log_interval_s = 0.001 is shorter than step_s = 0.01" -- run $sl --set run.step_s=1e-2 --set run.log_interval_s=1e-3 --out "$tmp/o"
+"$fs" run $sl --set run.duration_s=0.02 --fps 30 --out "$tmp/fps" >/dev/null 2>"$tmp/fps.err"
+check 'grep -q "warning: --fps is unused without --frames" "$tmp/fps.err" && [ -f "$tmp/fps/metrics.json" ]'
+expect 2 "--out given twice" -- run $sl --out "$tmp/o" --out "$tmp/o2"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[run]\nduration_s = 0x10\n' "$src" >"$tmp/hex.ini"
+expect 2 "hex.ini:4: duration_s = '0x10' is hexadecimal" -- run "$tmp/hex.ini" --out "$tmp/o"
+
+# ---- finding 14: trial and run refuse the wrong kind of scenario, naming the right command ---------
+expect 2 "static_load.ini: is a run scenario .* use \`footsim run" -- trial $sl
+expect 2 "walking.ini: is a walking-machine scenario .* use \`footsim walk" -- run scenarios/walking.ini --out "$tmp/o"
+expect 2 "use \`footsim run" -- walk $sl
+check '[ ! -e "$tmp/o" ] && [ ! -e "$tmp/o2" ]'
 finish

@@ -21,6 +21,16 @@ check '[ -z "$(ls -a "$tmp/c" | grep "\.tmp\.")" ]'
 "$fs" campaign "$tmp/camp.ini" $short --set campaign.seeds=3 -j 1 --out "$tmp/c" >/dev/null 2>&1
 check '[ -z "$(ls -a "$tmp" | grep -e "^c\.partial" -e "^c\.lock")" ]'
 check '[ "$(grep -c "^bio,flat," "$tmp/c/trials.csv")" -eq 3 ] && grep -q "\"trials\":[[:space:]]*3" "$tmp/c/summary.json"'
+# a campaign ended by SIGTERM (or Ctrl-C) in the middle of its trials removes its partial folder
+"$fs" campaign "$tmp/camp.ini" $short --set campaign.seeds=400 -j 1 --out "$tmp/c" >/dev/null 2>&1 &
+pid=$!
+for i in $(seq 100); do [ -n "$(ls -a "$tmp" | grep "^c\.partial")" ] && break; sleep 0.2; done
+check '[ -n "$(ls -a "$tmp" | grep "^c\.partial")" ]' # it is running, its partial folder there
+kill -TERM $pid
+wait $pid
+status=$?
+check '[ "$status" -eq 143 ] && [ -z "$(ls -a "$tmp" | grep -e "^c\.partial" -e "^c\.lock")" ]'
+check '[ "$(grep -c "^bio,flat," "$tmp/c/trials.csv")" -eq 3 ]'
 # finding 9: an ODE internal error (exit 3 from ODE's handler) leaves no folder and no partial one
 FOOTSIM_TEST_ODE_ERROR=1 "$fs" run scenarios/static_load.ini $short --out "$tmp/ode" >/dev/null 2>&1
 status=$?
@@ -32,6 +42,18 @@ status=$?
 check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 2 s and was killed by the watchdog" "$tmp/werr"'
 check 'grep -q "1 worker made no progress" "$tmp/werr" && [ "$(grep -c "failed_numerics" "$tmp/w/trials.csv")" -eq 1 ]'
 check 'grep "failed_numerics" "$tmp/w/trials.csv" | grep -q "^bio,flat,2,"'
+# finding 9: a refused fork (at most one process for an unprivileged user) leaves no folder
+if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null && command -v prlimit >/dev/null; then
+    mkdir "$tmp/nobody" && chmod 777 "$tmp/nobody" && chmod 755 "$tmp" && cp "$tmp/camp.ini" "$tmp/nobody/" && chmod 644 "$tmp/nobody/camp.ini"
+    # (ASAN_OPTIONS: the leak checker needs a thread of its own at exit, which the limit refuses)
+    ASAN_OPTIONS=detect_leaks=0 setpriv --reuid=65534 --regid=65534 --clear-groups prlimit --nproc=1 -- \
+        "$fs" campaign "$tmp/nobody/camp.ini" $short -j 1 --out "$tmp/nobody/c" >/dev/null 2>"$tmp/ferr"
+    status=$?
+    check '[ "$status" -eq 4 ] && grep -q "cannot start a worker process (Resource temporarily unavailable)" "$tmp/ferr"'
+    check '[ -z "$(ls -a "$tmp/nobody" | grep -e "^c$" -e "^c\\.")" ]'
+else
+    echo "skipped: needs root, setpriv and prlimit to make fork fail (the refused-fork case of finding 9)"
+fi
 # finding 3: render-compare failing numerically leaves the old frames and filmstrip
 if [ "$renderer" = render ]; then
     rc="render-compare scenarios/static_load.ini scenarios/static_load.ini --size 64x32 --fps 50"

@@ -23,6 +23,10 @@ check '[ -z "$(ls -a "$tmp/thesis" | grep -e partial -e lock)" ]'
 "$fs" campaign scenarios/landing_ci.ini --set campaign.seeds=1 -j 1 --out "$tmp/thesis" >/dev/null 2>"$tmp/err2"
 s3=$?
 check '[ "$s3" -eq 2 ] && grep -q "did not make" "$tmp/err2" && [ -f "$tmp/thesis/notes.txt" ]'
+# benches write file by file into their folder and never replace it: a folder of the user's is refused
+"$fs" bench speed --quick --out "$tmp/thesis" >/dev/null 2>"$tmp/errb"
+sb=$?
+check '[ "$sb" -eq 2 ] && grep -q "writes into only its own results folders" "$tmp/errb" && [ -f "$tmp/thesis/notes.txt" ]'
 # --replace replaces it on purpose
 mkdir "$tmp/mine" && echo x >"$tmp/mine/notes.txt"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/mine" --replace >/dev/null
@@ -31,6 +35,14 @@ check '[ -f "$tmp/mine/metrics.json" ] && [ ! -e "$tmp/mine/notes.txt" ] && [ -f
 mkdir "$tmp/old" && echo '{}' >"$tmp/old/metrics.json" && echo t >"$tmp/old/trajectory.csv"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/old" >/dev/null
 check '[ -f "$tmp/old/.footsim-results" ] && grep -q ankle_drop_m "$tmp/old/metrics.json"'
+# ... frames too, but not a file of the user's hidden among them
+mkdir -p "$tmp/oldf/frames" && echo '{}' >"$tmp/oldf/metrics.json" && echo p >"$tmp/oldf/frames/000000.png"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/oldf" >/dev/null
+check '[ -f "$tmp/oldf/.footsim-results" ] && [ ! -e "$tmp/oldf/frames" ]'
+mkdir -p "$tmp/oldg/frames" && echo '{}' >"$tmp/oldg/metrics.json" && echo mine >"$tmp/oldg/frames/notes.txt"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/oldg" >/dev/null 2>"$tmp/errg"
+sg=$?
+check '[ "$sg" -eq 2 ] && grep -q "frames/notes.txt" "$tmp/errg" && [ -f "$tmp/oldg/frames/notes.txt" ]'
 # an empty folder is fine
 mkdir "$tmp/empty"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/empty" >/dev/null
@@ -95,7 +107,7 @@ mkdir "$tmp/mine.partial.99999" "$tmp/mine.old.99998"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/mine" >/dev/null
 check '[ -z "$(ls -a "$tmp" | grep -e "mine\.old" -e "mine\.partial")" ] && [ -f "$tmp/mine/metrics.json" ]'
 # the committed results folders carry the marker
-for d in results/landing results/roughness results/baseline; do
+for d in results/landing results/roughness results/baseline results/bench; do
     check "[ -f $d/.footsim-results ]"
 done
 finish

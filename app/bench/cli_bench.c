@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
+#include "footsim/io/fs_output.h"
 
 #include <ode/ode.h>
 #include <stdio.h>
@@ -41,9 +42,18 @@ double cli_load_average(void)
     return l;
 }
 
+/* What benches write into their shared folder (never replaced as a folder; file by file). */
+static const char *const bench_files[] = {"precision.*", "stability*", "speed.*", "skips.csv", "render.csv",
+                                          "own_code_before_after.csv", NULL};
+
 int cli_bench(const cli_args *a)
 {
     const char *dir = a->out ? a->out : "results/bench";
+    int known = !strcmp(a->input, "precision") || !strcmp(a->input, "stability") || !strcmp(a->input, "speed");
+    fs_error err;
+    /* the folder must be one footsim writes into (marked, or only bench files), before measuring */
+    if (known && fs_outdir_shared(dir, bench_files, a->replace, "--out", &err) != FS_OK)
+        return cli_report(err.status, err.message);
     if (!strcmp(a->input, "precision"))
         return cli_bench_precision(a, dir);
     if (!strcmp(a->input, "stability"))

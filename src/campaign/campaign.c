@@ -116,12 +116,11 @@ static int parse_sweep(const binder *b, char values[][FS_NAME_MAX], fs_error *er
     int n = 0;
     char *save = NULL;
     for (char *tok = strtok_r(buf, ", \t", &save); tok; tok = strtok_r(NULL, ", \t", &save)) {
-        char *end;
-        errno = 0;
-        double v = strtod(tok, &end);
-        if (*end || errno || !isfinite(v) || strlen(tok) >= FS_NAME_MAX / 2) {
-            fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: '%s' is not a finite number; allowed: comma-separated numbers",
-                    b->sweep_where, tok);
+        double v;
+        fs_number num = fs_parse_number(tok, &v);
+        if (num != FS_NUMBER_OK || strlen(tok) >= FS_NAME_MAX / 2) {
+            fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: '%s' %s; allowed: comma-separated numbers", b->sweep_where,
+                    tok, num != FS_NUMBER_OK ? fs_number_problem(num) : "is too long");
             return -1;
         }
         if (n == FS_CAMPAIGN_MAX_TERRAINS) {
@@ -383,6 +382,8 @@ static fs_status check_trials(const fs_campaign *c, fs_error *err)
             int n = fs_campaign_overrides(c, f, t, buf, ov);
             fs_error e;
             s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
+            if (s == FS_OK)
+                s = fs_scenario_require(sc, "trial", &e);
             fs_scenario_free(sc);
             if (s != FS_OK)
                 fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s)", e.message, c->path, c->foot[f].name,

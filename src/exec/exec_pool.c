@@ -5,12 +5,17 @@
 #include <errno.h>
 #include <poll.h>
 #include <signal.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+
+/* An answer on the wire: the task number in a header as wide as the strictest alignment, then the
+ * result, so the result in the buffer is aligned for any type. */
+#define HEAD ((size_t)_Alignof(max_align_t))
 
 typedef struct worker {
     pid_t pid;
@@ -24,7 +29,7 @@ typedef struct pool {
     worker *w;
     int nworkers, next, finished;
     double watchdog_s;
-    unsigned char *buf;     /* one answer: the task number, then result_size bytes */
+    unsigned char *buf;     /* one answer: HEAD bytes holding the task number, then result_size bytes */
     fs_pool_stats stats;
 } pool;
 
@@ -61,10 +66,10 @@ static void worker_main(const fs_pool_spec *spec, unsigned char *buf, int task_f
 {
     int task;
     while (io_full(task_fd, &task, sizeof task, 0)) {
-        memset(buf, 0, sizeof task + spec->result_size);
+        memset(buf, 0, HEAD + spec->result_size);
         memcpy(buf, &task, sizeof task);
-        spec->run(task, buf + sizeof task, spec->user);
-        if (!io_full(result_fd, buf, sizeof task + spec->result_size, 1))
+        spec->run(task, buf + HEAD, spec->user);
+        if (!io_full(result_fd, buf, HEAD + spec->result_size, 1))
             _exit(4);
     }
     _exit(0);
@@ -172,7 +177,7 @@ static fs_status bury(pool *p, worker *w, int timed_out, fs_error *err)
 /* Reads what worker w has to say. */
 static fs_status collect(pool *p, worker *w, fs_error *err)
 {
-    size_t n = sizeof(int) + p->spec->result_size;
+    size_t n = HEAD + p->spec->result_size;
     if (!io_full(w->result_fd, p->buf, n, 0))
         return bury(p, w, 0, err); /* end of its pipe: it died in the middle of its task */
     int task;
@@ -181,7 +186,7 @@ static fs_status collect(pool *p, worker *w, fs_error *err)
         return fs_fail(err, FS_IO, "a worker answered task %d when given %d", task, w->task);
     p->stats.answered++;
     p->finished++;
-    fs_status s = p->spec->done(task, p->buf + sizeof task, p->spec->user, err);
+    fs_status s = p->spec->done(task, p->buf + HEAD, p->spec->user, err);
     progress(p);
     if (s == FS_OK)
         assign(p, w);
@@ -213,7 +218,7 @@ fs_status fs_pool_run(const fs_pool_spec *spec, fs_pool_stats *stats, fs_error *
     int jobs = spec->jobs < 1 ? 1 : spec->jobs > FS_POOL_MAX_JOBS ? FS_POOL_MAX_JOBS : spec->jobs;
     p.nworkers = jobs < spec->ntasks ? jobs : spec->ntasks;
     p.w = calloc((size_t)(p.nworkers > 0 ? p.nworkers : 1), sizeof *p.w);
-    p.buf = malloc(sizeof(int) + spec->result_size);
+    p.buf = malloc(HEAD + spec->result_size);
     struct pollfd *fds = calloc((size_t)(p.nworkers > 0 ? p.nworkers : 1), sizeof *fds);
     int *who = calloc((size_t)(p.nworkers > 0 ? p.nworkers : 1), sizeof *who);
     if (!p.w || !p.buf || !fds || !who) {

@@ -153,7 +153,10 @@ fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, 
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", scenario_path);
     /* the ranges to draw from, then the scenario again with the drawn pose and terrain seed */
     fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, sc, err);
+    if (s == FS_OK)
+        s = fs_scenario_require(sc, "trial", err);
     if (s != FS_OK) {
+        fs_scenario_free(sc);
         free(sc);
         return s;
     }

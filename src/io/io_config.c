@@ -5,6 +5,7 @@
 
 #include <ini.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,6 +72,12 @@ static void index_insert(fs_config *cfg, int i)
 /* Rebuilds the index for the entries as they are now, at a load factor of at most one half. */
 static int index_rebuild(fs_config *cfg, int want)
 {
+    if (want == 0 && cfg->count == 0) { /* nothing to find: no index (a config built by hand owns nothing) */
+        free(cfg->slots);
+        cfg->slots = NULL;
+        cfg->nslots = 0;
+        return 1;
+    }
     int n = 16;
     while (n < 2 * want)
         n *= 2;
@@ -130,6 +137,8 @@ static int copy_text(char *dst, size_t size, const char *src)
 static int on_key(void *user, const char *section, const char *name, const char *value)
 {
     reader *r = user;
+    if (r->status != FS_OK) /* inih reads on after a refusal: the first one stands */
+        return 0;
     fs_entry *old = find_entry(r->cfg, section, name);
     if (old) {
         r->status = fs_fail(r->err, FS_BAD_INPUT, "%s:%d: [%s] %s is given twice (first on line %d); keep one",
@@ -305,6 +314,14 @@ static const char *where_entry(const fs_config *cfg, const fs_entry *e, char *bu
     return buf;
 }
 
+int fs_config_has(const fs_config *cfg, const char *section, const char *name)
+{
+    for (int i = 0; i < cfg->count; i++)
+        if (!strcmp(cfg->entries[i].section, section) && (!name || !strcmp(cfg->entries[i].name, name)))
+            return 1;
+    return 0;
+}
+
 const char *fs_config_where(const fs_config *cfg, const char *section, const char *name, char *buf, size_t size)
 {
     const fs_entry *e = NULL;
@@ -329,21 +346,36 @@ static const char *trim(char *s)
     return s;
 }
 
-/* Parses one finite number, the whole of text. */
-static int parse_number(const char *text, double *out)
+fs_number fs_parse_number(const char *text, double *out)
 {
     char buf[FS_VALUE_MAX];
     snprintf(buf, sizeof buf, "%s", text);
     const char *s = trim(buf);
     if (!*s)
-        return 0;
+        return FS_NUMBER_BAD;
+    const char *digits = s + (*s == '+' || *s == '-');
+    if (digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) /* strtod reads C's hex floats: 0x1P-1074 */
+        return FS_NUMBER_HEX;
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (*end || errno == ERANGE || !isfinite(v))
-        return 0;
-    *out = v;
-    return 1;
+    if (*end)
+        return FS_NUMBER_BAD;
+    if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1))
+        return FS_NUMBER_BAD;
+    if ((v != 0 && fabs(v) < DBL_MIN) || (errno == ERANGE && fabs(v) <= 1)) /* underflow: below DBL_MIN */
+        return FS_NUMBER_SUBNORMAL;
+    *out = v == 0 ? 0.0 : v; /* -0 is 0: "-0.0 kg" means nothing */
+    return FS_NUMBER_OK;
+}
+
+const char *fs_number_problem(fs_number n)
+{
+    switch (n) {
+    case FS_NUMBER_HEX: return "is hexadecimal; write it in decimal";
+    case FS_NUMBER_SUBNORMAL: return "is below the smallest normal double (2.2e-308); write 0 or a larger value";
+    default: return "is not a finite number";
+    }
 }
 
 static void describe_range(const fs_key *k, char *buf, size_t size)
@@ -384,20 +416,26 @@ static fs_status bind_value(const fs_key *k, const char *value, const char *wher
     char *slot = (char *)def + k->offset;
     double v;
     switch (k->type) {
-    case FS_KEY_NUMBER:
-        if (!parse_number(value, &v))
-            return bad_value(err, where, k, value, "is not a finite number");
+    case FS_KEY_NUMBER: {
+        fs_number n = fs_parse_number(value, &v);
+        if (n != FS_NUMBER_OK)
+            return bad_value(err, where, k, value, fs_number_problem(n));
         if (!in_range(k, v))
             return bad_value(err, where, k, value, "is out of range");
         *(double *)slot = v;
         return FS_OK;
-    case FS_KEY_INTEGER:
-        if (!parse_number(value, &v) || v != floor(v))
+    }
+    case FS_KEY_INTEGER: {
+        fs_number n = fs_parse_number(value, &v);
+        if (n == FS_NUMBER_HEX)
+            return bad_value(err, where, k, value, fs_number_problem(n));
+        if (n != FS_NUMBER_OK || v != floor(v))
             return bad_value(err, where, k, value, "is not a whole number");
         if (!in_range(k, v))
             return bad_value(err, where, k, value, "is out of range");
         *(int *)slot = (int)v;
         return FS_OK;
+    }
     case FS_KEY_LIST: {
         char buf[FS_VALUE_MAX];
         snprintf(buf, sizeof buf, "%s", value);
@@ -407,8 +445,12 @@ static fs_status bind_value(const fs_key *k, const char *value, const char *wher
         for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
             if (n == k->count || n == FS_LIST_MAX)
                 return bad_value(err, where, k, value, "has too many values");
-            if (!parse_number(tok, &vals[n]))
-                return bad_value(err, where, k, value, "has a value that is not a finite number");
+            fs_number num = fs_parse_number(tok, &vals[n]);
+            if (num != FS_NUMBER_OK) {
+                char why[128];
+                snprintf(why, sizeof why, "has a value that %s", fs_number_problem(num));
+                return bad_value(err, where, k, value, why);
+            }
             if (!in_range(k, vals[n]))
                 return bad_value(err, where, k, value, "has a value out of range");
             n++;
@@ -447,10 +489,15 @@ static fs_status bind_value(const fs_key *k, const char *value, const char *wher
         int n = rel[0] == '/' ? snprintf(full, sizeof full, "%s", rel) : snprintf(full, sizeof full, "%s/%s", dir, rel);
         if (n < 0 || (size_t)n >= sizeof full)
             return bad_value(err, where, k, value, "is too long");
+        /* the system's reason: no such file, a folder, a FIFO, a symbolic link loop, no permission */
         struct stat st;
-        if (stat(full, &st) != 0 || !S_ISREG(st.st_mode))
-            return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s': no such file (looked for %s); give a path relative to %s",
-                           where, k->name, rel, full, dir);
+        if (stat(full, &st) != 0)
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s': %s (looked for %s); give a path relative to %s", where,
+                           k->name, rel, errno == ENOENT ? "no such file" : strerror(errno), full, dir);
+        if (!S_ISREG(st.st_mode))
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s': %s is %s, not a file; give a file's path", where, k->name,
+                           rel, full, S_ISDIR(st.st_mode) ? "a folder" : S_ISFIFO(st.st_mode) ? "a FIFO"
+                           : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device" : "not a regular file");
         memcpy(slot, full, (size_t)n + 1);
         return FS_OK;
     }

@@ -4,6 +4,8 @@
 #include "footsim/io/fs_output.h"
 
 #include <dirent.h>
+#include <signal.h>
+#include <sys/syscall.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
@@ -16,9 +18,10 @@
 
 /* ---- what to remove at exit --------------------------------------------------------------------- */
 
-/* Temporary files and partial folders of this process, removed by an atexit handler unless they
- * were committed: ODE's error handler ends the process with exit(). A forked worker inherits the
- * list but never removes its parent's entries (owner). */
+/* Temporary files and partial folders of this process, removed by an atexit handler (ODE's error
+ * handler ends the process with exit()) and by a handler of SIGINT, SIGTERM and SIGHUP unless
+ * they were committed. A forked worker inherits the list but never removes its parent's entries
+ * (owner). */
 enum { PENDING_MAX = 32 };
 typedef struct pending {
     char path[FS_OUT_PATH + 64];
@@ -41,10 +44,67 @@ static void cleanup_at_exit(void)
     }
 }
 
+/* Removes a folder and everything in it with system calls only (no malloc, no stdio): safe in a
+ * signal handler. Folders nest at most `depth` deep (a results folder: frames/ in it). */
+static void remove_tree_raw(int parent, const char *name, int depth)
+{
+    int fd = openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd >= 0) {
+        char buf[4096];
+        for (;;) {
+            long n = syscall(SYS_getdents64, fd, buf, sizeof buf);
+            if (n <= 0)
+                break;
+            for (long off = 0; off < n;) {
+                struct dirent64 *e = (struct dirent64 *)(buf + off);
+                off += e->d_reclen;
+                if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+                    continue;
+                if (unlinkat(fd, e->d_name, 0) != 0 && depth > 0)
+                    remove_tree_raw(fd, e->d_name, depth - 1);
+            }
+        }
+        close(fd);
+    }
+    unlinkat(parent, name, AT_REMOVEDIR);
+}
+
+/* SIGINT, SIGTERM, SIGHUP: what this process left half done is removed, then the signal ends it
+ * as it would have. */
+static void cleanup_on_signal(int sig)
+{
+    for (int i = 0; i < npend; i++) {
+        if (!pend[i].path[0] || pend[i].owner != getpid())
+            continue;
+        if (pend[i].tree)
+            remove_tree_raw(AT_FDCWD, pend[i].path, 4);
+        else
+            unlink(pend[i].path);
+    }
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void catch_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (int i = 0; i < 3; i++) {
+        struct sigaction old, sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = cleanup_on_signal;
+        sigemptyset(&sa.sa_mask);
+        /* a signal the caller ignores stays ignored */
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_DFL)
+            sigaction(sigs[i], &sa, NULL);
+    }
+}
+
 static void remember(const char *path, int tree)
 {
-    if (!atexit_set)
+    if (!atexit_set) {
         atexit_set = atexit(cleanup_at_exit) == 0;
+        catch_signals();
+    }
     int slot = -1;
     for (int i = 0; i < npend && slot < 0; i++)
         if (!pend[i].path[0])
@@ -52,8 +112,9 @@ static void remember(const char *path, int tree)
     if (slot < 0 && npend < PENDING_MAX)
         slot = npend++;
     if (slot >= 0) {
-        snprintf(pend[slot].path, sizeof pend[slot].path, "%s", path);
+        pend[slot].owner = 0; /* a signal arriving now skips the entry until it is whole */
         pend[slot].tree = tree;
+        snprintf(pend[slot].path, sizeof pend[slot].path, "%s", path);
         pend[slot].owner = getpid();
     }
 }
@@ -311,10 +372,34 @@ fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *
  * temporary file of its own. */
 static int known_name(const char *name, const char *const *known)
 {
-    for (int i = 0; known && known[i]; i++)
-        if (!strcmp(name, known[i]))
+    for (int i = 0; known && known[i]; i++) {
+        size_t n = strlen(known[i]);
+        if (n && known[i][n - 1] == '*' ? !strncmp(name, known[i], n - 1) : !strcmp(name, known[i]))
             return 1;
+    }
     return strstr(name, ".tmp.") != NULL;
+}
+
+/* Whether path/frames holds only frames (NNNNNN.png) and footsim's temporary files; fills odd with
+ * the first other name. */
+static int only_frames(const char *path, char *odd, size_t size)
+{
+    char frames[FS_OUT_PATH + 16];
+    snprintf(frames, sizeof frames, "%s/frames", path);
+    DIR *d = opendir(frames);
+    if (!d)
+        return 0;
+    int ok = 1;
+    for (struct dirent *e; ok && (e = readdir(d));) {
+        const char *n = e->d_name;
+        if (!strcmp(n, ".") || !strcmp(n, "..") || strstr(n, ".tmp."))
+            continue;
+        ok = strlen(n) == 10 && strspn(n, "0123456789") == 6 && !strcmp(n + 6, ".png");
+        if (!ok)
+            snprintf(odd, size, "frames/%.200s", n);
+    }
+    closedir(d);
+    return ok;
 }
 
 /* Whether folder `path` holds only what footsim writes (frames/ only NNNNNN.png). Fills `odd`
@@ -333,9 +418,9 @@ static int only_footsim_files(const char *path, const char *const *known, int *c
         (*count)++;
         if (!strcmp(e->d_name, FS_MARKER))
             continue;
-        if (known_name(e->d_name, known))
+        if (known_name(e->d_name, known) && (strcmp(e->d_name, "frames") || only_frames(path, odd, size)))
             continue;
-        if (ok)
+        if (ok && (strcmp(e->d_name, "frames") || !odd[0]))
             snprintf(odd, size, "%s", e->d_name);
         ok = 0;
     }
@@ -446,20 +531,19 @@ static int fill_marker(FILE *f, const void *user)
     return 1;
 }
 
-fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
-                         fs_error *err)
+/* Refuses a target footsim must not replace or write into: a symbolic link, not a folder, a
+ * non-empty folder without the marker and not an earlier version's (unless replace). Makes its
+ * parent. `path` is normalised, `dir` as given. */
+static fs_status check_target(const char *path, const char *dir, const char *const *known, int replace,
+                              const char *option, int shared, fs_error *err)
 {
-    memset(o, 0, sizeof *o);
-    o->lock_fd = -1;
-    fs_status s = fs_normalise_dir(dir, o->path, sizeof o->path, option, err);
+    char parent[FS_OUT_PATH];
+    parent_of(path, parent, sizeof parent);
+    fs_status s = fs_make_dirs(parent, err);
     if (s != FS_OK)
         return s;
-    char parent[FS_OUT_PATH];
-    parent_of(o->path, parent, sizeof parent);
-    if ((s = fs_make_dirs(parent, err)) != FS_OK)
-        return s;
     struct stat st;
-    if (lstat(o->path, &st) == 0) {
+    if (lstat(path, &st) == 0) {
         if (S_ISLNK(st.st_mode))
             return fs_fail(err, FS_BAD_INPUT, "%s %s: is a symbolic link; footsim replaces only folders it made: give "
                            "the folder's own path", option, dir);
@@ -468,16 +552,30 @@ fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known
                            type_name(st.st_mode), option);
         int count;
         char odd[256];
-        int mine = only_footsim_files(o->path, known, &count, odd, sizeof odd);
+        int mine = only_footsim_files(path, known, &count, odd, sizeof odd);
         if (mine < 0)
             return fs_fail(err, FS_BAD_INPUT, "%s %s: cannot read the folder (%s); choose another %s", option, dir,
                            strerror(errno), option);
-        if (count > 0 && !has_marker(o->path) && !mine && !replace)
+        if (count > 0 && !has_marker(path) && !mine && !replace)
             return fs_fail(err, FS_BAD_INPUT,
-                           "%s %s: a folder footsim did not make (it holds '%s' and no %s marker); footsim replaces "
-                           "only its own results folders, whole: choose another %s, or add --replace to replace it "
-                           "and everything in it", option, dir, odd, FS_MARKER, option);
+                           "%s %s: a folder footsim did not make (it holds '%s' and no %s marker); footsim %s "
+                           "only its own results folders: choose another %s, or add --replace to %s", option, dir,
+                           odd, FS_MARKER, shared ? "writes into" : "replaces, whole,", option,
+                           shared ? "write its files into it anyway" : "replace it and everything in it");
     }
+    return FS_OK;
+}
+
+fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
+                         fs_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->lock_fd = -1;
+    fs_status s = fs_normalise_dir(dir, o->path, sizeof o->path, option, err);
+    if (s != FS_OK)
+        return s;
+    if ((s = check_target(o->path, dir, known, replace, option, 0, err)) != FS_OK)
+        return s;
     snprintf(o->lock, sizeof o->lock, "%s.lock", o->path);
     if ((s = take_lock(o, option, err)) != FS_OK)
         return s;
@@ -566,4 +664,19 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err)
     release_lock(o);
     o->open = 0;
     return FS_OK;
+}
+
+fs_status fs_outdir_shared(const char *dir, const char *const *known, int replace, const char *option, fs_error *err)
+{
+    char path[FS_OUT_PATH], marker[FS_OUT_PATH + 32];
+    fs_status s = fs_normalise_dir(dir, path, sizeof path, option, err);
+    if (s == FS_OK)
+        s = check_target(path, dir, known, replace, option, 1, err);
+    if (s == FS_OK)
+        s = fs_make_dirs(path, err);
+    snprintf(marker, sizeof marker, "%s/%s", path, FS_MARKER);
+    struct stat st;
+    if (s == FS_OK && lstat(marker, &st) != 0)
+        s = fs_write_file(marker, fill_marker, NULL, err);
+    return s;
 }

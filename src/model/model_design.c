@@ -139,11 +139,15 @@ static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, in
     /* The metatarsal angle that puts the toe sphere on the ground. */
     double l3 = s * d->l3_m, l4 = s * d->l4_m, rt = s * d->toe_radius_m, rb = s * d->ball_radius_m;
     double sin3 = (rt - M.z - l4 * sin(a4)) / l3;
-    if (sin3 < -1 || sin3 > 0)
+    if (sin3 < -1 || sin3 > 0) {
+        /* several keys meet here: name where l3_m came from too (a --set is not a line of the file) */
+        char where_l3[FS_PATH_MAX + 80];
         return fs_fail(err, FS_BAD_INPUT,
-                       "%s: chain %d's toe cannot rest on the ground (its metatarsal would need sin = %.3f); "
-                       "change l3_m, toe_deg or the heel and talus angles",
-                       fs_config_where(cfg, "pose", "toe_deg", where, sizeof where), i + 1, sin3);
+                       "%s: chain %d's toe cannot rest on the ground (its metatarsal would need sin = %.3g; l3_m = %.3g "
+                       "m from %s); change l3_m, toe_deg or the heel and talus angles",
+                       fs_config_where(cfg, "pose", "toe_deg", where, sizeof where), i + 1, sin3, d->l3_m,
+                       fs_config_where(cfg, "links", "l3_m", where_l3, sizeof where_l3));
+    }
     double a3 = asin(sin3);
     fs_vec3 B = fs_add(M, fs_scale(in_plane(f, a3), l3));
     fs_vec3 T = fs_add(B, fs_scale(in_plane(f, a4), l4));

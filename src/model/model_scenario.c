@@ -129,6 +129,18 @@ static fs_status crop_terrain(fs_scenario *sc, fs_error *err)
     double m = sc->def.region_margin_m;
     if (sc->def.kind == 1) /* the walking machine's path */
         box[1] += sc->def.walk_steps * sc->def.step_length_m;
+    const fs_terrain *t = &sc->terrain;
+    if (t->def.kind == FS_TERRAIN_HEIGHTMAP && t->img) {
+        /* a heightmap the foot never reaches would give flat-ground results without a word */
+        const fs_terrain_def *d = &t->def;
+        double x1 = d->heightmap_x0_m + (t->img_w - 1) * d->heightmap_pixel_m;
+        double y1 = d->heightmap_y0_m + (t->img_h - 1) * d->heightmap_pixel_m;
+        if (box[1] < d->heightmap_x0_m || box[0] > x1 || box[3] < d->heightmap_y0_m || box[2] > y1)
+            return fs_fail(err, FS_BAD_INPUT, "%s: the heightmap covers x %.4g..%.4g m, y %.4g..%.4g m, and the foot "
+                           "(x %.3g..%.3g m, y %.3g..%.3g m) is off it: the run would be on flat ground; move the "
+                           "heightmap (x0_m, y0_m) or the foot (start.x_m, y_m)", t->path, d->heightmap_x0_m, x1,
+                           d->heightmap_y0_m, y1, box[0], box[1], box[2], box[3]);
+    }
     return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
 }
 
@@ -154,11 +166,28 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     if (s == FS_OK)
         s = fs_config_bind(&cfg, fs_scenario_keys, fs_scenario_nkeys, &sc->def, err);
     if (s == FS_OK && sc->def.log_interval_s < sc->def.step_s) {
+        /* an unset log interval follows the step; one the user set must be at least a step */
         char where[FS_PATH_MAX + 80];
-        s = fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g; make it at least one step",
-                    fs_config_where(&cfg, "run", "log_interval_s", where, sizeof where), sc->def.log_interval_s,
-                    sc->def.step_s);
+        if (!fs_config_has(&cfg, "run", "log_interval_s"))
+            sc->def.log_interval_s = sc->def.step_s;
+        else
+            s = fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g; make it at least one step",
+                        fs_config_where(&cfg, "run", "log_interval_s", where, sizeof where), sc->def.log_interval_s,
+                        sc->def.step_s);
     }
+    if (s == FS_OK && sc->def.kind == 1) {
+        /* the walking machine's stance and swing must each last a step at least */
+        const fs_scenario_def *d = &sc->def;
+        double stance = d->walk_period_s * d->stance_fraction, swing = d->walk_period_s - stance;
+        char where[FS_PATH_MAX + 80];
+        if (stance < d->step_s || (swing > 0 && swing < d->step_s))
+            s = fs_fail(err, FS_BAD_INPUT, "%s: period_s = %g gives a stance of %g s and a swing of %g s, one shorter "
+                        "than step_s = %g; make each phase at least one step",
+                        fs_config_where(&cfg, "walk", "period_s", where, sizeof where), d->walk_period_s, stance, swing,
+                        d->step_s);
+    }
+    /* which command the file is for: a landing trial has a [robot] or [landing] section */
+    sc->is_trial = fs_config_has(&cfg, "robot", NULL) || fs_config_has(&cfg, "landing", NULL);
     if (s == FS_OK) {
         /* a run's length in steps, bounded before anything is built (counters and buffers are sized by it) */
         const fs_scenario_def *d = &sc->def;
@@ -181,6 +210,20 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     if (s == FS_OK)
         s = crop_terrain(sc, err);
     return s;
+}
+
+fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_error *err)
+{
+    /* what the file is for: walk (kind = walk), trial ([robot] or [landing]), else run */
+    const char *is = sc->def.kind == 1 ? "walk" : sc->is_trial ? "trial" : "run";
+    int ok = !strcmp(command, is) || (!strcmp(command, "run") && !strcmp(is, "trial"));
+    if (ok)
+        return FS_OK;
+    static const char *what[] = {"a walking-machine scenario ([scenario] kind = walk)",
+                                 "a landing trial ([robot] or [landing])", "a run scenario (no [robot] or [landing])"};
+    int k = !strcmp(is, "walk") ? 0 : !strcmp(is, "trial") ? 1 : 2;
+    return fs_fail(err, FS_BAD_INPUT, "%s: is %s; `footsim %s` does not take it: use `footsim %s %s`", sc->path, what[k],
+                   command, is, sc->path);
 }
 
 void fs_scenario_free(fs_scenario *sc) { fs_terrain_free(&sc->terrain); }

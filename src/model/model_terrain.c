@@ -283,6 +283,13 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
         return FS_OK;
     double ox, oy, dx;
     lattice(t, &ox, &oy, &dx);
+    /* lattice indices must fit a long (and the hash of a rough terrain's cells): refuse far regions */
+    const double far = 1e9;
+    if (!(fabs((xmin - ox) / dx) < far && fabs((xmax - ox) / dx) < far && fabs((ymin - oy) / dx) < far &&
+          fabs((ymax - oy) / dx) < far))
+        return fs_fail(err, FS_BAD_INPUT, "%s: the region x %.3g..%.3g m, y %.3g..%.3g m is too far from the terrain's "
+                       "origin (over %.0e cells of %.3g m); use points nearer the origin", t->path, xmin, xmax, ymin,
+                       ymax, far, dx);
     long i0 = (long)floor((xmin - ox) / dx), i1 = (long)ceil((xmax - ox) / dx);
     long j0 = (long)floor((ymin - oy) / dx), j1 = (long)ceil((ymax - oy) / dx);
     if (i1 - i0 < 1)
@@ -292,7 +299,7 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
     double n = (double)(i1 - i0 + 1) * (double)(j1 - j0 + 1);
     if (n > FS_TERRAIN_MAX_SAMPLES)
         return fs_fail(err, FS_BAD_INPUT,
-                       "%s: the region %.3g x %.3g m at resolution %.3g m needs %.0f samples (at most %d); use a "
+                       "%s: the region %.3g x %.3g m at resolution %.3g m needs %.3g samples (at most %d); use a "
                        "coarser resolution_m or a smaller region",
                        t->path, xmax - xmin, ymax - ymin, dx, n, FS_TERRAIN_MAX_SAMPLES);
     free(t->z);
@@ -357,7 +364,7 @@ static fs_status check_terrain(const fs_terrain *t, const fs_config *cfg, fs_err
                        fs_config_where(cfg, "rough", "patch_x_max_m", where, sizeof where));
     if (has_roughness(t) && d->correlation_m / d->resolution_m > 300)
         return fs_fail(err, FS_BAD_INPUT,
-                       "%s: correlation_m is %.0f lattice cells; at most 300: use a coarser resolution_m",
+                       "%s: correlation_m is %.3g lattice cells; at most 300: use a coarser resolution_m",
                        fs_config_where(cfg, "rough", "correlation_m", where, sizeof where),
                        d->correlation_m / d->resolution_m);
     return FS_OK;

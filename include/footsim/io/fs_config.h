@@ -58,6 +58,13 @@ typedef struct fs_key {
     const char *help;
 } fs_key;
 
+/* One number as footsim reads it everywhere (files, --set, command-line options): decimal, the
+ * whole text but blanks, finite, and a normal double or 0; -0 reads as 0. */
+typedef enum fs_number { FS_NUMBER_OK, FS_NUMBER_BAD, FS_NUMBER_HEX, FS_NUMBER_SUBNORMAL } fs_number;
+fs_number fs_parse_number(const char *text, double *out);
+/* What is wrong with it, for messages: "is not a finite number", "is hexadecimal; ...", ... */
+const char *fs_number_problem(fs_number n);
+
 /* Reads path into cfg. Refuses, with file:line and the real reason: a missing, unreadable or
  * not regular file, one over FS_CONFIG_MAX_BYTES or FS_CONFIG_MAX_KEYS keys, a NUL byte, a
  * carriage return that does not end a line, text after a section's ']', a section without keys,
@@ -77,6 +84,9 @@ fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *
  * key's value that only a later check can judge, such as a relation between two keys. */
 const char *fs_config_where(const fs_config *cfg, const char *section, const char *name, char *buf,
                             size_t size);
+
+/* Whether the file or an override gives [section] name (any key of the section when name is NULL). */
+int fs_config_has(const fs_config *cfg, const char *section, const char *name);
 
 /* The folder of cfg's file, for resolving relative paths. */
 void fs_config_dir(const fs_config *cfg, char *buf, size_t size);

@@ -80,6 +80,12 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err);
 /* Gives up: removes the partial folder, releases the lock. Safe to call twice. */
 void fs_outdir_abort(fs_outdir *o);
 
+/* A folder footsim writes file by file and never replaces (results/bench/): refused as
+ * fs_outdir_open refuses a results folder (a symbolic link, not a folder, a non-empty folder
+ * neither marked nor holding only `known` names, unless replace); made when missing; given the
+ * marker when it has none. `known` names ending in '*' stand for every name they begin. */
+fs_status fs_outdir_shared(const char *dir, const char *const *known, int replace, const char *option, fs_error *err);
+
 /* Normalises a folder path: no trailing slash, no "." components or repeated slashes; a final
  * ".." is resolved. Refuses the root and the empty path. */
 fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *option, fs_error *err);

@@ -66,6 +66,7 @@ typedef struct fs_scenario {
     fs_design_def design;
     fs_foot_geom geom;
     fs_terrain terrain;        /* cut to the region the foot can reach */
+    int is_trial;              /* the file (or --set) gives [robot] or [landing]: a landing trial */
 } fs_scenario;
 
 extern const fs_key fs_scenario_keys[];
@@ -77,6 +78,11 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
 /* A scenario with every default but the design, for commands that take a design alone. */
 fs_status fs_scenario_for_design(const char *design_path, const char *const *overrides, int noverrides,
                                  fs_scenario *sc, fs_error *err);
+
+/* Refuses (FS_BAD_INPUT) a scenario that is not for `command` ("run", "trial", "walk"), naming
+ * the command it is for: a walk scenario is for walk only, a landing trial ([robot] or [landing])
+ * for trial (and run, which drops it), any other for run. */
+fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_error *err);
 
 /* Releases what a loaded scenario holds (its terrain's samples). */
 void fs_scenario_free(fs_scenario *sc);

@@ -1,0 +1,123 @@
+/* Tests of exec_pool.c: answers reach the parent by task number whatever the number of workers; a
+ * worker that exits, is killed or stops is reported with its task and replaced; the watchdog
+ * kills a stopped worker; `done` can stop the pool. Workers are real forked processes. */
+#include "fs_test.h"
+
+#include "footsim/exec/fs_pool.h"
+
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+enum { NTASKS = 40 };
+
+/* A task's answer: mixed types, so a misaligned result would show under UBSan. */
+typedef struct answer {
+    char tag;
+    double square;
+    long pid;
+} answer;
+
+typedef struct state {
+    double got[NTASKS];
+    int seen[NTASKS], died[NTASKS], timed_out[NTASKS];
+    int exit_on, stop_on, kill_on, refuse_on; /* the task that misbehaves so, or -1 */
+} state;
+
+static void run_task(int task, void *result, void *user)
+{
+    const state *s = user;
+    if (task == s->exit_on)
+        _exit(3); /* what ODE's error handler does */
+    if (task == s->kill_on)
+        raise(SIGKILL); /* a crash */
+    if (task == s->stop_on)
+        raise(SIGSTOP); /* hangs: only the watchdog ends it */
+    answer *a = result;
+    a->tag = 'a';
+    a->square = (double)task * task + 0.25;
+    a->pid = (long)getpid();
+}
+
+static fs_status take(int task, const void *result, void *user, fs_error *err)
+{
+    state *s = user;
+    const answer *a = result;
+    s->got[task] = a->square;
+    s->seen[task]++;
+    if (task == s->refuse_on)
+        return fs_fail(err, FS_BAD_INPUT, "task %d refused", task);
+    return FS_OK;
+}
+
+static void died(int task, const fs_pool_death *d, void *user)
+{
+    state *s = user;
+    s->died[task]++;
+    s->timed_out[task] += d->timed_out;
+}
+
+static fs_status run_pool(state *s, int jobs, double watchdog_s, fs_pool_stats *st, fs_error *err)
+{
+    fs_pool_spec spec = {.ntasks = NTASKS, .jobs = jobs, .result_size = sizeof(answer), .watchdog_s = watchdog_s,
+                         .user = s, .run = run_task, .done = take, .died = died};
+    return fs_pool_run(&spec, st, err);
+}
+
+static void fresh(state *s) { *s = (state){.exit_on = -1, .stop_on = -1, .kill_on = -1, .refuse_on = -1}; }
+
+static void answers_do_not_depend_on_jobs(void)
+{
+    static state one, four;
+    fs_error err;
+    fs_pool_stats st;
+    fresh(&one), fresh(&four);
+    CHECK(run_pool(&one, 1, 0, &st, &err) == FS_OK && st.answered == NTASKS && st.died == 0);
+    CHECK(run_pool(&four, 4, 0, &st, &err) == FS_OK && st.answered == NTASKS);
+    for (int i = 0; i < NTASKS; i++) {
+        CHECK(one.seen[i] == 1 && four.seen[i] == 1);
+        CHECK(one.got[i] == (double)i * i + 0.25 && !memcmp(&one.got[i], &four.got[i], sizeof one.got[i]));
+    }
+}
+
+static void dead_workers_are_reported_and_replaced(void)
+{
+    static state s;
+    fs_error err;
+    fs_pool_stats st;
+    fresh(&s);
+    s.exit_on = 7, s.kill_on = 20;
+    CHECK(run_pool(&s, 3, 0, &st, &err) == FS_OK);
+    CHECK(st.died == 2 && st.answered == NTASKS - 2 && st.timed_out == 0);
+    CHECK(s.died[7] == 1 && s.died[20] == 1 && !s.seen[7] && !s.seen[20]);
+    for (int i = 0; i < NTASKS; i++)
+        if (i != 7 && i != 20)
+            CHECK(s.seen[i] == 1 && !s.died[i]);
+}
+
+static void the_watchdog_kills_a_stopped_worker(void)
+{
+    static state s;
+    fs_error err;
+    fs_pool_stats st;
+    fresh(&s);
+    s.stop_on = 5;
+    CHECK(run_pool(&s, 2, 0.5, &st, &err) == FS_OK);
+    CHECK(st.timed_out == 1 && st.died == 1 && s.timed_out[5] == 1 && st.answered == NTASKS - 1);
+}
+
+static void done_can_stop_the_pool(void)
+{
+    static state s;
+    fs_error err = {0};
+    fresh(&s);
+    s.refuse_on = 3;
+    CHECK(run_pool(&s, 2, 0, NULL, &err) == FS_BAD_INPUT && strstr(err.message, "task 3 refused"));
+    int seen = 0;
+    for (int i = 0; i < NTASKS; i++)
+        seen += s.seen[i];
+    CHECK(seen < NTASKS);
+}
+
+FS_TEST_MAIN(TEST(answers_do_not_depend_on_jobs), TEST(dead_workers_are_reported_and_replaced),
+             TEST(the_watchdog_kills_a_stopped_worker), TEST(done_can_stop_the_pool))
