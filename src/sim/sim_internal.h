@@ -1,0 +1,27 @@
+/* sim_internal.h: what the sim layer's files share and nothing above it sees.
+ *
+ * The step (sim_step.c) runs its stages in order: loads, springs, collision and contacts
+ * (sim_contacts.c), the ODE step, the state checks (sim_check.c). The checks read the state only
+ * through the measures (sim_measure.c), which read ODE and nothing of the step: so the step calls
+ * the checks and the checks never call back into the step or the build (no circle). */
+#ifndef FS_SIM_INTERNAL_H
+#define FS_SIM_INTERNAL_H
+
+#include "footsim/sim/fs_sim.h"
+
+/* Contacts of one foot shape with all terrain geoms in one step: the sim's own scratch, so two
+ * simulations can step in one process. */
+typedef struct fs_contact_scratch {
+    fs_sim *sim;
+    int n;
+    dContactGeom c[FS_MAX_CONTACTS];
+} gathered;
+
+/* Adds the time since the last timed stage ended to stage, when sim is profiled (sim_step.c). */
+void fs_sim_lap(fs_sim *sim, fs_stage stage);
+
+/* Collision: each foot shape against the terrain (and, with run.collide = all, foot against
+ * foot); every contact becomes a contact joint of this step (sim_contacts.c). */
+void fs_sim_collide(fs_sim *sim);
+
+#endif

@@ -1,0 +1,121 @@
+/* sim_measure.c: what a simulation's state measures now (energy, speeds, lean, penetration,
+ * ground force, hinge angles, the ankle): read from ODE, never changing it. */
+#include "sim_internal.h"
+
+#include "footsim/sim/fs_ground.h"
+
+#include <math.h>
+#include <string.h>
+
+void fs_sim_ankle(const fs_sim *sim, double p[3])
+{
+    dVector3 w;
+    dBodyGetRelPointPos(sim->body[sim->geom->ankle_body], sim->ankle_local[0], sim->ankle_local[1],
+                        sim->ankle_local[2], w);
+    memcpy(p, w, 3 * sizeof(double));
+}
+
+/* Kinetic and gravitational energy of one body (relative to z = 0), J. */
+static void body_energy(const fs_sim *sim, dBodyID b, double *ke, double *pe)
+{
+    if (dBodyIsKinematic(b))
+        return;
+    double g = sim->sc->def.gravity_m_per_s2;
+    dMass m;
+    dBodyGetMass(b, &m);
+    const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b), *p = dBodyGetPosition(b);
+    const dReal *R = dBodyGetRotation(b);
+    /* the angular velocity in the body frame, where ODE keeps the inertia */
+    double wb[3] = {0, 0, 0};
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            wb[r] += R[4 * c + r] * w[c];
+    double rot = 0;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            rot += wb[r] * m.I[4 * r + c] * wb[c];
+    *ke += 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.5 * rot;
+    *pe -= m.mass * g * (p[0] * sim->down[0] + p[1] * sim->down[1] + p[2] * sim->down[2]);
+}
+
+double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, double *elastic)
+{
+    double ke = 0, pe = 0, se = 0;
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        body_energy(sim, sim->body[i], &ke, &pe);
+    if (sim->robot)
+        body_energy(sim, sim->robot, &ke, &pe);
+    for (int i = 0; i < sim->geom->nsprings; i++)
+        se += fs_spring_measure(&sim->spring[i]).energy_J;
+    if (sim->has_achilles)
+        se += fs_spring_measure(&sim->achilles).energy_J;
+    if (kinetic)
+        *kinetic = ke;
+    if (potential)
+        *potential = pe;
+    if (elastic)
+        *elastic = se;
+    return ke + pe + se;
+}
+
+double fs_sim_body_speed(const fs_sim *sim, int i)
+{
+    int robot = i == sim->geom->nbodies;
+    dBodyID b = robot ? sim->robot : sim->body[i];
+    const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b);
+    double reach = robot ? sim->sc->def.robot_com_height_m : sim->reach[i];
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + reach * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+}
+
+double fs_sim_max_speed(const fs_sim *sim)
+{
+    double vmax = 0;
+    for (int i = 0; i < sim->geom->nbodies + (sim->robot != NULL); i++)
+        vmax = fmax(vmax, fs_sim_body_speed(sim, i));
+    return vmax;
+}
+
+double fs_sim_robot_tilt(const fs_sim *sim)
+{
+    if (!sim->robot)
+        return 0;
+    const dReal *R = dBodyGetRotation(sim->robot);
+    return acos(fmax(-1.0, fmin(1.0, R[10])));
+}
+
+double fs_sim_penetration(const fs_sim *sim)
+{
+    const fs_terrain *t = &sim->sc->terrain;
+    double worst = -INFINITY;
+    for (int i = 0; i < sim->nshapes; i++) {
+        dGeomID g = sim->shape[i];
+        const dReal *p = dGeomGetPosition(g);
+        if (dGeomGetClass(g) == dSphereClass) {
+            worst = fmax(worst, fs_terrain_height(t, p[0], p[1]) - (p[2] - dGeomSphereGetRadius(g)));
+            continue;
+        }
+        /* a box: its underside on a 21 x 11 grid */
+        dVector3 l, q;
+        dGeomBoxGetLengths(g, l);
+        for (int a = 0; a <= 20; a++)
+            for (int b = 0; b <= 10; b++) {
+                dGeomGetRelPointPos(g, (a / 20.0 - 0.5) * l[0], (b / 10.0 - 0.5) * l[1], -0.5 * l[2], q);
+                worst = fmax(worst, fs_terrain_height(t, q[0], q[1]) - q[2]);
+            }
+    }
+    return worst;
+}
+
+void fs_sim_ground_force(const fs_sim *sim, double force[3])
+{
+    force[0] = force[1] = force[2] = 0;
+    for (int i = 0; i < sim->contacts_now; i++)
+        for (int k = 0; k < 3; k++)
+            force[k] += sim->feedback[i].f1[k];
+}
+
+double fs_sim_hinge_angle(const fs_sim *sim, int i)
+{
+    /* ODE's hinge angle turns body1 about the axis relative to body2; ours turns body2 (distal). */
+    return -dJointGetHingeAngle(sim->hinge[i]);
+}
