@@ -110,5 +110,37 @@ static void failed_build_leaves_nothing(void)
     fs_scenario_free(&sc);
 }
 
+/* Definitions edited in code and compiled (fs_scenario_compile, as a landing trial does with its
+ * drawn pose and seed) give the scenario that loading the file with the same edits as --set gives,
+ * bit for bit: the definitions, the drawn rocks and the terrain samples cut to the new pose. */
+static void typed_edits_compile_like_set(void)
+{
+    const char *terrains[] = {"scenario.terrain=../terrains/rough.ini", "scenario.terrain=../terrains/complex_uneven.ini"};
+    for (int k = 0; k < 2; k++) {
+        const char *set[] = {terrains[k], "start.x_m=0.0123", "start.y_m=-0.004", "start.yaw_deg=7",
+                             "start.pitch_deg=-0.5", "rough.seed=5"};
+        static fs_scenario by_set, typed;
+        fs_error err;
+        REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 6, &by_set, &err) == FS_OK);
+        REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 1, &typed, &err) == FS_OK);
+        typed.def.start_x_m = 0.0123;
+        typed.def.start_y_m = -0.004;
+        typed.def.yaw_deg = 7;
+        typed.def.pitch_deg = -0.5;
+        typed.terrain.def.seed = 5;
+        REQUIRE(fs_scenario_compile(&typed, &err) == FS_OK);
+        CHECK(!memcmp(&typed.def, &by_set.def, sizeof typed.def));
+        CHECK(!memcmp(&typed.terrain.def, &by_set.terrain.def, sizeof typed.terrain.def));
+        CHECK(!memcmp(typed.terrain.rock, by_set.terrain.rock, sizeof typed.terrain.rock));
+        CHECK(typed.terrain.nx == by_set.terrain.nx && typed.terrain.ny == by_set.terrain.ny &&
+              typed.terrain.i0 == by_set.terrain.i0 && typed.terrain.j0 == by_set.terrain.j0);
+        CHECK(typed.terrain.z && by_set.terrain.z &&
+              !memcmp(typed.terrain.z, by_set.terrain.z, (size_t)typed.terrain.nx * typed.terrain.ny * sizeof(double)));
+        fs_scenario_free(&by_set);
+        fs_scenario_free(&typed);
+    }
+}
+
 FS_TEST_MAIN(TEST(shipped_feet_match), TEST(neutral_pose_closes_every_loop), TEST(built_foot_rests_on_heel_and_toes),
-             TEST(flat_foot_matches_the_biomimetic_one), TEST(failed_build_leaves_nothing))
+             TEST(flat_foot_matches_the_biomimetic_one), TEST(failed_build_leaves_nothing),
+             TEST(typed_edits_compile_like_set))

@@ -141,40 +141,34 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     return FS_OK;
 }
 
+/* The drawn pose and seed put into the scenario's definitions: typed edits, then one compile. */
+static fs_status apply_draw(fs_scenario *sc, const fs_trial_draw *draw, fs_error *err)
+{
+    fs_scenario_def *d = &sc->def;
+    d->start_x_m = draw->x_m;
+    d->start_y_m = draw->y_m;
+    d->yaw_deg = draw->yaw_deg;
+    d->pitch_deg = draw->pitch_deg;
+    d->roll_deg = draw->roll_deg;
+    sc->terrain.def.seed = draw->seed; /* on a random terrain every trial lands on new ground */
+    return fs_scenario_compile(sc, err);
+}
+
 fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
                        const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
 {
-    enum { MAX_OVERRIDES = 240, DRAWN = 6 };
     memset(out, 0, sizeof *out);
-    if (noverrides > MAX_OVERRIDES)
-        return fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides in a trial", MAX_OVERRIDES);
     fs_scenario *sc = malloc(sizeof *sc); /* the caller's, not the process's: trials are re-entrant */
     if (!sc)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", scenario_path);
-    /* the ranges to draw from, then the scenario again with the drawn pose and terrain seed */
+    /* the file read once; the pose drawn from its ranges, then put into its definitions */
     fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, sc, err);
     if (s == FS_OK)
         s = fs_scenario_require(sc, "trial", err);
-    if (s != FS_OK) {
-        fs_scenario_free(sc);
-        free(sc);
-        return s;
+    if (s == FS_OK) {
+        fs_trial_draw_pose(sc, seed, &out->draw);
+        s = apply_draw(sc, &out->draw, err);
     }
-    fs_trial_draw_pose(sc, seed, &out->draw);
-    fs_scenario_free(sc);
-    char text[DRAWN][64];
-    snprintf(text[0], sizeof text[0], "start.x_m=%.17g", out->draw.x_m);
-    snprintf(text[1], sizeof text[1], "start.y_m=%.17g", out->draw.y_m);
-    snprintf(text[2], sizeof text[2], "start.yaw_deg=%.17g", out->draw.yaw_deg);
-    snprintf(text[3], sizeof text[3], "start.pitch_deg=%.17g", out->draw.pitch_deg);
-    snprintf(text[4], sizeof text[4], "start.roll_deg=%.17g", out->draw.roll_deg);
-    snprintf(text[5], sizeof text[5], "rough.seed=%d", seed);
-    const char *all[MAX_OVERRIDES + DRAWN];
-    for (int i = 0; i < noverrides; i++)
-        all[i] = overrides[i];
-    for (int i = 0; i < DRAWN; i++)
-        all[noverrides + i] = text[i];
-    s = fs_scenario_load(scenario_path, all, noverrides + DRAWN, sc, err);
     if (s == FS_OK)
         s = run_trial(sc, obs, out, err);
     fs_scenario_free(sc);

@@ -228,6 +228,12 @@ fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_err
 
 void fs_scenario_free(fs_scenario *sc) { fs_terrain_free(&sc->terrain); }
 
+fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
+{
+    fs_terrain_redraw(&sc->terrain);
+    return crop_terrain(sc, err);
+}
+
 void fs_scenario_footprint(const fs_scenario *sc, double box[4])
 {
     const fs_foot_geom *g = &sc->geom;

@@ -405,6 +405,8 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
     return s;
 }
 
+void fs_terrain_redraw(fs_terrain *t) { draw_rocks(t); }
+
 void fs_terrain_free(fs_terrain *t)
 {
     free(t->img);

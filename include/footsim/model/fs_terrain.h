@@ -77,6 +77,11 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
 enum { FS_TERRAIN_MAX_SAMPLES = 4000000 };
 fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, double ymax, fs_error *err);
 
+/* Derives again what t's definition draws (complex_uneven's rocks, from def.seed) after the
+ * definition was edited in code; the sampled heights follow at the next fs_terrain_crop. Reads no
+ * file (a heightmap's image stays the one loaded). */
+void fs_terrain_redraw(fs_terrain *t);
+
 /* The surface ODE collides with, at (x, y), m. */
 double fs_terrain_height(const fs_terrain *t, double x, double y);
 
