@@ -21,7 +21,7 @@
 #include <string.h>
 #include <time.h>
 
-enum { MAX_SET = 16, MAX_ROWS = 512, NSCENES = 3 };
+enum { MAX_ROWS = 512, NSCENES = 3 };
 
 static const double REF_STEP_S = 1e-5;          /* the finest step, and the reference's sample spacing */
 static const double REF_TOLERANCE = 1e-10;      /* rk8pd's error bound per step for the reference */
@@ -33,11 +33,11 @@ static const double STEPS_QUICK[] = {1e-4, 1e-3, 1e-2};
 static const int ITERATIONS_FULL[] = {0, 10, 20, 50, 100, 200}; /* 0: dWorldStep */
 static const int ITERATIONS_QUICK[] = {0, 20};
 
-/* A scene: a scenario, the overrides that make it, how it is run, and its reference path. */
+/* A scene: its scenario (loaded and placed once; each row edits only its run settings, as fields),
+ * how it is run, and its reference path. */
 typedef struct scene {
     const char *name, *title, *path;
-    char set[MAX_SET][96];
-    int nset;
+    fs_scenario base;
     int pinned_chain;           /* 0, or the chain (1-5) pinned alone */
     double duration_s;
     fs_scenario_def defaults;   /* the scenario's own run settings, to mark the default row */
@@ -61,27 +61,16 @@ typedef struct row {
 static const char *stepper_name(int s) { return s == FS_STEPPER_QUICKSTEP ? "quickstep" : "step"; }
 static const char *spring_name(int s) { return s == FS_SPRING_EXPLICIT ? "explicit" : "implicit"; }
 
-static fs_status load(const scene *s, const char *const *extra, int nextra, fs_scenario *sc, fs_error *err)
+/* The scene's scenario with a row's run settings put into its definition (a shallow copy: the
+ * terrain's samples stay the scene's, read only). */
+static void with_settings(const scene *s, const row *r, fs_scenario *sc)
 {
-    const char *set[MAX_SET + 8];
-    for (int i = 0; i < s->nset; i++)
-        set[i] = s->set[i];
-    for (int i = 0; i < nextra; i++)
-        set[s->nset + i] = extra[i];
-    return fs_scenario_load(s->path, set, s->nset + nextra, sc, err);
-}
-
-/* The run settings as overrides. */
-enum { NSETTINGS = 5 };
-static void settings(const row *r, char text[NSETTINGS][64], const char *set[NSETTINGS])
-{
-    snprintf(text[0], 64, "run.step_s=%.17g", r->step_s);
-    snprintf(text[1], 64, "run.stepper=%s", stepper_name(r->stepper));
-    snprintf(text[2], 64, "run.iterations=%d", r->iterations > 0 ? r->iterations : 20);
-    snprintf(text[3], 64, "run.springs=%s", spring_name(r->springs));
-    snprintf(text[4], 64, "run.log_interval_s=%.17g", fmax(r->step_s, 1e-3)); /* no path is logged here */
-    for (int i = 0; i < NSETTINGS; i++)
-        set[i] = text[i];
+    *sc = s->base;
+    sc->def.step_s = r->step_s;
+    sc->def.stepper = r->stepper;
+    sc->def.iterations = r->iterations > 0 ? r->iterations : 20;
+    sc->def.springs = r->springs;
+    sc->def.log_interval_s = fmax(r->step_s, 1e-3); /* no path is logged here */
 }
 
 static int compare_double(const void *a, const void *b)
@@ -94,13 +83,9 @@ static int compare_double(const void *a, const void *b)
  * on it (a long run times itself well): the error of the first run, the median wall time. */
 static fs_status measure(row *r, int repeats, fs_error *err)
 {
-    char text[NSETTINGS][64];
-    const char *set[NSETTINGS];
-    settings(r, text, set);
     static fs_scenario sc;
-    fs_status s = load(r->sc, set, NSETTINGS, &sc, err);
-    if (s != FS_OK)
-        return s;
+    with_settings(r->sc, r, &sc);
+    fs_status s = FS_OK;
     fs_sim_options opts = {.with_ground = 1, .pinned_chain = r->sc->pinned_chain, .record_drift = 1};
     double wall[8], spent = 0;
     int done = 0;
@@ -131,7 +116,6 @@ static fs_status measure(row *r, int repeats, fs_error *err)
         qsort(wall, (size_t)done, sizeof wall[0], compare_double);
         r->wall_s = wall[done / 2];
     }
-    fs_scenario_free(&sc);
     return s;
 }
 
@@ -145,30 +129,29 @@ static fs_status chain_scene(scene *s, fs_error *err)
     s->path = "scenarios/static_load.ini";
     s->pinned_chain = 3;
     s->duration_s = 0.2;
-    static fs_scenario sc;
-    fs_status st = load(s, NULL, 0, &sc, err);
+    fs_status st = fs_scenario_load(s->path, NULL, 0, &s->base, err);
     if (st != FS_OK)
         return st;
-    s->defaults = sc.def;
+    const fs_scenario *sc = &s->base;
+    s->defaults = sc->def;
     s->has_springs = 1;
-    const fs_scenario_def *d = &sc.def;
+    const fs_scenario_def *d = &sc->def;
     fs_reference_def def = {s->pinned_chain - 1, d->load_kg * d->gravity_m_per_s2, d->ramp_s, d->gravity_m_per_s2,
                             d->tilt_deg * M_PI / 180, REF_TOLERANCE, {0, 0}};
     int n = (int)lround(s->duration_s / REF_STEP_S) + 1;
     double start = fs_clock_s();
-    st = fs_track_reference(&sc.design, &sc.geom, &def, REF_STEP_S, n, &s->ref, err);
+    st = fs_track_reference(&sc->design, &sc->geom, &def, REF_STEP_S, n, &s->ref, err);
     s->ref_wall_s = fs_clock_s() - start;
     /* the reference checked against itself at half the tolerance */
     fs_track half;
     def.tolerance = 0.5 * REF_TOLERANCE;
     if (st == FS_OK)
-        st = fs_track_reference(&sc.design, &sc.geom, &def, REF_STEP_S, n, &half, err);
+        st = fs_track_reference(&sc->design, &sc->geom, &def, REF_STEP_S, n, &half, err);
     for (int i = 0; st == FS_OK && i < n; i++)
         for (int k = 0; k < 3; k++)
             s->ref_check_m = fmax(s->ref_check_m, fabs(half.ankle[i][k] - s->ref.ankle[i][k]));
     if (st == FS_OK)
         fs_track_free(&half);
-    fs_scenario_free(&sc);
     return st;
 }
 
@@ -181,35 +164,23 @@ static fs_status landing_scene(scene *s, const char *name, const char *title, co
     s->title = title;
     s->path = "scenarios/landing_trial.ini";
     s->duration_s = duration_s;
-    snprintf(s->set[s->nset++], sizeof s->set[0], "scenario.terrain=../terrains/rough.ini");
-    snprintf(s->set[s->nset++], sizeof s->set[0], "scenario.design=%s", design);
-    static fs_scenario sc;
-    fs_status st = load(s, NULL, 0, &sc, err);
+    char terrain[64] = "scenario.terrain=../terrains/rough.ini", foot[FS_PATH_MAX + 32];
+    snprintf(foot, sizeof foot, "scenario.design=%s", design); /* which files: chosen at load */
+    const char *set[] = {terrain, foot};
+    fs_status st = fs_scenario_load(s->path, set, 2, &s->base, err);
+    if (st == FS_OK)
+        st = fs_trial_place(&s->base, seed, NULL, err); /* the pose and ground of seed, as a campaign's */
     if (st != FS_OK)
         return st;
-    s->defaults = sc.def;
-    s->has_springs = sc.geom.nsprings > 0 || sc.def.robot_joint != 0;
-    fs_trial_draw draw;
-    fs_trial_draw_pose(&sc, seed, &draw);
-    fs_scenario_free(&sc);
-    snprintf(s->set[s->nset++], sizeof s->set[0], "start.x_m=%.17g", draw.x_m);
-    snprintf(s->set[s->nset++], sizeof s->set[0], "start.y_m=%.17g", draw.y_m);
-    snprintf(s->set[s->nset++], sizeof s->set[0], "start.yaw_deg=%.17g", draw.yaw_deg);
-    snprintf(s->set[s->nset++], sizeof s->set[0], "start.pitch_deg=%.17g", draw.pitch_deg);
-    snprintf(s->set[s->nset++], sizeof s->set[0], "start.roll_deg=%.17g", draw.roll_deg);
-    snprintf(s->set[s->nset++], sizeof s->set[0], "rough.seed=%d", seed);
+    s->defaults = s->base.def;
+    s->has_springs = s->base.geom.nsprings > 0 || s->base.def.robot_joint != 0;
     /* the reference: footsim itself at the finest step with dWorldStep */
     row ref = {.sc = s, .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT, .step_s = REF_STEP_S};
-    char text[NSETTINGS][64];
-    const char *set[NSETTINGS];
-    settings(&ref, text, set);
-    st = load(s, set, NSETTINGS, &sc, err);
-    if (st != FS_OK)
-        return st;
+    static fs_scenario sc;
+    with_settings(s, &ref, &sc);
     fs_sim_options opts = {.with_ground = 1};
     st = fs_track_run(&sc, &opts, s->duration_s, &s->ref, err);
     s->ref_wall_s = s->ref.wall_s;
-    fs_scenario_free(&sc);
     return st;
 }
 
@@ -496,8 +467,10 @@ int cli_bench_precision(const cli_args *a, const char *dir)
         s = fs_write_in(dir, "precision.gp", fill_chart, &x, &err);
     if (s == FS_OK)
         cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
-    for (int c = 0; c < NSCENES; c++)
+    for (int c = 0; c < NSCENES; c++) {
         fs_track_free(&scenes[c].ref);
+        fs_scenario_free(&scenes[c].base);
+    }
     if (s != FS_OK)
         return cli_report(s, err.message);
     printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}\n", nrows, dir);

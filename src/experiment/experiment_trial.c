@@ -142,15 +142,19 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
 }
 
 /* The drawn pose and seed put into the scenario's definitions: typed edits, then one compile. */
-static fs_status apply_draw(fs_scenario *sc, const fs_trial_draw *draw, fs_error *err)
+fs_status fs_trial_place(fs_scenario *sc, int seed, fs_trial_draw *draw, fs_error *err)
 {
+    fs_trial_draw own;
+    if (!draw)
+        draw = &own;
+    fs_trial_draw_pose(sc, seed, draw);
     fs_scenario_def *d = &sc->def;
     d->start_x_m = draw->x_m;
     d->start_y_m = draw->y_m;
     d->yaw_deg = draw->yaw_deg;
     d->pitch_deg = draw->pitch_deg;
     d->roll_deg = draw->roll_deg;
-    sc->terrain.def.seed = draw->seed; /* on a random terrain every trial lands on new ground */
+    sc->terrain.def.seed = seed;
     return fs_scenario_compile(sc, err);
 }
 
@@ -165,10 +169,8 @@ fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, 
     fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, sc, err);
     if (s == FS_OK)
         s = fs_scenario_require(sc, "trial", err);
-    if (s == FS_OK) {
-        fs_trial_draw_pose(sc, seed, &out->draw);
-        s = apply_draw(sc, &out->draw, err);
-    }
+    if (s == FS_OK)
+        s = fs_trial_place(sc, seed, &out->draw, err);
     if (s == FS_OK)
         s = run_trial(sc, obs, out, err);
     fs_scenario_free(sc);

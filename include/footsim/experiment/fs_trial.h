@@ -44,6 +44,11 @@ typedef struct fs_trial_result {
 /* The pose drawn for seed from sc's [landing] ranges (pure function of the two). */
 void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw);
 
+/* Places a loaded trial scenario for seed: draws the pose (draw may be NULL), puts it and the seed
+ * into sc's definitions (the start pose; the terrain's seed, so every trial lands on new ground)
+ * and compiles sc again (fs_scenario_compile). A scenario is placed once, from its loaded ranges. */
+fs_status fs_trial_place(fs_scenario *sc, int seed, fs_trial_draw *draw, fs_error *err);
+
 /* Loads the trial scenario with overrides (checked as usual: FS_BAD_INPUT, nothing run), draws
  * the pose for seed, runs the trial and fills out. A numerical failure is not an error of the
  * call: it returns FS_OK with out->outcome = FS_FAILED_NUMERICS and out->failure set. obs
