@@ -139,6 +139,18 @@ static void typed_edits_compile_like_set(void)
         fs_scenario_free(&by_set);
         fs_scenario_free(&typed);
     }
+    /* an edit out of the schema's range is refused by the compile, as the same value in a file is */
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
+    sc.design.k_N_per_m[1] = -5;
+    CHECK(fs_scenario_compile(&sc, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, "", 0, "k_d2_N_per_m = -5 is out of range");
+    sc.design.k_N_per_m[1] = 12000;
+    sc.def.step_s = 0;
+    CHECK(fs_scenario_compile(&sc, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, "", 0, "step_s = 0 is out of range");
+    fs_scenario_free(&sc);
 }
 
 FS_TEST_MAIN(TEST(shipped_feet_match), TEST(neutral_pose_closes_every_loop), TEST(built_foot_rests_on_heel_and_toes),

@@ -72,44 +72,43 @@ static int fail(const fs_error *err) { return cli_report(err->status, err->messa
 
 /* ---- one run ---------------------------------------------------------------------------------- */
 
-/* The --set overrides of a configuration; base masses from the design. */
-static int overrides(const config *c, const fs_design_def *base, double duration, char text[][96], const char **ov)
+/* A configuration put into a loaded scenario's definitions (typed edits, then one compile, which
+ * checks them against the schema); base masses from the design. */
+static fs_status configure(const config *c, const fs_design_def *base, double duration, fs_scenario *sc,
+                           fs_error *err)
 {
     const slice *s = &SLICES[c->slice];
-    int n = 0;
-    snprintf(text[n++], 96, "run.step_s=%.17g", c->step_s);
-    snprintf(text[n++], 96, "run.stepper=%s", STEPPERS[c->stepper]);
-    snprintf(text[n++], 96, "run.springs=%s", SPRINGS[c->springs]);
-    snprintf(text[n++], 96, "run.duration_s=%.17g", duration);
-    snprintf(text[n++], 96, "run.log_interval_s=%.17g", fmax(c->step_s, 1e-3));
+    fs_scenario_def *d = &sc->def;
+    d->step_s = c->step_s;
+    d->stepper = c->stepper;
+    d->springs = c->springs;
+    d->duration_s = duration;
+    d->log_interval_s = fmax(c->step_s, 1e-3);
     if (!strcmp(s->name, "stiffness"))
-        for (int k = 1; k <= 3; k++)
-            snprintf(text[n++], 96, "springs.k_d%d_N_per_m=%.17g", k, c->value);
+        for (int k = 0; k < 3; k++)
+            sc->design.k_N_per_m[k] = c->value;
     if (!strcmp(s->name, "load"))
-        snprintf(text[n++], 96, "load.mass_kg=%.17g", c->value);
+        d->load_kg = c->value;
     if (!strcmp(s->name, "mass")) {
-        snprintf(text[n++], 96, "mass.heel_kg=%.17g", base->heel_kg * c->value);
-        snprintf(text[n++], 96, "mass.talus_kg=%.17g", base->talus_kg * c->value);
-        snprintf(text[n++], 96, "mass.metatarsal_kg=%.17g", base->metatarsal_kg * c->value);
-        snprintf(text[n++], 96, "mass.phalanx_kg=%.17g", base->phalanx_kg * c->value);
+        sc->design.heel_kg = base->heel_kg * c->value;
+        sc->design.talus_kg = base->talus_kg * c->value;
+        sc->design.metatarsal_kg = base->metatarsal_kg * c->value;
+        sc->design.phalanx_kg = base->phalanx_kg * c->value;
     }
     if (!strcmp(s->name, "drop"))
-        snprintf(text[n++], 96, "start.drop_m=%.17g", c->value);
-    for (int i = 0; i < n; i++)
-        ov[i] = text[i];
-    return n;
+        d->drop_m = c->value;
+    return fs_scenario_compile(sc, err);
 }
 
 /* Steps the configuration for the duration, the checks recording drifts, until it blows up. */
 static void run_config(const config *c, const fs_design_def *base, double duration, outcome *o)
 {
     static fs_scenario sc;
-    char text[16][96];
-    const char *ov[16];
-    int n = overrides(c, base, duration, text, ov);
     fs_error err = {FS_OK, ""};
     memset(o, 0, sizeof *o);
-    o->status = fs_scenario_load(SLICES[c->slice].scenario, ov, n, &sc, &err);
+    o->status = fs_scenario_load(SLICES[c->slice].scenario, NULL, 0, &sc, &err);
+    if (o->status == FS_OK)
+        o->status = configure(c, base, duration, &sc, &err);
     fs_sim sim;
     if (o->status == FS_OK)
         o->status = fs_sim_build(&sim, &sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);

@@ -324,6 +324,10 @@ int fs_config_has(const fs_config *cfg, const char *section, const char *name)
 
 const char *fs_config_where(const fs_config *cfg, const char *section, const char *name, char *buf, size_t size)
 {
+    if (!cfg) { /* a definition edited in code, compiled without its file */
+        snprintf(buf, size, "[%s] %s (set in code)", section, name);
+        return buf;
+    }
     const fs_entry *e = NULL;
     for (int i = 0; i < cfg->count && !e; i++) /* cfg is const here: no index; a message is rare */
         if (!strcmp(cfg->entries[i].section, section) && !strcmp(cfg->entries[i].name, name))
@@ -529,6 +533,28 @@ static void list_known(const fs_key *schema, int nkeys, const char *section, cha
             break;
         used += (size_t)n;
     }
+}
+
+fs_status fs_config_check(const fs_key *schema, int nkeys, const void *def, const char *what, fs_error *err)
+{
+    for (int i = 0; i < nkeys; i++) {
+        const fs_key *k = &schema[i];
+        const char *slot = (const char *)def + k->offset;
+        int n = k->type == FS_KEY_LIST ? k->count : 1, whole = k->type != FS_KEY_NUMBER && k->type != FS_KEY_LIST;
+        if (k->type == FS_KEY_PATH)
+            continue;
+        for (int j = 0; j < n; j++) {
+            double v = whole ? *(const int *)slot : ((const double *)slot)[j];
+            int nchoices = 1;
+            for (const char *c = k->choices ? k->choices : ""; *c; c++)
+                nchoices += *c == '|';
+            int ok = k->type == FS_KEY_CHOICE ? v >= 0 && v < nchoices : isfinite(v) && in_range(k, v);
+            if (!ok)
+                return fs_fail(err, FS_BAD_INPUT, "%s: [%s] %s = %.17g is out of range (%g to %g %s)", what,
+                               k->section, k->name, v, k->min, k->max, k->unit ? k->unit : "");
+        }
+    }
+    return FS_OK;
 }
 
 fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *def, fs_error *err)

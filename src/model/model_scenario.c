@@ -230,6 +230,17 @@ void fs_scenario_free(fs_scenario *sc) { fs_terrain_free(&sc->terrain); }
 
 fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
 {
+    char what[FS_PATH_MAX + 32];
+    snprintf(what, sizeof what, "%s, edited in code", sc->path);
+    fs_status s = fs_config_check(fs_scenario_keys, fs_scenario_nkeys, &sc->def, what, err);
+    if (s == FS_OK)
+        s = fs_config_check(fs_design_keys, fs_design_nkeys, &sc->design, what, err);
+    if (s == FS_OK)
+        s = fs_config_check(fs_terrain_keys, fs_terrain_nkeys, &sc->terrain.def, what, err);
+    if (s == FS_OK)
+        s = fs_design_geometry(&sc->design, NULL, &sc->geom, err);
+    if (s != FS_OK)
+        return s;
     fs_terrain_redraw(&sc->terrain);
     return crop_terrain(sc, err);
 }

@@ -80,8 +80,15 @@ fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *e
  * key of the schema used (unknown section or key, with the known ones listed). */
 fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *def, fs_error *err);
 
+/* Checks a definition edited in code against the schema that binds files to it: every number,
+ * whole number, list value and choice in its range, as a file's value would be. `what` names the
+ * definition in the message ("scenarios/x.ini, edited in code"). FS_OK, or FS_BAD_INPUT naming the
+ * key, the value and the range. */
+fs_status fs_config_check(const fs_key *schema, int nkeys, const void *def, const char *what, fs_error *err);
+
 /* "file:line" (or "--set section.key", or "file ([section] key, default)") for messages about a
- * key's value that only a later check can judge, such as a relation between two keys. */
+ * key's value that only a later check can judge, such as a relation between two keys. cfg may be
+ * NULL for a definition edited in code: "[section] key (set in code)". */
 const char *fs_config_where(const fs_config *cfg, const char *section, const char *name, char *buf,
                             size_t size);
 

@@ -88,10 +88,12 @@ fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_err
 void fs_scenario_free(fs_scenario *sc);
 
 /* Compiles a loaded scenario again after its definitions were edited in code (the start pose in
- * sc->def, the terrain's seed in sc->terrain.def, as a landing trial does): the terrain's drawn
- * features, and its samples cut to the region the foot can reach from the new pose. Reads no file;
- * gives the same bits as loading the file with the same edits as --set. Edits that change which
- * files a scenario uses (design, terrain, heightmap) need fs_scenario_load. */
+ * sc->def, the terrain's seed in sc->terrain.def, as a landing trial does; a spring's stiffness or
+ * a link's mass in sc->design, as bench stability does): each definition checked against its
+ * schema's ranges, then the foot's geometry, the terrain's drawn features and its samples cut to
+ * the region the foot can reach from the new pose. Reads no file; gives the same bits as loading
+ * the file with the same edits as --set. Edits that change which files a scenario uses (design,
+ * terrain, heightmap) need fs_scenario_load. */
 fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err);
 
 /* The rectangle [xmin, xmax] x [ymin, ymax] the foot covers at its start pose. */
