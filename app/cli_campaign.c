@@ -53,11 +53,8 @@ static void run_one(int index, void *result, void *user)
         _exit(FS_NUMERICAL); /* FOOTSIM_TEST_CRASH_SEED: what an ODE error does */
     if (seed == p->stop_seed)
         raise(SIGSTOP); /* FOOTSIM_TEST_STOP_SEED: a worker that hangs, for the watchdog */
-    char buf[3][FS_PATH_MAX + 32];
-    const char *ov[FS_CAMPAIGN_MAX_SET + 3];
-    int n = fs_campaign_overrides(c, foot, terrain, buf, ov);
     fs_error err = {FS_OK, ""};
-    m->status = fs_trial_run(c->trial_path, ov, n, seed, NULL, &m->result, &err);
+    m->status = fs_trial_run_scenario(fs_campaign_pair(c, foot, terrain), seed, NULL, &m->result, &err);
     snprintf(m->error, sizeof m->error, "%s", err.message);
 }
 
@@ -86,15 +83,7 @@ static void record_death(int index, const fs_pool_death *d, void *user)
     r->impact_impulse_Ns = r->settle_time_s = r->mean_contacts = r->final_contacts = nan;
     r->ankle_drop_m = r->slip_m = nan;
     r->outcome = FS_FAILED_NUMERICS;
-    static fs_scenario sc;
-    char buf[3][FS_PATH_MAX + 32];
-    const char *ov[FS_CAMPAIGN_MAX_SET + 3];
-    int n = fs_campaign_overrides(c, foot, terrain, buf, ov);
-    fs_error err;
-    if (fs_scenario_load(c->trial_path, ov, n, &sc, &err) == FS_OK)
-        fs_trial_draw_pose(&sc, seed, &r->draw);
-    fs_scenario_free(&sc);
-    r->draw.seed = seed;
+    fs_trial_draw_pose(fs_campaign_pair(c, foot, terrain), seed, &r->draw);
     snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s, seed %d, %s",
              c->foot[foot].name, c->terrain[terrain].name, seed, d->how);
     if (p->progress)
@@ -197,12 +186,15 @@ int cli_campaign(const cli_args *a)
     char dir[FS_PATH_MAX + 64];
     snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c.name);
     static fs_outdir out;
-    if (fs_outdir_open(&out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_open(&out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK) {
+        fs_campaign_free(&c);
         return fail(&err);
+    }
     int ntrials = fs_campaign_ntrials(&c);
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
     if (!results) {
         fs_outdir_abort(&out);
+        fs_campaign_free(&c);
         return cli_report(FS_NO_MEMORY, "out of memory");
     }
     const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED"), *stop = getenv("FOOTSIM_TEST_STOP_SEED");
@@ -221,6 +213,7 @@ int cli_campaign(const cli_args *a)
     }
     fs_outdir_abort(&out); /* when it was not committed */
     free(results);
+    fs_campaign_free(&c);
     return s;
 }
 

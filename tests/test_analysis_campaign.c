@@ -184,6 +184,10 @@ static void test_load(void)
     CHECK(!strcmp(c.foot[1].name, "flat") && !strcmp(c.terrain[2].name, "complex_uneven"));
     CHECK(c.foot[0].path[0] == '/');
     CHECK(fs_campaign_ntrials(&c) == 30);
+    /* each (foot, terrain) loaded once, with its foot and terrain */
+    CHECK(fs_campaign_pair(&c, 1, 2)->geom.kind == FS_FOOT_FLAT && fs_campaign_pair(&c, 0, 2)->geom.kind == FS_FOOT_BIOMIMETIC);
+    CHECK(fs_campaign_pair(&c, 1, 2)->terrain.def.kind == FS_TERRAIN_COMPLEX_UNEVEN);
+    fs_campaign_free(&c);
     const char *sets[] = {"campaign.seeds=2", "run.step_s=2e-4", "expect.e.foot=flat", "expect.e.terrain=flat",
                           "tolerance.peak_force_N=0.2, 3"};
     REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", sets, 5, &c, &err) == FS_OK);
@@ -195,6 +199,8 @@ static void test_load(void)
     CHECK(fs_campaign_overrides(&c, 1, 2, buf, ov) == 3);
     CHECK(!strncmp(ov[0], "scenario.design=/", 17) && strstr(ov[0], "/scenarios/feet/flat.ini"));
     CHECK(strstr(ov[1], "/terrains/complex_uneven.ini") && !strcmp(ov[2], "run.step_s=2e-4"));
+    CHECK(fs_campaign_pair(&c, 1, 0)->def.step_s == 2e-4); /* the trials' --set reached every pair */
+    fs_campaign_free(&c);
 }
 
 static void test_sweep(void)
@@ -205,6 +211,8 @@ static void test_sweep(void)
     CHECK(!strcmp(c.sweep, "rough.rms_m") && c.nterrains == 11);
     CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set, "rough.rms_m=0.003"));
     CHECK(c.terrain[10].sweep_value == 0.02);
+    CHECK(fs_campaign_pair(&c, 0, 3)->terrain.def.rms_m == 0.003); /* the swept value in its pair */
+    fs_campaign_free(&c);
     const char *bad[] = {"campaign.sweep_values=0, -0.001"};
     CHECK(fs_campaign_load("scenarios/roughness.ini", bad, 1, &c, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "rms_m = '-0.001' is out of range") && strstr(err.message, "rough@-0.001"));

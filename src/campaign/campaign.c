@@ -369,11 +369,14 @@ static void base_name(const char *path, char *out, size_t size)
 }
 
 /* Loads the trial scenario for every (foot, terrain) once, so that nothing wrong is found late. */
-static fs_status check_trials(const fs_campaign *c, fs_error *err)
+void fs_campaign_free(fs_campaign *c);
+
+/* Loads (and so checks) the trial scenario of every (foot, terrain), once, for the trials. */
+static fs_status load_pairs(fs_campaign *c, fs_error *err)
 {
-    fs_scenario *sc = malloc(sizeof *sc);
-    if (!sc)
-        return fs_fail(err, FS_NO_MEMORY, "out of memory");
+    c->pair = calloc((size_t)c->nfeet * c->nterrains, sizeof *c->pair);
+    if (!c->pair)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", c->nfeet * c->nterrains);
     fs_status s = FS_OK;
     for (int f = 0; f < c->nfeet && s == FS_OK; f++)
         for (int t = 0; t < c->nterrains && s == FS_OK; t++) {
@@ -381,16 +384,30 @@ static fs_status check_trials(const fs_campaign *c, fs_error *err)
             const char *ov[FS_CAMPAIGN_MAX_SET + 3];
             int n = fs_campaign_overrides(c, f, t, buf, ov);
             fs_error e;
+            fs_scenario *sc = &c->pair[f * c->nterrains + t];
             s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
             if (s == FS_OK)
                 s = fs_scenario_require(sc, "trial", &e);
-            fs_scenario_free(sc);
             if (s != FS_OK)
                 fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s)", e.message, c->path, c->foot[f].name,
                         c->terrain[t].name);
         }
-    free(sc);
+    if (s != FS_OK)
+        fs_campaign_free(c);
     return s;
+}
+
+void fs_campaign_free(fs_campaign *c)
+{
+    for (int i = 0; c->pair && i < c->nfeet * c->nterrains; i++)
+        fs_scenario_free(&c->pair[i]);
+    free(c->pair);
+    c->pair = NULL;
+}
+
+const fs_scenario *fs_campaign_pair(const fs_campaign *c, int foot, int terrain)
+{
+    return &c->pair[foot * c->nterrains + terrain];
 }
 
 static fs_status bind_file(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
@@ -471,7 +488,7 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
         s = absolute_paths(&cfg, c, err);
     free(b);
     fs_config_free(&cfg);
-    return s == FS_OK ? check_trials(c, err) : s;
+    return s == FS_OK ? load_pairs(c, err) : s;
 }
 
 int fs_campaign_overrides(const fs_campaign *c, int foot, int terrain, char buf[3][FS_PATH_MAX + 32],

@@ -158,21 +158,39 @@ fs_status fs_trial_place(fs_scenario *sc, int seed, fs_trial_draw *draw, fs_erro
     return fs_scenario_compile(sc, err);
 }
 
-fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
-                       const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
+fs_status fs_trial_run_scenario(const fs_scenario *base, int seed, const fs_run_observer *obs, fs_trial_result *out,
+                                fs_error *err)
 {
     memset(out, 0, sizeof *out);
     fs_scenario *sc = malloc(sizeof *sc); /* the caller's, not the process's: trials are re-entrant */
     if (!sc)
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", base->path);
+    fs_status s = fs_scenario_copy(sc, base, err);
+    if (s != FS_OK) {
+        free(sc);
+        return s;
+    }
+    s = fs_trial_place(sc, seed, &out->draw, err);
+    if (s == FS_OK)
+        s = run_trial(sc, obs, out, err);
+    fs_scenario_free(sc);
+    free(sc);
+    return s;
+}
+
+fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
+                       const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
+{
+    memset(out, 0, sizeof *out);
+    fs_scenario *sc = malloc(sizeof *sc);
+    if (!sc)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", scenario_path);
-    /* the file read once; the pose drawn from its ranges, then put into its definitions */
+    /* the file read once; the pose drawn from its ranges, then put into (a copy of) its definitions */
     fs_status s = fs_scenario_load(scenario_path, overrides, noverrides, sc, err);
     if (s == FS_OK)
         s = fs_scenario_require(sc, "trial", err);
     if (s == FS_OK)
-        s = fs_trial_place(sc, seed, &out->draw, err);
-    if (s == FS_OK)
-        s = run_trial(sc, obs, out, err);
+        s = fs_trial_run_scenario(sc, seed, obs, out, err);
     fs_scenario_free(sc);
     free(sc);
     return s;

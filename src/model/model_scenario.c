@@ -228,6 +228,12 @@ fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_err
 
 void fs_scenario_free(fs_scenario *sc) { fs_terrain_free(&sc->terrain); }
 
+fs_status fs_scenario_copy(fs_scenario *dst, const fs_scenario *src, fs_error *err)
+{
+    *dst = *src;
+    return fs_terrain_copy(&dst->terrain, &src->terrain, err);
+}
+
 fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
 {
     char what[FS_PATH_MAX + 32];

@@ -407,6 +407,28 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
 
 void fs_terrain_redraw(fs_terrain *t) { draw_rocks(t); }
 
+/* A copy of n doubles, or NULL (for src NULL too). */
+static double *dup_doubles(const double *src, size_t n)
+{
+    double *d = src && n ? malloc(n * sizeof *d) : NULL;
+    if (d)
+        memcpy(d, src, n * sizeof *d);
+    return d;
+}
+
+fs_status fs_terrain_copy(fs_terrain *dst, const fs_terrain *src, fs_error *err)
+{
+    *dst = *src;
+    dst->img = dup_doubles(src->img, (size_t)src->img_w * src->img_h);
+    dst->z = dup_doubles(src->z, (size_t)src->nx * src->ny);
+    dst->zblock = dup_doubles(src->zblock, (size_t)src->bx * src->by);
+    if ((src->img && !dst->img) || (src->z && !dst->z) || (src->zblock && !dst->zblock)) {
+        fs_terrain_free(dst);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for a copy of the terrain", src->path);
+    }
+    return FS_OK;
+}
+
 void fs_terrain_free(fs_terrain *t)
 {
     free(t->img);

@@ -70,13 +70,20 @@ typedef struct fs_campaign {
     double tolerance[FS_CAMPAIGN_NMETRICS][2]; /* relative, absolute (metric's unit) */
     const char *set[FS_CAMPAIGN_MAX_SET];      /* the command's --set meant for the trials */
     int nset;
+    fs_scenario *pair;                 /* the trial scenario of each (foot, terrain), loaded once:
+                                          fs_campaign_pair; fs_campaign_free releases them */
 } fs_campaign;
 
 /* Reads and checks path. Each of sets ("section.key=value") goes to the campaign file when its
  * section is one of the campaign's (campaign, tolerance, foot.*, terrain.*, expect.*), otherwise
  * to every trial (c keeps the pointers). Then loads the trial scenario for every (foot, terrain)
- * with its overrides and frees it again: anything wrong is FS_BAD_INPUT, nothing run. */
+ * with its overrides, once, and keeps it for the trials (fs_trial_run_scenario places a copy per
+ * seed): anything wrong is FS_BAD_INPUT, nothing run. fs_campaign_free releases what it holds. */
 fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets, fs_campaign *c, fs_error *err);
+void fs_campaign_free(fs_campaign *c);
+
+/* The loaded trial scenario of foot on terrain. */
+const fs_scenario *fs_campaign_pair(const fs_campaign *c, int foot, int terrain);
 
 /* The overrides of trial (foot, terrain): scenario.design, scenario.terrain, the sweep's, then
  * c->set. buf holds their text; out gets up to FS_CAMPAIGN_MAX_SET + 3 pointers; returns the count. */

@@ -56,6 +56,12 @@ fs_status fs_trial_place(fs_scenario *sc, int seed, fs_trial_draw *draw, fs_erro
 fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, int noverrides, int seed,
                        const fs_run_observer *obs, fs_trial_result *out, fs_error *err);
 
+/* Runs seed's trial of a loaded trial scenario: on a copy of it, placed for seed (fs_trial_place),
+ * so sc itself is left as it was and serves every seed (a campaign loads each foot and terrain
+ * once). Otherwise as fs_trial_run. */
+fs_status fs_trial_run_scenario(const fs_scenario *sc, int seed, const fs_run_observer *obs, fs_trial_result *out,
+                                fs_error *err);
+
 /* Names of outcomes: "landed", "fell", "failed_numerics". */
 const char *fs_outcome_name(int outcome);
 

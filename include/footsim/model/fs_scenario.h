@@ -87,6 +87,10 @@ fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_err
 /* Releases what a loaded scenario holds (its terrain's samples). */
 void fs_scenario_free(fs_scenario *sc);
 
+/* dst becomes a copy of src owning its own terrain data (fs_terrain_copy), to edit and compile
+ * without touching src. */
+fs_status fs_scenario_copy(fs_scenario *dst, const fs_scenario *src, fs_error *err);
+
 /* Compiles a loaded scenario again after its definitions were edited in code (the start pose in
  * sc->def, the terrain's seed in sc->terrain.def, as a landing trial does; a spring's stiffness or
  * a link's mass in sc->design, as bench stability does): each definition checked against its

@@ -82,6 +82,10 @@ fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, 
  * file (a heightmap's image stays the one loaded). */
 void fs_terrain_redraw(fs_terrain *t);
 
+/* dst becomes a copy of src that owns its own image and samples (FS_NO_MEMORY, dst empty, if they
+ * cannot be had). */
+fs_status fs_terrain_copy(fs_terrain *dst, const fs_terrain *src, fs_error *err);
+
 /* The surface ODE collides with, at (x, y), m. */
 double fs_terrain_height(const fs_terrain *t, double x, double y);
 
