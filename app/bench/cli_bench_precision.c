@@ -10,6 +10,7 @@
  * DIR/precision.csv, precision.md and precision.png (gnuplot). */
 #include "cli.h"
 
+#include "footsim/base/fs_stats.h"
 #include "footsim/sim/fs_check.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/experiment/fs_track.h"
@@ -73,12 +74,6 @@ static void with_settings(const scene *s, const row *r, fs_scenario *sc)
     sc->def.log_interval_s = fmax(r->step_s, 1e-3); /* no path is logged here */
 }
 
-static int compare_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* Runs one configuration up to `repeats` times, fewer once REPEAT_BUDGET_S of wall time is spent
  * on it (a long run times itself well): the error of the first run, the median wall time. */
 static fs_status measure(row *r, int repeats, fs_error *err)
@@ -113,7 +108,7 @@ static fs_status measure(row *r, int repeats, fs_error *err)
             break;
     }
     if (r->ok) {
-        qsort(wall, (size_t)done, sizeof wall[0], compare_double);
+        qsort(wall, (size_t)done, sizeof wall[0], fs_compare_doubles);
         r->wall_s = wall[done / 2];
     }
     return s;

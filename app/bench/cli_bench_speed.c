@@ -8,6 +8,7 @@
  * hits both alike. Writes DIR/speed.csv, skips.csv, speed.md, speed.gp and speed.png. */
 #include "cli.h"
 
+#include "footsim/base/fs_stats.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/experiment/fs_run.h"
 #include "footsim/sim/fs_sim.h"
@@ -220,18 +221,6 @@ static int repeats(const scene *sc, int quick) { return quick ? 1 : sc->flags & 
 
 static int taken(const scene *sc, int quick) { return sc->flags & (quick ? QUICK : FULL); }
 
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, by_value);
-    return v[(n - 1) / 2];
-}
-
 /* What one interval of the profile costs beyond the code it times: a clock read, s (the
  * median of 9 batches). */
 static double clock_read_s(void)
@@ -244,7 +233,7 @@ static double clock_read_s(void)
             fs_clock_s();
         batch[b] = (fs_clock_s() - t0) / (N + 1);
     }
-    return median(batch, 9);
+    return fs_median_low(batch, 9);
 }
 
 /* The stages without the clock reads that timed them. */
@@ -272,8 +261,8 @@ static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double 
         prof->steps = p.steps;
     }
     for (int k = 0; k < FS_NSTAGES; k++)
-        prof->stage_s[k] = median(stage[k], n);
-    *wall_s = median(wall, n);
+        prof->stage_s[k] = fs_median_low(stage[k], n);
+    *wall_s = fs_median_low(wall, n);
     return s;
 }
 

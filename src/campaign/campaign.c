@@ -2,6 +2,9 @@
  * medians), result files, expectations and the comparison of two summaries. */
 #include "footsim/campaign/fs_campaign.h"
 
+#include "footsim/base/fs_path.h"
+#include "footsim/base/fs_stats.h"
+
 #include "footsim/io/fs_input.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/model/fs_scenario.h"
@@ -359,18 +362,6 @@ static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *
     return FS_OK;
 }
 
-static void base_name(const char *path, char *out, size_t size)
-{
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    const char *dot = strrchr(base, '.');
-    size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-    snprintf(out, size, "%.*s", (int)(n < size ? n : size - 1), base);
-}
-
-/* Loads the trial scenario for every (foot, terrain) once, so that nothing wrong is found late. */
-void fs_campaign_free(fs_campaign *c);
-
 /* Loads (and so checks) the trial scenario of every (foot, terrain), once, for the trials. */
 static fs_status load_pairs(fs_campaign *c, fs_error *err)
 {
@@ -456,7 +447,7 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
 {
     memset(c, 0, sizeof *c);
     snprintf(c->path, sizeof c->path, "%s", path);
-    base_name(path, c->name, sizeof c->name);
+    fs_path_stem(path, c->name, sizeof c->name);
     fs_config cfg;
     fs_status s = fs_config_load(&cfg, path, err);
     for (int i = 0; s == FS_OK && i < nsets; i++) {
@@ -532,20 +523,6 @@ void fs_wilson(int k, int n, double *low, double *high)
         *low = 0;
     if (k == n)
         *high = 1;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-double fs_median(double *values, int n)
-{
-    if (n <= 0)
-        return NAN;
-    qsort(values, (size_t)n, sizeof *values, cmp_double);
-    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows)
@@ -695,7 +672,7 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
     char trial[FS_NAME_MAX];
-    base_name(c->trial_path, trial, sizeof trial);
+    fs_path_stem(c->trial_path, trial, sizeof trial);
     fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot and terrain)%s%s. Success: the "
                "trial landed; interval: 95 %% Wilson score. Medians over the trials that did not fail numerically.\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
@@ -733,7 +710,7 @@ static cJSON *summary_json(const out_ctx *x)
     const fs_campaign *c = x->c;
     cJSON *root = cJSON_CreateObject();
     char trial[FS_NAME_MAX];
-    base_name(c->trial_path, trial, sizeof trial);
+    fs_path_stem(c->trial_path, trial, sizeof trial);
     cJSON_AddStringToObject(root, "campaign", c->name);
     cJSON_AddStringToObject(root, "trial", trial);
     cJSON_AddNumberToObject(root, "seeds", c->seeds);

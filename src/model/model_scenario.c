@@ -1,6 +1,8 @@
 /* model_scenario.c: the scenario schema and loading a scenario with its design. */
 #include "footsim/model/fs_scenario.h"
 
+#include "footsim/base/fs_path.h"
+
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -102,18 +104,6 @@ static int has_section(const fs_key *keys, int n, const char *assignment)
     return 0;
 }
 
-static void base_name(const char *path, char *out, size_t size)
-{
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    const char *dot = strrchr(base, '.');
-    size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-    if (n >= size)
-        n = size - 1;
-    memcpy(out, base, n);
-    out[n] = 0;
-}
-
 /* Which of the three files an override belongs to: 0 scenario, 1 terrain, 2 design. */
 static int override_target(const char *assignment)
 {
@@ -158,7 +148,7 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     }
     memset(sc, 0, sizeof *sc);
     snprintf(sc->path, sizeof sc->path, "%s", path);
-    base_name(path, sc->name, sizeof sc->name);
+    fs_path_stem(path, sc->name, sizeof sc->name);
     fs_config cfg;
     fs_status s = fs_config_load(&cfg, path, err);
     for (int i = 0; s == FS_OK && i < n[0]; i++)
@@ -283,7 +273,7 @@ fs_status fs_scenario_for_design(const char *design_path, const char *const *ove
 {
     memset(sc, 0, sizeof *sc);
     snprintf(sc->path, sizeof sc->path, "%s", design_path);
-    base_name(design_path, sc->name, sizeof sc->name);
+    fs_path_stem(design_path, sc->name, sizeof sc->name);
     fs_config empty = {.path = "(scenario defaults)"};
     /* Every key but the design path (the first) takes its default: a flat plane of default material. */
     fs_status s = fs_config_bind(&empty, fs_scenario_keys + 1, fs_scenario_nkeys - 1, &sc->def, err);

@@ -14,6 +14,7 @@
 #ifndef FS_CAMPAIGN_H
 #define FS_CAMPAIGN_H
 
+#include "footsim/base/fs_stats.h"
 #include "footsim/io/fs_config.h"
 #include "footsim/experiment/fs_trial.h"
 
@@ -97,8 +98,6 @@ void fs_campaign_trial_of(const fs_campaign *c, int index, int *foot, int *terra
 /* The 95 % Wilson score interval of k successes in n > 0 trials. */
 void fs_wilson(int k, int n, double *low, double *high);
 
-/* The median of n values (sorted in place); NAN when n is 0. */
-double fs_median(double *values, int n);
 
 /* One row of the summary: a foot on a terrain over all seeds. */
 typedef struct fs_campaign_row {
