@@ -190,10 +190,10 @@ static fs_status collect_sections(const fs_config *cfg, binder *b, fs_campaign *
         fs_status s = check_name(cfg, e, dot + 1, err);
         if (s != FS_OK)
             return s;
-        int kind = e->section[0] == 'f' ? 0 : e->section[0] == 't' ? 1 : 2;
-        int first = kind == 0 ? 0 : kind == 1 ? FS_CAMPAIGN_MAX_FEET : FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS;
-        if (!note_section(b->sections + first, count[kind], max[kind], e->section))
-            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: too many sections of this kind (at most %d feet, %d terrains, "
+        int group = e->section[0] == 'f' ? 0 : e->section[0] == 't' ? 1 : 2;
+        int first = group == 0 ? 0 : group == 1 ? FS_CAMPAIGN_MAX_FEET : FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS;
+        if (!note_section(b->sections + first, count[group], max[group], e->section))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: too many sections of this group (at most %d feet, %d terrains, "
                            "%d expectations)", cfg->path, e->section, max[0], max[1], max[2]);
     }
     return FS_OK;

@@ -117,7 +117,7 @@ static fs_status crop_terrain(fs_scenario *sc, fs_error *err)
     double box[4];
     fs_scenario_footprint(sc, box);
     double m = sc->def.region_margin_m;
-    if (sc->def.kind == 1) /* the walking machine's path */
+    if (sc->def.kind == FS_SCENARIO_WALK) /* the walking machine's path */
         box[1] += sc->def.walk_steps * sc->def.step_length_m;
     const fs_terrain *t = &sc->terrain;
     if (t->def.kind == FS_TERRAIN_HEIGHTMAP && t->img) {
@@ -165,7 +165,7 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
                         fs_config_where(&cfg, "run", "log_interval_s", where, sizeof where), sc->def.log_interval_s,
                         sc->def.step_s);
     }
-    if (s == FS_OK && sc->def.kind == 1) {
+    if (s == FS_OK && sc->def.kind == FS_SCENARIO_WALK) {
         /* the walking machine's stance and swing must each last a step at least */
         const fs_scenario_def *d = &sc->def;
         double stance = d->walk_period_s * d->stance_fraction, swing = d->walk_period_s - stance;
@@ -181,7 +181,7 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     if (s == FS_OK) {
         /* a run's length in steps, bounded before anything is built (counters and buffers are sized by it) */
         const fs_scenario_def *d = &sc->def;
-        int walk = d->kind == 1;
+        int walk = d->kind == FS_SCENARIO_WALK;
         double steps = (walk ? d->walk_steps * d->walk_period_s : d->duration_s) / d->step_s;
         if (steps > FS_MAX_STEPS) {
             char where[FS_PATH_MAX + 80];
@@ -205,7 +205,7 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
 fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_error *err)
 {
     /* what the file is for: walk (kind = walk), trial ([robot] or [landing]), else run */
-    const char *is = sc->def.kind == 1 ? "walk" : sc->is_trial ? "trial" : "run";
+    const char *is = sc->def.kind == FS_SCENARIO_WALK ? "walk" : sc->is_trial ? "trial" : "run";
     int ok = !strcmp(command, is) || (!strcmp(command, "run") && !strcmp(is, "trial"));
     if (ok)
         return FS_OK;

@@ -16,8 +16,11 @@ enum { FS_MAX_STEPS = 1000000000 };
 
 typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
 
+/* [scenario] kind: what the scenario is run by (the order of the key's choices). */
+typedef enum fs_scenario_kind { FS_SCENARIO_EXPERIMENT = 0, FS_SCENARIO_WALK = 1 } fs_scenario_kind;
+
 typedef struct fs_scenario_def {
-    int kind;                  /* 0 experiment (run, trial), 1 walk (the walking machine) */
+    int kind;                  /* fs_scenario_kind: an experiment (run, trial) or the walking machine */
     char design_path[FS_PATH_MAX];
     char terrain_path[FS_PATH_MAX];
     double start_x_m, start_y_m, yaw_deg, pitch_deg, roll_deg; /* where the foot starts */
