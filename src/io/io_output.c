@@ -162,6 +162,17 @@ fs_status fs_make_dirs(const char *dir, fs_error *err)
     return FS_OK;
 }
 
+static int fsync_path(const char *path);
+static int sync_failed;
+
+static int sync_folder(const char *path, const struct stat *st, int flag, struct FTW *ftw)
+{
+    (void)st, (void)ftw;
+    if ((flag == FTW_D || flag == FTW_DP) && fsync_path(path) != 0)
+        sync_failed = errno ? errno : EIO;
+    return 0;
+}
+
 static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
 {
     (void)st, (void)flag, (void)ftw;
@@ -231,13 +242,26 @@ fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
     return FS_OK;
 }
 
-fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err)
+/* Whether path lies in a partial results folder of this process: its folder is fsync'd once, when
+ * the partial folder is put in place (fs_outdir_commit), not after each file. */
+static int in_partial(const char *path)
+{
+    for (int i = 0; i < npend; i++) {
+        size_t n = strlen(pend[i].path);
+        if (pend[i].tree && pend[i].owner == getpid() && n && !strncmp(path, pend[i].path, n) && path[n] == '/')
+            return 1;
+    }
+    return 0;
+}
+
+/* Renames temp (fsync'd first unless synced) over path, then fsyncs path's folder. */
+static fs_status commit(const char *temp, const char *path, int synced, fs_error *err)
 {
     struct stat st;
     fs_status s = FS_OK;
     if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
         s = fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, type_name(st.st_mode));
-    else if (fsync_path(temp) != 0)
+    else if (!synced && fsync_path(temp) != 0)
         s = write_error(err, path, errno);
     else if (rename(temp, path) != 0)
         s = fs_fail(err, FS_IO, "%s: cannot replace (%s)", path, strerror(errno));
@@ -249,10 +273,12 @@ fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err)
     forget(temp);
     char dir[FS_OUT_PATH];
     parent_of(path, dir, sizeof dir);
-    if (fsync_path(dir) != 0)
+    if (!in_partial(path) && fsync_path(dir) != 0)
         return write_error(err, dir, errno);
     return FS_OK;
 }
+
+fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err) { return commit(temp, path, 0, err); }
 
 fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_error *err)
 {
@@ -290,7 +316,7 @@ fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_
             return write_error(err, path, e);
         return fs_fail(err, FS_NO_MEMORY, "%s: its content could not be made (out of memory)", path);
     }
-    return fs_commit_temp(temp, path, err);
+    return commit(temp, path, 1, err);
 }
 
 fs_status fs_write_in(const char *dir, const char *name, fs_fill_fn fill, const void *user, fs_error *err)
@@ -647,8 +673,11 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err)
     char parent[FS_OUT_PATH], old[FS_OUT_PATH + 64];
     parent_of(o->path, parent, sizeof parent);
     fs_status s = FS_OK;
-    if (fsync_path(o->partial) != 0)
-        s = write_error(err, o->path, errno);
+    /* its files were fsync'd as they were written; now its folders (frames/ and itself) */
+    sync_failed = 0;
+    nftw(o->partial, sync_folder, 16, FTW_DEPTH | FTW_PHYS);
+    if (sync_failed)
+        s = write_error(err, o->path, sync_failed);
     else if (swap_in(o->partial, o->path, old, sizeof old) != 0)
         s = fs_fail(err, FS_IO, "%s: cannot put the results in place (%s)", o->path, strerror(errno));
     else if (fsync_path(parent) != 0)
