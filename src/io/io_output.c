@@ -469,8 +469,9 @@ static int has_marker(const char *path)
     return ok;
 }
 
-/* The folders and lock files a killed run left beside path: removed (the lock is ours). An
- * old folder whose swap was cut short is put back when path is missing. */
+/* The partial and old folders a killed run left beside path (path.partial.<pid>, path.old.<pid>,
+ * each marked or empty): removed, as the lock is ours. An old folder whose swap was cut short is
+ * put back when path is missing. */
 static void sweep_leftovers(const char *path)
 {
     char dir[FS_OUT_PATH], prefix[FS_OUT_PATH + 256];
@@ -497,6 +498,13 @@ static void sweep_leftovers(const char *path)
         if (!*pid || strspn(pid, "0123456789") != strlen(pid))
             continue;
         snprintf(prefix, sizeof prefix, "%s/%s", dir, e->d_name);
+        int count;
+        char odd[8];
+        struct stat ps;
+        /* only a folder footsim made: its marker, or nothing in it (a user's "data.old.2024" stays) */
+        if (lstat(prefix, &ps) != 0 || !S_ISDIR(ps.st_mode) ||
+            (!has_marker(prefix) && !(only_footsim_files(prefix, NULL, &count, odd, sizeof odd) >= 0 && count == 0)))
+            continue;
         if (kind[0] == 'o' && missing && rename(prefix, path) == 0) {
             missing = 0;
             continue;
@@ -506,9 +514,30 @@ static void sweep_leftovers(const char *path)
     closedir(d);
 }
 
-/* Takes the lock path.lock (kept open): refuses when another footsim holds it. */
+/* Takes the lock .<name>.footsim-lock beside the folder (kept open): refuses when another footsim
+ * holds it, or when a file there is not a footsim lock. */
+/* Whether path is absent or looks like footsim's lock file: a small regular file holding a pid. */
+static int lock_is_ours(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return errno == ENOENT;
+    if (!S_ISREG(st.st_mode) || st.st_size > 32)
+        return 0;
+    char text[40] = "";
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+    ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : -1;
+    if (fd >= 0)
+        close(fd);
+    text[n > 0 ? n : 0] = 0;
+    return n >= 0 && strspn(text, "0123456789\n") == strlen(text);
+}
+
 static fs_status take_lock(fs_outdir *o, const char *option, fs_error *err)
 {
+    if (!lock_is_ours(o->lock))
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: %s exists and is not footsim's lock file; move it away, or choose "
+                       "another %s", option, o->path, o->lock, option);
     for (int tries = 0; tries < 8; tries++) {
         int fd = open(o->lock, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
         if (fd < 0)
@@ -602,7 +631,12 @@ fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known
         return s;
     if ((s = check_target(o->path, dir, known, replace, option, 0, err)) != FS_OK)
         return s;
-    snprintf(o->lock, sizeof o->lock, "%s.lock", o->path);
+    {
+        char parent[FS_OUT_PATH];
+        parent_of(o->path, parent, sizeof parent);
+        const char *base = strrchr(o->path, '/');
+        snprintf(o->lock, sizeof o->lock, "%s/.%s.footsim-lock", parent, base ? base + 1 : o->path);
+    }
     if ((s = take_lock(o, option, err)) != FS_OK)
         return s;
     sweep_leftovers(o->path);
