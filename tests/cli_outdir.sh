@@ -35,6 +35,11 @@ check '[ -f "$tmp/mine/metrics.json" ] && [ ! -e "$tmp/mine/notes.txt" ] && [ -f
 mkdir "$tmp/old" && echo '{}' >"$tmp/old/metrics.json" && echo t >"$tmp/old/trajectory.csv"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/old" >/dev/null
 check '[ -f "$tmp/old/.footsim-results" ] && grep -q ankle_drop_m "$tmp/old/metrics.json"'
+# ... but not with a file of the user's that merely looks temporary
+mkdir "$tmp/oldt" && echo '{}' >"$tmp/oldt/metrics.json" && echo mine >"$tmp/oldt/draft.tmp.txt"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/oldt" >/dev/null 2>/dev/null
+st=$?
+check '[ "$st" -eq 2 ] && [ -f "$tmp/oldt/draft.tmp.txt" ]'
 # ... frames too, but not a file of the user's hidden among them
 mkdir -p "$tmp/oldf/frames" && echo '{}' >"$tmp/oldf/metrics.json" && echo p >"$tmp/oldf/frames/000000.png"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/oldf" >/dev/null

@@ -394,6 +394,16 @@ fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *
     return FS_OK;
 }
 
+/* A temporary file of footsim's: NAME.tmp.<pid>, or video.tmp.<pid>.mp4 (ffmpeg's). */
+static int is_temp_name(const char *name)
+{
+    const char *t = strstr(name, ".tmp.");
+    if (!t || t == name)
+        return 0;
+    size_t digits = strspn(t + 5, "0123456789");
+    return digits > 0 && (!t[5 + digits] || !strcmp(t + 5 + digits, ".mp4"));
+}
+
 /* A name an earlier footsim wrote in a results folder: one of `known`, a frame, or a leftover
  * temporary file of its own. */
 static int known_name(const char *name, const char *const *known)
@@ -403,7 +413,7 @@ static int known_name(const char *name, const char *const *known)
         if (n && known[i][n - 1] == '*' ? !strncmp(name, known[i], n - 1) : !strcmp(name, known[i]))
             return 1;
     }
-    return strstr(name, ".tmp.") != NULL;
+    return is_temp_name(name);
 }
 
 /* Whether path/frames holds only frames (NNNNNN.png) and footsim's temporary files; fills odd with
@@ -418,7 +428,7 @@ static int only_frames(const char *path, char *odd, size_t size)
     int ok = 1;
     for (struct dirent *e; ok && (e = readdir(d));) {
         const char *n = e->d_name;
-        if (!strcmp(n, ".") || !strcmp(n, "..") || strstr(n, ".tmp."))
+        if (!strcmp(n, ".") || !strcmp(n, "..") || is_temp_name(n))
             continue;
         ok = strlen(n) == 10 && strspn(n, "0123456789") == 6 && !strcmp(n + 6, ".png");
         if (!ok)
