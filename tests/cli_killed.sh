@@ -36,10 +36,10 @@ FOOTSIM_TEST_ODE_ERROR=1 "$fs" run scenarios/static_load.ini $short --out "$tmp/
 status=$?
 check '[ "$status" -eq 3 ] && [ ! -e "$tmp/ode" ] && [ -z "$(ls -a "$tmp" | grep -e "^ode\.")" ]'
 # finding 9: a worker stopped (SIGSTOP) in a trial is killed by the watchdog, counted and named;
-# the campaign finishes instead of waiting forever
-FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=2 "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/w" >/dev/null 2>"$tmp/werr"
+# the campaign finishes instead of waiting forever (5 s: far beyond a 0.05 s trial, even under ASan)
+FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=5 "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/w" >/dev/null 2>"$tmp/werr"
 status=$?
-check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 2 s and was killed by the watchdog" "$tmp/werr"'
+check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 5 s and was killed by the watchdog" "$tmp/werr"'
 check 'grep -q "1 worker made no progress" "$tmp/werr" && [ "$(grep -c "failed_numerics" "$tmp/w/trials.csv")" -eq 1 ]'
 check 'grep "failed_numerics" "$tmp/w/trials.csv" | grep -q "^bio,flat,2,"'
 # finding 9: a refused fork (at most one process for an unprivileged user) leaves no folder

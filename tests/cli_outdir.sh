@@ -94,11 +94,13 @@ fi
 # the lock: a second footsim writing the same folder is refused while the first holds it
 mkdir "$tmp/locked"
 if command -v flock >/dev/null; then
-    flock "$tmp/.locked.footsim-lock" sleep 3 &
+    # flock(1) holds the lock until told to stop; "held" appears once it has it
+    flock "$tmp/.locked.footsim-lock" sh -c "touch '$tmp/held'; while [ ! -e '$tmp/release' ]; do sleep 0.1; done" &
     holder=$!
-    sleep 0.5
+    for i in $(seq 300); do [ -e "$tmp/held" ] && break; sleep 0.1; done
     "$fs" run scenarios/static_load.ini $short --out "$tmp/locked" >/dev/null 2>"$tmp/err9"
     s13=$?
+    touch "$tmp/release"
     check '[ "$s13" -eq 2 ] && grep -q "another footsim" "$tmp/err9" && [ ! -e "$tmp/locked/metrics.json" ]'
     wait $holder
 else
