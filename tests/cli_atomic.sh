@@ -8,7 +8,7 @@ echo stale >"$tmp/out/old.txt" # a folder footsim made (its marker) is replaced 
 "$fs" run scenarios/static_load.ini --set run.duration_s=0.05 --out "$tmp/out" >/dev/null
 check '[ -f "$tmp/out/metrics.json" ] && [ -f "$tmp/out/trajectory.csv" ]'
 check '[ ! -e "$tmp/out/old.txt" ]'
-check '[ -z "$(ls -d "$tmp"/out.partial.* "$tmp"/out.lock 2>/dev/null)" ]'
+check '[ -z "$(ls -d "$tmp"/out.partial.* "$tmp"/.out.footsim-lock 2>/dev/null)" ]'
 # a refused run leaves the previous results as they were
 cp "$tmp/out/metrics.json" "$tmp/before.json"
 "$fs" run scenarios/static_load.ini --set load.mass_kg=-1 --out "$tmp/out" 2>/dev/null

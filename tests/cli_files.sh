@@ -100,7 +100,10 @@ expect 2 "period_s = 5e-05 gives a stance of 3e-05 s and a swing of 2e-05 s, one
 s13=$?
 # an unset log interval follows the step: rows 0.01 s apart
 check '[ "$s13" -eq 0 ] && [ "$(sed -n 3p "$tmp/coarse/trajectory.csv" | cut -d, -f1)" = "0.01" ]'
-expect 2 "--set run.log_interval_s: log_interval_s = 0.001 is shorter than step_s = 0.01" -- run $sl --set run.step_s=1e-2 --set run.log_interval_s=1e-3 --out "$tmp/o"
+expect 2 "--set run.log_interval_s: log_interval_s = 0.001 is shorter than step_s = 0.01 (from --set run.step_s)" -- run $sl --set run.step_s=1e-2 --set run.log_interval_s=1e-3 --out "$tmp/o"
+# finding 11: a value from --set is named as such, not blamed on a line of the file
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[run]\nlog_interval_s = 1e-3\n' "$src" >"$tmp/li.ini"
+expect 2 "li.ini:4: log_interval_s = 0.001 is shorter than step_s = 0.01 (from --set run.step_s)" -- run "$tmp/li.ini" --set run.step_s=1e-2 --out "$tmp/o"
 "$fs" run $sl --set run.duration_s=0.02 --fps 30 --out "$tmp/fps" >/dev/null 2>"$tmp/fps.err"
 check 'grep -q "warning: --fps is unused without --frames" "$tmp/fps.err" && [ -f "$tmp/fps/metrics.json" ]'
 expect 2 "--out given twice" -- run $sl --out "$tmp/o" --out "$tmp/o2"

@@ -19,7 +19,7 @@ check 'cmp -s "$tmp/summary_before.json" "$tmp/c/summary.json" && cmp -s "$tmp/t
 check '[ -z "$(ls -a "$tmp/c" | grep "\.tmp\.")" ]'
 # the next campaign clears what the killed one left beside the folder, and replaces it whole
 "$fs" campaign "$tmp/camp.ini" $short --set campaign.seeds=3 -j 1 --out "$tmp/c" >/dev/null 2>&1
-check '[ -z "$(ls -a "$tmp" | grep -e "^c\.partial" -e "^c\.lock")" ]'
+check '[ -z "$(ls -a "$tmp" | grep -e "^c\.partial" -e "^\.c\.footsim-lock")" ]'
 check '[ "$(grep -c "^bio,flat," "$tmp/c/trials.csv")" -eq 3 ] && grep -q "\"trials\":[[:space:]]*3" "$tmp/c/summary.json"'
 # a campaign ended by SIGTERM (or Ctrl-C) in the middle of its trials removes its partial folder
 "$fs" campaign "$tmp/camp.ini" $short --set campaign.seeds=400 -j 1 --out "$tmp/c" >/dev/null 2>&1 &
@@ -29,17 +29,17 @@ check '[ -n "$(ls -a "$tmp" | grep "^c\.partial")" ]' # it is running, its parti
 kill -TERM $pid
 wait $pid
 status=$?
-check '[ "$status" -eq 143 ] && [ -z "$(ls -a "$tmp" | grep -e "^c\.partial" -e "^c\.lock")" ]'
+check '[ "$status" -eq 143 ] && [ -z "$(ls -a "$tmp" | grep -e "^c\.partial" -e "^\.c\.footsim-lock")" ]'
 check '[ "$(grep -c "^bio,flat," "$tmp/c/trials.csv")" -eq 3 ]'
 # finding 9: an ODE internal error (exit 3 from ODE's handler) leaves no folder and no partial one
 FOOTSIM_TEST_ODE_ERROR=1 "$fs" run scenarios/static_load.ini $short --out "$tmp/ode" >/dev/null 2>&1
 status=$?
 check '[ "$status" -eq 3 ] && [ ! -e "$tmp/ode" ] && [ -z "$(ls -a "$tmp" | grep -e "^ode\.")" ]'
 # finding 9: a worker stopped (SIGSTOP) in a trial is killed by the watchdog, counted and named;
-# the campaign finishes instead of waiting forever
-FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=2 "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/w" >/dev/null 2>"$tmp/werr"
+# the campaign finishes instead of waiting forever (5 s: far beyond a 0.05 s trial, even under ASan)
+FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=5 "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/w" >/dev/null 2>"$tmp/werr"
 status=$?
-check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 2 s and was killed by the watchdog" "$tmp/werr"'
+check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 5 s and was killed by the watchdog" "$tmp/werr"'
 check 'grep -q "1 worker made no progress" "$tmp/werr" && [ "$(grep -c "failed_numerics" "$tmp/w/trials.csv")" -eq 1 ]'
 check 'grep "failed_numerics" "$tmp/w/trials.csv" | grep -q "^bio,flat,2,"'
 # finding 9: a refused fork (at most one process for an unprivileged user) leaves no folder

@@ -35,6 +35,11 @@ check '[ -f "$tmp/mine/metrics.json" ] && [ ! -e "$tmp/mine/notes.txt" ] && [ -f
 mkdir "$tmp/old" && echo '{}' >"$tmp/old/metrics.json" && echo t >"$tmp/old/trajectory.csv"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/old" >/dev/null
 check '[ -f "$tmp/old/.footsim-results" ] && grep -q ankle_drop_m "$tmp/old/metrics.json"'
+# ... but not with a file of the user's that merely looks temporary
+mkdir "$tmp/oldt" && echo '{}' >"$tmp/oldt/metrics.json" && echo mine >"$tmp/oldt/draft.tmp.txt"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/oldt" >/dev/null 2>/dev/null
+st=$?
+check '[ "$st" -eq 2 ] && [ -f "$tmp/oldt/draft.tmp.txt" ]'
 # ... frames too, but not a file of the user's hidden among them
 mkdir -p "$tmp/oldf/frames" && echo '{}' >"$tmp/oldf/metrics.json" && echo p >"$tmp/oldf/frames/000000.png"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/oldf" >/dev/null
@@ -89,11 +94,13 @@ fi
 # the lock: a second footsim writing the same folder is refused while the first holds it
 mkdir "$tmp/locked"
 if command -v flock >/dev/null; then
-    flock "$tmp/locked.lock" sleep 3 &
+    # flock(1) holds the lock until told to stop; "held" appears once it has it
+    flock "$tmp/.locked.footsim-lock" sh -c "touch '$tmp/held'; while [ ! -e '$tmp/release' ]; do sleep 0.1; done" &
     holder=$!
-    sleep 0.5
+    for i in $(seq 300); do [ -e "$tmp/held" ] && break; sleep 0.1; done
     "$fs" run scenarios/static_load.ini $short --out "$tmp/locked" >/dev/null 2>"$tmp/err9"
     s13=$?
+    touch "$tmp/release"
     check '[ "$s13" -eq 2 ] && grep -q "another footsim" "$tmp/err9" && [ ! -e "$tmp/locked/metrics.json" ]'
     wait $holder
 else
@@ -102,10 +109,18 @@ fi
 # where renameat2(RENAME_EXCHANGE) is refused (EINVAL on NFS), the two-rename swap still replaces whole
 FOOTSIM_TEST_NO_EXCHANGE=1 "$fs" run scenarios/static_load.ini $short --set load.mass_kg=5 --out "$tmp/mine" >/dev/null
 check 'grep -q "\"load_kg\":[[:space:]]*5" "$tmp/mine/metrics.json" && [ -z "$(ls -a "$tmp" | grep -e "mine\.old" -e "mine\.partial")" ]'
-# leftovers of a killed run (partial and old folders beside it) are cleared by the next run
-mkdir "$tmp/mine.partial.99999" "$tmp/mine.old.99998"
+# leftovers of a killed run (partial and old folders beside it, marked or empty) are cleared by the
+# next run; a user's folder of a like name ("mine.old.2024", with their files) is left alone
+mkdir "$tmp/mine.partial.99999" "$tmp/mine.old.99998" "$tmp/mine.old.2024"
+echo "mine" >"$tmp/mine.old.2024/notes.txt" && cp "$tmp/mine/.footsim-results" "$tmp/mine.partial.99999/"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/mine" >/dev/null
-check '[ -z "$(ls -a "$tmp" | grep -e "mine\.old" -e "mine\.partial")" ] && [ -f "$tmp/mine/metrics.json" ]'
+check '[ -z "$(ls -a "$tmp" | grep -e "mine\.old\.9" -e "mine\.partial")" ] && [ -f "$tmp/mine/metrics.json" ]'
+check '[ -f "$tmp/mine.old.2024/notes.txt" ]'
+# a file of the user's where the lock would go is not footsim's to write: refused, left as it was
+echo "my notes" >"$tmp/.lk.footsim-lock"
+"$fs" run scenarios/static_load.ini $short --out "$tmp/lk" >/dev/null 2>"$tmp/errl"
+sl=$?
+check '[ "$sl" -eq 2 ] && grep -q "is not footsim.s lock file" "$tmp/errl" && [ "$(cat "$tmp/.lk.footsim-lock")" = "my notes" ]'
 # the committed results folders carry the marker
 for d in results/landing results/roughness results/baseline results/bench; do
     check "[ -f $d/.footsim-results ]"

@@ -162,6 +162,17 @@ fs_status fs_make_dirs(const char *dir, fs_error *err)
     return FS_OK;
 }
 
+static int fsync_path(const char *path);
+static int sync_failed;
+
+static int sync_folder(const char *path, const struct stat *st, int flag, struct FTW *ftw)
+{
+    (void)st, (void)ftw;
+    if ((flag == FTW_D || flag == FTW_DP) && fsync_path(path) != 0)
+        sync_failed = errno ? errno : EIO;
+    return 0;
+}
+
 static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
 {
     (void)st, (void)flag, (void)ftw;
@@ -231,13 +242,26 @@ fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
     return FS_OK;
 }
 
-fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err)
+/* Whether path lies in a partial results folder of this process: its folder is fsync'd once, when
+ * the partial folder is put in place (fs_outdir_commit), not after each file. */
+static int in_partial(const char *path)
+{
+    for (int i = 0; i < npend; i++) {
+        size_t n = strlen(pend[i].path);
+        if (pend[i].tree && pend[i].owner == getpid() && n && !strncmp(path, pend[i].path, n) && path[n] == '/')
+            return 1;
+    }
+    return 0;
+}
+
+/* Renames temp (fsync'd first unless synced) over path, then fsyncs path's folder. */
+static fs_status commit(const char *temp, const char *path, int synced, fs_error *err)
 {
     struct stat st;
     fs_status s = FS_OK;
     if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
         s = fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, type_name(st.st_mode));
-    else if (fsync_path(temp) != 0)
+    else if (!synced && fsync_path(temp) != 0)
         s = write_error(err, path, errno);
     else if (rename(temp, path) != 0)
         s = fs_fail(err, FS_IO, "%s: cannot replace (%s)", path, strerror(errno));
@@ -249,10 +273,12 @@ fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err)
     forget(temp);
     char dir[FS_OUT_PATH];
     parent_of(path, dir, sizeof dir);
-    if (fsync_path(dir) != 0)
+    if (!in_partial(path) && fsync_path(dir) != 0)
         return write_error(err, dir, errno);
     return FS_OK;
 }
+
+fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err) { return commit(temp, path, 0, err); }
 
 fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_error *err)
 {
@@ -290,7 +316,7 @@ fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_
             return write_error(err, path, e);
         return fs_fail(err, FS_NO_MEMORY, "%s: its content could not be made (out of memory)", path);
     }
-    return fs_commit_temp(temp, path, err);
+    return commit(temp, path, 1, err);
 }
 
 fs_status fs_write_in(const char *dir, const char *name, fs_fill_fn fill, const void *user, fs_error *err)
@@ -368,6 +394,16 @@ fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *
     return FS_OK;
 }
 
+/* A temporary file of footsim's: NAME.tmp.<pid>, or video.tmp.<pid>.mp4 (ffmpeg's). */
+static int is_temp_name(const char *name)
+{
+    const char *t = strstr(name, ".tmp.");
+    if (!t || t == name)
+        return 0;
+    size_t digits = strspn(t + 5, "0123456789");
+    return digits > 0 && (!t[5 + digits] || !strcmp(t + 5 + digits, ".mp4"));
+}
+
 /* A name an earlier footsim wrote in a results folder: one of `known`, a frame, or a leftover
  * temporary file of its own. */
 static int known_name(const char *name, const char *const *known)
@@ -377,7 +413,7 @@ static int known_name(const char *name, const char *const *known)
         if (n && known[i][n - 1] == '*' ? !strncmp(name, known[i], n - 1) : !strcmp(name, known[i]))
             return 1;
     }
-    return strstr(name, ".tmp.") != NULL;
+    return is_temp_name(name);
 }
 
 /* Whether path/frames holds only frames (NNNNNN.png) and footsim's temporary files; fills odd with
@@ -392,7 +428,7 @@ static int only_frames(const char *path, char *odd, size_t size)
     int ok = 1;
     for (struct dirent *e; ok && (e = readdir(d));) {
         const char *n = e->d_name;
-        if (!strcmp(n, ".") || !strcmp(n, "..") || strstr(n, ".tmp."))
+        if (!strcmp(n, ".") || !strcmp(n, "..") || is_temp_name(n))
             continue;
         ok = strlen(n) == 10 && strspn(n, "0123456789") == 6 && !strcmp(n + 6, ".png");
         if (!ok)
@@ -443,8 +479,9 @@ static int has_marker(const char *path)
     return ok;
 }
 
-/* The folders and lock files a killed run left beside path: removed (the lock is ours). An
- * old folder whose swap was cut short is put back when path is missing. */
+/* The partial and old folders a killed run left beside path (path.partial.<pid>, path.old.<pid>,
+ * each marked or empty): removed, as the lock is ours. An old folder whose swap was cut short is
+ * put back when path is missing. */
 static void sweep_leftovers(const char *path)
 {
     char dir[FS_OUT_PATH], prefix[FS_OUT_PATH + 256];
@@ -471,6 +508,13 @@ static void sweep_leftovers(const char *path)
         if (!*pid || strspn(pid, "0123456789") != strlen(pid))
             continue;
         snprintf(prefix, sizeof prefix, "%s/%s", dir, e->d_name);
+        int count;
+        char odd[8];
+        struct stat ps;
+        /* only a folder footsim made: its marker, or nothing in it (a user's "data.old.2024" stays) */
+        if (lstat(prefix, &ps) != 0 || !S_ISDIR(ps.st_mode) ||
+            (!has_marker(prefix) && !(only_footsim_files(prefix, NULL, &count, odd, sizeof odd) >= 0 && count == 0)))
+            continue;
         if (kind[0] == 'o' && missing && rename(prefix, path) == 0) {
             missing = 0;
             continue;
@@ -480,9 +524,30 @@ static void sweep_leftovers(const char *path)
     closedir(d);
 }
 
-/* Takes the lock path.lock (kept open): refuses when another footsim holds it. */
+/* Takes the lock .<name>.footsim-lock beside the folder (kept open): refuses when another footsim
+ * holds it, or when a file there is not a footsim lock. */
+/* Whether path is absent or looks like footsim's lock file: a small regular file holding a pid. */
+static int lock_is_ours(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return errno == ENOENT;
+    if (!S_ISREG(st.st_mode) || st.st_size > 32)
+        return 0;
+    char text[40] = "";
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+    ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : -1;
+    if (fd >= 0)
+        close(fd);
+    text[n > 0 ? n : 0] = 0;
+    return n >= 0 && strspn(text, "0123456789\n") == strlen(text);
+}
+
 static fs_status take_lock(fs_outdir *o, const char *option, fs_error *err)
 {
+    if (!lock_is_ours(o->lock))
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: %s exists and is not footsim's lock file; move it away, or choose "
+                       "another %s", option, o->path, o->lock, option);
     for (int tries = 0; tries < 8; tries++) {
         int fd = open(o->lock, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
         if (fd < 0)
@@ -576,7 +641,12 @@ fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known
         return s;
     if ((s = check_target(o->path, dir, known, replace, option, 0, err)) != FS_OK)
         return s;
-    snprintf(o->lock, sizeof o->lock, "%s.lock", o->path);
+    {
+        char parent[FS_OUT_PATH];
+        parent_of(o->path, parent, sizeof parent);
+        const char *base = strrchr(o->path, '/');
+        snprintf(o->lock, sizeof o->lock, "%s/.%s.footsim-lock", parent, base ? base + 1 : o->path);
+    }
     if ((s = take_lock(o, option, err)) != FS_OK)
         return s;
     sweep_leftovers(o->path);
@@ -647,8 +717,11 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err)
     char parent[FS_OUT_PATH], old[FS_OUT_PATH + 64];
     parent_of(o->path, parent, sizeof parent);
     fs_status s = FS_OK;
-    if (fsync_path(o->partial) != 0)
-        s = write_error(err, o->path, errno);
+    /* its files were fsync'd as they were written; now its folders (frames/ and itself) */
+    sync_failed = 0;
+    nftw(o->partial, sync_folder, 16, FTW_DEPTH | FTW_PHYS);
+    if (sync_failed)
+        s = write_error(err, o->path, sync_failed);
     else if (swap_in(o->partial, o->path, old, sizeof old) != 0)
         s = fs_fail(err, FS_IO, "%s: cannot put the results in place (%s)", o->path, strerror(errno));
     else if (fsync_path(parent) != 0)

@@ -151,11 +151,14 @@ static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, in
     double a3 = asin(sin3);
     fs_vec3 B = fs_add(M, fs_scale(in_plane(f, a3), l3));
     fs_vec3 T = fs_add(B, fs_scale(in_plane(f, a4), l4));
-    if (B.z < rb)
+    if (B.z < rb) {
+        char where_rb[FS_PATH_MAX + 80];
         return fs_fail(err, FS_BAD_INPUT,
-                       "%s: chain %d's ball sphere would start %.2f mm into the ground; use a steeper toe_deg "
-                       "or a smaller ball_radius_m",
-                       fs_config_where(cfg, "pose", "toe_deg", where, sizeof where), i + 1, (rb - B.z) * 1e3);
+                       "%s: chain %d's ball sphere would start %.3g mm into the ground (ball_radius_m = %.3g m from "
+                       "%s); use a steeper toe_deg or a smaller ball_radius_m",
+                       fs_config_where(cfg, "pose", "toe_deg", where, sizeof where), i + 1, (rb - B.z) * 1e3,
+                       d->ball_radius_m, fs_config_where(cfg, "contact", "ball_radius_m", where_rb, sizeof where_rb));
+    }
     int meta = g->nbodies++, phal = g->nbodies++;
     char name[32];
     snprintf(name, sizeof name, "metatarsal%d", i + 1);

@@ -157,13 +157,14 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
         s = fs_config_bind(&cfg, fs_scenario_keys, fs_scenario_nkeys, &sc->def, err);
     if (s == FS_OK && sc->def.log_interval_s < sc->def.step_s) {
         /* an unset log interval follows the step; one the user set must be at least a step */
-        char where[FS_PATH_MAX + 80];
+        char where[FS_PATH_MAX + 80], where_step[FS_PATH_MAX + 80];
         if (!fs_config_has(&cfg, "run", "log_interval_s"))
             sc->def.log_interval_s = sc->def.step_s;
         else
-            s = fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g; make it at least one step",
+            s = fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g (from %s); make it at "
+                        "least one step",
                         fs_config_where(&cfg, "run", "log_interval_s", where, sizeof where), sc->def.log_interval_s,
-                        sc->def.step_s);
+                        sc->def.step_s, fs_config_where(&cfg, "run", "step_s", where_step, sizeof where_step));
     }
     if (s == FS_OK && sc->def.kind == FS_SCENARIO_WALK) {
         /* the walking machine's stance and swing must each last a step at least */

@@ -62,7 +62,7 @@ void fs_remove_tree(const char *dir);
 typedef struct fs_outdir {
     char path[FS_OUT_PATH];        /* the results folder, normalised */
     char partial[FS_OUT_PATH + 48];/* where everything is written: path.partial.<pid> */
-    char lock[FS_OUT_PATH + 16];   /* path.lock, held while writing */
+    char lock[2 * FS_OUT_PATH + 32]; /* .<name>.footsim-lock beside it, held while writing */
     int lock_fd;
     int open;
 } fs_outdir;
