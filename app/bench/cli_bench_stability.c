@@ -15,6 +15,7 @@
 
 #include "footsim/exec/fs_pool.h"
 #include "footsim/io/fs_output.h"
+#include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
 
 #include <math.h>
@@ -116,10 +117,9 @@ static void run_config(const config *c, const fs_design_def *base, double durati
         snprintf(o->error, sizeof o->error, "%.500s", err.message);
         return;
     }
-    long nsteps = (long)ceil(duration / c->step_s - 1e-9);
-    fs_status s = FS_OK;
-    for (long i = 0; i < nsteps && s == FS_OK; i++)
-        s = fs_sim_step(&sim, &err);
+    fs_drive_spec spec = {.max_steps = (long)ceil(duration / c->step_s - 1e-9)};
+    fs_drive_result r;
+    fs_status s = fs_drive(&sim, &spec, &r, &err);
     const fs_check *k = &sim.check;
     o->kind = s == FS_OK ? FS_CHECK_OK : k->failure;
     o->drift = k->first_drift;

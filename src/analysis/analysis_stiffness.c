@@ -1,8 +1,10 @@
 /* analysis_stiffness.c: each chain's joint stiffness, from the geometry and measured in ODE. */
 #include "footsim/analysis/fs_analysis.h"
 
+#include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
 
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -71,6 +73,40 @@ void fs_stiffness_analytic(const fs_foot_geom *g, fs_chain_stiffness out[FS_CHAI
 
 /* ---- measured in ODE ------------------------------------------------------------------------ */
 
+/* A probe: torque tau about joint j (0 midfoot, 1 MTP) of every chain. */
+typedef struct probe_load {
+    int j;
+    double tau;
+} probe_load;
+
+static const double SETTLE_S = 2.0, STILL_M_PER_S = 1e-12;
+
+static void apply_torques(void *user, fs_sim *sim)
+{
+    const probe_load *p = user;
+    const fs_foot_geom *g = sim->geom;
+    double tau = p->tau;
+    for (int i = 0; i < FS_CHAINS; i++) {
+        const fs_hinge_geom *h = &g->hinge[p->j == 0 ? g->chain[i].midfoot_hinge : g->chain[i].mtp_hinge];
+        dBodyAddTorque(sim->body[h->body2], tau * h->axis.x, tau * h->axis.y, tau * h->axis.z);
+        dBodyAddTorque(sim->body[h->body1], -tau * h->axis.x, -tau * h->axis.y, -tau * h->axis.z);
+    }
+}
+
+/* Still: after 0.1 s, every body slower than STILL_M_PER_S. */
+static int still(void *user, fs_sim *sim)
+{
+    (void)user;
+    return sim->time_s > 0.1 && fs_sim_max_speed(sim) < STILL_M_PER_S;
+}
+
+/* Out of time: SETTLE_S simulated. */
+static int out_of_time(void *user, fs_sim *sim)
+{
+    (void)user;
+    return sim->time_s >= SETTLE_S;
+}
+
 /* Torque tau about joint j of every chain, held until still; the joint angles that result. */
 static fs_status probe(const fs_scenario *sc, int j, double tau, double angles[FS_CHAINS][2], fs_error *err)
 {
@@ -78,17 +114,13 @@ static fs_status probe(const fs_scenario *sc, int j, double tau, double angles[F
     fs_sim_options opts = {.with_ground = 0, .hold_rear_foot = 1};
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     const fs_foot_geom *g = sim.geom;
-    const double settle_s = 2.0, still_m_per_s = 1e-12;
-    while (s == FS_OK && sim.time_s < settle_s) {
-        for (int i = 0; i < FS_CHAINS; i++) {
-            const fs_hinge_geom *h = &g->hinge[j == 0 ? g->chain[i].midfoot_hinge : g->chain[i].mtp_hinge];
-            dBodyAddTorque(sim.body[h->body2], tau * h->axis.x, tau * h->axis.y, tau * h->axis.z);
-            dBodyAddTorque(sim.body[h->body1], -tau * h->axis.x, -tau * h->axis.y, -tau * h->axis.z);
-        }
-        s = fs_sim_step(&sim, err);
-        if (sim.time_s > 0.1 && fs_sim_max_speed(&sim) < still_m_per_s)
-            break;
-    }
+    probe_load load = {j, tau};
+    const fs_step_hook hooks[] = {{"still", still, NULL}, {"out of time", out_of_time, NULL}};
+    fs_drive_spec spec = {.max_steps = LONG_MAX, .before_step = apply_torques, .before_user = &load, .hooks = hooks,
+                          .nhooks = 2};
+    fs_drive_result r;
+    if (s == FS_OK && sim.time_s < SETTLE_S)
+        s = fs_drive(&sim, &spec, &r, err);
     for (int i = 0; s == FS_OK && i < FS_CHAINS; i++) {
         angles[i][0] = fs_sim_hinge_angle(&sim, g->chain[i].midfoot_hinge);
         angles[i][1] = fs_sim_hinge_angle(&sim, g->chain[i].mtp_hinge);

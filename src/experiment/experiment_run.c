@@ -2,6 +2,7 @@
 #include "footsim/experiment/fs_run.h"
 
 #include "footsim/io/fs_output.h"
+#include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
 
 #include <cJSON.h>
@@ -68,6 +69,38 @@ static void measure_end(fs_run_result *res, const fs_sim *sim)
     res->energy_end_J = fs_sim_energy(sim, NULL, NULL, NULL);
 }
 
+/* The trajectory, a row every `every` steps (a hook that never stops the run). */
+typedef struct run_logger {
+    fs_run_result *res;
+    long every, step;
+} run_logger;
+
+static int log_after_step(void *user, fs_sim *sim)
+{
+    run_logger *l = user;
+    if (++l->step % l->every == 0)
+        log_row(l->res, sim);
+    return 0;
+}
+
+/* At rest once every body is slow for rest_hold_s, after the load has fully risen. */
+typedef struct rest_rule {
+    const fs_scenario_def *d;
+    double since_s; /* when every body became slow, or -1 */
+} rest_rule;
+
+static int at_rest(void *user, fs_sim *sim)
+{
+    rest_rule *r = user;
+    if (sim->time_s >= r->d->ramp_s && fs_sim_max_speed(sim) < r->d->rest_speed_m_per_s) {
+        if (r->since_s < 0)
+            r->since_s = sim->time_s;
+        return sim->time_s - r->since_s >= r->d->rest_hold_s;
+    }
+    r->since_s = -1;
+    return 0;
+}
+
 fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
@@ -96,38 +129,19 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
     fs_sim_ankle(&sim, res->ankle_start_m);
     res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
     log_row(res, &sim);
-    long watch = fs_observer_every(obs, d->step_s);
-    s = fs_observer_call(obs, &sim, err);
-    double rest_since = -1;
-    long step;
-    for (step = 1; s == FS_OK && step <= nsteps; step++) {
-        s = fs_sim_step(&sim, err);
-        if (s != FS_OK)
-            break;
-        if (step % every == 0)
-            log_row(res, &sim);
-        if (obs && step % watch == 0 && (s = fs_observer_call(obs, &sim, err)) != FS_OK)
-            break;
-        /* at rest once every body is slow for rest_hold_s, after the load has fully risen */
-        if (sim.time_s >= d->ramp_s && fs_sim_max_speed(&sim) < d->rest_speed_m_per_s) {
-            if (rest_since < 0)
-                rest_since = sim.time_s;
-            if (sim.time_s - rest_since >= d->rest_hold_s) {
-                res->at_rest = 1;
-                break;
-            }
-        } else {
-            rest_since = -1;
-        }
-    }
-    res->steps = (int)(step > nsteps ? nsteps : step);
+    run_logger logger = {res, every, 0};
+    rest_rule rest = {d, -1};
+    const fs_step_hook hooks[] = {{"logged", log_after_step, &logger}, {"at rest", at_rest, &rest}};
+    fs_drive_spec spec = {.max_steps = nsteps, .hooks = hooks, .nhooks = 2, .obs = obs};
+    fs_drive_result r;
+    s = fs_drive(&sim, &spec, &r, err);
+    res->steps = (int)r.steps;
+    res->at_rest = r.stopped_by == 1;
     if (s == FS_OK) {
         if (res->nrows == 0 || res->rows[(size_t)(res->nrows - 1) * res->ncols] != sim.time_s)
             log_row(res, &sim);
         measure_end(res, &sim);
         res->settle_time_s = settle_time(res, d->settle_band_m);
-        if (obs && res->steps % watch != 0)
-            s = fs_observer_call(obs, &sim, err);
     }
     fs_sim_destroy(&sim);
     return s;

@@ -1,6 +1,8 @@
 /* experiment_track.c: a run's path sampled at every step, and the distance between two paths. */
 #include "footsim/experiment/fs_track.h"
 
+#include "footsim/sim/fs_drive.h"
+
 #include "footsim/sim/fs_check.h"
 
 #include <math.h>
@@ -36,6 +38,19 @@ static void sample(const fs_sim *sim, fs_track *t, int i)
         t->angle[i][k] = fs_sim_hinge_angle(sim, k);
 }
 
+/* A path sampled after every step (a hook that never stops the run). */
+typedef struct sampler {
+    fs_track *t;
+    int i;
+} sampler;
+
+static int sample_step(void *user, fs_sim *sim)
+{
+    sampler *p = user;
+    sample(sim, p->t, ++p->i);
+    return 0;
+}
+
 fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double duration_s, fs_track *out,
                        fs_error *err)
 {
@@ -49,12 +64,12 @@ fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double
     s = fs_sim_build(&sim, sc, opts, err);
     if (s == FS_OK) {
         sample(&sim, out, 0);
+        sampler p = {out, 0};
+        const fs_step_hook hooks[] = {{"sampled", sample_step, &p}};
+        fs_drive_spec spec = {.max_steps = steps, .hooks = hooks, .nhooks = 1};
+        fs_drive_result r;
         double start = fs_clock_s();
-        for (int i = 1; i <= steps && s == FS_OK; i++) {
-            s = fs_sim_step(&sim, err);
-            if (s == FS_OK)
-                sample(&sim, out, i);
-        }
+        s = fs_drive(&sim, &spec, &r, err);
         out->wall_s = fs_clock_s() - start;
         out->check_class = fs_check_class_of(sim.check.first_drift);
     }

@@ -1,10 +1,12 @@
 /* experiment_trial.c: landing trials: draw a pose, drop the robot on its foot, decide the outcome. */
 #include "footsim/experiment/fs_trial.h"
 
+#include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
 
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -90,6 +92,42 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
     }
 }
 
+/* A trial's state while it runs, for its hooks. */
+typedef struct trial_run {
+    const fs_scenario_def *d;
+    watch w;
+    fs_trial_result *out;
+} trial_run;
+
+static int watch_step(void *user, fs_sim *sim)
+{
+    trial_run *t = user;
+    observe_step(sim, &t->w, t->out, t->d->step_s);
+    return 0;
+}
+
+/* Fell: the robot leans past fall_tilt_deg. */
+static int fell_rule(void *user, fs_sim *sim)
+{
+    const trial_run *t = user;
+    return fs_sim_robot_tilt(sim) > t->d->fall_tilt_deg * DEG;
+}
+
+/* At rest: every body slow for rest_hold_s, after touchdown. */
+static int rest_rule(void *user, fs_sim *sim)
+{
+    trial_run *t = user;
+    if (t->w.touched && fs_sim_max_speed(sim) < t->d->rest_speed_m_per_s) {
+        if (t->w.rest_since < 0)
+            t->w.rest_since = sim->time_s;
+        return sim->time_s - t->w.rest_since >= t->d->rest_hold_s;
+    }
+    t->w.rest_since = -1;
+    return 0;
+}
+
+enum { HOOK_WATCH, HOOK_FELL, HOOK_REST };
+
 /* Steps until fallen, or at rest after touchdown, or out of time; classifies. */
 static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
 {
@@ -99,43 +137,31 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
-    watch w = {.rest_since = -1};
-    long nsteps = (long)ceil(d->duration_s / d->step_s - 1e-9);
-    long every = fs_observer_every(obs, d->step_s);
-    int at_rest = 0, fell = 0;
-    s = fs_observer_call(obs, &sim, err);
-    for (long i = 0; i < nsteps && !at_rest && !fell && s == FS_OK; i++) {
-        fs_error step_err;
-        if (fs_sim_step(&sim, &step_err) != FS_OK) {
-            out->outcome = FS_FAILED_NUMERICS;
-            snprintf(out->failure, sizeof out->failure, "seed %d: %.480s", out->draw.seed, step_err.message);
-            break;
-        }
-        out->steps = i + 1;
-        if (out->steps % every == 0 && (s = fs_observer_call(obs, &sim, err)) != FS_OK)
-            break;
-        observe_step(&sim, &w, out, d->step_s);
-        fell = fs_sim_robot_tilt(&sim) > d->fall_tilt_deg * DEG;
-        /* at rest: every body slow for rest_hold_s, after touchdown */
-        if (w.touched && fs_sim_max_speed(&sim) < d->rest_speed_m_per_s) {
-            if (w.rest_since < 0)
-                w.rest_since = sim.time_s;
-            at_rest = sim.time_s - w.rest_since >= d->rest_hold_s;
-        } else {
-            w.rest_since = -1;
-        }
+    trial_run t = {d, {.rest_since = -1}, out};
+    const fs_step_hook hooks[] = {[HOOK_WATCH] = {"watched", watch_step, &t}, [HOOK_FELL] = {"fell", fell_rule, &t},
+                                  [HOOK_REST] = {"at rest", rest_rule, &t}};
+    fs_drive_spec spec = {.max_steps = (long)ceil(d->duration_s / d->step_s - 1e-9), .hooks = hooks, .nhooks = 3,
+                          .obs = obs};
+    fs_drive_result r;
+    fs_error step_err;
+    s = fs_drive(&sim, &spec, &r, &step_err);
+    out->steps = r.steps - r.step_failed;
+    if (r.step_failed) { /* a result of the trial, not a failure of the call */
+        out->outcome = FS_FAILED_NUMERICS;
+        snprintf(out->failure, sizeof out->failure, "seed %d: %.480s", out->draw.seed, step_err.message);
+        s = FS_OK;
     }
-    if (s == FS_OK && out->steps % every != 0)
-        s = fs_observer_call(obs, &sim, err); /* the end, if not just seen */
     if (s != FS_OK) {
+        *err = step_err;
         fs_sim_destroy(&sim);
         return s;
     }
-    finish(&sim, &w, out);
+    finish(&sim, &t.w, out);
     if (out->outcome != FS_FAILED_NUMERICS) {
         int upright = out->final_tilt_deg < d->landed_tilt_deg;
         int on_ground = sim.contacts_now > 0 && fs_sim_penetration(&sim) <= LANDED_MAX_PENETRATION_M;
-        out->outcome = !fell && at_rest && upright && on_ground ? FS_LANDED : FS_FELL;
+        int at_rest = r.stopped_by == HOOK_REST;
+        out->outcome = r.stopped_by != HOOK_FELL && at_rest && upright && on_ground ? FS_LANDED : FS_FELL;
     }
     fs_sim_destroy(&sim);
     return FS_OK;

@@ -1,6 +1,7 @@
 /* experiment_walk.c: the walking machine: a carriage driven through stance and swing. */
 #include "footsim/experiment/fs_walk.h"
 
+#include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
 
 #include <math.h>
@@ -68,6 +69,70 @@ static double ankle_tilt(const fs_sim *sim)
     return acos(fmax(-1.0, fmin(1.0, R[10])));
 }
 
+/* The walking machine while it runs: the carriage it drives and what it measures. */
+typedef struct walk_run {
+    const fs_scenario_def *d;
+    const fs_terrain_def *td;
+    fs_walk_result *out;
+    dBodyID carriage;
+    const dReal *body_pos;      /* the robot body's position, as ODE keeps it */
+    double start[3];            /* the carriage's start */
+    fs_spring *suspension;
+    carriage_drive *drive;
+    int step;                   /* the step of the gait the coming (then last) sim step belongs to */
+    double phase;               /* and where in it, 0..1 */
+    double rough_sum, flat_sum, tilt_max;
+    int flat_steps, last_step, judged;
+} walk_run;
+
+/* Before each step: the actuator sets the carriage's velocity to take it to the path. */
+static void drive_carriage(void *user, fs_sim *sim)
+{
+    walk_run *w = user;
+    const fs_scenario_def *d = w->d;
+    double x, z, t = sim->time_s + d->step_s;
+    carriage_path(d, t, &x, &z, &w->step, &w->phase);
+    const dReal *c = dBodyGetPosition(w->carriage);
+    dBodySetLinearVel(w->carriage, (w->start[0] + x - c[0]) / d->step_s, 0, (w->start[2] + z - c[2]) / d->step_s);
+    fs_spring_prepare(w->suspension, d->step_s);
+    memcpy(w->drive->before, w->body_pos, sizeof w->drive->before);
+    if (d->springs == FS_SPRING_EXPLICIT)
+        suspension_force(w->suspension, w->drive->susp);
+    /* the step's checks take the carriage's work into their energy balance (carriage_work) */
+}
+
+/* After each step: the ground force, the stance tilt, and each step judged at mid-stance. */
+static int judge_step(void *user, fs_sim *sim)
+{
+    walk_run *w = user;
+    const fs_scenario_def *d = w->d;
+    fs_walk_result *out = w->out;
+    double f[3];
+    fs_sim_ground_force(sim, f);
+    out->peak_force_N = fmax(out->peak_force_N, f[2]);
+    if (w->step != w->last_step)
+        w->judged = 0, w->last_step = w->step;
+    if (w->phase <= d->stance_fraction)
+        w->tilt_max = fmax(w->tilt_max, ankle_tilt(sim));
+    if (!w->judged && w->phase >= 0.5 * d->stance_fraction) {
+        w->judged = 1;
+        double a[3];
+        fs_sim_ankle(sim, a);
+        int ok = sim->contacts_now > 0 && ankle_tilt(sim) < d->walk_fall_tilt_deg * DEG;
+        ok ? out->steps_completed++ : out->falls++;
+        const fs_terrain_def *td = w->td;
+        int rough = td->kind == FS_TERRAIN_ROUGH && a[0] >= td->patch_x_min_m && a[0] <= td->patch_x_max_m;
+        if (rough) {
+            w->rough_sum += sim->contacts_now;
+            out->rough_steps++;
+        } else {
+            w->flat_sum += sim->contacts_now;
+            w->flat_steps++;
+        }
+    }
+    return 0;
+}
+
 fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk_result *out, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
@@ -80,7 +145,6 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
-    long every = fs_observer_every(obs, d->step_s);
     /* the carriage: kinematic, above the body, joined by a vertical slider and the suspension */
     const dReal *p = dBodyGetPosition(sim.robot);
     double start[3] = {p[0], p[1], p[2] + 0.1};
@@ -99,55 +163,17 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
     carriage_drive drive = {sim.robot, &feedback, &suspension, d->springs == FS_SPRING_EXPLICIT, d->step_s,
                             {0, 0, 0}, {0, 0, 0}};
     fs_check_set_work(&sim, carriage_work, &drive);
-    const fs_terrain_def *td = &sc->terrain.def;
-    double rough_sum = 0, flat_sum = 0, tilt_max = 0;
-    int flat_steps = 0, last_step = -1, judged = 0;
-    long nsteps = (long)ceil(d->walk_steps * d->walk_period_s / d->step_s), i;
-    s = fs_observer_call(obs, &sim, err);
-    for (i = 0; i < nsteps && s == FS_OK; i++) {
-        double x, z, phase, t = sim.time_s + d->step_s;
-        int step;
-        carriage_path(d, t, &x, &z, &step, &phase);
-        /* the actuator: the carriage's velocity over this step takes it to the path */
-        const dReal *c = dBodyGetPosition(carriage);
-        dBodySetLinearVel(carriage, (start[0] + x - c[0]) / d->step_s, 0, (start[2] + z - c[2]) / d->step_s);
-        fs_spring_prepare(&suspension, d->step_s);
-        memcpy(drive.before, p, sizeof drive.before);
-        if (d->springs == FS_SPRING_EXPLICIT)
-            suspension_force(&suspension, drive.susp);
-        /* the step's checks take the carriage's work into their energy balance (carriage_work) */
-        s = fs_sim_step(&sim, err);
-        if (s != FS_OK || ((i + 1) % every == 0 && (s = fs_observer_call(obs, &sim, err)) != FS_OK))
-            break;
-        double f[3];
-        fs_sim_ground_force(&sim, f);
-        out->peak_force_N = fmax(out->peak_force_N, f[2]);
-        if (step != last_step)
-            judged = 0, last_step = step;
-        if (phase <= d->stance_fraction)
-            tilt_max = fmax(tilt_max, ankle_tilt(&sim));
-        /* judge each step at mid-stance */
-        if (!judged && phase >= 0.5 * d->stance_fraction) {
-            judged = 1;
-            double a[3];
-            fs_sim_ankle(&sim, a);
-            int ok = sim.contacts_now > 0 && ankle_tilt(&sim) < d->walk_fall_tilt_deg * DEG;
-            ok ? out->steps_completed++ : out->falls++;
-            int rough = td->kind == FS_TERRAIN_ROUGH && a[0] >= td->patch_x_min_m && a[0] <= td->patch_x_max_m;
-            if (rough) {
-                rough_sum += sim.contacts_now;
-                out->rough_steps++;
-            } else {
-                flat_sum += sim.contacts_now;
-                flat_steps++;
-            }
-        }
-    }
-    if (s == FS_OK && i % every != 0)
-        s = fs_observer_call(obs, &sim, err); /* the end, if not just seen */
-    out->rough_contacts_mean = out->rough_steps ? rough_sum / out->rough_steps : 0;
-    out->flat_contacts_mean = flat_steps ? flat_sum / flat_steps : 0;
-    out->peak_tilt_deg = tilt_max / DEG;
+    walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = carriage, .body_pos = p,
+                  .start = {start[0], start[1], start[2]}, .suspension = &suspension, .drive = &drive,
+                  .last_step = -1};
+    const fs_step_hook hooks[] = {{"judged", judge_step, &w}};
+    fs_drive_spec spec = {.max_steps = (long)ceil(d->walk_steps * d->walk_period_s / d->step_s),
+                          .before_step = drive_carriage, .before_user = &w, .hooks = hooks, .nhooks = 1, .obs = obs};
+    fs_drive_result r;
+    s = fs_drive(&sim, &spec, &r, err);
+    out->rough_contacts_mean = out->rough_steps ? w.rough_sum / out->rough_steps : 0;
+    out->flat_contacts_mean = w.flat_steps ? w.flat_sum / w.flat_steps : 0;
+    out->peak_tilt_deg = w.tilt_max / DEG;
     out->end_time_s = sim.time_s;
     fs_sim_destroy(&sim);
     return s;

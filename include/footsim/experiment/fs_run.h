@@ -7,7 +7,7 @@
 #ifndef FS_RUN_H
 #define FS_RUN_H
 
-#include "footsim/experiment/fs_observer.h"
+#include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
 enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES };

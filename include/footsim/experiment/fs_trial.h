@@ -14,7 +14,7 @@
 #ifndef FS_TRIAL_H
 #define FS_TRIAL_H
 
-#include "footsim/experiment/fs_observer.h"
+#include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
 typedef enum fs_outcome { FS_LANDED = 0, FS_FELL = 1, FS_FAILED_NUMERICS = 2 } fs_outcome;

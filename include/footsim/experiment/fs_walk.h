@@ -11,7 +11,7 @@
 #ifndef FS_WALK_H
 #define FS_WALK_H
 
-#include "footsim/experiment/fs_observer.h"
+#include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
 typedef struct fs_walk_result {

@@ -1,4 +1,5 @@
-/* fs_observer.h: what watches an experiment (run, landing trial, walking machine) while it steps.
+/* fs_observer.h: what watches a simulation while fs_drive (fs_drive.h) steps it: a run, a landing
+ * trial, the walking machine.
  *
  * fn, when set, is called with the state at t = 0, every interval_s of simulated time (rounded to
  * whole steps, at least one) and at the end; a status other than FS_OK stops the experiment with
@@ -19,11 +20,5 @@ typedef struct fs_run_observer {
 
 /* The options an experiment builds its sim with under obs (NULL: none): ground on, obs's profile. */
 fs_sim_options fs_observer_sim_options(const fs_run_observer *obs);
-
-/* Steps between two calls of obs->fn at step_s (at least 1). */
-long fs_observer_every(const fs_run_observer *obs, double step_s);
-
-/* Calls obs->fn if there is one; FS_OK otherwise. */
-fs_status fs_observer_call(const fs_run_observer *obs, const fs_sim *sim, fs_error *err);
 
 #endif
