@@ -1,0 +1,137 @@
+/* campaign_compare.c: a campaign's summary compared with a baseline, cell by cell, within the
+ * baseline's tolerances. */
+#include "campaign_internal.h"
+
+#include "footsim/io/fs_input.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- comparison --------------------------------------------------------------------------- */
+
+static cJSON *read_summary(const char *path, fs_error *err)
+{
+    char *text;
+    size_t len;
+    /* a regular file of bounded size: a FIFO or /dev/zero is refused, not waited on or read forever */
+    if (fs_read_regular(path, FS_SUMMARY_MAX_BYTES, "a summary.json written by footsim campaign", &text, &len, err) !=
+        FS_OK)
+        return NULL;
+    cJSON *root = text ? cJSON_Parse(text) : NULL;
+    free(text);
+    if (!root || !cJSON_IsArray(cJSON_GetObjectItemCaseSensitive(root, "rows"))) {
+        cJSON_Delete(root);
+        fs_fail(err, FS_BAD_INPUT, "%s: not a campaign summary (JSON with \"rows\"); give a summary.json written by "
+                                   "footsim campaign", path);
+        return NULL;
+    }
+    return root;
+}
+
+static const char *text_of(const cJSON *row, const char *key)
+{
+    const char *s = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(row, key));
+    return s ? s : "?";
+}
+
+/* A number of a row: NAN when it is null or missing. */
+static double number_of(const cJSON *row, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(row, key);
+    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
+}
+
+static const cJSON *find_row(const cJSON *rows, const char *foot, const char *terrain)
+{
+    const cJSON *r;
+    cJSON_ArrayForEach(r, rows)
+        if (!strcmp(text_of(r, "foot"), foot) && !strcmp(text_of(r, "terrain"), terrain))
+            return r;
+    return NULL;
+}
+
+/* The tolerance of metric m: the baseline's, else footsim's default. */
+static void tolerance_of(const cJSON *baseline, int m, double tol[2])
+{
+    sscanf(fs_campaign_metrics[m].tolerance, "%lf, %lf", &tol[0], &tol[1]);
+    const cJSON *t = cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(baseline, "tolerances"),
+                                                      fs_campaign_metrics[m].name);
+    if (cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(t, "relative")))
+        tol[0] = number_of(t, "relative");
+    if (cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(t, "absolute")))
+        tol[1] = number_of(t, "absolute");
+}
+
+static int same_number(double a, double b) { return (isnan(a) && isnan(b)) || a == b; }
+
+/* Prints one changed quantity; returns 1 when it is outside what is allowed. */
+static int report_change(FILE *out, const cJSON *row, const char *what, double base, double now, double lo, double hi)
+{
+    int bad = !(now >= lo && now <= hi) && !(isnan(base) && isnan(now));
+    fprintf(out, "| %s | %s | %s | %.6g | %.6g | [%.6g, %.6g] | %s |\n", text_of(row, "foot"), text_of(row, "terrain"),
+            what, base, now, lo, hi, bad ? "**outside**" : "within");
+    return bad;
+}
+
+/* Compares one row of each; returns how many quantities left their allowance; counts changes. */
+static int compare_row(FILE *out, const cJSON *baseline, const cJSON *b, const cJSON *r, int *changed)
+{
+    int bad = 0;
+    double rate = number_of(r, "success_rate"), base_rate = number_of(b, "success_rate");
+    if (!same_number(rate, base_rate) || number_of(r, "trials") != number_of(b, "trials")) {
+        (*changed)++;
+        bad += report_change(out, r, "success_rate", base_rate, rate, number_of(b, "ci_low"), number_of(b, "ci_high"));
+    }
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+        char key[FS_NAME_MAX + 8];
+        snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);
+        double base = number_of(b, key), now = number_of(r, key), tol[2];
+        if (same_number(base, now))
+            continue;
+        (*changed)++;
+        tolerance_of(baseline, m, tol);
+        double allow = tol[0] * fabs(base) + tol[1];
+        bad += report_change(out, r, key, base, now, base - allow, base + allow);
+    }
+    return bad;
+}
+
+fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, FILE *out, fs_error *err)
+{
+    cJSON *result = read_summary(result_path, err);
+    cJSON *baseline = result ? read_summary(baseline_path, err) : NULL;
+    if (!baseline) {
+        cJSON_Delete(result);
+        return FS_BAD_INPUT;
+    }
+    const cJSON *rrows = cJSON_GetObjectItemCaseSensitive(result, "rows");
+    const cJSON *brows = cJSON_GetObjectItemCaseSensitive(baseline, "rows");
+    fprintf(out, "%s against the baseline %s\n\n| foot | terrain | quantity | baseline | result | allowed | verdict |\n"
+                 "|---|---|---|--:|--:|---|---|\n", result_path, baseline_path);
+    int bad = 0, changed = 0;
+    const cJSON *b, *r;
+    cJSON_ArrayForEach(b, brows) {
+        r = find_row(rrows, text_of(b, "foot"), text_of(b, "terrain"));
+        if (!r) {
+            fprintf(out, "| %s | %s | (row) | present | **missing** | | **outside** |\n", text_of(b, "foot"),
+                    text_of(b, "terrain"));
+            bad++, changed++;
+        } else {
+            bad += compare_row(out, baseline, b, r, &changed);
+        }
+    }
+    cJSON_ArrayForEach(r, rrows)
+        if (!find_row(brows, text_of(r, "foot"), text_of(r, "terrain"))) {
+            fprintf(out, "| %s | %s | (row) | **missing** | present | | **outside** |\n", text_of(r, "foot"),
+                    text_of(r, "terrain"));
+            bad++, changed++;
+        }
+    fprintf(out, "\n%d rows in the baseline; %d quantities changed, %d outside what the baseline allows: %s\n",
+            cJSON_GetArraySize(brows), changed, bad, bad ? "CHANGED" : changed ? "within tolerance" : "identical");
+    cJSON_Delete(result);
+    cJSON_Delete(baseline);
+    return bad ? FS_EXPECTATION_FAILED : FS_OK;
+}

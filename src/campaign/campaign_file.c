@@ -1,0 +1,487 @@
+/* campaign_file.c: a campaign file bound with fs_config into an fs_campaign: its feet, terrains,
+ * sweep, expectations and tolerances checked, and the trial scenario of every (foot, terrain)
+ * loaded once; which trial an index is. */
+#include "campaign_internal.h"
+
+#include "footsim/base/fs_path.h"
+#include "footsim/model/fs_scenario.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- the campaign file ---------------------------------------------------------------------- */
+
+enum { MAX_KEYS = 8 + FS_CAMPAIGN_NMETRICS + 2 * FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_FEET * 1 +
+                  4 * FS_CAMPAIGN_MAX_EXPECT };
+
+/* The schema of one file, built from the sections it has, and the text its keys point to. */
+typedef struct binder {
+    fs_key keys[MAX_KEYS];
+    int nkeys;
+    char sections[FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_EXPECT][FS_NAME_MAX];
+    int nsections;
+    char foot_choices[FS_CAMPAIGN_MAX_FEET * FS_NAME_MAX];
+    char terrain_choices[FS_CAMPAIGN_MAX_TERRAINS * FS_NAME_MAX];
+    char sweep_choices[4096];
+    char sweep_values[FS_VALUE_MAX];  /* as given, or "" */
+    char sweep_where[FS_PATH_MAX + 80];
+} binder;
+
+#define C(member) offsetof(fs_campaign, member)
+
+static const fs_key campaign_keys[] = {
+    {"campaign", "trial", FS_KEY_PATH, C(trial_path), 0, 0, 0, 0, NULL, "", "",
+     "the trial scenario (with [robot] and [landing]), relative to the campaign file"},
+    {"campaign", "seeds", FS_KEY_INTEGER, C(seeds), 1, FS_CAMPAIGN_MAX_SEEDS, 0, 0, NULL, "", "50",
+     "trials per foot and terrain"},
+    {"campaign", "first_seed", FS_KEY_INTEGER, C(first_seed), 0, 1e9, 0, 0, NULL, "", "1",
+     "seeds are first_seed, first_seed + 1, ..."},
+};
+enum { NCAMPAIGN_KEYS = sizeof campaign_keys / sizeof campaign_keys[0] };
+
+static int is_campaign_section(const char *section)
+{
+    return !strcmp(section, "campaign") || !strcmp(section, "tolerance") || !strncmp(section, "foot.", 5) ||
+           !strncmp(section, "terrain.", 8) || !strncmp(section, "expect.", 7);
+}
+
+static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_type type, size_t offset)
+{
+    fs_key *k = &b->keys[b->nkeys++];
+    *k = (fs_key){section, name, type, offset, 0, 0, 0, 0, NULL, "", "", ""};
+    return k;
+}
+
+static void append_choice(char *list, size_t size, const char *word)
+{
+    size_t n = strlen(list);
+    snprintf(list + n, size - n, "%s%s", n ? "|" : "", word);
+}
+
+/* A section's NAME after its prefix: letters, digits, '_' and '-', so it is safe in every file. */
+static fs_status check_name(const fs_config *cfg, const fs_entry *e, const char *name, fs_error *err)
+{
+    size_t n = strlen(name);
+    int ok = n > 0 && strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
+    if (ok)
+        return FS_OK;
+    char where[FS_PATH_MAX + 80];
+    return fs_fail(err, FS_BAD_INPUT, "%s: section [%s] needs a NAME of letters, digits, '_' or '-' after its '.'",
+                   fs_config_where(cfg, e->section, e->name, where, sizeof where), e->section);
+}
+
+/* Takes [campaign] sweep_values out of cfg (fs_config has no list of arbitrary length). */
+static void take_sweep_values(fs_config *cfg, binder *b)
+{
+    for (int i = 0; i < cfg->count; i++) {
+        fs_entry *e = &cfg->entries[i];
+        if (strcmp(e->section, "campaign") || strcmp(e->name, "sweep_values"))
+            continue;
+        snprintf(b->sweep_values, sizeof b->sweep_values, "%s", e->value);
+        fs_config_where(cfg, "campaign", "sweep_values", b->sweep_where, sizeof b->sweep_where);
+        memmove(e, e + 1, (size_t)(cfg->count - i - 1) * sizeof *e);
+        cfg->count--;
+        return;
+    }
+}
+
+/* Splits the sweep values; each must be a finite number. Returns the count, or -1 (err set). */
+static int parse_sweep(const binder *b, char values[][FS_NAME_MAX], fs_error *err)
+{
+    char buf[FS_VALUE_MAX];
+    snprintf(buf, sizeof buf, "%s", b->sweep_values);
+    int n = 0;
+    char *save = NULL;
+    for (char *tok = strtok_r(buf, ", \t", &save); tok; tok = strtok_r(NULL, ", \t", &save)) {
+        double v;
+        fs_number num = fs_parse_number(tok, &v);
+        if (num != FS_NUMBER_OK || strlen(tok) >= FS_NAME_MAX / 2) {
+            fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: '%s' %s; allowed: comma-separated numbers", b->sweep_where,
+                    tok, num != FS_NUMBER_OK ? fs_number_problem(num) : "is too long");
+            return -1;
+        }
+        if (n == FS_CAMPAIGN_MAX_TERRAINS) {
+            fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: more than %d values", b->sweep_where,
+                    FS_CAMPAIGN_MAX_TERRAINS);
+            return -1;
+        }
+        snprintf(values[n++], FS_NAME_MAX, "%s", tok);
+    }
+    if (n == 0)
+        fs_fail(err, FS_BAD_INPUT, "%s: sweep_values is empty; give the values of the swept key, e.g. 0, 0.001, 0.002",
+                b->sweep_where);
+    return n ? n : -1;
+}
+
+/* The [campaign] and [tolerance] keys. */
+static void add_static_keys(binder *b)
+{
+    for (int i = 0; i < NCAMPAIGN_KEYS; i++)
+        b->keys[b->nkeys++] = campaign_keys[i];
+    /* the terrain keys a sweep may vary: every number of a terrain file */
+    snprintf(b->sweep_choices, sizeof b->sweep_choices, "none");
+    for (int i = 0; i < fs_terrain_nkeys; i++)
+        if (fs_terrain_keys[i].type == FS_KEY_NUMBER || fs_terrain_keys[i].type == FS_KEY_INTEGER) {
+            char word[2 * FS_NAME_MAX + 2];
+            snprintf(word, sizeof word, "%s.%s", fs_terrain_keys[i].section, fs_terrain_keys[i].name);
+            append_choice(b->sweep_choices, sizeof b->sweep_choices, word);
+        }
+    fs_key *k = add_key(b, "campaign", "sweep", FS_KEY_CHOICE, C(sweep_choice));
+    k->choices = b->sweep_choices;
+    k->fallback = "none";
+    k->help = "a terrain key to sweep over sweep_values (the campaign then has one terrain)";
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+        k = add_key(b, "tolerance", fs_campaign_metrics[m].name, FS_KEY_LIST, C(tolerance[m]));
+        k->max = 1e12;
+        k->count = 2;
+        k->fallback = fs_campaign_metrics[m].tolerance;
+        k->help = "relative, absolute: how far the median may move from the baseline's";
+    }
+}
+
+/* Finds or adds section in list; returns 0 when the list is full. */
+static int note_section(char list[][FS_NAME_MAX], int *count, int max, const char *section)
+{
+    for (int i = 0; i < *count; i++)
+        if (!strcmp(list[i], section))
+            return 1;
+    if (*count == max)
+        return 0;
+    memcpy(list[(*count)++], section, FS_NAME_MAX);
+    return 1;
+}
+
+/* Collects the [foot.NAME], [terrain.NAME] and [expect.NAME] sections of cfg, in file order. */
+static fs_status collect_sections(const fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
+{
+    int *count[3] = {&c->nfeet, &c->nterrains, &c->nexpect};
+    const int max[3] = {FS_CAMPAIGN_MAX_FEET, FS_CAMPAIGN_MAX_TERRAINS, FS_CAMPAIGN_MAX_EXPECT};
+    for (int i = 0; i < cfg->count; i++) {
+        const fs_entry *e = &cfg->entries[i];
+        const char *dot = strchr(e->section, '.');
+        if (!dot || !is_campaign_section(e->section))
+            continue;
+        fs_status s = check_name(cfg, e, dot + 1, err);
+        if (s != FS_OK)
+            return s;
+        int group = e->section[0] == 'f' ? 0 : e->section[0] == 't' ? 1 : 2;
+        int first = group == 0 ? 0 : group == 1 ? FS_CAMPAIGN_MAX_FEET : FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS;
+        if (!note_section(b->sections + first, count[group], max[group], e->section))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: too many sections of this group (at most %d feet, %d terrains, "
+                           "%d expectations)", cfg->path, e->section, max[0], max[1], max[2]);
+    }
+    return FS_OK;
+}
+
+/* Adds the keys of every [foot.NAME], [terrain.NAME] and [expect.NAME] section of cfg. */
+static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
+{
+    fs_status s = collect_sections(cfg, b, c, err);
+    if (s != FS_OK)
+        return s;
+    for (int i = 0; i < c->nfeet; i++) {
+        const char *sec = b->sections[i];
+        snprintf(c->foot[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
+        append_choice(b->foot_choices, sizeof b->foot_choices, c->foot[i].name);
+        add_key(b, sec, "file", FS_KEY_PATH, C(foot[i].path))->help = "the foot's design file";
+    }
+    for (int i = 0; i < c->nterrains; i++) {
+        const char *sec = b->sections[FS_CAMPAIGN_MAX_FEET + i];
+        snprintf(c->terrain[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
+        add_key(b, sec, "file", FS_KEY_PATH, C(terrain[i].path))->help = "the terrain file";
+    }
+    for (int i = 0; i < c->nexpect; i++) {
+        const char *sec = b->sections[FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + i];
+        snprintf(c->expect[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
+        add_key(b, sec, "foot", FS_KEY_CHOICE, C(expect[i].foot))->choices = b->foot_choices;
+        add_key(b, sec, "terrain", FS_KEY_CHOICE, C(expect[i].terrain))->choices = b->terrain_choices;
+        fs_key *k = add_key(b, sec, "min_success", FS_KEY_NUMBER, C(expect[i].min_success));
+        k->max = 1;
+        k->fallback = "0";
+        k = add_key(b, sec, "max_success", FS_KEY_NUMBER, C(expect[i].max_success));
+        k->max = 1;
+        k->fallback = "1";
+    }
+    return FS_OK;
+}
+
+/* The terrain names an expectation may give: each terrain, or for a sweep each "NAME@value". */
+static fs_status terrain_choices(binder *b, const fs_campaign *c, fs_error *err)
+{
+    if (!b->sweep_values[0]) {
+        for (int i = 0; i < c->nterrains; i++)
+            append_choice(b->terrain_choices, sizeof b->terrain_choices, c->terrain[i].name);
+        return FS_OK;
+    }
+    char values[FS_CAMPAIGN_MAX_TERRAINS][FS_NAME_MAX];
+    int n = parse_sweep(b, values, err);
+    if (n < 0)
+        return FS_BAD_INPUT;
+    for (int i = 0; i < n; i++) {
+        char label[2 * FS_NAME_MAX];
+        snprintf(label, sizeof label, "%.30s@%.31s", c->nterrains ? c->terrain[0].name : "terrain", values[i]);
+        append_choice(b->terrain_choices, sizeof b->terrain_choices, label);
+    }
+    return FS_OK;
+}
+
+/* One terrain swept over the values: it becomes a terrain per value, with the key's override. */
+static fs_status expand_sweep(const fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
+{
+    int have_sweep = c->sweep_choice > 0;
+    char where[FS_PATH_MAX + 80];
+    if (!have_sweep && !b->sweep_values[0])
+        return FS_OK;
+    if (!have_sweep)
+        return fs_fail(err, FS_BAD_INPUT, "%s: sweep_values without sweep; name the key to sweep, e.g. sweep = rough.rms_m",
+                       b->sweep_where);
+    if (!b->sweep_values[0])
+        return fs_fail(err, FS_BAD_INPUT, "%s: sweep needs sweep_values (comma-separated values of the key)",
+                       fs_config_where(cfg, "campaign", "sweep", where, sizeof where));
+    if (c->nterrains != 1)
+        return fs_fail(err, FS_BAD_INPUT, "%s: a sweep varies one terrain; give exactly one [terrain.NAME] (there are %d)",
+                       fs_config_where(cfg, "campaign", "sweep", where, sizeof where), c->nterrains);
+    const fs_key *k = &fs_terrain_keys[0];
+    for (int i = 0, n = 0; i < fs_terrain_nkeys; i++)
+        if ((fs_terrain_keys[i].type == FS_KEY_NUMBER || fs_terrain_keys[i].type == FS_KEY_INTEGER) &&
+            ++n == c->sweep_choice)
+            k = &fs_terrain_keys[i];
+    snprintf(c->sweep, sizeof c->sweep, "%s.%s", k->section, k->name);
+    char values[FS_CAMPAIGN_MAX_TERRAINS][FS_NAME_MAX];
+    int n = parse_sweep(b, values, err);
+    fs_campaign_item base = c->terrain[0];
+    for (int i = 0; i < n; i++) {
+        fs_campaign_item *t = &c->terrain[i];
+        *t = base;
+        snprintf(t->name, sizeof t->name, "%.30s@%.31s", base.name, values[i]);
+        snprintf(t->set, sizeof t->set, "%s=%.31s", c->sweep, values[i]);
+        t->sweep_value = strtod(values[i], NULL);
+    }
+    c->nterrains = n;
+    return FS_OK;
+}
+
+/* Relations between keys that no single key can judge. */
+static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_error *err)
+{
+    char where[FS_PATH_MAX + 80];
+    if (!c->trial_path[0])
+        return fs_fail(err, FS_BAD_INPUT, "%s: [campaign] trial is missing; name the trial scenario, e.g. trial = landing_trial.ini",
+                       cfg->path);
+    if (c->nfeet == 0 || c->nterrains == 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s: no %s; add a section like [%s] with file = ...", cfg->path,
+                       c->nfeet ? "terrain" : "foot", c->nfeet ? "terrain.flat" : "foot.biomimetic");
+    if ((long)c->first_seed + c->seeds - 1 > INT_MAX)
+        return fs_fail(err, FS_BAD_INPUT, "%s: first_seed + seeds passes %d", cfg->path, INT_MAX);
+    long ntrials = (long)c->nfeet * c->nterrains * c->seeds;
+    if (ntrials > FS_CAMPAIGN_MAX_TRIALS)
+        return fs_fail(err, FS_BAD_INPUT, "%s: %d feet x %d terrains x %d seeds = %ld trials; a campaign may run at "
+                       "most %d: fewer seeds, or split it", fs_config_where(cfg, "campaign", "seeds", where, sizeof where),
+                       c->nfeet, c->nterrains, c->seeds, ntrials, FS_CAMPAIGN_MAX_TRIALS);
+    for (int i = 0; i < c->nfeet; i++)
+        if (!c->foot[i].path[0])
+            return fs_fail(err, FS_BAD_INPUT, "%s: [foot.%s] has no file; give file = the design", cfg->path,
+                           c->foot[i].name);
+    for (int i = 0; i < c->nterrains; i++)
+        if (!c->terrain[i].path[0])
+            return fs_fail(err, FS_BAD_INPUT, "%s: [terrain.%s] has no file; give file = the terrain", cfg->path,
+                           c->terrain[i].name);
+    for (int i = 0; i < c->nexpect; i++) {
+        char sec[FS_NAME_MAX + 8];
+        snprintf(sec, sizeof sec, "expect.%s", c->expect[i].name);
+        if (c->expect[i].min_success > c->expect[i].max_success)
+            return fs_fail(err, FS_BAD_INPUT, "%s: min_success = %g is above max_success = %g; make min <= max",
+                           fs_config_where(cfg, sec, "min_success", where, sizeof where), c->expect[i].min_success,
+                           c->expect[i].max_success);
+    }
+    return FS_OK;
+}
+
+/* The expectations must name their foot and terrain: the choice's default would pick the first. */
+static fs_status check_expect_given(const fs_config *cfg, const fs_campaign *c, fs_error *err)
+{
+    for (int i = 0; i < c->nexpect; i++) {
+        char sec[FS_NAME_MAX + 8];
+        snprintf(sec, sizeof sec, "expect.%s", c->expect[i].name);
+        int foot = 0, terrain = 0;
+        for (int j = 0; j < cfg->count; j++) {
+            foot |= !strcmp(cfg->entries[j].section, sec) && !strcmp(cfg->entries[j].name, "foot");
+            terrain |= !strcmp(cfg->entries[j].section, sec) && !strcmp(cfg->entries[j].name, "terrain");
+        }
+        if (!foot || !terrain)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] needs foot = and terrain = (a [foot.NAME] and a [terrain.NAME])",
+                           cfg->path, sec);
+    }
+    return FS_OK;
+}
+
+/* Paths become absolute, so that the trial scenario resolves them wherever it lies. */
+static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *err)
+{
+    fs_campaign_item *items[FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS];
+    int n = 0;
+    for (int i = 0; i < c->nfeet; i++)
+        items[n++] = &c->foot[i];
+    for (int i = 0; i < c->nterrains; i++)
+        items[n++] = &c->terrain[i];
+    for (int i = 0; i < n; i++) {
+        char full[PATH_MAX];
+        if (!realpath(items[i]->path, full))
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s: %s", cfg->path, items[i]->path, strerror(errno));
+        if (strlen(full) + 24 >= FS_VALUE_MAX)
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s: path longer than %d characters; move the files", cfg->path,
+                           full, FS_VALUE_MAX - 24);
+        memcpy(items[i]->path, full, strlen(full) + 1); /* shorter than FS_VALUE_MAX, checked above */
+    }
+    return FS_OK;
+}
+
+/* Loads (and so checks) the trial scenario of every (foot, terrain), once, for the trials. */
+static fs_status load_pairs(fs_campaign *c, fs_error *err)
+{
+    c->pair = calloc((size_t)c->nfeet * c->nterrains, sizeof *c->pair);
+    if (!c->pair)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", c->nfeet * c->nterrains);
+    fs_status s = FS_OK;
+    for (int f = 0; f < c->nfeet && s == FS_OK; f++)
+        for (int t = 0; t < c->nterrains && s == FS_OK; t++) {
+            char buf[3][FS_PATH_MAX + 32];
+            const char *ov[FS_CAMPAIGN_MAX_SET + 3];
+            int n = fs_campaign_overrides(c, f, t, buf, ov);
+            fs_error e;
+            fs_scenario *sc = &c->pair[f * c->nterrains + t];
+            s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
+            if (s == FS_OK)
+                s = fs_scenario_require(sc, "trial", &e);
+            if (s != FS_OK)
+                fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s)", e.message, c->path, c->foot[f].name,
+                        c->terrain[t].name);
+        }
+    if (s != FS_OK)
+        fs_campaign_free(c);
+    return s;
+}
+
+void fs_campaign_free(fs_campaign *c)
+{
+    for (int i = 0; c->pair && i < c->nfeet * c->nterrains; i++)
+        fs_scenario_free(&c->pair[i]);
+    free(c->pair);
+    c->pair = NULL;
+}
+
+const fs_scenario *fs_campaign_pair(const fs_campaign *c, int foot, int terrain)
+{
+    return &c->pair[foot * c->nterrains + terrain];
+}
+
+static fs_status bind_file(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
+{
+    take_sweep_values(cfg, b);
+    add_static_keys(b);
+    fs_status s = add_dynamic_keys(cfg, b, c, err);
+    if (s == FS_OK)
+        s = terrain_choices(b, c, err);
+    if (s == FS_OK)
+        s = check_expect_given(cfg, c, err);
+    if (s == FS_OK)
+        s = fs_config_bind(cfg, b->keys, b->nkeys, c, err);
+    return s;
+}
+
+/* An override of the file; "foot.flat.file=x" names section [foot.flat] (fs_config_override
+ * splits at the first dot: the entry it makes is moved to the right section here). */
+static fs_status override_dotted(fs_config *cfg, const char *assignment, fs_error *err)
+{
+    fs_status s = fs_config_override(cfg, assignment, err);
+    fs_entry *e = &cfg->entries[cfg->count - 1];
+    char *dot = strrchr(e->name, '.');
+    if (s != FS_OK || e->line != 0 || !dot)
+        return s;
+    char section[2 * FS_NAME_MAX];
+    snprintf(section, sizeof section, "%s.%.*s", e->section, (int)(dot - e->name), e->name);
+    if (strlen(section) >= FS_NAME_MAX)
+        return fs_fail(err, FS_BAD_INPUT, "--set %s: section name too long", assignment);
+    memcpy(e->section, section, FS_NAME_MAX);
+    memmove(e->name, dot + 1, strlen(dot + 1) + 1);
+    /* the file's entry of that key, when there is one, takes the value */
+    for (int i = 0; i < cfg->count - 1; i++) {
+        fs_entry *old = &cfg->entries[i];
+        if (!strcmp(old->section, e->section) && !strcmp(old->name, e->name)) {
+            memcpy(old->value, e->value, sizeof old->value);
+            old->line = 0;
+            cfg->count--;
+            break;
+        }
+    }
+    return FS_OK;
+}
+
+fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets, fs_campaign *c, fs_error *err)
+{
+    memset(c, 0, sizeof *c);
+    snprintf(c->path, sizeof c->path, "%s", path);
+    fs_path_stem(path, c->name, sizeof c->name);
+    fs_config cfg;
+    fs_status s = fs_config_load(&cfg, path, err);
+    for (int i = 0; s == FS_OK && i < nsets; i++) {
+        char section[FS_VALUE_MAX];
+        snprintf(section, sizeof section, "%s", sets[i]);
+        char *cut = strpbrk(section, "=");
+        if (cut)
+            *cut = 0;
+        cut = strrchr(section, '.'); /* the section may hold a dot itself: foot.flat.file */
+        if (cut)
+            *cut = 0;
+        if (is_campaign_section(section))
+            s = override_dotted(&cfg, sets[i], err);
+        else if (c->nset == FS_CAMPAIGN_MAX_SET)
+            s = fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides", FS_CAMPAIGN_MAX_SET);
+        else
+            c->set[c->nset++] = sets[i];
+    }
+    binder *b = calloc(1, sizeof *b);
+    if (!b)
+        s = s == FS_OK ? fs_fail(err, FS_NO_MEMORY, "out of memory") : s;
+    if (s == FS_OK)
+        s = bind_file(&cfg, b, c, err);
+    if (s == FS_OK)
+        s = expand_sweep(&cfg, b, c, err);
+    if (s == FS_OK)
+        s = check_relations(&cfg, c, err);
+    if (s == FS_OK)
+        s = absolute_paths(&cfg, c, err);
+    free(b);
+    fs_config_free(&cfg);
+    return s == FS_OK ? load_pairs(c, err) : s;
+}
+
+int fs_campaign_overrides(const fs_campaign *c, int foot, int terrain, char buf[3][FS_PATH_MAX + 32],
+                          const char **out)
+{
+    int n = 0;
+    snprintf(buf[0], sizeof buf[0], "scenario.design=%s", c->foot[foot].path);
+    snprintf(buf[1], sizeof buf[1], "scenario.terrain=%s", c->terrain[terrain].path);
+    out[n++] = buf[0];
+    out[n++] = buf[1];
+    if (c->terrain[terrain].set[0]) {
+        snprintf(buf[2], sizeof buf[2], "%s", c->terrain[terrain].set);
+        out[n++] = buf[2];
+    }
+    for (int i = 0; i < c->nset; i++)
+        out[n++] = c->set[i];
+    return n;
+}
+
+int fs_campaign_ntrials(const fs_campaign *c) { return c->nfeet * c->nterrains * c->seeds; }
+
+void fs_campaign_trial_of(const fs_campaign *c, int index, int *foot, int *terrain, int *seed)
+{
+    *seed = c->first_seed + index % c->seeds;
+    *terrain = index / c->seeds % c->nterrains;
+    *foot = index / c->seeds / c->nterrains;
+}

@@ -1,0 +1,325 @@
+/* campaign_report.c: a campaign's result files (trials.csv, summary.csv, summary.md,
+ * summary.json), its chart, and its expectations checked. */
+#include "campaign_internal.h"
+
+#include "footsim/base/fs_path.h"
+#include "footsim/io/fs_output.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- result files ------------------------------------------------------------------------- */
+
+typedef struct out_ctx {
+    const fs_campaign *c;
+    const fs_trial_result *results;
+    const fs_campaign_row *rows;
+} out_ctx;
+
+/* A fill function of out_ctx for fs_write_file. */
+typedef struct out_fill {
+    int (*fill)(FILE *, const out_ctx *);
+    const out_ctx *ctx;
+} out_fill;
+
+static int fill_adapter(FILE *f, const void *user)
+{
+    const out_fill *x = user;
+    return x->fill(f, x->ctx);
+}
+
+/* Writes dir/name through fill, whole or not at all. */
+static fs_status write_file(const char *dir, const char *name, int (*fill)(FILE *, const out_ctx *),
+                            const out_ctx *ctx, fs_error *err)
+{
+    const out_fill x = {fill, ctx};
+    return fs_write_in(dir, name, fill_adapter, &x, err);
+}
+
+/* A number for CSV: exact (%.17g), or empty when there is none. */
+static void csv_number(FILE *f, double v)
+{
+    if (isfinite(v))
+        fprintf(f, ",%.17g", v);
+    else
+        fputs(",", f);
+}
+
+/* Free text for CSV: quoted, quotes doubled, line breaks as spaces. */
+static void csv_text(FILE *f, const char *s)
+{
+    fputs(",\"", f);
+    for (; *s; s++)
+        if (*s == '"')
+            fputs("\"\"", f);
+        else
+            fputc(*s == '\n' || *s == '\r' ? ' ' : *s, f);
+    fputc('"', f);
+}
+
+static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain)
+{
+    fprintf(f, "%s,%s", c->foot[foot].name, c->terrain[terrain].name);
+    if (c->sweep[0])
+        csv_number(f, c->terrain[terrain].sweep_value);
+}
+
+static int fill_trials(FILE *f, const out_ctx *x)
+{
+    const fs_campaign *c = x->c;
+    fprintf(f, "foot,terrain%s%s,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome", c->sweep[0] ? "," : "", c->sweep);
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+        fprintf(f, ",%s", fs_campaign_metrics[m].name);
+    fputs(",failure\n", f);
+    for (int i = 0; i < fs_campaign_ntrials(c); i++) {
+        const fs_trial_result *r = &x->results[i];
+        int foot, terrain, seed;
+        fs_campaign_trial_of(c, i, &foot, &terrain, &seed);
+        csv_row_key(f, c, foot, terrain);
+        fprintf(f, ",%d", seed);
+        const double pose[5] = {r->draw.x_m, r->draw.y_m, r->draw.yaw_deg, r->draw.pitch_deg, r->draw.roll_deg};
+        for (int k = 0; k < 5; k++)
+            csv_number(f, pose[k]);
+        fprintf(f, ",%s", fs_outcome_name(r->outcome));
+        for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+            csv_number(f, fs_metric_value(r, m));
+        csv_text(f, r->outcome == FS_FAILED_NUMERICS ? r->failure : "");
+        fputc('\n', f);
+    }
+    return 1;
+}
+
+static int fill_summary_csv(FILE *f, const out_ctx *x)
+{
+    const fs_campaign *c = x->c;
+    fprintf(f, "foot,terrain%s%s,trials,landed,fell,failed_numerics,success_rate,ci_low,ci_high", c->sweep[0] ? "," : "",
+            c->sweep);
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+        fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
+    fputc('\n', f);
+    for (int i = 0; i < c->nfeet * c->nterrains; i++) {
+        const fs_campaign_row *r = &x->rows[i];
+        csv_row_key(f, c, r->foot, r->terrain);
+        fprintf(f, ",%d,%d,%d,%d", r->trials, r->landed, r->fell, r->failed_numerics);
+        csv_number(f, r->success_rate);
+        csv_number(f, r->ci_low);
+        csv_number(f, r->ci_high);
+        for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+            csv_number(f, r->median[m]);
+        fputc('\n', f);
+    }
+    return 1;
+}
+
+static int fill_summary_md(FILE *f, const out_ctx *x)
+{
+    const fs_campaign *c = x->c;
+    char trial[FS_NAME_MAX];
+    fs_path_stem(c->trial_path, trial, sizeof trial);
+    fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot and terrain)%s%s. Success: the "
+               "trial landed; interval: 95 %% Wilson score. Medians over the trials that did not fail numerically.\n\n",
+            c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
+            c->sweep[0] ? "; terrain swept over " : "", c->sweep);
+    fputs("| foot | terrain | trials | landed | fell | failed_numerics | success | 95 % CI |", f);
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+        fprintf(f, " %s |", fs_campaign_metrics[m].name);
+    fputs("\n|---|---|--:|--:|--:|--:|--:|---|", f);
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+        fputs("--:|", f);
+    fputc('\n', f);
+    for (int i = 0; i < c->nfeet * c->nterrains; i++) {
+        const fs_campaign_row *r = &x->rows[i];
+        fprintf(f, "| %s | %s | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
+                c->terrain[r->terrain].name, r->trials, r->landed, r->fell, r->failed_numerics, r->success_rate,
+                r->ci_low, r->ci_high);
+        for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+            fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
+        fputc('\n', f);
+    }
+    if (c->nexpect)
+        fputs("\n## Expectations\n\n| expectation | foot | terrain | success | wanted | met |\n|---|---|---|--:|---|---|\n", f);
+    for (int i = 0; i < c->nexpect; i++) {
+        const fs_expectation *e = &c->expect[i];
+        const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, e->foot, e->terrain);
+        fprintf(f, "| %s | %s | %s | %.2f | [%.2f, %.2f] | %s |\n", e->name, c->foot[e->foot].name,
+                c->terrain[e->terrain].name, r->success_rate, e->min_success, e->max_success,
+                fs_expectation_met(e, r) ? "yes" : "**no**");
+    }
+    return 1;
+}
+
+static cJSON *summary_json(const out_ctx *x)
+{
+    const fs_campaign *c = x->c;
+    cJSON *root = cJSON_CreateObject();
+    char trial[FS_NAME_MAX];
+    fs_path_stem(c->trial_path, trial, sizeof trial);
+    cJSON_AddStringToObject(root, "campaign", c->name);
+    cJSON_AddStringToObject(root, "trial", trial);
+    cJSON_AddNumberToObject(root, "seeds", c->seeds);
+    cJSON_AddNumberToObject(root, "first_seed", c->first_seed);
+    if (c->sweep[0])
+        cJSON_AddStringToObject(root, "sweep", c->sweep);
+    else
+        cJSON_AddNullToObject(root, "sweep");
+    cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+        cJSON *t = cJSON_AddObjectToObject(tol, fs_campaign_metrics[m].name);
+        cJSON_AddNumberToObject(t, "relative", c->tolerance[m][0]);
+        cJSON_AddNumberToObject(t, "absolute", c->tolerance[m][1]);
+    }
+    cJSON *rows = cJSON_AddArrayToObject(root, "rows");
+    for (int i = 0; i < c->nfeet * c->nterrains; i++) {
+        const fs_campaign_row *r = &x->rows[i];
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "foot", c->foot[r->foot].name);
+        cJSON_AddStringToObject(o, "terrain", c->terrain[r->terrain].name);
+        if (c->sweep[0])
+            cJSON_AddNumberToObject(o, "sweep_value", c->terrain[r->terrain].sweep_value);
+        cJSON_AddNumberToObject(o, "trials", r->trials);
+        cJSON_AddNumberToObject(o, "landed", r->landed);
+        cJSON_AddNumberToObject(o, "fell", r->fell);
+        cJSON_AddNumberToObject(o, "failed_numerics", r->failed_numerics);
+        cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
+        cJSON_AddNumberToObject(o, "ci_low", r->ci_low);
+        cJSON_AddNumberToObject(o, "ci_high", r->ci_high);
+        for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+            char key[FS_NAME_MAX + 8];
+            snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);
+            cJSON_AddNumberToObject(o, key, r->median[m]); /* NAN is written as null */
+        }
+        cJSON_AddItemToArray(rows, o);
+    }
+    cJSON *ex = cJSON_AddArrayToObject(root, "expectations");
+    for (int i = 0; i < c->nexpect; i++) {
+        const fs_expectation *e = &c->expect[i];
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "name", e->name);
+        cJSON_AddStringToObject(o, "foot", c->foot[e->foot].name);
+        cJSON_AddStringToObject(o, "terrain", c->terrain[e->terrain].name);
+        cJSON_AddNumberToObject(o, "min_success", e->min_success);
+        cJSON_AddNumberToObject(o, "max_success", e->max_success);
+        cJSON_AddNumberToObject(o, "success_rate", fs_campaign_row_of(c, x->rows, e->foot, e->terrain)->success_rate);
+        cJSON_AddBoolToObject(o, "met", fs_expectation_met(e, fs_campaign_row_of(c, x->rows, e->foot, e->terrain)));
+        cJSON_AddItemToArray(ex, o);
+    }
+    return root;
+}
+
+static int fill_summary_json(FILE *f, const out_ctx *x)
+{
+    cJSON *root = summary_json(x);
+    char *text = root ? cJSON_Print(root) : NULL;
+    if (text)
+        fprintf(f, "%s\n", text);
+    free(text);
+    cJSON_Delete(root);
+    return text != NULL;
+}
+
+fs_status fs_campaign_write(const fs_campaign *c, const fs_trial_result *results, const fs_campaign_row *rows,
+                            const char *dir, fs_error *err)
+{
+    const out_ctx x = {c, results, rows};
+    fs_status s = write_file(dir, "trials.csv", fill_trials, &x, err);
+    if (s == FS_OK)
+        s = write_file(dir, "summary.csv", fill_summary_csv, &x, err);
+    if (s == FS_OK)
+        s = write_file(dir, "summary.md", fill_summary_md, &x, err);
+    return s;
+}
+
+fs_status fs_campaign_write_summary(const fs_campaign *c, const fs_campaign_row *rows, const char *dir, fs_error *err)
+{
+    const out_ctx x = {c, NULL, rows};
+    return write_file(dir, "summary.json", fill_summary_json, &x, err);
+}
+
+/* ---- the chart ---------------------------------------------------------------------------- */
+
+/* Bars: a line per terrain with each foot's rate, low and high. Sweep: a block per foot of
+ * (value, rate, low, high). */
+static int fill_chart_data(FILE *f, const out_ctx *x)
+{
+    const fs_campaign *c = x->c;
+    if (!c->sweep[0]) {
+        fputs("# terrain", f);
+        for (int ft = 0; ft < c->nfeet; ft++)
+            fprintf(f, " %s_rate %s_low %s_high", c->foot[ft].name, c->foot[ft].name, c->foot[ft].name);
+        fputc('\n', f);
+        for (int t = 0; t < c->nterrains; t++) {
+            fprintf(f, "\"%s\"", c->terrain[t].name);
+            for (int ft = 0; ft < c->nfeet; ft++) {
+                const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, ft, t);
+                fprintf(f, " %.17g %.17g %.17g", r->success_rate, r->ci_low, r->ci_high);
+            }
+            fputc('\n', f);
+        }
+        return 1;
+    }
+    for (int ft = 0; ft < c->nfeet; ft++) {
+        fprintf(f, "%s# %s: %s rate low high\n", ft ? "\n\n" : "", c->foot[ft].name, c->sweep);
+        for (int t = 0; t < c->nterrains; t++) {
+            const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, ft, t);
+            fprintf(f, "%.17g %.17g %.17g %.17g\n", c->terrain[t].sweep_value, r->success_rate, r->ci_low, r->ci_high);
+        }
+    }
+    return 1;
+}
+
+static int fill_chart_script(FILE *f, const out_ctx *x)
+{
+    const fs_campaign *c = x->c;
+    fprintf(f, "# The chart of campaign %s: 'gnuplot chart.gp' in this folder draws success.png.\n"
+               "if (!exists(\"out\")) out = 'success.png'\n"
+               "set terminal pngcairo size 960,540 noenhanced font 'sans,11'\n"
+               "set output out\n"
+               "set title 'Campaign %s: success rate with 95 %% Wilson interval (%d seeds each)'\n"
+               "set ylabel 'success rate (landed / trials)'\n"
+               "set yrange [0:1.05]\nset grid ytics\nset key outside right top\n",
+            c->name, c->name, c->seeds);
+    if (!c->sweep[0]) {
+        fputs("set style data histogram\nset style histogram errorbars gap 2 lw 1\n"
+              "set style fill solid 0.6 border -1\nset xlabel 'terrain'\nplot ",
+              f);
+        for (int ft = 0; ft < c->nfeet; ft++)
+            fprintf(f, "%s'chart.dat' using %d:%d:%d%s title '%s'", ft ? ", \\\n     " : "", 2 + 3 * ft, 3 + 3 * ft,
+                    4 + 3 * ft, ft ? "" : ":xtic(1)", c->foot[ft].name);
+        fputc('\n', f);
+        return 1;
+    }
+    fprintf(f, "set xlabel '%s'\nplot ", c->sweep);
+    for (int ft = 0; ft < c->nfeet; ft++)
+        fprintf(f, "%s'chart.dat' index %d using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc %d "
+                   "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 pt 7 lc %d title '%s'",
+                ft ? ", \\\n     " : "", ft, ft + 1, ft, ft + 1, c->foot[ft].name);
+    fputc('\n', f);
+    return 1;
+}
+
+fs_status fs_campaign_write_chart(const fs_campaign *c, const fs_campaign_row *rows, const char *dir, fs_error *err)
+{
+    const out_ctx x = {c, NULL, rows};
+    fs_status s = write_file(dir, "chart.dat", fill_chart_data, &x, err);
+    return s == FS_OK ? write_file(dir, "chart.gp", fill_chart_script, &x, err) : s;
+}
+
+/* ---- expectations ------------------------------------------------------------------------- */
+
+int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *out)
+{
+    int failed = 0;
+    for (int i = 0; i < c->nexpect; i++) {
+        const fs_expectation *e = &c->expect[i];
+        const fs_campaign_row *r = fs_campaign_row_of(c, rows, e->foot, e->terrain);
+        int ok = fs_expectation_met(e, r);
+        failed += !ok;
+        fprintf(out, "  %-6s %s: %s on %s landed %d of %d (%.2f, 95 %% CI [%.2f, %.2f]); wanted %.2f to %.2f\n",
+                ok ? "ok" : "FAILED", e->name, c->foot[e->foot].name, c->terrain[e->terrain].name, r->landed,
+                r->trials, r->success_rate, r->ci_low, r->ci_high, e->min_success, e->max_success);
+    }
+    return failed;
+}

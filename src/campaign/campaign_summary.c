@@ -1,0 +1,74 @@
+/* campaign_summary.c: the metrics of a trial and the statistics of a campaign's cells (success
+ * rates with Wilson intervals, medians). */
+#include "campaign_internal.h"
+
+#include "footsim/base/fs_stats.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- metrics ------------------------------------------------------------------------------ */
+
+const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS] = {
+    {"end_time_s", "0.1, 0.005"},   {"touchdown_s", "0.1, 0.005"},     {"peak_tilt_deg", "0.1, 1"},
+    {"final_tilt_deg", "0.1, 1"},   {"peak_force_N", "0.1, 10"},       {"impact_impulse_Ns", "0.1, 0.5"},
+    {"settle_time_s", "0.1, 0.005"}, {"mean_contacts", "0.1, 1"},      {"final_contacts", "0.1, 1"},
+    {"ankle_drop_m", "0.1, 0.001"}, {"slip_m", "0.1, 0.001"},          {"steps", "0.1, 100"},
+};
+
+double fs_metric_value(const fs_trial_result *r, int m)
+{
+    const double v[FS_CAMPAIGN_NMETRICS] = {r->end_time_s,    r->touchdown_s,       r->peak_tilt_deg,
+                                            r->final_tilt_deg, r->peak_force_N,      r->impact_impulse_Ns,
+                                            r->settle_time_s,  r->mean_contacts,     r->final_contacts,
+                                            r->ankle_drop_m,   r->slip_m,            (double)r->steps};
+    return v[m];
+}
+
+/* ---- statistics --------------------------------------------------------------------------- */
+
+void fs_wilson(int k, int n, double *low, double *high)
+{
+    const double z = 1.959963984540054; /* the 97.5 % quantile of the standard normal */
+    double p = (double)k / n, z2n = z * z / n;
+    double centre = (p + z2n / 2) / (1 + z2n);
+    double half = z / (1 + z2n) * sqrt(p * (1 - p) / n + z2n / (4.0 * n));
+    *low = fmax(0, centre - half);
+    *high = fmin(1, centre + half);
+    /* at k = 0 or k = n the bound is exactly 0 or 1 (centre and half agree but for rounding) */
+    if (k == 0)
+        *low = 0;
+    if (k == n)
+        *high = 1;
+}
+
+void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows)
+{
+    double *v = malloc((size_t)c->seeds * sizeof *v);
+    for (int f = 0; f < c->nfeet; f++)
+        for (int t = 0; t < c->nterrains; t++) {
+            fs_campaign_row *row = &rows[f * c->nterrains + t];
+            memset(row, 0, sizeof *row);
+            row->foot = f;
+            row->terrain = t;
+            const fs_trial_result *r = &results[(f * c->nterrains + t) * c->seeds];
+            for (int s = 0; s < c->seeds; s++) {
+                row->trials++;
+                row->landed += r[s].outcome == FS_LANDED;
+                row->fell += r[s].outcome == FS_FELL;
+                row->failed_numerics += r[s].outcome == FS_FAILED_NUMERICS;
+            }
+            row->success_rate = (double)row->landed / row->trials;
+            fs_wilson(row->landed, row->trials, &row->ci_low, &row->ci_high);
+            for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+                int n = 0;
+                for (int s = 0; v && s < c->seeds; s++)
+                    if (r[s].outcome != FS_FAILED_NUMERICS)
+                        v[n++] = fs_metric_value(&r[s], m);
+                row->nmetric = n;
+                row->median[m] = fs_median(v, n);
+            }
+        }
+    free(v);
+}
