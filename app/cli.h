@@ -57,7 +57,7 @@ int cli_walk(const cli_args *a);
 int cli_campaign(const cli_args *a);  /* app/cli_campaign.c */
 int cli_compare(const cli_args *a);
 
-/* bench precision|stability|speed (src/cli_bench*.c). Each writes its CSVs, charts and a Markdown
+/* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
  * table to --out DIR (default results/bench/), whole or not at all. */
 int cli_bench(const cli_args *a);
 int cli_bench_precision(const cli_args *a, const char *dir);

@@ -21,12 +21,6 @@ static const float BODY_RGB[][3] = {{0.80f, 0.62f, 0.45f}, {0.72f, 0.52f, 0.38f}
 
 /* ---- context and meshes --------------------------------------------------------------------- */
 
-void render_make_current(fs_render *r)
-{
-    if (gl.GetCurrentContext() != r->ctx)
-        gl.MakeCurrent(r->ctx, r->rgba, GL_UNSIGNED_BYTE, r->w, r->h);
-}
-
 /* A unit sphere as quad strips between latitudes, normals equal to positions. */
 static void emit_sphere(int slices, int stacks)
 {

@@ -15,8 +15,13 @@ struct fs_render {
     double contact_ref_N;    /* the largest contact force seen: the longest arrow */
 };
 
-/* Makes r's context current on its frame. */
-void render_make_current(fs_render *r);
+/* Makes r's context current on its frame. Inline here, so the text (render_font.c) needs nothing
+ * of the scene's drawing (render_gl.c), which uses the text: the files depend one way. */
+static inline void render_make_current(fs_render *r)
+{
+    if (gl.GetCurrentContext() != r->ctx)
+        gl.MakeCurrent(r->ctx, r->rgba, GL_UNSIGNED_BYTE, r->w, r->h);
+}
 
 /* Darkens the rectangle at (x0, y0), w x h, keeping the fraction keep of each colour (GL). */
 void render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep);

@@ -1,46 +1,12 @@
-/* cli_bench.c: 'footsim bench WHAT': picks the benchmark, and what they share (clock, machine). */
+/* cli_bench.c: 'footsim bench WHAT': checks the output folder and picks the benchmark. What the
+ * benchmarks share (the machine, the load) is cli_bench_machine.c, below them. */
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
 #include "footsim/io/fs_output.h"
 
-#include <ode/ode.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
-
-void cli_machine(char *out, size_t size)
-{
-    char cpu[256] = "unknown CPU", line[512];
-    FILE *f = fopen("/proc/cpuinfo", "r");
-    while (f && fgets(line, sizeof line, f))
-        if (!strncmp(line, "model name", 10) && strchr(line, ':')) {
-            snprintf(cpu, sizeof cpu, "%s", strchr(line, ':') + 2);
-            cpu[strcspn(cpu, "\n")] = 0;
-            break;
-        }
-    if (f)
-        fclose(f);
-    const char *config = dGetConfiguration();
-    snprintf(out, size, "%s, %ld cores online, %s %s, ODE %s", cpu, sysconf(_SC_NPROCESSORS_ONLN),
-#ifdef __clang__
-             "clang",
-#else
-             "gcc",
-#endif
-             __VERSION__, strstr(config, "ODE_double_precision") ? "double precision" : "single precision");
-}
-
-double cli_load_average(void)
-{
-    double l = -1;
-    FILE *f = fopen("/proc/loadavg", "r");
-    if (f && fscanf(f, "%lf", &l) != 1)
-        l = -1;
-    if (f)
-        fclose(f);
-    return l;
-}
 
 /* What benches write into their shared folder (never replaced as a folder; file by file). */
 static const char *const bench_files[] = {"precision.*", "stability*", "speed.*", "skips.csv", "render.csv",

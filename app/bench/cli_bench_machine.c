@@ -1,0 +1,41 @@
+/* cli_bench_machine.c: what every benchmark records of where it ran: the machine (CPU, cores,
+ * compiler, ODE's precision) and the load average. Below the benchmarks; calls none of them. */
+#include "cli.h"
+
+#include <ode/ode.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+void cli_machine(char *out, size_t size)
+{
+    char cpu[256] = "unknown CPU", line[512];
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    while (f && fgets(line, sizeof line, f))
+        if (!strncmp(line, "model name", 10) && strchr(line, ':')) {
+            snprintf(cpu, sizeof cpu, "%s", strchr(line, ':') + 2);
+            cpu[strcspn(cpu, "\n")] = 0;
+            break;
+        }
+    if (f)
+        fclose(f);
+    const char *config = dGetConfiguration();
+    snprintf(out, size, "%s, %ld cores online, %s %s, ODE %s", cpu, sysconf(_SC_NPROCESSORS_ONLN),
+#ifdef __clang__
+             "clang",
+#else
+             "gcc",
+#endif
+             __VERSION__, strstr(config, "ODE_double_precision") ? "double precision" : "single precision");
+}
+
+double cli_load_average(void)
+{
+    double l = -1;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f && fscanf(f, "%lf", &l) != 1)
+        l = -1;
+    if (f)
+        fclose(f);
+    return l;
+}
