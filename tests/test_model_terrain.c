@@ -2,7 +2,7 @@
  * nothing tunnels through it, the same seed gives the same ground, and bad files are refused. */
 #include "fs_test.h"
 
-#include "footsim/sim/fs_ground.h"
+#include "sim/sim_ground.h" /* private to the sim layer: the test reaches in */
 #include "footsim/experiment/fs_run.h"
 #include "footsim/sim/fs_sim.h"
 

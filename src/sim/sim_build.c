@@ -2,7 +2,7 @@
  * robot, the ground), and taken down again. The step is sim_step.c. */
 #include "sim_internal.h"
 
-#include "footsim/sim/fs_ground.h"
+#include "sim_ground.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -2,7 +2,7 @@
  * vertices on a heightfield, near-duplicates merged and the deepest kept, made into contact joints. */
 #include "sim_internal.h"
 
-#include "footsim/sim/fs_ground.h"
+#include "sim_ground.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* sim_ground.c: a terrain built as ODE geoms: planes, boxes or a heightfield. */
-#include "footsim/sim/fs_ground.h"
+#include "sim_ground.h"
 
 #include <math.h>
 #include <stdlib.h>

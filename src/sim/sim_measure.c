@@ -2,7 +2,7 @@
  * ground force, hinge angles, the ankle): read from ODE, never changing it. */
 #include "sim_internal.h"
 
-#include "footsim/sim/fs_ground.h"
+#include "sim_ground.h"
 
 #include <math.h>
 #include <string.h>

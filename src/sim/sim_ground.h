@@ -1,4 +1,4 @@
-/* fs_ground.h: a terrain built as ODE collision geometry.
+/* sim_ground.h (private to the sim layer): a terrain built as ODE collision geometry.
  *
  * fs_ground_build puts the terrain's shapes into space: a plane (flat, slope), a plane and boxes
  * (stepped: sharp edges), or heightfields over the terrain's cropped lattice, turned from ODE's
