@@ -109,12 +109,11 @@ static void draw_progress(int done, int ntrials, void *user)
 
 int cli_parse_jobs(const cli_args *a, int *jobs)
 {
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    *jobs = n > 0 ? (int)(n < FS_POOL_MAX_JOBS ? n : FS_POOL_MAX_JOBS) : 1;
+    *jobs = fs_pool_default_jobs(); /* the CPUs this process may use */
     if (!a->jobs)
         return 0;
     char *end;
-    n = strtol(a->jobs, &end, 10);
+    long n = strtol(a->jobs, &end, 10);
     if (*end || end == a->jobs || n < 1 || n > FS_POOL_MAX_JOBS) {
         fprintf(stderr, "footsim %s: -j %s: not a number of workers; allowed: a whole number from 1 to %d\n",
                 a->command, a->jobs, FS_POOL_MAX_JOBS);

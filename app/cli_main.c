@@ -46,7 +46,7 @@ static const command commands[] = {
      "  the drawn pose, the outcome (landed or fell) and the metrics."},
     {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
-     "  worker processes (default: all cores) and writes DIR/summary.md, summary.csv, summary.json,\n"
+     "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
      "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
      "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
      "  sections go to every trial."},

@@ -122,5 +122,18 @@ static void done_can_stop_the_pool(void)
     CHECK(seen == 4 && s.seen[3] == 1);
 }
 
+/* The default -j: the least of the affinity, the cgroup quota (rounded up) and Slurm's CPUs. */
+static void default_jobs_follow_the_cpus_given(void)
+{
+    CHECK(fs_pool_jobs_from(8, NULL, NULL) == 8);
+    CHECK(fs_pool_jobs_from(8, "max 100000\n", "") == 8);      /* no quota */
+    CHECK(fs_pool_jobs_from(8, "150000 100000\n", NULL) == 2); /* 1.5 CPUs: 2 workers */
+    CHECK(fs_pool_jobs_from(8, "400000 100000\n", "3") == 3);  /* Slurm's 3 under a quota of 4 */
+    CHECK(fs_pool_jobs_from(2, "800000 100000\n", "16") == 2); /* never more than the affinity */
+    CHECK(fs_pool_jobs_from(0, NULL, "x") == 1);                /* nothing known, a bad variable: 1 */
+    CHECK(fs_pool_default_jobs() >= 1);
+}
+
 FS_TEST_MAIN(TEST(answers_do_not_depend_on_jobs), TEST(dead_workers_are_reported_and_replaced),
-             TEST(the_watchdog_kills_a_stopped_worker), TEST(done_can_stop_the_pool))
+             TEST(the_watchdog_kills_a_stopped_worker), TEST(done_can_stop_the_pool),
+             TEST(default_jobs_follow_the_cpus_given))

@@ -57,4 +57,11 @@ typedef struct fs_pool_stats {
  * reason in err). stats may be NULL. */
 fs_status fs_pool_run(const fs_pool_spec *spec, fs_pool_stats *stats, fs_error *err);
 
+/* The workers to run when the user gives no -j: the CPUs this process may use, the least of its
+ * affinity mask, its cgroup's CPU quota (cgroup v2 cpu.max, rounded up) and SLURM_CPUS_PER_TASK;
+ * at least 1. fs_pool_jobs_from is the same rule on given values (cpu_max: the text of cpu.max,
+ * slurm_cpus: the variable's text; either may be NULL or empty). */
+int fs_pool_default_jobs(void);
+int fs_pool_jobs_from(int affinity_cpus, const char *cpu_max, const char *slurm_cpus);
+
 #endif
