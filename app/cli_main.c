@@ -57,13 +57,14 @@ static const command commands[] = {
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
     {"bench", cli_bench, "precision|stability|speed", "-j --quick --out --replace",
-     "Benchmarks (docs/bench.md), written to DIR (default: results/bench/):\n"
+     "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
+     "  refreshed only with --out results/bench):\n"
      "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
      "             against the planar reference model, and a landing trial against its finest run;\n"
      "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height;\n"
      "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves.\n"
      "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
-     "  worker processes (default: all cores; the results do not depend on N)."},
+     "  worker processes (default: the CPUs it may use; the results do not depend on N)."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "",

@@ -14,7 +14,8 @@ static const char *const bench_files[] = {"precision.*", "stability*", "speed.*"
 
 int cli_bench(const cli_args *a)
 {
-    const char *dir = a->out ? a->out : "results/bench";
+    /* build/bench by default: the committed results/bench/ changes only on purpose (--out results/bench) */
+    const char *dir = a->out ? a->out : "build/bench";
     int known = !strcmp(a->input, "precision") || !strcmp(a->input, "stability") || !strcmp(a->input, "speed");
     fs_error err;
     /* the folder must be one footsim writes into (marked, or only bench files), before measuring */
