@@ -73,6 +73,19 @@ void cli_machine(char *out, size_t size);
 /* The 1-minute load average from /proc/loadavg, or -1 when it cannot be read. */
 double cli_load_average(void);
 
+/* Progress of a long command on stderr (cli_progress.c): on a terminal one line redrawn in place
+ * (done/total, failures, elapsed, ETA); without one, a plain line at every tenth of the work, at
+ * least once a minute, and at the end. `who` names the command ("footsim campaign"), `unit` what
+ * is counted ("trials"). */
+typedef struct cli_progress {
+    const char *who, *unit;
+    int tty;
+    double t0, last_line_s;
+    int last_tenth;
+} cli_progress;
+void cli_progress_start(cli_progress *p, const char *who, const char *unit);
+void cli_progress_update(cli_progress *p, int done, int total, int failed);
+
 /* Whether an executable is on PATH. */
 int cli_have_program(const char *name);
 

@@ -34,7 +34,8 @@ typedef struct campaign_run {
     const fs_campaign *c;
     fs_trial_result *results;
     int crash_seed, stop_seed;
-    int progress;           /* draw a progress bar (stderr is a terminal) */
+    cli_progress progress;
+    int failed;             /* trials so far that failed numerically or whose worker died */
 } campaign_run;
 
 static int fail(const fs_error *err) { return cli_report(err->status, err->message); }
@@ -66,6 +67,7 @@ static fs_status take_one(int index, const void *result, void *user, fs_error *e
     if (m->status != FS_OK)
         return fs_fail(err, (fs_status)m->status, "%s", m->error);
     p->results[index] = m->result;
+    p->failed += m->result.outcome == FS_FAILED_NUMERICS;
     return FS_OK;
 }
 
@@ -86,23 +88,16 @@ static void record_death(int index, const fs_pool_death *d, void *user)
     fs_trial_draw_pose(fs_campaign_pair(c, foot, terrain), seed, &r->draw);
     snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s, seed %d, %s",
              c->foot[foot].name, c->terrain[terrain].name, seed, d->how);
-    if (p->progress)
+    p->failed++;
+    if (p->progress.tty)
         fputc('\n', stderr);
     fprintf(stderr, "footsim campaign: %s; counted as failed_numerics\n", r->failure);
 }
 
 static void draw_progress(int done, int ntrials, void *user)
 {
-    const campaign_run *p = user;
-    if (!p->progress)
-        return;
-    enum { WIDTH = 40 };
-    int filled = (int)((long)WIDTH * done / ntrials);
-    fprintf(stderr, "\r[%.*s%*s] %d/%d trials", filled, "########################################", WIDTH - filled, "",
-            done, ntrials);
-    if (done == ntrials)
-        fputc('\n', stderr);
-    fflush(stderr);
+    campaign_run *p = user;
+    cli_progress_update(&p->progress, done, ntrials, p->failed);
 }
 
 /* ---- campaign ----------------------------------------------------------------------------- */
@@ -197,7 +192,9 @@ int cli_campaign(const cli_args *a)
         return cli_report(FS_NO_MEMORY, "out of memory");
     }
     const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED"), *stop = getenv("FOOTSIM_TEST_STOP_SEED");
-    campaign_run run = {&c, results, crash ? atoi(crash) : -1, stop ? atoi(stop) : -1, isatty(STDERR_FILENO)};
+    campaign_run run = {.c = &c, .results = results, .crash_seed = crash ? atoi(crash) : -1,
+                        .stop_seed = stop ? atoi(stop) : -1};
+    cli_progress_start(&run.progress, "footsim campaign", "trials");
     fs_pool_spec spec = {.ntasks = ntrials, .jobs = jobs, .result_size = sizeof(message), .user = &run,
                          .run = run_one, .done = take_one, .died = record_death, .progress = draw_progress};
     fs_pool_stats stats;

@@ -49,10 +49,14 @@ if command -v gnuplot >/dev/null 2>&1; then
 fi
 check "rows in order of foot, terrain, seed" [ "$(cut -d, -f1,2,3 "$tmp/j1/trials.csv" | tr '\n' ' ')" = \
     "foot,terrain,seed bio,bumpy,1 bio,bumpy,2 bio,bumpy,3 flat,bumpy,1 flat,bumpy,2 flat,bumpy,3 " ]
-# no progress bar when stderr is not a terminal: stderr is empty, or (gnuplot being optional) holds
-# only the line that says the chart was skipped
-grep -v 'gnuplot is not installed' "$tmp/j1.err" >"$tmp/j1.rest"
+# without a terminal: no bar redrawn with carriage returns, but plain progress lines (at each tenth
+# of the trials and at the end); stderr holds nothing else but, gnuplot being optional, the line
+# that says the chart was skipped
+grep -v 'gnuplot is not installed' "$tmp/j1.err" | grep -v '^footsim campaign: [0-9]*/6 trials done, 0 failed, ' >"$tmp/j1.rest"
 check "no progress bar when stderr is not a terminal" [ ! -s "$tmp/j1.rest" ]
+check "no carriage return without a terminal" [ -z "$(tr -dc '\r' <"$tmp/j1.err")" ]
+check "a plain progress line at the end" grep -q '^footsim campaign: 6/6 trials done, 0 failed, ' "$tmp/j1.err"
+check "at most a line per tenth and the end" [ "$(grep -c 'trials done' "$tmp/j1.err")" -le 11 ]
 check "summary.json has the row fields" grep -q '"median_peak_force_N"' "$tmp/j1/summary.json"
 check "summary.csv names its columns with units" grep -q '^foot,terrain,trials,landed,fell,failed_numerics,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
 

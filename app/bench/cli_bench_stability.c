@@ -147,7 +147,9 @@ typedef struct sweep {
     const config *cfg;
     outcome *out;
     const fs_design_def *base;
-    double duration, t0;
+    double duration;
+    cli_progress progress;
+    int died;             /* runs whose worker died (counted as blown up) */
 } sweep;
 
 /* In a worker: one configuration. */
@@ -171,7 +173,8 @@ static fs_status take_task(int index, const void *result, void *user, fs_error *
 /* In the parent: a run whose worker died (an ODE error, a crash) or hung: a blown-up run. */
 static void task_died(int index, const fs_pool_death *d, void *user)
 {
-    const sweep *w = user;
+    sweep *w = user;
+    w->died++;
     const config *c = &w->cfg[index];
     outcome *o = &w->out[index];
     memset(o, 0, sizeof *o);
@@ -191,21 +194,16 @@ static void task_died(int index, const fs_pool_death *d, void *user)
 
 static void progress(int done, int n, void *user)
 {
-    const sweep *w = user;
-    int tty = isatty(STDERR_FILENO);
-    if (done == 0 || (!tty && done % 50 != 0 && done != n))
-        return;
-    fprintf(stderr, tty ? "\rfootsim bench stability: %d/%d runs, %.0f s" : "footsim bench stability: %d/%d runs, %.0f s\n",
-            done, n, fs_clock_s() - w->t0);
-    if (tty && done == n)
-        fputc('\n', stderr);
+    sweep *w = user;
+    cli_progress_update(&w->progress, done, n, w->died);
 }
 
 /* Runs every configuration in up to jobs workers. */
 static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, const fs_design_def *base,
                          double duration, fs_error *err)
 {
-    sweep w = {cfg, out, base, duration, fs_clock_s()};
+    sweep w = {cfg, out, base, duration, {0}, 0};
+    cli_progress_start(&w.progress, "footsim bench stability", "runs");
     fs_pool_spec spec = {.ntasks = n, .jobs = jobs, .result_size = sizeof(outcome), .user = &w, .run = run_task,
                          .done = take_task, .died = task_died, .progress = progress};
     return fs_pool_run(&spec, NULL, err);
