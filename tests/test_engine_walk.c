@@ -16,7 +16,7 @@ static void machine_takes_its_steps(void)
     CHECK(r.steps_completed + r.falls == 3);
     CHECK(r.steps_completed == 3);
     CHECK(r.rough_steps == 0);
-    CHECK(r.peak_force_N > sc.def.robot_kg * sc.def.gravity_m_per_s2);
+    CHECK(r.peak_force_N > sc.def.robot.mass_kg * sc.def.gravity_m_per_s2);
     CHECK_NEAR(r.end_time_s, 3 * sc.def.walk_period_s, sc.def.step_s);
     fs_scenario_free(&sc);
 }

@@ -168,7 +168,7 @@ static fs_status landing_scene(scene *s, const char *name, const char *title, co
     if (st != FS_OK)
         return st;
     s->defaults = s->base.def;
-    s->has_springs = s->base.geom.nsprings > 0 || s->base.def.robot_joint != 0;
+    s->has_springs = s->base.geom.nsprings > 0 || s->base.def.robot.joint != FS_ROBOT_RIGID;
     /* the reference: footsim itself at the finest step with dWorldStep */
     row ref = {.sc = s, .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT, .step_s = REF_STEP_S};
     static fs_scenario sc;

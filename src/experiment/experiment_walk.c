@@ -137,7 +137,7 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
 {
     const fs_scenario_def *d = &sc->def;
     memset(out, 0, sizeof *out);
-    if (d->kind != FS_SCENARIO_WALK || d->robot_kg <= 0)
+    if (d->kind != FS_SCENARIO_WALK || d->robot.mass_kg <= 0)
         return fs_fail(err, FS_BAD_INPUT, "%s: a walking machine needs [scenario] kind = walk and a [robot] mass_kg > 0",
                        sc->path);
     fs_sim_options opts = fs_observer_sim_options(obs);

@@ -179,15 +179,15 @@ static void build_robot(fs_sim *sim)
     dBodyID ankle_body = sim->body[g->ankle_body];
     sim->robot = dBodyCreate(sim->world);
     dMass m;
-    const double *I = s->robot_inertia_kgm2;
-    dMassSetParameters(&m, s->robot_kg, 0, 0, 0, I[0], I[1], I[2], 0, 0, 0);
+    const double *I = s->robot.inertia_kgm2;
+    dMassSetParameters(&m, s->robot.mass_kg, 0, 0, 0, I[0], I[1], I[2], 0, 0, 0);
     dBodySetMass(sim->robot, &m);
-    fs_vec3 com = place(sim, fs_add(g->ankle, fs_v3(s->robot_com_forward_m, 0, s->robot_com_height_m)));
+    fs_vec3 com = place(sim, fs_add(g->ankle, fs_v3(s->robot.com_forward_m, 0, s->robot.com_height_m)));
     dBodySetPosition(sim->robot, com.x, com.y, com.z);
     const double *R = sim->R0;
     dMatrix3 rot = {R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0};
     dBodySetRotation(sim->robot, rot);
-    if (s->robot_joint == 0) {
+    if (s->robot.joint == FS_ROBOT_RIGID) {
         sim->robot_joint = dJointCreateFixed(sim->world, 0);
         dJointAttach(sim->robot_joint, sim->robot, ankle_body);
         dJointSetFixed(sim->robot_joint);
@@ -200,10 +200,10 @@ static void build_robot(fs_sim *sim)
     dJointSetHingeAxis(sim->robot_joint, axis.x, axis.y, axis.z);
     const double behind = 0.02; /* m: the tendon's line behind the ankle axis */
     fs_vec3 heel = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, -0.01)));
-    fs_vec3 leg = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, s->achilles_leg_anchor_m)));
+    fs_vec3 leg = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, s->robot.achilles_leg_anchor_m)));
     double p1[3] = {heel.x, heel.y, heel.z}, p2[3] = {leg.x, leg.y, leg.z};
     fs_spring_init(&sim->achilles, sim->world, (fs_spring_impl)s->springs, ankle_body, sim->robot, p1, p2,
-                   s->achilles_k_N_per_m, s->achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
+                   s->robot.achilles_k_N_per_m, s->robot.achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
     sim->has_achilles = 1;
 }
 
@@ -325,7 +325,7 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         build_body(sim, i);
     build_shapes(sim);
     build_joints(sim);
-    if (s->robot_kg > 0)
+    if (s->robot.mass_kg > 0)
         build_robot(sim);
     if (opts->hold_rear_foot && sim->geom->kind == FS_FOOT_BIOMIMETIC) {
         dBodySetKinematic(sim->body[FS_BODY_HEEL]);

@@ -90,7 +90,7 @@ static int check_loops(fs_sim *sim, finding *f)
         if (!(gap <= worst))
             worst = gap, where = i ? "toe pin" : "heel pin";
     }
-    if (sim->robot && sim->sc->def.robot_joint == 1) {
+    if (sim->robot && sim->sc->def.robot.joint == FS_ROBOT_ACHILLES) {
         double gap = anchor_gap(sim->robot_joint);
         if (!(gap <= worst))
             worst = gap, where = "robot ankle";

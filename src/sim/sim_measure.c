@@ -63,7 +63,7 @@ double fs_sim_body_speed(const fs_sim *sim, int i)
     int robot = i == sim->geom->nbodies;
     dBodyID b = robot ? sim->robot : sim->body[i];
     const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b);
-    double reach = robot ? sim->sc->def.robot_com_height_m : sim->reach[i];
+    double reach = robot ? sim->sc->def.robot.com_height_m : sim->reach[i];
     return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + reach * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
 }
 
