@@ -18,6 +18,30 @@ static void machine_takes_its_steps(void)
     CHECK(r.rough_steps == 0);
     CHECK(r.peak_force_N > sc.def.robot.mass_kg * sc.def.gravity_m_per_s2);
     CHECK_NEAR(r.end_time_s, 3 * sc.def.walk_period_s, sc.def.step_s);
+    /* at mid-stance the sole lies flat on flat ground: ODE's box-plane contact, its four corners */
+    CHECK(r.flat_contacts_mean == 4);
+    /* and the ankle body stays level but for the contacts' compression: even the peak force on one
+     * end of the sole, against the sole's and the ground's stiffness in series, tilts it at most
+     * atan(F / k / length) */
+    double k = 1 / (1 / sc.design.sole_stiffness_N_per_m + 1 / sc.terrain.def.stiffness_N_per_m);
+    double bound_deg = atan(r.peak_force_N / k / sc.geom.box_size.x) * 180 / M_PI;
+    CHECK(r.peak_tilt_deg >= 0 && r.peak_tilt_deg < bound_deg);
+    fs_scenario_free(&sc);
+}
+
+/* The biomimetic foot at mid-stance on flat ground stands on its two heel spheres and five toe
+ * tips, the metatarsal heads clear of the ground (the design's neutral pose; test_model_design
+ * finds the same seven standing still). */
+static void biomimetic_foot_stands_on_heel_and_toes(void)
+{
+    const char *set[] = {"walk.steps=2", "scenario.terrain=../terrains/flat.ini"};
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/walking.ini", set, 2, &sc, &err) == FS_OK);
+    fs_walk_result r;
+    REQUIRE(fs_walk_run(&sc, NULL, &r, &err) == FS_OK);
+    CHECK(r.steps_completed == 2 && r.falls == 0);
+    CHECK(r.flat_contacts_mean == 2 + FS_CHAINS);
     fs_scenario_free(&sc);
 }
 
@@ -53,4 +77,4 @@ static void carriage_work_closes_the_energy_balance(void)
     }
 }
 
-FS_TEST_MAIN(TEST(machine_takes_its_steps), TEST(only_walk_scenarios_walk), TEST(carriage_work_closes_the_energy_balance))
+FS_TEST_MAIN(TEST(machine_takes_its_steps), TEST(biomimetic_foot_stands_on_heel_and_toes), TEST(only_walk_scenarios_walk), TEST(carriage_work_closes_the_energy_balance))
