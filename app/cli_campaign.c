@@ -124,7 +124,8 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
         const fs_campaign_row *r = &rows[i];
         printf("  %-12s on %-20s landed %3d of %3d (%.2f, 95 %% CI [%.2f, %.2f])", c->foot[r->foot].name,
                c->terrain[r->terrain].name, r->landed, r->trials, r->success_rate, r->ci_low, r->ci_high);
-        printf(r->failed_numerics ? ", %d failed_numerics\n" : "\n", r->failed_numerics);
+        printf(", fell %3d, undecided %d", r->fell, r->undecided);
+        printf(r->failed_numerics ? ", failed_numerics %d\n" : "\n", r->failed_numerics);
     }
 }
 

@@ -228,6 +228,7 @@ int cli_trial(const cli_args *a)
         cJSON *o = cJSON_CreateObject();
         cJSON_AddNumberToObject(o, "seed", r.draw.seed);
         cJSON_AddStringToObject(o, "outcome", fs_outcome_name(r.outcome));
+        cJSON_AddStringToObject(o, "rule", fs_rule_name(r.rule));
         cJSON_AddStringToObject(o, "failure", r.failure);
         double pose[5] = {r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg};
         cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
@@ -245,13 +246,19 @@ int cli_trial(const cli_args *a)
         print_json(o);
         cJSON_Delete(o);
     } else {
-        printf("%s, seed %ld: %s%s%s\n  start x %.4f m, y %.4f m, yaw %.1f deg, pitch %.2f deg, roll %.2f deg\n"
+        char rest[64];
+        if (r.rule == FS_RULE_AT_REST || r.rule == FS_RULE_RESTED_TILTED)
+            snprintf(rest, sizeof rest, "at rest %.3f s after touchdown", r.settle_time_s);
+        else
+            snprintf(rest, sizeof rest, "not at rest at the end");
+        printf("%s, seed %ld: %s (%s)%s%s\n  robot %.1f kg on the foot; start x %.4f m, y %.4f m, yaw %.1f deg, pitch %.2f "
+               "deg, roll %.2f deg\n"
                "  touchdown %.3f s, end %.3f s; lean peak %.1f deg, final %.1f deg; peak force %.0f N, impulse %.2f N s\n"
-               "  settled %.3f s after touchdown; contacts mean %.1f, final %.0f; ankle drop %.2f mm, slip %.2f mm\n",
-               a->input, seed, fs_outcome_name(r.outcome), r.failure[0] ? ": " : "", r.failure, r.draw.x_m, r.draw.y_m,
-               r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg, r.touchdown_s, r.end_time_s, r.peak_tilt_deg,
-               r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, r.settle_time_s, r.mean_contacts,
-               r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
+               "  %s; contacts mean %.1f, final %.0f; ankle drop %.2f mm, slip %.2f mm\n",
+               a->input, seed, fs_outcome_name(r.outcome), fs_rule_name(r.rule), r.failure[0] ? ": " : "", r.failure,
+               r.robot_mass_kg, r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg, r.touchdown_s,
+               r.end_time_s, r.peak_tilt_deg, r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, rest,
+               r.mean_contacts, r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
     }
     return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
 }

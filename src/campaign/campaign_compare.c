@@ -85,6 +85,14 @@ static int compare_row(FILE *out, const cJSON *baseline, const cJSON *b, const c
         (*changed)++;
         bad += report_change(out, r, "success_rate", base_rate, rate, number_of(b, "ci_low"), number_of(b, "ci_high"));
     }
+    /* trials the window left undecided: never more than the baseline's (a baseline without the
+       count had none: its rules decided every trial) */
+    double und = number_of(r, "undecided"), base_und = number_of(b, "undecided");
+    und = isnan(und) ? 0 : und, base_und = isnan(base_und) ? 0 : base_und;
+    if (und != base_und) {
+        (*changed)++;
+        bad += report_change(out, r, "undecided", base_und, und, 0, base_und);
+    }
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         char key[FS_NAME_MAX + 8];
         snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);

@@ -70,7 +70,7 @@ static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain)
 static int fill_trials(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    fprintf(f, "foot,terrain%s%s,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome", c->sweep[0] ? "," : "", c->sweep);
+    fprintf(f, "foot,terrain%s%s,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", c->sweep[0] ? "," : "", c->sweep);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",%s", fs_campaign_metrics[m].name);
     fputs(",failure\n", f);
@@ -83,7 +83,7 @@ static int fill_trials(FILE *f, const out_ctx *x)
         const double pose[5] = {r->draw.x_m, r->draw.y_m, r->draw.yaw_deg, r->draw.pitch_deg, r->draw.roll_deg};
         for (int k = 0; k < 5; k++)
             csv_number(f, pose[k]);
-        fprintf(f, ",%s", fs_outcome_name(r->outcome));
+        fprintf(f, ",%s,%s", fs_outcome_name(r->outcome), fs_rule_name(r->rule));
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             csv_number(f, fs_metric_value(r, m));
         csv_text(f, r->outcome == FS_FAILED_NUMERICS ? r->failure : "");
@@ -95,7 +95,7 @@ static int fill_trials(FILE *f, const out_ctx *x)
 static int fill_summary_csv(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    fprintf(f, "foot,terrain%s%s,trials,landed,fell,failed_numerics,success_rate,ci_low,ci_high", c->sweep[0] ? "," : "",
+    fprintf(f, "foot,terrain%s%s,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high", c->sweep[0] ? "," : "",
             c->sweep);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
@@ -103,7 +103,7 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
     for (int i = 0; i < c->nfeet * c->nterrains; i++) {
         const fs_campaign_row *r = &x->rows[i];
         csv_row_key(f, c, r->foot, r->terrain);
-        fprintf(f, ",%d,%d,%d,%d", r->trials, r->landed, r->fell, r->failed_numerics);
+        fprintf(f, ",%d,%d,%d,%d,%d", r->trials, r->landed, r->fell, r->undecided, r->failed_numerics);
         csv_number(f, r->success_rate);
         csv_number(f, r->ci_low);
         csv_number(f, r->ci_high);
@@ -120,20 +120,21 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
     char trial[FS_NAME_MAX];
     fs_path_stem(c->trial_path, trial, sizeof trial);
     fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot and terrain)%s%s. Success: the "
-               "trial landed; interval: 95 %% Wilson score. Medians over the trials that did not fail numerically.\n\n",
+               "trial landed; undecided trials (the window ended first) count as not landed and are shown apart; "
+               "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically.\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
             c->sweep[0] ? "; terrain swept over " : "", c->sweep);
-    fputs("| foot | terrain | trials | landed | fell | failed_numerics | success | 95 % CI |", f);
+    fputs("| foot | terrain | trials | landed | fell | undecided | failed_numerics | success | 95 % CI |", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, " %s |", fs_campaign_metrics[m].name);
-    fputs("\n|---|---|--:|--:|--:|--:|--:|---|", f);
+    fputs("\n|---|---|--:|--:|--:|--:|--:|--:|---|", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fputs("--:|", f);
     fputc('\n', f);
     for (int i = 0; i < c->nfeet * c->nterrains; i++) {
         const fs_campaign_row *r = &x->rows[i];
-        fprintf(f, "| %s | %s | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
-                c->terrain[r->terrain].name, r->trials, r->landed, r->fell, r->failed_numerics, r->success_rate,
+        fprintf(f, "| %s | %s | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
+                c->terrain[r->terrain].name, r->trials, r->landed, r->fell, r->undecided, r->failed_numerics, r->success_rate,
                 r->ci_low, r->ci_high);
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
@@ -182,6 +183,7 @@ static cJSON *summary_json(const out_ctx *x)
         cJSON_AddNumberToObject(o, "trials", r->trials);
         cJSON_AddNumberToObject(o, "landed", r->landed);
         cJSON_AddNumberToObject(o, "fell", r->fell);
+        cJSON_AddNumberToObject(o, "undecided", r->undecided);
         cJSON_AddNumberToObject(o, "failed_numerics", r->failed_numerics);
         cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
         cJSON_AddNumberToObject(o, "ci_low", r->ci_low);

@@ -57,6 +57,7 @@ void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results,
                 row->trials++;
                 row->landed += r[s].outcome == FS_LANDED;
                 row->fell += r[s].outcome == FS_FELL;
+                row->undecided += r[s].outcome == FS_UNDECIDED;
                 row->failed_numerics += r[s].outcome == FS_FAILED_NUMERICS;
             }
             row->success_rate = (double)row->landed / row->trials;

@@ -1,4 +1,5 @@
-/* experiment_trial.c: landing trials: draw a pose, drop the robot on its foot, decide the outcome. */
+/* experiment_trial.c: landing trials: draw a pose, drop the robot on its foot, judge the outcome
+ * (fs_outcome.h). */
 #include "footsim/experiment/fs_trial.h"
 
 #include "footsim/sim/fs_drive.h"
@@ -11,15 +12,6 @@
 #include <string.h>
 
 #define DEG (M_PI / 180.0)
-
-/* No foot shape may end deeper below the terrain than this and count as landed, m. */
-static const double LANDED_MAX_PENETRATION_M = 1e-3;
-
-const char *fs_outcome_name(int outcome)
-{
-    static const char *names[] = {"landed", "fell", "failed_numerics"};
-    return outcome >= 0 && outcome <= 2 ? names[outcome] : "unknown";
-}
 
 /* Uniform in [-1, 1) from the seed and a stream number: the same on every machine. */
 static double symmetric(int seed, int stream)
@@ -92,43 +84,56 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
     }
 }
 
-/* A trial's state while it runs, for its hooks. */
+/* The rules of fs_outcome.h from the scenario's [landing] and [run] keys and the terrain's bound. */
+static void rules_of(const fs_scenario *sc, const fs_sim *sim, fs_outcome_rules *r)
+{
+    const fs_scenario_def *d = &sc->def;
+    double mass = 0;
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        mass += sc->geom.body[i].mass_kg;
+    mass += d->robot.mass_kg;
+    *r = (fs_outcome_rules){.fall_lean_rad = d->fall_tilt_deg * DEG,
+                            .landed_lean_rad = d->landed_tilt_deg * DEG,
+                            .lost_ground_s = d->lost_ground_s,
+                            .sink_bound_m = sc->terrain.def.sink_bound_m,
+                            .rest_speed_m_per_s = d->rest_speed_m_per_s,
+                            .rest_hold_s = d->rest_hold_s,
+                            .window_s = d->duration_s,
+                            .motion_window_s = d->motion_window_s,
+                            .motion_decay = d->motion_decay,
+                            /* everything moving at the rest speed */
+                            .motion_floor_J = 0.5 * mass * d->rest_speed_m_per_s * d->rest_speed_m_per_s};
+}
+
+static void sample_of(const fs_sim *sim, fs_outcome_sample *s)
+{
+    double ke;
+    fs_sim_energy(sim, &ke, NULL, NULL);
+    *s = (fs_outcome_sample){sim->time_s, fs_sim_robot_tilt(sim), ke, fs_sim_max_speed(sim), sim->contacts_now};
+}
+
+/* A trial's state while it runs, for its hook. */
 typedef struct trial_run {
     const fs_scenario_def *d;
     watch w;
+    fs_judge judge;
+    fs_outcome_sample last;
     fs_trial_result *out;
 } trial_run;
 
-static int watch_step(void *user, fs_sim *sim)
+/* Watches and judges each step; stops when the judge says the trial is over. */
+static int judge_step(void *user, fs_sim *sim)
 {
     trial_run *t = user;
     observe_step(sim, &t->w, t->out, t->d->step_s);
-    return 0;
+    sample_of(sim, &t->last);
+    int over = fs_judge_step(&t->judge, &t->last);
+    if (t->judge.at_rest && t->w.rest_since < 0)
+        t->w.rest_since = t->judge.rest_since_s;
+    return over;
 }
 
-/* Fell: the robot leans past fall_tilt_deg. */
-static int fell_rule(void *user, fs_sim *sim)
-{
-    const trial_run *t = user;
-    return fs_sim_robot_tilt(sim) > t->d->fall_tilt_deg * DEG;
-}
-
-/* At rest: every body slow for rest_hold_s, after touchdown. */
-static int rest_rule(void *user, fs_sim *sim)
-{
-    trial_run *t = user;
-    if (t->w.touched && fs_sim_max_speed(sim) < t->d->rest_speed_m_per_s) {
-        if (t->w.rest_since < 0)
-            t->w.rest_since = sim->time_s;
-        return sim->time_s - t->w.rest_since >= t->d->rest_hold_s;
-    }
-    t->w.rest_since = -1;
-    return 0;
-}
-
-enum { HOOK_WATCH, HOOK_FELL, HOOK_REST };
-
-/* Steps until fallen, or at rest after touchdown, or out of time; classifies. */
+/* Steps until the judge decides or the window ends; classifies. */
 static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
@@ -137,10 +142,13 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
-    trial_run t = {d, {.rest_since = -1}, out};
-    const fs_step_hook hooks[] = {[HOOK_WATCH] = {"watched", watch_step, &t}, [HOOK_FELL] = {"fell", fell_rule, &t},
-                                  [HOOK_REST] = {"at rest", rest_rule, &t}};
-    fs_drive_spec spec = {.max_steps = (long)ceil(d->duration_s / d->step_s - 1e-9), .hooks = hooks, .nhooks = 3,
+    trial_run t = {.d = d, .w = {.rest_since = -1}, .out = out};
+    fs_outcome_rules rules;
+    rules_of(sc, &sim, &rules);
+    out->robot_mass_kg = d->robot.mass_kg;
+    fs_judge_init(&t.judge, &rules);
+    const fs_step_hook hooks[] = {{"judged", judge_step, &t}};
+    fs_drive_spec spec = {.max_steps = (long)ceil(d->duration_s / d->step_s - 1e-9), .hooks = hooks, .nhooks = 1,
                           .obs = obs};
     fs_drive_result r;
     fs_error step_err;
@@ -148,6 +156,7 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     out->steps = r.steps - r.step_failed;
     if (r.step_failed) { /* a result of the trial, not a failure of the call */
         out->outcome = FS_FAILED_NUMERICS;
+        out->rule = FS_RULE_NUMERICS;
         snprintf(out->failure, sizeof out->failure, "seed %d: %.480s", out->draw.seed, step_err.message);
         s = FS_OK;
     }
@@ -158,10 +167,10 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     }
     finish(&sim, &t.w, out);
     if (out->outcome != FS_FAILED_NUMERICS) {
-        int upright = out->final_tilt_deg < d->landed_tilt_deg;
-        int on_ground = sim.contacts_now > 0 && fs_sim_penetration(&sim) <= LANDED_MAX_PENETRATION_M;
-        int at_rest = r.stopped_by == HOOK_REST;
-        out->outcome = r.stopped_by != HOOK_FELL && at_rest && upright && on_ground ? FS_LANDED : FS_FELL;
+        sample_of(&sim, &t.last);
+        fs_judge_finish(&t.judge, &t.last, fs_sim_penetration(&sim));
+        out->outcome = t.judge.outcome;
+        out->rule = t.judge.rule;
     }
     fs_sim_destroy(&sim);
     return FS_OK;

@@ -54,6 +54,8 @@ const fs_key fs_terrain_keys[] = {
     NUM("material", "restitution", restitution, 0, 1, 0, "", "0", "bounce: the share of normal speed kept after impact"),
     NUM("material", "stiffness_N_per_m", stiffness_N_per_m, 0, 1e12, POS, "N/m", "1e8", "contact stiffness (in series with the sole's)"),
     NUM("material", "damping_Ns_per_m", damping_Ns_per_m, 0, 1e9, 0, "N s/m", "2e4", "contact damping (in series with the sole's)"),
+    NUM("material", "sink_bound_m", sink_bound_m, 0, 1, POS, "m", "1e-3",
+        "a landing fell when a foot shape ends deeper than this in the ground (soft ground states its own)"),
 };
 const int fs_terrain_nkeys = (int)(sizeof fs_terrain_keys / sizeof fs_terrain_keys[0]);
 

@@ -102,7 +102,7 @@ void fs_wilson(int k, int n, double *low, double *high);
 /* One row of the summary: a foot on a terrain over all seeds. */
 typedef struct fs_campaign_row {
     int foot, terrain;
-    int trials, landed, fell, failed_numerics;
+    int trials, landed, fell, undecided, failed_numerics;
     double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
     int nmetric;                           /* trials the medians are over (all but failed_numerics) */
     double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
@@ -127,8 +127,9 @@ fs_status fs_campaign_write_chart(const fs_campaign *c, const fs_campaign_row *r
 int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *out);
 
 /* Compares two summary.json files, printing a table of what changed to out. FS_OK when every
- * success rate lies in its baseline's [ci_low, ci_high] and every median within the baseline's
- * tolerance (|result - baseline| <= relative * |baseline| + absolute); FS_EXPECTATION_FAILED when
+ * success rate lies in its baseline's [ci_low, ci_high], no cell has more undecided trials than the
+ * baseline's, and every median lies within the baseline's tolerance
+ * (|result - baseline| <= relative * |baseline| + absolute); FS_EXPECTATION_FAILED when
  * not, or when a row is missing on either side; FS_BAD_INPUT when a file cannot be read as a summary. */
 fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, FILE *out, fs_error *err);
 

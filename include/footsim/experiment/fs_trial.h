@@ -7,17 +7,14 @@
  * the draw and, on a random terrain, the terrain's own seed: the same scenario, overrides and
  * seed give a bit-identical result on any machine and in any process.
  *
- * Outcome (docs/landing.md states the rules): landed when, at rest, the body leans less than
- * landed_tilt_deg from upright, the foot touches the terrain and no foot shape is more than 1 mm
- * below it; fell when the lean passes fall_tilt_deg (the trial stops there) or when it comes to
- * rest otherwise; numerical when the state stops being finite (the message says when). */
+ * Outcome: the rules of fs_outcome.h, on the robot's lean, the foot's contact, the bodies' motion
+ * and the deepest foot shape; the result names the rule that decided (docs/landing.md). */
 #ifndef FS_TRIAL_H
 #define FS_TRIAL_H
 
+#include "footsim/experiment/fs_outcome.h"
 #include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
-
-typedef enum fs_outcome { FS_LANDED = 0, FS_FELL = 1, FS_FAILED_NUMERICS = 2 } fs_outcome;
 
 /* The drawn start of a trial. */
 typedef struct fs_trial_draw {
@@ -28,13 +25,15 @@ typedef struct fs_trial_draw {
 typedef struct fs_trial_result {
     fs_trial_draw draw;
     int outcome;                 /* fs_outcome */
+    int rule;                    /* fs_rule: what decided it */
+    double robot_mass_kg;        /* the robot dropped (every body above the ankle) */
     char failure[512];           /* for FS_FAILED_NUMERICS: what happened, and when */
     double end_time_s;           /* simulated time when the trial ended */
     double touchdown_s;          /* first contact */
     double peak_tilt_deg, final_tilt_deg;   /* the body's lean from upright */
     double peak_force_N;         /* peak vertical ground force on the foot */
     double impact_impulse_Ns;    /* vertical ground impulse from touchdown until the fall is arrested */
-    double settle_time_s;        /* from touchdown until at rest */
+    double settle_time_s;        /* from touchdown until at rest (until the end when it never was) */
     double mean_contacts, final_contacts;   /* foot-terrain contact points, mean after touchdown */
     double ankle_drop_m;         /* ankle height at touchdown minus at the end */
     double slip_m;               /* horizontal travel of the ankle from touchdown to the end */
@@ -61,8 +60,5 @@ fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, 
  * once). Otherwise as fs_trial_run. */
 fs_status fs_trial_run_scenario(const fs_scenario *sc, int seed, const fs_run_observer *obs, fs_trial_result *out,
                                 fs_error *err);
-
-/* Names of outcomes: "landed", "fell", "failed_numerics". */
-const char *fs_outcome_name(int outcome);
 
 #endif

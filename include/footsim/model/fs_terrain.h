@@ -38,6 +38,7 @@ typedef struct fs_terrain_def {
     char heightmap_path[FS_PATH_MAX];
     double heightmap_scale_m, heightmap_pixel_m, heightmap_x0_m, heightmap_y0_m;
     double mu, restitution, stiffness_N_per_m, damping_Ns_per_m; /* the ground's material */
+    double sink_bound_m;       /* deepest a landed foot may end in it (fs_outcome.h) */
 } fs_terrain_def;
 
 typedef struct fs_rock { double x, y, height, radius; } fs_rock;
