@@ -306,6 +306,7 @@ int cli_keys(const cli_args *a)
     fs_config_print_keys(fs_design_keys, fs_design_nkeys, "Design files (scenarios/feet/*.ini)", stdout);
     fs_config_print_keys(fs_scenario_keys, fs_scenario_nkeys, "Scenario files (scenarios/*.ini)", stdout);
     fs_config_print_keys(fs_terrain_keys, fs_terrain_nkeys, "Terrain files (terrains/*.ini)", stdout);
+    fs_config_print_keys(fs_robot_keys, fs_robot_nkeys, "Robot files (scenarios/robots/*.ini)", stdout);
     printf("### Limits\n\nWhat footsim refuses up front (exit 2, before anything is simulated or written), so that no\n"
            "count overflows and no buffer outgrows memory:\n\n| what | at most |\n|---|---|\n"
            "| an input file (design, scenario, terrain, campaign) | %d bytes, %d keys; regular files only |\n"

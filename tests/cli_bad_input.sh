@@ -20,6 +20,14 @@ expect 2 "unknown command" -- sprint
 expect 2 "cannot create folder" -- run scenarios/static_load.ini --out /proc/footsim/out
 expect 2 "unknown section \[wheels\]" -- stiffness scenarios/feet/biomimetic.ini --set wheels.count=4
 
+# robots: their keys live in robot files (scenarios/robots/), checked like any other file
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\nmass_kg = 26\n' "$PWD" >"$tmp/inline.ini"
+printf '[robot]\nmass_kg = 26\nmount = sideways\n' >"$tmp/bad_robot.ini"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign = bad_robot.ini\n' "$PWD" >"$tmp/uses_bad.ini"
+expect 2 "$tmp/inline.ini:4: 'mass_kg' is a key of a robot file, not of a scenario" -- trial "$tmp/inline.ini"
+expect 2 "$tmp/bad_robot.ini:3: mount = 'sideways'" -- trial "$tmp/uses_bad.ini"
+expect 2 "--set robot.mass: unknown key 'mass' in \[robot\]" -- trial scenarios/landing_trial.ini --set robot.mass=3
+
 # campaigns: refused with file:line before any trial runs (nothing written)
 camp() { # camp NAME BODY: a campaign file on the stand-in trial with one foot and one terrain
     printf '[campaign]\ntrial = %s/scenarios/campaign_test_trial.ini\n%b\n[foot.bio]\nfile = %s/scenarios/feet/biomimetic.ini\n[terrain.flat]\nfile = %s/terrains/flat.ini\n' \

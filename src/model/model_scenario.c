@@ -48,16 +48,9 @@ const fs_key fs_scenario_keys[] = {
         "1e-9", "depth ODE lets contacts sink before pushing back; keeps stiff contacts from chattering on and off"),
     {"run", "tile_cells", FS_KEY_INTEGER, F(tile_cells), 2, 4096, 0, 0, NULL, "", "8",
      "a heightfield is built as square tiles of this many cells a side (speed only)"},
-    NUM("robot", "mass_kg", robot.mass_kg, 0, 1e4, 0, "kg", "0", "the passive body on the ankle (0: none); half of the paper's 52 kg person is 26"),
-    NUM("robot", "com_height_m", robot.com_height_m, 0, 10, POS, "m", "0.4", "its centre of mass above the ankle"),
-    NUM("robot", "com_forward_m", robot.com_forward_m, -1, 1, 0, "m", "0.035", "its centre of mass ahead of the ankle (puts the ZMP inside the footprint)"),
-    {"robot", "inertia_kgm2", FS_KEY_LIST, F(robot.inertia_kgm2), 0, 1e4, FS_KEY_OPEN_MIN, 3, NULL, "kg m^2", "1.4, 1.4, 0.1",
-     "its principal moments of inertia about x, y, z at the centre of mass"},
-    {"robot", "joint", FS_KEY_CHOICE, F(robot.joint), 0, 0, 0, 0, "rigid|achilles", "", "rigid",
-     "rigid: fixed to the ankle body; achilles: an ankle hinge with a heel-to-leg spring-damper"},
-    NUM("robot", "achilles_k_N_per_m", robot.achilles_k_N_per_m, 0, 1e9, POS, "N/m", "1e6", "Achilles tendon stiffness (2 cm behind the ankle: k (0.02 m)^2 must beat m g com_height)"),
-    NUM("robot", "achilles_c_Ns_per_m", robot.achilles_c_Ns_per_m, 0, 1e7, 0, "N s/m", "2000", "Achilles tendon damping"),
-    NUM("robot", "achilles_leg_anchor_m", robot.achilles_leg_anchor_m, 0, 10, POS, "m", "0.1", "where the tendon meets the leg, above the ankle"),
+    {"robot", "design", FS_KEY_PATH, F(robot_path), 0, 0, 0, 0, NULL, "", "",
+     "the robot's file (scenarios/robots/*.ini, keys below under Robot files), relative to the scenario's folder; "
+     "none: no robot"},
     NUM("landing", "x_range_m", land_x_range_m, 0, 10, 0, "m", "0.01", "landing position drawn within +- this of start.x_m"),
     NUM("landing", "y_range_m", land_y_range_m, 0, 10, 0, "m", "0.01", "landing position drawn within +- this of start.y_m"),
     NUM("landing", "yaw_range_deg", land_yaw_range_deg, 0, 180, 0, "deg", "10", "yaw drawn within +- this"),
@@ -110,9 +103,11 @@ static int has_section(const fs_key *keys, int n, const char *assignment)
     return 0;
 }
 
-/* Which of the three files an override belongs to: 0 scenario, 1 terrain, 2 design. */
+/* Which of the four files an override belongs to: 0 scenario, 1 terrain, 2 design, 3 robot. */
 static int override_target(const char *assignment)
 {
+    if (!strncmp(assignment, "robot.", 6))
+        return strncmp(assignment + 6, "design", 6) || (assignment[12] != '=' && assignment[12] != 0) ? 3 : 0;
     if (has_section(fs_scenario_keys, fs_scenario_nkeys, assignment))
         return 0;
     return has_section(fs_terrain_keys, fs_terrain_nkeys, assignment) ? 1 : 2;
@@ -146,8 +141,8 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     enum { MAX_OVERRIDES = 256 };
     if (noverrides > MAX_OVERRIDES)
         return fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides", MAX_OVERRIDES);
-    const char *part[3][MAX_OVERRIDES];
-    int n[3] = {0, 0, 0};
+    const char *part[4][MAX_OVERRIDES];
+    int n[4] = {0, 0, 0, 0};
     for (int i = 0; i < noverrides; i++) {
         int t = override_target(overrides[i]);
         part[t][n[t]++] = overrides[i];
@@ -159,6 +154,14 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     fs_status s = fs_config_load(&cfg, path, err);
     for (int i = 0; s == FS_OK && i < n[0]; i++)
         s = fs_config_override(&cfg, part[0][i], err);
+    for (int i = 0; s == FS_OK && i < fs_robot_nkeys; i++)
+        if (fs_config_has(&cfg, "robot", fs_robot_keys[i].name)) { /* the inline keys of before robot files */
+            char where[FS_PATH_MAX + 80];
+            s = fs_fail(err, FS_BAD_INPUT, "%s: '%s' is a key of a robot file, not of a scenario: put the robot's keys "
+                        "in a file (as scenarios/robots/single_tall.ini) and name it here with `design = "
+                        "robots/NAME.ini`", fs_config_where(&cfg, "robot", fs_robot_keys[i].name, where, sizeof where),
+                        fs_robot_keys[i].name);
+        }
     if (s == FS_OK)
         s = fs_config_bind(&cfg, fs_scenario_keys, fs_scenario_nkeys, &sc->def, err);
     if (s == FS_OK && sc->def.log_interval_s < sc->def.step_s) {
@@ -201,6 +204,9 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     }
     fs_config_free(&cfg);
     if (s == FS_OK)
+        s = fs_robot_load(sc->def.robot_path, part[3], n[3], &sc->def.robot, err);
+    sc->is_trial |= sc->def.robot.mass_kg > 0; /* a robot given by --set alone */
+    if (s == FS_OK)
         s = fs_design_load(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, err);
     if (s == FS_OK)
         s = fs_terrain_load(sc->def.terrain_path, part[1], n[1], &sc->terrain, err);
@@ -240,6 +246,8 @@ fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
         s = fs_config_check(fs_design_keys, fs_design_nkeys, &sc->design, what, err);
     if (s == FS_OK)
         s = fs_config_check(fs_terrain_keys, fs_terrain_nkeys, &sc->terrain.def, what, err);
+    if (s == FS_OK)
+        s = fs_config_check(fs_robot_keys, fs_robot_nkeys, &sc->def.robot, what, err);
     if (s == FS_OK)
         s = fs_design_geometry(&sc->design, NULL, &sc->geom, err);
     if (s != FS_OK)

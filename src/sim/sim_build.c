@@ -169,7 +169,8 @@ static void build_joints(fs_sim *sim)
 /* ---- the robot ---------------------------------------------------------------------------- */
 
 /* The passive body on the ankle: rigidly fixed, or hinged at the ankle with an Achilles
- * spring-damper from the ankle body, 2 cm behind the joint, to the leg. (The tendon ends on the
+ * spring-damper from the ankle body, 2 cm behind the joint, to the leg; free, or on a vertical
+ * slide to the world (fs_robot.h). (The tendon ends on the
  * talus, not the heel: here the heel turns about the same ankle axis as the leg would, so a
  * heel-to-leg tendon would let leg and heel fold together about it unresisted.) */
 static void build_robot(fs_sim *sim)
@@ -187,6 +188,11 @@ static void build_robot(fs_sim *sim)
     const double *R = sim->R0;
     dMatrix3 rot = {R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0};
     dBodySetRotation(sim->robot, rot);
+    if (s->robot.mount == FS_ROBOT_VERTICAL) { /* the carriage's slide: up and down only */
+        dJointID slide = dJointCreateSlider(sim->world, 0);
+        dJointAttach(slide, sim->robot, 0);
+        dJointSetSliderAxis(slide, 0, 0, 1);
+    }
     if (s->robot.joint == FS_ROBOT_RIGID) {
         sim->robot_joint = dJointCreateFixed(sim->world, 0);
         dJointAttach(sim->robot_joint, sim->robot, ankle_body);

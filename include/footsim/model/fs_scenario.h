@@ -2,31 +2,21 @@
  * how to integrate. fs_scenario_load reads and checks the file and the design it names, and
  * refuses anything wrong before any simulation starts.
  *
- * Overrides ("section.key=value") go to the scenario, the terrain or the design, whichever has
- * that section (their sections are distinct), so `--set springs.k_d1_N_per_m=9000` reaches the
- * foot and `--set material.mu=0.5` the ground through the scenario. */
+ * Overrides ("section.key=value") go to the scenario, the terrain, the design or the robot,
+ * whichever has that key (their sections are distinct, but for [robot]: `design` is the
+ * scenario's, the rest the robot file's), so `--set springs.k_d1_N_per_m=9000` reaches the foot,
+ * `--set material.mu=0.5` the ground and `--set robot.mass_kg=30` the robot through the scenario. */
 #ifndef FS_SCENARIO_H
 #define FS_SCENARIO_H
 
 #include "footsim/model/fs_design.h"
+#include "footsim/model/fs_robot.h"
 #include "footsim/model/fs_terrain.h"
 
 /* The most steps one run, trial or walk may take (docs/keys.md): refused before it starts. */
 enum { FS_MAX_STEPS = 1000000000 };
 
 typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
-
-/* [robot]: the passive robot on the ankle that a landing trial drops and the walking machine
- * carries; none when its mass is 0. A definition of its own, so that robots can become design
- * files of their own (issue 11: `[robot] design = robots/NAME.ini`) parsed into it, and so that a
- * kind of robot (a biped, a rig) can grow from it without touching the scenario. */
-typedef enum fs_robot_joint { FS_ROBOT_RIGID = 0, FS_ROBOT_ACHILLES = 1 } fs_robot_joint;
-typedef struct fs_robot_def {
-    double mass_kg, com_height_m, com_forward_m; /* the body (torso and leg); COM above and ahead of the ankle */
-    double inertia_kgm2[3];    /* principal moments about its COM */
-    int joint;                 /* fs_robot_joint: rigid, or an ankle hinge with an Achilles spring-damper */
-    double achilles_k_N_per_m, achilles_c_Ns_per_m, achilles_leg_anchor_m;
-} fs_robot_def;
 
 /* [scenario] kind: what the scenario is run by (the order of the key's choices). */
 typedef enum fs_scenario_kind { FS_SCENARIO_EXPERIMENT = 0, FS_SCENARIO_WALK = 1 } fs_scenario_kind;
@@ -54,7 +44,8 @@ typedef struct fs_scenario_def {
     double joint_erp, joint_cfm; /* ODE's hinge error reduction and constraint force mixing */
     double contact_layer_m;    /* ODE's contact surface layer */
     int tile_cells;            /* heightfield tiles' size, cells a side */
-    fs_robot_def robot;        /* [robot] */
+    char robot_path[FS_PATH_MAX]; /* [robot] design: the robot's file, or "" for none */
+    fs_robot_def robot;        /* read from it (fs_robot.h) */
     /* [landing]: the drawn pose and the rules of a landing trial */
     double land_x_range_m, land_y_range_m, land_yaw_range_deg, land_tilt_range_deg;
     double landed_tilt_deg, fall_tilt_deg;

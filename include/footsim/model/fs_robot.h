@@ -1,0 +1,34 @@
+/* fs_robot.h: the passive robot a landing trial drops and the walking machine carries, as a file of
+ * its own (scenarios/robots/NAME.ini), named from a scenario by `[robot] design = robots/NAME.ini`.
+ *
+ * A robot is one rigid body standing for torso and leg, its mass, centre of mass and principal
+ * inertia stated, joined to the foot's ankle body rigidly or through an ankle hinge with an
+ * Achilles spring-damper, and mounted free (all six degrees of freedom) or on a vertical slide (the
+ * walking machine's carriage: pitch, roll, yaw and horizontal motion held). docs/landing.md gives
+ * every shipped robot's choices and why. fs_robot_load reads and checks a file with the scenario's
+ * --set overrides of its keys (`--set robot.mass_kg=30`); an empty path is no robot (mass 0). */
+#ifndef FS_ROBOT_H
+#define FS_ROBOT_H
+
+#include "footsim/io/fs_config.h"
+
+typedef enum fs_robot_joint { FS_ROBOT_RIGID = 0, FS_ROBOT_ACHILLES = 1 } fs_robot_joint;
+typedef enum fs_robot_mount { FS_ROBOT_FREE = 0, FS_ROBOT_VERTICAL = 1 } fs_robot_mount;
+
+typedef struct fs_robot_def {
+    double mass_kg, com_height_m, com_forward_m; /* the body (torso and leg); COM above and ahead of the ankle */
+    double inertia_kgm2[3];    /* principal moments about its COM */
+    int joint;                 /* fs_robot_joint: rigid, or an ankle hinge with an Achilles spring-damper */
+    double achilles_k_N_per_m, achilles_c_Ns_per_m, achilles_leg_anchor_m;
+    int mount;                 /* fs_robot_mount: free, or held but for vertical motion */
+} fs_robot_def;
+
+extern const fs_key fs_robot_keys[];
+extern const int fs_robot_nkeys;
+
+/* Reads path (none when empty: the defaults with mass 0) with overrides ("robot.key=value") into
+ * def; anything wrong is FS_BAD_INPUT with file:line. */
+fs_status fs_robot_load(const char *path, const char *const *overrides, int noverrides, fs_robot_def *def,
+                        fs_error *err);
+
+#endif
