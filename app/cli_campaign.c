@@ -48,14 +48,14 @@ static void run_one(int index, void *result, void *user)
     const campaign_run *p = user;
     message *m = result;
     const fs_campaign *c = p->c;
-    int foot, terrain, seed;
-    fs_campaign_trial_of(c, index, &foot, &terrain, &seed);
+    int cell, seed;
+    fs_campaign_trial_of(c, index, &cell, &seed);
     if (seed == p->crash_seed)
         _exit(FS_NUMERICAL); /* FOOTSIM_TEST_CRASH_SEED: what an ODE error does */
     if (seed == p->stop_seed)
         raise(SIGSTOP); /* FOOTSIM_TEST_STOP_SEED: a worker that hangs, for the watchdog */
     fs_error err = {FS_OK, ""};
-    m->status = fs_trial_run_scenario(fs_campaign_pair(c, foot, terrain), seed, NULL, &m->result, &err);
+    m->status = fs_trial_run_scenario(fs_campaign_pair(c, cell), seed, NULL, &m->result, &err);
     snprintf(m->error, sizeof m->error, "%s", err.message);
 }
 
@@ -76,8 +76,8 @@ static void record_death(int index, const fs_pool_death *d, void *user)
 {
     campaign_run *p = user;
     const fs_campaign *c = p->c;
-    int foot, terrain, seed;
-    fs_campaign_trial_of(c, index, &foot, &terrain, &seed);
+    int cell, seed;
+    fs_campaign_trial_of(c, index, &cell, &seed);
     fs_trial_result *r = &p->results[index];
     memset(r, 0, sizeof *r);
     double nan = NAN;
@@ -85,9 +85,12 @@ static void record_death(int index, const fs_pool_death *d, void *user)
     r->impact_impulse_Ns = r->settle_time_s = r->mean_contacts = r->final_contacts = nan;
     r->ankle_drop_m = r->slip_m = nan;
     r->outcome = FS_FAILED_NUMERICS;
-    fs_trial_draw_pose(fs_campaign_pair(c, foot, terrain), seed, &r->draw);
-    snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s, seed %d, %s",
-             c->foot[foot].name, c->terrain[terrain].name, seed, d->how);
+    fs_trial_draw_pose(fs_campaign_pair(c, cell), seed, &r->draw);
+    int foot, terrain, robot;
+    fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+    r->rule = FS_RULE_NUMERICS;
+    snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s under robot %s, seed %d, %s",
+             c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed, d->how);
     p->failed++;
     if (p->progress.tty)
         fputc('\n', stderr);
@@ -120,10 +123,10 @@ int cli_parse_jobs(const cli_args *a, int *jobs)
 
 static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
 {
-    for (int i = 0; i < c->nfeet * c->nterrains; i++) {
+    for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &rows[i];
-        printf("  %-12s on %-20s landed %3d of %3d (%.2f, 95 %% CI [%.2f, %.2f])", c->foot[r->foot].name,
-               c->terrain[r->terrain].name, r->landed, r->trials, r->success_rate, r->ci_low, r->ci_high);
+        printf("  %-12s on %-18s under %-14s landed %3d of %3d (%.2f, 95 %% CI [%.2f, %.2f])", c->foot[r->foot].name,
+               c->terrain[r->terrain].name, c->robot[r->robot].name, r->landed, r->trials, r->success_rate, r->ci_low, r->ci_high);
         printf(", fell %3d, undecided %d", r->fell, r->undecided);
         printf(r->failed_numerics ? ", failed_numerics %d\n" : "\n", r->failed_numerics);
     }
@@ -132,7 +135,7 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
 /* Summarizes, writes every file (summary.json last), checks the expectations. */
 static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdir *out)
 {
-    int nrows = c->nfeet * c->nterrains;
+    int nrows = fs_campaign_ncells(c);
     fs_campaign_row *rows = malloc((size_t)nrows * sizeof *rows);
     if (!rows)
         return cli_report(FS_NO_MEMORY, "out of memory");

@@ -49,7 +49,7 @@ expect 2 "$tmp/noterrain.ini:6: terrain = 'rocks' is not one of the choices; all
 expect 2 "$tmp/minmax.ini:7: min_success = 0.8 is above max_success = 0.5" -- campaign "$tmp/minmax.ini" --out "$tmp/c6"
 expect 2 "$tmp/sweep.ini:5: sweep_values: 'abc' is not a finite number" -- campaign "$tmp/sweep.ini" --out "$tmp/c7"
 expect 2 "$tmp/nosweep.ini:4: sweep_values without sweep" -- campaign "$tmp/nosweep.ini" --out "$tmp/c8"
-expect 2 "--set mud.depth: unknown section \[mud\].*(campaign scenarios/landing_ci.ini: foot biomimetic on terrain flat)" -- campaign scenarios/landing_ci.ini --set mud.depth=3 --out "$tmp/c9"
+expect 2 "--set mud.depth: unknown section \[mud\].*(campaign scenarios/landing_ci.ini: foot biomimetic on terrain flat under robot single_tall)" -- campaign scenarios/landing_ci.ini --set mud.depth=3 --out "$tmp/c9"
 expect 2 "no such file" -- campaign scenarios/landing_ci.ini --set terrain.flat.file=../terrains/lava.ini --out "$tmp/c9"
 expect 2 "\-j 0: not a number of workers; allowed: a whole number from 1 to 1024" -- campaign scenarios/landing_ci.ini -j 0 --out "$tmp/c9"
 expect 2 "give two summary.json files" -- compare results/baseline/landing.json

@@ -47,7 +47,7 @@ done
 if command -v gnuplot >/dev/null 2>&1; then
     check "success.png the same with -j 1 and -j 4" cmp -s "$tmp/j1/success.png" "$tmp/j4/success.png"
 fi
-check "rows in order of foot, terrain, seed" [ "$(cut -d, -f1,2,3 "$tmp/j1/trials.csv" | tr '\n' ' ')" = \
+check "rows in order of foot, terrain, seed" [ "$(cut -d, -f1,2,4 "$tmp/j1/trials.csv" | tr '\n' ' ')" = \
     "foot,terrain,seed bio,bumpy,1 bio,bumpy,2 bio,bumpy,3 flat,bumpy,1 flat,bumpy,2 flat,bumpy,3 " ]
 # without a terminal: no bar redrawn with carriage returns, but plain progress lines (at each tenth
 # of the trials and at the end); stderr holds nothing else but, gnuplot being optional, the line
@@ -58,8 +58,8 @@ check "no carriage return without a terminal" [ -z "$(tr -dc '\r' <"$tmp/j1.err"
 check "a plain progress line at the end" grep -q '^footsim campaign: 6/6 trials done, 0 failed, ' "$tmp/j1.err"
 check "at most a line per tenth and the end" [ "$(grep -c 'trials done' "$tmp/j1.err")" -le 11 ]
 check "summary.json has the row fields" grep -q '"median_peak_force_N"' "$tmp/j1/summary.json"
-check "summary.csv names its columns with units" grep -q '^foot,terrain,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
-check "trials.csv names the rule that decided each trial" grep -q "^foot,terrain,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule," "$tmp/j1/trials.csv"
+check "summary.csv names its columns with units" grep -q '^foot,terrain,robot,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
+check "trials.csv names the rule that decided each trial" grep -q "^foot,terrain,robot,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule," "$tmp/j1/trials.csv"
 
 # a worker that dies on seed 2 (as an ODE error makes it, exit 3): failed_numerics, the campaign
 # goes on; an expectation that cannot hold then fails with exit 1, after the results are written;
@@ -69,11 +69,11 @@ FOOTSIM_TEST_CRASH_SEED=2 PATH="$tmp/nopath" "$fs" campaign "$tmp/small.ini" -j 
     --set expect.all.foot=flat --set expect.all.terrain=bumpy --set expect.all.min_success=1 \
     >"$tmp/crash.out" 2>"$tmp/crash.err"
 check "a failed expectation exits 1" [ $? -eq 1 ]
-check "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy landed . of 3' "$tmp/crash.out"
+check "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy under none landed . of 3' "$tmp/crash.out"
 check "the dead worker's trials are failed_numerics" [ "$(grep -c ',2,.*failed_numerics,.*seed 2, exited with status 3' "$tmp/crash/trials.csv")" -eq 2 ]
 check "the other trials ran" [ "$(grep -c -v failed_numerics "$tmp/crash/trials.csv")" -eq 5 ]
 check "the summary counts them" grep -q '"failed_numerics":	1' "$tmp/crash/summary.json"
-check "the death is reported on stderr" grep -q 'foot bio on terrain bumpy, seed 2, exited with status 3' "$tmp/crash.err"
+check "the death is reported on stderr" grep -q 'foot bio on terrain bumpy under robot none, seed 2, exited with status 3' "$tmp/crash.err"
 check "no gnuplot: said so" grep -q 'gnuplot is not installed' "$tmp/crash.err"
 check "no gnuplot: no chart" [ ! -e "$tmp/crash/success.png" ]
 
@@ -84,7 +84,7 @@ check "compare says identical" grep -q 'identical' "$tmp/cmp.out"
 sed '0,/"success_rate":/s/"success_rate":[^,]*/"success_rate":	-1/' "$tmp/j1/summary.json" >"$tmp/rate.json"
 "$fs" compare "$tmp/rate.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
 check "compare exits 1 when a rate leaves the baseline interval" [ $? -eq 1 ]
-check "compare names the rate" grep -q '| bio | bumpy | success_rate | .* | -1 |.*outside' "$tmp/cmp.out"
+check "compare names the rate" grep -q '| bio | bumpy | none | success_rate | .* | -1 |.*outside' "$tmp/cmp.out"
 sed '0,/"median_steps":/s/"median_steps":[^,]*/"median_steps":	1e12/' "$tmp/j1/summary.json" >"$tmp/steps.json"
 "$fs" compare "$tmp/steps.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
 check "compare exits 1 when a median moves too far" [ $? -eq 1 ]

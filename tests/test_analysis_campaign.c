@@ -53,9 +53,11 @@ static void small_campaign(fs_campaign *c)
     c->first_seed = 1;
     c->nfeet = 2;
     c->nterrains = 1;
+    c->nrobots = 1;
     snprintf(c->foot[0].name, FS_NAME_MAX, "bio");
     snprintf(c->foot[1].name, FS_NAME_MAX, "flat");
     snprintf(c->terrain[0].name, FS_NAME_MAX, "rocks");
+    snprintf(c->robot[0].name, FS_NAME_MAX, "tall");
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         c->tolerance[m][0] = 0.1;
         c->tolerance[m][1] = 1;
@@ -97,9 +99,11 @@ static void test_summarize(void)
     CHECK(rows[0].median[11] == 20); /* steps 10, 20, 30 */
     CHECK(rows[1].landed == 1 && rows[1].fell == 3);
     CHECK(rows[1].median[4] == 650); /* 500, 600, 700, 800 */
-    int foot, terrain, seed;
-    fs_campaign_trial_of(&c, 5, &foot, &terrain, &seed);
-    CHECK(foot == 1 && terrain == 0 && seed == 2);
+    int cell, foot, terrain, robot, seed;
+    fs_campaign_trial_of(&c, 5, &cell, &seed);
+    fs_campaign_cell_of(&c, cell, &foot, &terrain, &robot);
+    CHECK(cell == 1 && foot == 1 && terrain == 0 && robot == 0 && seed == 2);
+    CHECK(rows[1].foot == 1 && rows[1].terrain == 0 && rows[1].robot == 0);
 }
 
 static void test_expectations(void)
@@ -108,8 +112,8 @@ static void test_expectations(void)
     fs_campaign_row rows[2];
     summarized(&c, rows);
     c.nexpect = 2;
-    c.expect[0] = (fs_expectation){"bio_lands", 0, 0, 0.7, 1};
-    c.expect[1] = (fs_expectation){"flat_fails", 1, 0, 0, 0.5};
+    c.expect[0] = (fs_expectation){"bio_lands", 0, 0, 0, 0.7, 1};
+    c.expect[1] = (fs_expectation){"flat_fails", 1, 0, 0, 0, 0.5};
     FILE *null = fopen("/dev/null", "w");
     CHECK(fs_campaign_check(&c, rows, null) == 0);
     c.expect[0].min_success = 0.8; /* 0.75 is below it */
@@ -183,24 +187,45 @@ static void test_load(void)
     CHECK(c.nfeet == 2 && c.nterrains == 3 && c.seeds == 5 && c.first_seed == 1 && !c.sweep[0]);
     CHECK(!strcmp(c.foot[1].name, "flat") && !strcmp(c.terrain[2].name, "complex_uneven"));
     CHECK(c.foot[0].path[0] == '/');
-    CHECK(fs_campaign_ntrials(&c) == 30);
+    CHECK(fs_campaign_ntrials(&c) == 60);
     /* each (foot, terrain) loaded once, with its foot and terrain */
-    CHECK(fs_campaign_pair(&c, 1, 2)->geom.kind == FS_FOOT_FLAT && fs_campaign_pair(&c, 0, 2)->geom.kind == FS_FOOT_BIOMIMETIC);
-    CHECK(fs_campaign_pair(&c, 1, 2)->terrain.def.kind == FS_TERRAIN_COMPLEX_UNEVEN);
+    /* each cell (foot, terrain, robot; robot fastest) loaded once, with its foot, terrain and robot */
+    CHECK(c.nrobots == 2 && !strcmp(c.robot[1].name, "drop_weight") && fs_campaign_ncells(&c) == 12);
+    CHECK(fs_campaign_pair(&c, 10)->geom.kind == FS_FOOT_FLAT && fs_campaign_pair(&c, 4)->geom.kind == FS_FOOT_BIOMIMETIC);
+    CHECK(fs_campaign_pair(&c, 10)->terrain.def.kind == FS_TERRAIN_COMPLEX_UNEVEN);
+    CHECK(fs_campaign_pair(&c, 10)->def.robot.com_height_m == 0.3 && fs_campaign_pair(&c, 11)->def.robot.com_height_m == 0.02);
     fs_campaign_free(&c);
     const char *sets[] = {"campaign.seeds=2", "run.step_s=2e-4", "expect.e.foot=flat", "expect.e.terrain=flat",
-                          "tolerance.peak_force_N=0.2, 3"};
-    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", sets, 5, &c, &err) == FS_OK);
+                          "tolerance.peak_force_N=0.2, 3", "expect.e.robot=drop_weight"};
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", sets, 6, &c, &err) == FS_OK);
     CHECK(c.seeds == 2 && c.nset == 1 && !strcmp(c.set[0], "run.step_s=2e-4"));
-    CHECK(c.nexpect == 1 && c.expect[0].foot == 1 && c.expect[0].terrain == 0 && c.expect[0].min_success == 0);
+    CHECK(c.nexpect == 1 && c.expect[0].foot == 1 && c.expect[0].terrain == 0 && c.expect[0].robot == 1 &&
+          c.expect[0].min_success == 0);
     CHECK(c.tolerance[4][0] == 0.2 && c.tolerance[4][1] == 3);
-    char buf[3][FS_PATH_MAX + 32];
-    const char *ov[FS_CAMPAIGN_MAX_SET + 3];
-    CHECK(fs_campaign_overrides(&c, 1, 2, buf, ov) == 3);
+    char buf[4][FS_PATH_MAX + 32];
+    const char *ov[FS_CAMPAIGN_MAX_SET + 4];
+    CHECK(fs_campaign_overrides(&c, 10, buf, ov) == 4);
     CHECK(!strncmp(ov[0], "scenario.design=/", 17) && strstr(ov[0], "/scenarios/feet/flat.ini"));
-    CHECK(strstr(ov[1], "/terrains/complex_uneven.ini") && !strcmp(ov[2], "run.step_s=2e-4"));
-    CHECK(fs_campaign_pair(&c, 1, 0)->def.step_s == 2e-4); /* the trials' --set reached every pair */
+    CHECK(strstr(ov[1], "/terrains/complex_uneven.ini") && strstr(ov[2], "robots/single_tall.ini") &&
+          !strcmp(ov[3], "run.step_s=2e-4"));
+    CHECK(fs_campaign_pair(&c, 3)->def.step_s == 2e-4); /* the trials' --set reached every cell */
     fs_campaign_free(&c);
+    /* robots added by --set: a cell per foot, terrain and robot, robot fastest */
+    const char *robots[] = {"robot.tall.file=robots/single_tall.ini", "robot.low.file=robots/drop_weight.ini",
+                            "expect.e.foot=flat", "expect.e.terrain=flat", "expect.e.robot=low"};
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", robots, 5, &c, &err) == FS_OK);
+    CHECK(c.nrobots == 4 && !strcmp(c.robot[3].name, "low") && fs_campaign_ntrials(&c) == 120);
+    int foot, terrain, robot;
+    fs_campaign_cell_of(&c, 15, &foot, &terrain, &robot);
+    CHECK(foot == 1 && terrain == 0 && robot == 3 && c.expect[0].robot == 3);
+    CHECK(fs_campaign_pair(&c, 15)->def.robot.com_height_m == 0.02 && fs_campaign_pair(&c, 14)->def.robot.com_height_m == 0.3);
+    CHECK(fs_campaign_overrides(&c, 15, buf, ov) == 3 && strstr(ov[2], "robot.design=/") && strstr(ov[2], "drop_weight.ini"));
+    fs_campaign_free(&c);
+    /* with several robots an expectation must name its robot */
+    const char *unnamed[] = {"robot.tall.file=robots/single_tall.ini", "robot.low.file=robots/drop_weight.ini",
+                             "expect.e.foot=flat", "expect.e.terrain=flat"};
+    CHECK(fs_campaign_load("scenarios/landing_ci.ini", unnamed, 4, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "robot = (a [robot.NAME])") != NULL);
 }
 
 static void test_sweep(void)
@@ -211,7 +236,9 @@ static void test_sweep(void)
     CHECK(!strcmp(c.sweep, "rough.rms_m") && c.nterrains == 11);
     CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set, "rough.rms_m=0.003"));
     CHECK(c.terrain[10].sweep_value == 0.02);
-    CHECK(fs_campaign_pair(&c, 0, 3)->terrain.def.rms_m == 0.003); /* the swept value in its pair */
+    CHECK(fs_campaign_pair(&c, 3)->terrain.def.rms_m == 0.003); /* the swept value in its cell */
+    /* no [robot.NAME]: the trial scenario's own robot, named after its file */
+    CHECK(c.nrobots == 1 && !strcmp(c.robot[0].name, "single_tall") && fs_campaign_pair(&c, 3)->def.robot.mass_kg == 26);
     fs_campaign_free(&c);
     const char *bad[] = {"campaign.sweep_values=0, -0.001"};
     CHECK(fs_campaign_load("scenarios/roughness.ini", bad, 1, &c, &err) == FS_BAD_INPUT);

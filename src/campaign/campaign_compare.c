@@ -44,11 +44,13 @@ static double number_of(const cJSON *row, const char *key)
     return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
-static const cJSON *find_row(const cJSON *rows, const char *foot, const char *terrain)
+/* The row of the same cell: foot, terrain and robot (a summary from before robots has none: "?"). */
+static const cJSON *find_row(const cJSON *rows, const cJSON *like)
 {
     const cJSON *r;
     cJSON_ArrayForEach(r, rows)
-        if (!strcmp(text_of(r, "foot"), foot) && !strcmp(text_of(r, "terrain"), terrain))
+        if (!strcmp(text_of(r, "foot"), text_of(like, "foot")) && !strcmp(text_of(r, "terrain"), text_of(like, "terrain")) &&
+            !strcmp(text_of(r, "robot"), text_of(like, "robot")))
             return r;
     return NULL;
 }
@@ -71,8 +73,8 @@ static int same_number(double a, double b) { return (isnan(a) && isnan(b)) || a 
 static int report_change(FILE *out, const cJSON *row, const char *what, double base, double now, double lo, double hi)
 {
     int bad = !(now >= lo && now <= hi) && !(isnan(base) && isnan(now));
-    fprintf(out, "| %s | %s | %s | %.6g | %.6g | [%.6g, %.6g] | %s |\n", text_of(row, "foot"), text_of(row, "terrain"),
-            what, base, now, lo, hi, bad ? "**outside**" : "within");
+    fprintf(out, "| %s | %s | %s | %s | %.6g | %.6g | [%.6g, %.6g] | %s |\n", text_of(row, "foot"),
+            text_of(row, "terrain"), text_of(row, "robot"), what, base, now, lo, hi, bad ? "**outside**" : "within");
     return bad;
 }
 
@@ -117,24 +119,24 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
     }
     const cJSON *rrows = cJSON_GetObjectItemCaseSensitive(result, "rows");
     const cJSON *brows = cJSON_GetObjectItemCaseSensitive(baseline, "rows");
-    fprintf(out, "%s against the baseline %s\n\n| foot | terrain | quantity | baseline | result | allowed | verdict |\n"
-                 "|---|---|---|--:|--:|---|---|\n", result_path, baseline_path);
+    fprintf(out, "%s against the baseline %s\n\n| foot | terrain | robot | quantity | baseline | result | allowed | "
+                 "verdict |\n|---|---|---|---|--:|--:|---|---|\n", result_path, baseline_path);
     int bad = 0, changed = 0;
     const cJSON *b, *r;
     cJSON_ArrayForEach(b, brows) {
-        r = find_row(rrows, text_of(b, "foot"), text_of(b, "terrain"));
+        r = find_row(rrows, b);
         if (!r) {
-            fprintf(out, "| %s | %s | (row) | present | **missing** | | **outside** |\n", text_of(b, "foot"),
-                    text_of(b, "terrain"));
+            fprintf(out, "| %s | %s | %s | (row) | present | **missing** | | **outside** |\n", text_of(b, "foot"),
+                    text_of(b, "terrain"), text_of(b, "robot"));
             bad++, changed++;
         } else {
             bad += compare_row(out, baseline, b, r, &changed);
         }
     }
     cJSON_ArrayForEach(r, rrows)
-        if (!find_row(brows, text_of(r, "foot"), text_of(r, "terrain"))) {
-            fprintf(out, "| %s | %s | (row) | **missing** | present | | **outside** |\n", text_of(r, "foot"),
-                    text_of(r, "terrain"));
+        if (!find_row(brows, r)) {
+            fprintf(out, "| %s | %s | %s | (row) | **missing** | present | | **outside** |\n", text_of(r, "foot"),
+                    text_of(r, "terrain"), text_of(r, "robot"));
             bad++, changed++;
         }
     fprintf(out, "\n%d rows in the baseline; %d quantities changed, %d outside what the baseline allows: %s\n",

@@ -1,6 +1,6 @@
 /* campaign_file.c: a campaign file bound with fs_config into an fs_campaign: its feet, terrains,
- * sweep, expectations and tolerances checked, and the trial scenario of every (foot, terrain)
- * loaded once; which trial an index is. */
+ * robots, sweep, expectations and tolerances checked, and the trial scenario of every cell (foot,
+ * terrain, robot) loaded once; which trial an index is. */
 #include "campaign_internal.h"
 
 #include "footsim/base/fs_path.h"
@@ -15,17 +15,19 @@
 
 /* ---- the campaign file ---------------------------------------------------------------------- */
 
-enum { MAX_KEYS = 8 + FS_CAMPAIGN_NMETRICS + 2 * FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_FEET * 1 +
-                  4 * FS_CAMPAIGN_MAX_EXPECT };
+enum { MAX_KEYS = 8 + FS_CAMPAIGN_NMETRICS + 2 * FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_FEET +
+                  FS_CAMPAIGN_MAX_ROBOTS + 5 * FS_CAMPAIGN_MAX_EXPECT };
+enum { NSECTIONS = FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_ROBOTS + FS_CAMPAIGN_MAX_EXPECT };
 
 /* The schema of one file, built from the sections it has, and the text its keys point to. */
 typedef struct binder {
     fs_key keys[MAX_KEYS];
     int nkeys;
-    char sections[FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_EXPECT][FS_NAME_MAX];
+    char sections[NSECTIONS][FS_NAME_MAX];
     int nsections;
     char foot_choices[FS_CAMPAIGN_MAX_FEET * FS_NAME_MAX];
     char terrain_choices[FS_CAMPAIGN_MAX_TERRAINS * FS_NAME_MAX];
+    char robot_choices[FS_CAMPAIGN_MAX_ROBOTS * FS_NAME_MAX];
     char sweep_choices[4096];
     char sweep_values[FS_VALUE_MAX];  /* as given, or "" */
     char sweep_where[FS_PATH_MAX + 80];
@@ -37,7 +39,7 @@ static const fs_key campaign_keys[] = {
     {"campaign", "trial", FS_KEY_PATH, C(trial_path), 0, 0, 0, 0, NULL, "", "",
      "the trial scenario (with [robot] and [landing]), relative to the campaign file"},
     {"campaign", "seeds", FS_KEY_INTEGER, C(seeds), 1, FS_CAMPAIGN_MAX_SEEDS, 0, 0, NULL, "", "50",
-     "trials per foot and terrain"},
+     "trials per foot, terrain and robot"},
     {"campaign", "first_seed", FS_KEY_INTEGER, C(first_seed), 0, 1e9, 0, 0, NULL, "", "1",
      "seeds are first_seed, first_seed + 1, ..."},
 };
@@ -46,7 +48,7 @@ enum { NCAMPAIGN_KEYS = sizeof campaign_keys / sizeof campaign_keys[0] };
 static int is_campaign_section(const char *section)
 {
     return !strcmp(section, "campaign") || !strcmp(section, "tolerance") || !strncmp(section, "foot.", 5) ||
-           !strncmp(section, "terrain.", 8) || !strncmp(section, "expect.", 7);
+           !strncmp(section, "terrain.", 8) || !strncmp(section, "robot.", 6) || !strncmp(section, "expect.", 7);
 }
 
 static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_type type, size_t offset)
@@ -155,11 +157,24 @@ static int note_section(char list[][FS_NAME_MAX], int *count, int max, const cha
     return 1;
 }
 
-/* Collects the [foot.NAME], [terrain.NAME] and [expect.NAME] sections of cfg, in file order. */
+/* The groups of named sections, in the order their names are kept in binder.sections. */
+enum { GROUP_FOOT, GROUP_TERRAIN, GROUP_ROBOT, GROUP_EXPECT, NGROUPS };
+static const int group_max[NGROUPS] = {FS_CAMPAIGN_MAX_FEET, FS_CAMPAIGN_MAX_TERRAINS, FS_CAMPAIGN_MAX_ROBOTS,
+                                       FS_CAMPAIGN_MAX_EXPECT};
+
+/* Where group g's section names start in binder.sections. */
+static int group_first(int g)
+{
+    int first = 0;
+    for (int i = 0; i < g; i++)
+        first += group_max[i];
+    return first;
+}
+
+/* Collects the [foot.NAME], [terrain.NAME], [robot.NAME] and [expect.NAME] sections of cfg, in file order. */
 static fs_status collect_sections(const fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
 {
-    int *count[3] = {&c->nfeet, &c->nterrains, &c->nexpect};
-    const int max[3] = {FS_CAMPAIGN_MAX_FEET, FS_CAMPAIGN_MAX_TERRAINS, FS_CAMPAIGN_MAX_EXPECT};
+    int *count[NGROUPS] = {&c->nfeet, &c->nterrains, &c->nrobots, &c->nexpect};
     for (int i = 0; i < cfg->count; i++) {
         const fs_entry *e = &cfg->entries[i];
         const char *dot = strchr(e->section, '.');
@@ -168,37 +183,46 @@ static fs_status collect_sections(const fs_config *cfg, binder *b, fs_campaign *
         fs_status s = check_name(cfg, e, dot + 1, err);
         if (s != FS_OK)
             return s;
-        int group = e->section[0] == 'f' ? 0 : e->section[0] == 't' ? 1 : 2;
-        int first = group == 0 ? 0 : group == 1 ? FS_CAMPAIGN_MAX_FEET : FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS;
-        if (!note_section(b->sections + first, count[group], max[group], e->section))
+        int g = e->section[0] == 'f' ? GROUP_FOOT : e->section[0] == 't' ? GROUP_TERRAIN
+                : e->section[0] == 'r' ? GROUP_ROBOT : GROUP_EXPECT;
+        if (!note_section(b->sections + group_first(g), count[g], group_max[g], e->section))
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: too many sections of this group (at most %d feet, %d terrains, "
-                           "%d expectations)", cfg->path, e->section, max[0], max[1], max[2]);
+                           "%d robots, %d expectations)", cfg->path, e->section, group_max[0], group_max[1],
+                           group_max[2], group_max[3]);
     }
     return FS_OK;
 }
 
-/* Adds the keys of every [foot.NAME], [terrain.NAME] and [expect.NAME] section of cfg. */
+/* Adds the keys of every [foot.NAME], [terrain.NAME], [robot.NAME] and [expect.NAME] section of cfg. */
 static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
 {
     fs_status s = collect_sections(cfg, b, c, err);
     if (s != FS_OK)
         return s;
     for (int i = 0; i < c->nfeet; i++) {
-        const char *sec = b->sections[i];
+        const char *sec = b->sections[group_first(GROUP_FOOT) + i];
         snprintf(c->foot[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
         append_choice(b->foot_choices, sizeof b->foot_choices, c->foot[i].name);
         add_key(b, sec, "file", FS_KEY_PATH, C(foot[i].path))->help = "the foot's design file";
     }
     for (int i = 0; i < c->nterrains; i++) {
-        const char *sec = b->sections[FS_CAMPAIGN_MAX_FEET + i];
+        const char *sec = b->sections[group_first(GROUP_TERRAIN) + i];
         snprintf(c->terrain[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
         add_key(b, sec, "file", FS_KEY_PATH, C(terrain[i].path))->help = "the terrain file";
     }
+    for (int i = 0; i < c->nrobots; i++) {
+        const char *sec = b->sections[group_first(GROUP_ROBOT) + i];
+        snprintf(c->robot[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
+        append_choice(b->robot_choices, sizeof b->robot_choices, c->robot[i].name);
+        add_key(b, sec, "file", FS_KEY_PATH, C(robot[i].path))->help = "the robot file";
+    }
     for (int i = 0; i < c->nexpect; i++) {
-        const char *sec = b->sections[FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + i];
+        const char *sec = b->sections[group_first(GROUP_EXPECT) + i];
         snprintf(c->expect[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
         add_key(b, sec, "foot", FS_KEY_CHOICE, C(expect[i].foot))->choices = b->foot_choices;
         add_key(b, sec, "terrain", FS_KEY_CHOICE, C(expect[i].terrain))->choices = b->terrain_choices;
+        if (c->nrobots)
+            add_key(b, sec, "robot", FS_KEY_CHOICE, C(expect[i].robot))->choices = b->robot_choices;
         fs_key *k = add_key(b, sec, "min_success", FS_KEY_NUMBER, C(expect[i].min_success));
         k->max = 1;
         k->fallback = "0";
@@ -277,11 +301,12 @@ static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_
                        c->nfeet ? "terrain" : "foot", c->nfeet ? "terrain.flat" : "foot.biomimetic");
     if ((long)c->first_seed + c->seeds - 1 > INT_MAX)
         return fs_fail(err, FS_BAD_INPUT, "%s: first_seed + seeds passes %d", cfg->path, INT_MAX);
-    long ntrials = (long)c->nfeet * c->nterrains * c->seeds;
+    long ntrials = (long)c->nfeet * c->nterrains * (c->nrobots ? c->nrobots : 1) * c->seeds;
     if (ntrials > FS_CAMPAIGN_MAX_TRIALS)
-        return fs_fail(err, FS_BAD_INPUT, "%s: %d feet x %d terrains x %d seeds = %ld trials; a campaign may run at "
-                       "most %d: fewer seeds, or split it", fs_config_where(cfg, "campaign", "seeds", where, sizeof where),
-                       c->nfeet, c->nterrains, c->seeds, ntrials, FS_CAMPAIGN_MAX_TRIALS);
+        return fs_fail(err, FS_BAD_INPUT, "%s: %d feet x %d terrains x %d robots x %d seeds = %ld trials; a campaign "
+                       "may run at most %d: fewer seeds, or split it",
+                       fs_config_where(cfg, "campaign", "seeds", where, sizeof where), c->nfeet, c->nterrains,
+                       c->nrobots ? c->nrobots : 1, c->seeds, ntrials, FS_CAMPAIGN_MAX_TRIALS);
     for (int i = 0; i < c->nfeet; i++)
         if (!c->foot[i].path[0])
             return fs_fail(err, FS_BAD_INPUT, "%s: [foot.%s] has no file; give file = the design", cfg->path,
@@ -290,6 +315,10 @@ static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_
         if (!c->terrain[i].path[0])
             return fs_fail(err, FS_BAD_INPUT, "%s: [terrain.%s] has no file; give file = the terrain", cfg->path,
                            c->terrain[i].name);
+    for (int i = 0; i < c->nrobots; i++)
+        if (!c->robot[i].path[0])
+            return fs_fail(err, FS_BAD_INPUT, "%s: [robot.%s] has no file; give file = the robot, e.g. "
+                           "robots/drop_weight.ini", cfg->path, c->robot[i].name);
     for (int i = 0; i < c->nexpect; i++) {
         char sec[FS_NAME_MAX + 8];
         snprintf(sec, sizeof sec, "expect.%s", c->expect[i].name);
@@ -301,20 +330,22 @@ static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_
     return FS_OK;
 }
 
-/* The expectations must name their foot and terrain: the choice's default would pick the first. */
+/* The expectations must name their foot and terrain (and robot, when there are several): the
+ * choice's default would pick the first. */
 static fs_status check_expect_given(const fs_config *cfg, const fs_campaign *c, fs_error *err)
 {
     for (int i = 0; i < c->nexpect; i++) {
         char sec[FS_NAME_MAX + 8];
         snprintf(sec, sizeof sec, "expect.%s", c->expect[i].name);
-        int foot = 0, terrain = 0;
+        int foot = 0, terrain = 0, robot = 0;
         for (int j = 0; j < cfg->count; j++) {
             foot |= !strcmp(cfg->entries[j].section, sec) && !strcmp(cfg->entries[j].name, "foot");
             terrain |= !strcmp(cfg->entries[j].section, sec) && !strcmp(cfg->entries[j].name, "terrain");
+            robot |= !strcmp(cfg->entries[j].section, sec) && !strcmp(cfg->entries[j].name, "robot");
         }
-        if (!foot || !terrain)
-            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] needs foot = and terrain = (a [foot.NAME] and a [terrain.NAME])",
-                           cfg->path, sec);
+        if (!foot || !terrain || (c->nrobots > 1 && !robot))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] needs foot = and terrain = (a [foot.NAME] and a [terrain.NAME])%s",
+                           cfg->path, sec, c->nrobots > 1 ? " and robot = (a [robot.NAME])" : "");
     }
     return FS_OK;
 }
@@ -322,12 +353,14 @@ static fs_status check_expect_given(const fs_config *cfg, const fs_campaign *c, 
 /* Paths become absolute, so that the trial scenario resolves them wherever it lies. */
 static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *err)
 {
-    fs_campaign_item *items[FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS];
+    fs_campaign_item *items[FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_ROBOTS];
     int n = 0;
     for (int i = 0; i < c->nfeet; i++)
         items[n++] = &c->foot[i];
     for (int i = 0; i < c->nterrains; i++)
         items[n++] = &c->terrain[i];
+    for (int i = 0; i < c->nrobots; i++)
+        items[n++] = &c->robot[i];
     for (int i = 0; i < n; i++) {
         char full[PATH_MAX];
         if (!realpath(items[i]->path, full))
@@ -340,27 +373,32 @@ static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *
     return FS_OK;
 }
 
-/* Loads (and so checks) the trial scenario of every (foot, terrain), once, for the trials. */
+/* Loads (and so checks) the trial scenario of every cell, once, for the trials. */
 static fs_status load_pairs(fs_campaign *c, fs_error *err)
 {
-    c->pair = calloc((size_t)c->nfeet * c->nterrains, sizeof *c->pair);
+    int ncells = fs_campaign_ncells(c);
+    c->pair = calloc((size_t)ncells, sizeof *c->pair);
     if (!c->pair)
-        return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", c->nfeet * c->nterrains);
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", ncells);
     fs_status s = FS_OK;
-    for (int f = 0; f < c->nfeet && s == FS_OK; f++)
-        for (int t = 0; t < c->nterrains && s == FS_OK; t++) {
-            char buf[3][FS_PATH_MAX + 32];
-            const char *ov[FS_CAMPAIGN_MAX_SET + 3];
-            int n = fs_campaign_overrides(c, f, t, buf, ov);
-            fs_error e;
-            fs_scenario *sc = &c->pair[f * c->nterrains + t];
-            s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
-            if (s == FS_OK)
-                s = fs_scenario_require(sc, "trial", &e);
-            if (s != FS_OK)
-                fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s)", e.message, c->path, c->foot[f].name,
-                        c->terrain[t].name);
-        }
+    for (int cell = 0; cell < ncells && s == FS_OK; cell++) {
+        char buf[4][FS_PATH_MAX + 32];
+        const char *ov[FS_CAMPAIGN_MAX_SET + 4];
+        int n = fs_campaign_overrides(c, cell, buf, ov);
+        fs_error e;
+        fs_scenario *sc = &c->pair[cell];
+        s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
+        if (s == FS_OK)
+            s = fs_scenario_require(sc, "trial", &e);
+        int f, t, r;
+        fs_campaign_cell_of(c, cell, &f, &t, &r);
+        if (s != FS_OK)
+            fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s)", e.message, c->path,
+                    c->foot[f].name, c->terrain[t].name, c->robot[r].name);
+    }
+    if (s == FS_OK && !c->robot[0].path[0]) /* the trial's own robot: named after its file */
+        fs_path_stem(c->pair[0].def.robot_path[0] ? c->pair[0].def.robot_path : "none", c->robot[0].name,
+                     sizeof c->robot[0].name);
     if (s != FS_OK)
         fs_campaign_free(c);
     return s;
@@ -368,16 +406,22 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
 
 void fs_campaign_free(fs_campaign *c)
 {
-    for (int i = 0; c->pair && i < c->nfeet * c->nterrains; i++)
+    for (int i = 0; c->pair && i < fs_campaign_ncells(c); i++)
         fs_scenario_free(&c->pair[i]);
     free(c->pair);
     c->pair = NULL;
 }
 
-const fs_scenario *fs_campaign_pair(const fs_campaign *c, int foot, int terrain)
+int fs_campaign_ncells(const fs_campaign *c) { return c->nfeet * c->nterrains * c->nrobots; }
+
+void fs_campaign_cell_of(const fs_campaign *c, int cell, int *foot, int *terrain, int *robot)
 {
-    return &c->pair[foot * c->nterrains + terrain];
+    *robot = cell % c->nrobots;
+    *terrain = cell / c->nrobots % c->nterrains;
+    *foot = cell / c->nrobots / c->nterrains;
 }
+
+const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell) { return &c->pair[cell]; }
 
 static fs_status bind_file(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
 {
@@ -455,33 +499,38 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
         s = check_relations(&cfg, c, err);
     if (s == FS_OK)
         s = absolute_paths(&cfg, c, err);
+    if (s == FS_OK && c->nrobots == 0)
+        c->nrobots = 1; /* the trial scenario's own robot (named once its scenario is loaded) */
     free(b);
     fs_config_free(&cfg);
     return s == FS_OK ? load_pairs(c, err) : s;
 }
 
-int fs_campaign_overrides(const fs_campaign *c, int foot, int terrain, char buf[3][FS_PATH_MAX + 32],
-                          const char **out)
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[4][FS_PATH_MAX + 32], const char **out)
 {
-    int n = 0;
+    int foot, terrain, robot, n = 0;
+    fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
     snprintf(buf[0], sizeof buf[0], "scenario.design=%s", c->foot[foot].path);
     snprintf(buf[1], sizeof buf[1], "scenario.terrain=%s", c->terrain[terrain].path);
     out[n++] = buf[0];
     out[n++] = buf[1];
-    if (c->terrain[terrain].set[0]) {
-        snprintf(buf[2], sizeof buf[2], "%s", c->terrain[terrain].set);
+    if (c->robot[robot].path[0]) {
+        snprintf(buf[2], sizeof buf[2], "robot.design=%s", c->robot[robot].path);
         out[n++] = buf[2];
+    }
+    if (c->terrain[terrain].set[0]) {
+        snprintf(buf[3], sizeof buf[3], "%s", c->terrain[terrain].set);
+        out[n++] = buf[3];
     }
     for (int i = 0; i < c->nset; i++)
         out[n++] = c->set[i];
     return n;
 }
 
-int fs_campaign_ntrials(const fs_campaign *c) { return c->nfeet * c->nterrains * c->seeds; }
+int fs_campaign_ntrials(const fs_campaign *c) { return fs_campaign_ncells(c) * c->seeds; }
 
-void fs_campaign_trial_of(const fs_campaign *c, int index, int *foot, int *terrain, int *seed)
+void fs_campaign_trial_of(const fs_campaign *c, int index, int *cell, int *seed)
 {
     *seed = c->first_seed + index % c->seeds;
-    *terrain = index / c->seeds % c->nterrains;
-    *foot = index / c->seeds / c->nterrains;
+    *cell = index / c->seeds;
 }

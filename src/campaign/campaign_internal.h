@@ -4,11 +4,17 @@
 
 #include "footsim/campaign/fs_campaign.h"
 
-/* The summary row of foot on terrain. */
-static inline const fs_campaign_row *fs_campaign_row_of(const fs_campaign *c, const fs_campaign_row *rows, int foot,
-                                                        int terrain)
+/* The cell of foot on terrain under robot. */
+static inline int fs_campaign_cell(const fs_campaign *c, int foot, int terrain, int robot)
 {
-    return &rows[foot * c->nterrains + terrain];
+    return (foot * c->nterrains + terrain) * c->nrobots + robot;
+}
+
+/* The summary row of foot on terrain under robot. */
+static inline const fs_campaign_row *fs_campaign_row_of(const fs_campaign *c, const fs_campaign_row *rows, int foot,
+                                                        int terrain, int robot)
+{
+    return &rows[fs_campaign_cell(c, foot, terrain, robot)];
 }
 
 /* The expectation holds: the success rate within [min_success, max_success]. */

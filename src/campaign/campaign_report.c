@@ -60,9 +60,9 @@ static void csv_text(FILE *f, const char *s)
     fputc('"', f);
 }
 
-static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain)
+static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain, int robot)
 {
-    fprintf(f, "%s,%s", c->foot[foot].name, c->terrain[terrain].name);
+    fprintf(f, "%s,%s,%s", c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name);
     if (c->sweep[0])
         csv_number(f, c->terrain[terrain].sweep_value);
 }
@@ -70,15 +70,16 @@ static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain)
 static int fill_trials(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    fprintf(f, "foot,terrain%s%s,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", c->sweep[0] ? "," : "", c->sweep);
+    fprintf(f, "foot,terrain,robot%s%s,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", c->sweep[0] ? "," : "", c->sweep);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",%s", fs_campaign_metrics[m].name);
     fputs(",failure\n", f);
     for (int i = 0; i < fs_campaign_ntrials(c); i++) {
         const fs_trial_result *r = &x->results[i];
-        int foot, terrain, seed;
-        fs_campaign_trial_of(c, i, &foot, &terrain, &seed);
-        csv_row_key(f, c, foot, terrain);
+        int cell, foot, terrain, robot, seed;
+        fs_campaign_trial_of(c, i, &cell, &seed);
+        fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+        csv_row_key(f, c, foot, terrain, robot);
         fprintf(f, ",%d", seed);
         const double pose[5] = {r->draw.x_m, r->draw.y_m, r->draw.yaw_deg, r->draw.pitch_deg, r->draw.roll_deg};
         for (int k = 0; k < 5; k++)
@@ -95,14 +96,14 @@ static int fill_trials(FILE *f, const out_ctx *x)
 static int fill_summary_csv(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    fprintf(f, "foot,terrain%s%s,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high", c->sweep[0] ? "," : "",
+    fprintf(f, "foot,terrain,robot%s%s,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high", c->sweep[0] ? "," : "",
             c->sweep);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
     fputc('\n', f);
-    for (int i = 0; i < c->nfeet * c->nterrains; i++) {
+    for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
-        csv_row_key(f, c, r->foot, r->terrain);
+        csv_row_key(f, c, r->foot, r->terrain, r->robot);
         fprintf(f, ",%d,%d,%d,%d,%d", r->trials, r->landed, r->fell, r->undecided, r->failed_numerics);
         csv_number(f, r->success_rate);
         csv_number(f, r->ci_low);
@@ -119,34 +120,35 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
     const fs_campaign *c = x->c;
     char trial[FS_NAME_MAX];
     fs_path_stem(c->trial_path, trial, sizeof trial);
-    fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot and terrain)%s%s. Success: the "
+    fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot, terrain and robot)%s%s. Success: the "
                "trial landed; undecided trials (the window ended first) count as not landed and are shown apart; "
                "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically.\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
             c->sweep[0] ? "; terrain swept over " : "", c->sweep);
-    fputs("| foot | terrain | trials | landed | fell | undecided | failed_numerics | success | 95 % CI |", f);
+    fputs("| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | success | 95 % CI |", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, " %s |", fs_campaign_metrics[m].name);
-    fputs("\n|---|---|--:|--:|--:|--:|--:|--:|---|", f);
+    fputs("\n|---|---|---|--:|--:|--:|--:|--:|--:|---|", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fputs("--:|", f);
     fputc('\n', f);
-    for (int i = 0; i < c->nfeet * c->nterrains; i++) {
+    for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
-        fprintf(f, "| %s | %s | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
-                c->terrain[r->terrain].name, r->trials, r->landed, r->fell, r->undecided, r->failed_numerics, r->success_rate,
+        fprintf(f, "| %s | %s | %s | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
+                c->terrain[r->terrain].name, c->robot[r->robot].name, r->trials, r->landed, r->fell, r->undecided, r->failed_numerics, r->success_rate,
                 r->ci_low, r->ci_high);
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
     }
     if (c->nexpect)
-        fputs("\n## Expectations\n\n| expectation | foot | terrain | success | wanted | met |\n|---|---|---|--:|---|---|\n", f);
+        fputs("\n## Expectations\n\n| expectation | foot | terrain | robot | success | wanted | met |\n"
+              "|---|---|---|---|--:|---|---|\n", f);
     for (int i = 0; i < c->nexpect; i++) {
         const fs_expectation *e = &c->expect[i];
-        const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, e->foot, e->terrain);
-        fprintf(f, "| %s | %s | %s | %.2f | [%.2f, %.2f] | %s |\n", e->name, c->foot[e->foot].name,
-                c->terrain[e->terrain].name, r->success_rate, e->min_success, e->max_success,
+        const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, e->foot, e->terrain, e->robot);
+        fprintf(f, "| %s | %s | %s | %s | %.2f | [%.2f, %.2f] | %s |\n", e->name, c->foot[e->foot].name,
+                c->terrain[e->terrain].name, c->robot[e->robot].name, r->success_rate, e->min_success, e->max_success,
                 fs_expectation_met(e, r) ? "yes" : "**no**");
     }
     return 1;
@@ -173,11 +175,12 @@ static cJSON *summary_json(const out_ctx *x)
         cJSON_AddNumberToObject(t, "absolute", c->tolerance[m][1]);
     }
     cJSON *rows = cJSON_AddArrayToObject(root, "rows");
-    for (int i = 0; i < c->nfeet * c->nterrains; i++) {
+    for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "foot", c->foot[r->foot].name);
         cJSON_AddStringToObject(o, "terrain", c->terrain[r->terrain].name);
+        cJSON_AddStringToObject(o, "robot", c->robot[r->robot].name);
         if (c->sweep[0])
             cJSON_AddNumberToObject(o, "sweep_value", c->terrain[r->terrain].sweep_value);
         cJSON_AddNumberToObject(o, "trials", r->trials);
@@ -202,10 +205,12 @@ static cJSON *summary_json(const out_ctx *x)
         cJSON_AddStringToObject(o, "name", e->name);
         cJSON_AddStringToObject(o, "foot", c->foot[e->foot].name);
         cJSON_AddStringToObject(o, "terrain", c->terrain[e->terrain].name);
+        cJSON_AddStringToObject(o, "robot", c->robot[e->robot].name);
         cJSON_AddNumberToObject(o, "min_success", e->min_success);
         cJSON_AddNumberToObject(o, "max_success", e->max_success);
-        cJSON_AddNumberToObject(o, "success_rate", fs_campaign_row_of(c, x->rows, e->foot, e->terrain)->success_rate);
-        cJSON_AddBoolToObject(o, "met", fs_expectation_met(e, fs_campaign_row_of(c, x->rows, e->foot, e->terrain)));
+        const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, e->foot, e->terrain, e->robot);
+        cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
+        cJSON_AddBoolToObject(o, "met", fs_expectation_met(e, r));
         cJSON_AddItemToArray(ex, o);
     }
     return root;
@@ -242,30 +247,53 @@ fs_status fs_campaign_write_summary(const fs_campaign *c, const fs_campaign_row 
 
 /* ---- the chart ---------------------------------------------------------------------------- */
 
-/* Bars: a line per terrain with each foot's rate, low and high. Sweep: a block per foot of
+/* The chart's series are the (foot, robot) pairs, foot-major; a series' title names the robot only
+ * when the campaign has several. */
+static int nseries(const fs_campaign *c) { return c->nfeet * c->nrobots; }
+
+static void series_title(const fs_campaign *c, int k, char *buf, size_t size)
+{
+    const char *foot = c->foot[k / c->nrobots].name, *robot = c->robot[k % c->nrobots].name;
+    if (c->nrobots > 1)
+        snprintf(buf, size, "%s, %s", foot, robot);
+    else
+        snprintf(buf, size, "%s", foot);
+}
+
+static const fs_campaign_row *series_row(const out_ctx *x, int k, int terrain)
+{
+    const fs_campaign *c = x->c;
+    return fs_campaign_row_of(c, x->rows, k / c->nrobots, terrain, k % c->nrobots);
+}
+
+/* Bars: a line per terrain with each series' rate, low and high. Sweep: a block per series of
  * (value, rate, low, high). */
 static int fill_chart_data(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
+    char title[2 * FS_NAME_MAX + 4];
     if (!c->sweep[0]) {
         fputs("# terrain", f);
-        for (int ft = 0; ft < c->nfeet; ft++)
-            fprintf(f, " %s_rate %s_low %s_high", c->foot[ft].name, c->foot[ft].name, c->foot[ft].name);
+        for (int k = 0; k < nseries(c); k++) {
+            series_title(c, k, title, sizeof title);
+            fprintf(f, " \"%s\": rate low high", title);
+        }
         fputc('\n', f);
         for (int t = 0; t < c->nterrains; t++) {
             fprintf(f, "\"%s\"", c->terrain[t].name);
-            for (int ft = 0; ft < c->nfeet; ft++) {
-                const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, ft, t);
+            for (int k = 0; k < nseries(c); k++) {
+                const fs_campaign_row *r = series_row(x, k, t);
                 fprintf(f, " %.17g %.17g %.17g", r->success_rate, r->ci_low, r->ci_high);
             }
             fputc('\n', f);
         }
         return 1;
     }
-    for (int ft = 0; ft < c->nfeet; ft++) {
-        fprintf(f, "%s# %s: %s rate low high\n", ft ? "\n\n" : "", c->foot[ft].name, c->sweep);
+    for (int k = 0; k < nseries(c); k++) {
+        series_title(c, k, title, sizeof title);
+        fprintf(f, "%s# %s: %s rate low high\n", k ? "\n\n" : "", title, c->sweep);
         for (int t = 0; t < c->nterrains; t++) {
-            const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, ft, t);
+            const fs_campaign_row *r = series_row(x, k, t);
             fprintf(f, "%.17g %.17g %.17g %.17g\n", c->terrain[t].sweep_value, r->success_rate, r->ci_low, r->ci_high);
         }
     }
@@ -275,6 +303,7 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
 static int fill_chart_script(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
+    char title[2 * FS_NAME_MAX + 4];
     fprintf(f, "# The chart of campaign %s: 'gnuplot chart.gp' in this folder draws success.png.\n"
                "if (!exists(\"out\")) out = 'success.png'\n"
                "set terminal pngcairo size 960,540 noenhanced font 'sans,11'\n"
@@ -287,17 +316,21 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
         fputs("set style data histogram\nset style histogram errorbars gap 2 lw 1\n"
               "set style fill solid 0.6 border -1\nset xlabel 'terrain'\nplot ",
               f);
-        for (int ft = 0; ft < c->nfeet; ft++)
-            fprintf(f, "%s'chart.dat' using %d:%d:%d%s title '%s'", ft ? ", \\\n     " : "", 2 + 3 * ft, 3 + 3 * ft,
-                    4 + 3 * ft, ft ? "" : ":xtic(1)", c->foot[ft].name);
+        for (int k = 0; k < nseries(c); k++) {
+            series_title(c, k, title, sizeof title);
+            fprintf(f, "%s'chart.dat' using %d:%d:%d%s title '%s'", k ? ", \\\n     " : "", 2 + 3 * k, 3 + 3 * k,
+                    4 + 3 * k, k ? "" : ":xtic(1)", title);
+        }
         fputc('\n', f);
         return 1;
     }
     fprintf(f, "set xlabel '%s'\nplot ", c->sweep);
-    for (int ft = 0; ft < c->nfeet; ft++)
+    for (int k = 0; k < nseries(c); k++) {
+        series_title(c, k, title, sizeof title);
         fprintf(f, "%s'chart.dat' index %d using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc %d "
                    "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 pt 7 lc %d title '%s'",
-                ft ? ", \\\n     " : "", ft, ft + 1, ft, ft + 1, c->foot[ft].name);
+                k ? ", \\\n     " : "", k, k + 1, k, k + 1, title);
+    }
     fputc('\n', f);
     return 1;
 }
@@ -316,11 +349,12 @@ int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *o
     int failed = 0;
     for (int i = 0; i < c->nexpect; i++) {
         const fs_expectation *e = &c->expect[i];
-        const fs_campaign_row *r = fs_campaign_row_of(c, rows, e->foot, e->terrain);
+        const fs_campaign_row *r = fs_campaign_row_of(c, rows, e->foot, e->terrain, e->robot);
         int ok = fs_expectation_met(e, r);
         failed += !ok;
-        fprintf(out, "  %-6s %s: %s on %s landed %d of %d (%.2f, 95 %% CI [%.2f, %.2f]); wanted %.2f to %.2f\n",
-                ok ? "ok" : "FAILED", e->name, c->foot[e->foot].name, c->terrain[e->terrain].name, r->landed,
+        fprintf(out, "  %-6s %s: %s on %s under %s landed %d of %d (%.2f, 95 %% CI [%.2f, %.2f]); wanted %.2f to %.2f\n",
+                ok ? "ok" : "FAILED", e->name, c->foot[e->foot].name, c->terrain[e->terrain].name,
+                c->robot[e->robot].name, r->landed,
                 r->trials, r->success_rate, r->ci_low, r->ci_high, e->min_success, e->max_success);
     }
     return failed;

@@ -46,30 +46,28 @@ void fs_wilson(int k, int n, double *low, double *high)
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows)
 {
     double *v = malloc((size_t)c->seeds * sizeof *v);
-    for (int f = 0; f < c->nfeet; f++)
-        for (int t = 0; t < c->nterrains; t++) {
-            fs_campaign_row *row = &rows[f * c->nterrains + t];
-            memset(row, 0, sizeof *row);
-            row->foot = f;
-            row->terrain = t;
-            const fs_trial_result *r = &results[(f * c->nterrains + t) * c->seeds];
-            for (int s = 0; s < c->seeds; s++) {
-                row->trials++;
-                row->landed += r[s].outcome == FS_LANDED;
-                row->fell += r[s].outcome == FS_FELL;
-                row->undecided += r[s].outcome == FS_UNDECIDED;
-                row->failed_numerics += r[s].outcome == FS_FAILED_NUMERICS;
-            }
-            row->success_rate = (double)row->landed / row->trials;
-            fs_wilson(row->landed, row->trials, &row->ci_low, &row->ci_high);
-            for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
-                int n = 0;
-                for (int s = 0; v && s < c->seeds; s++)
-                    if (r[s].outcome != FS_FAILED_NUMERICS)
-                        v[n++] = fs_metric_value(&r[s], m);
-                row->nmetric = n;
-                row->median[m] = fs_median(v, n);
-            }
+    for (int cell = 0; cell < fs_campaign_ncells(c); cell++) {
+        fs_campaign_row *row = &rows[cell];
+        memset(row, 0, sizeof *row);
+        fs_campaign_cell_of(c, cell, &row->foot, &row->terrain, &row->robot);
+        const fs_trial_result *r = &results[cell * c->seeds];
+        for (int s = 0; s < c->seeds; s++) {
+            row->trials++;
+            row->landed += r[s].outcome == FS_LANDED;
+            row->fell += r[s].outcome == FS_FELL;
+            row->undecided += r[s].outcome == FS_UNDECIDED;
+            row->failed_numerics += r[s].outcome == FS_FAILED_NUMERICS;
         }
+        row->success_rate = (double)row->landed / row->trials;
+        fs_wilson(row->landed, row->trials, &row->ci_low, &row->ci_high);
+        for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+            int n = 0;
+            for (int s = 0; v && s < c->seeds; s++)
+                if (r[s].outcome != FS_FAILED_NUMERICS)
+                    v[n++] = fs_metric_value(&r[s], m);
+            row->nmetric = n;
+            row->median[m] = fs_median(v, n);
+        }
+    }
     free(v);
 }

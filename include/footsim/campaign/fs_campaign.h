@@ -22,10 +22,11 @@
 
 enum {
     FS_CAMPAIGN_MAX_FEET = 8,
+    FS_CAMPAIGN_MAX_ROBOTS = 8,
     FS_CAMPAIGN_MAX_TERRAINS = 64,
     FS_CAMPAIGN_MAX_EXPECT = 32,
     FS_CAMPAIGN_MAX_SEEDS = 100000,
-    FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x seeds (docs/keys.md) */
+    FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x robots x seeds (docs/keys.md) */
     FS_SUMMARY_MAX_BYTES = 64 * 1024 * 1024, /* a summary.json compare reads */
     FS_CAMPAIGN_MAX_SET = 256,
     FS_CAMPAIGN_NMETRICS = 12
@@ -42,18 +43,18 @@ extern const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS];
 /* The value of metric m (an index into fs_campaign_metrics) in r. */
 double fs_metric_value(const fs_trial_result *r, int m);
 
-/* One foot or terrain of the campaign. */
+/* One foot, terrain or robot of the campaign. */
 typedef struct fs_campaign_item {
     char name[FS_NAME_MAX];  /* the section's NAME, or for a sweep "NAME@value" */
-    char path[FS_PATH_MAX];  /* absolute */
+    char path[FS_PATH_MAX];  /* absolute; for the one robot of a campaign without [robot.NAME], "": the trial's */
     char set[FS_VALUE_MAX];  /* a sweep's override "section.key=value", or "" */
     double sweep_value;      /* the swept value (0 without a sweep) */
 } fs_campaign_item;
 
-/* [expect.NAME]: the success rate of foot on terrain must lie in [min_success, max_success]. */
+/* [expect.NAME]: the success rate of foot on terrain under robot must lie in [min_success, max_success]. */
 typedef struct fs_expectation {
     char name[FS_NAME_MAX];
-    int foot, terrain;       /* indices into the campaign's feet and terrains */
+    int foot, terrain, robot; /* indices into the campaign's feet, terrains and robots */
     double min_success, max_success;
 } fs_expectation;
 
@@ -64,14 +65,16 @@ typedef struct fs_campaign {
     int seeds, first_seed;             /* seeds first_seed, first_seed + 1, ... */
     char sweep[2 * FS_NAME_MAX];       /* "section.key" swept on the terrain, or "" */
     int sweep_choice;                  /* [campaign] sweep as bound: 0 none, n the n-th numeric terrain key */
-    int nfeet, nterrains, nexpect;
+    int nfeet, nterrains, nrobots, nexpect;
     fs_campaign_item foot[FS_CAMPAIGN_MAX_FEET];
     fs_campaign_item terrain[FS_CAMPAIGN_MAX_TERRAINS];
+    fs_campaign_item robot[FS_CAMPAIGN_MAX_ROBOTS]; /* [robot.NAME] file = ...; without any, the trial
+                                                       scenario's own robot, named after its file */
     fs_expectation expect[FS_CAMPAIGN_MAX_EXPECT];
     double tolerance[FS_CAMPAIGN_NMETRICS][2]; /* relative, absolute (metric's unit) */
     const char *set[FS_CAMPAIGN_MAX_SET];      /* the command's --set meant for the trials */
     int nset;
-    fs_scenario *pair;                 /* the trial scenario of each (foot, terrain), loaded once:
+    fs_scenario *pair;                 /* the trial scenario of each cell, loaded once:
                                           fs_campaign_pair; fs_campaign_free releases them */
 } fs_campaign;
 
@@ -83,32 +86,37 @@ typedef struct fs_campaign {
 fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets, fs_campaign *c, fs_error *err);
 void fs_campaign_free(fs_campaign *c);
 
-/* The loaded trial scenario of foot on terrain. */
-const fs_scenario *fs_campaign_pair(const fs_campaign *c, int foot, int terrain);
+/* A cell is a (foot, terrain, robot), numbered foot-major: cell = (foot * nterrains + terrain) *
+ * nrobots + robot. */
+int fs_campaign_ncells(const fs_campaign *c);
+void fs_campaign_cell_of(const fs_campaign *c, int cell, int *foot, int *terrain, int *robot);
 
-/* The overrides of trial (foot, terrain): scenario.design, scenario.terrain, the sweep's, then
- * c->set. buf holds their text; out gets up to FS_CAMPAIGN_MAX_SET + 3 pointers; returns the count. */
-int fs_campaign_overrides(const fs_campaign *c, int foot, int terrain, char buf[3][FS_PATH_MAX + 32],
-                          const char **out);
+/* The loaded trial scenario of a cell. */
+const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell);
 
-/* Trials are numbered foot-major: index = (foot * nterrains + terrain) * seeds + seed - first_seed. */
+/* The overrides of a cell's trials: scenario.design, scenario.terrain, robot.design (when the
+ * campaign names robots), the sweep's, then c->set. buf holds their text; out gets up to
+ * FS_CAMPAIGN_MAX_SET + 4 pointers; returns the count. */
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[4][FS_PATH_MAX + 32], const char **out);
+
+/* Trials are numbered cell-major: index = cell * seeds + seed - first_seed. */
 int fs_campaign_ntrials(const fs_campaign *c);
-void fs_campaign_trial_of(const fs_campaign *c, int index, int *foot, int *terrain, int *seed);
+void fs_campaign_trial_of(const fs_campaign *c, int index, int *cell, int *seed);
 
 /* The 95 % Wilson score interval of k successes in n > 0 trials. */
 void fs_wilson(int k, int n, double *low, double *high);
 
 
-/* One row of the summary: a foot on a terrain over all seeds. */
+/* One row of the summary: a cell (foot on terrain under robot) over all seeds. */
 typedef struct fs_campaign_row {
-    int foot, terrain;
+    int foot, terrain, robot;
     int trials, landed, fell, undecided, failed_numerics;
     double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
     int nmetric;                           /* trials the medians are over (all but failed_numerics) */
     double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
 } fs_campaign_row;
 
-/* Fills rows[nfeet * nterrains] (foot-major) from results[fs_campaign_ntrials(c)]. */
+/* Fills rows[fs_campaign_ncells(c)] (by cell) from results[fs_campaign_ntrials(c)]. */
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows);
 
 /* Writes dir/trials.csv, dir/summary.csv and dir/summary.md. */
