@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
+#include "footsim/base/fs_version.h"
 #include "footsim/io/fs_output.h"
 
 #include <stdio.h>
@@ -75,7 +76,7 @@ enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 
 static void usage(FILE *out)
 {
-    fprintf(out, "usage: footsim COMMAND [ARGS] [OPTIONS]\n\ncommands:\n");
+    fprintf(out, "usage: footsim COMMAND [ARGS] [OPTIONS]\n       footsim --version\n\ncommands:\n");
     for (int i = 0; i < NCOMMANDS; i++)
         fprintf(out, "  %-10s %s %s\n", commands[i].name, commands[i].input ? commands[i].input : "",
                 commands[i].options);
@@ -213,6 +214,10 @@ int main(int argc, char **argv)
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? FS_BAD_INPUT : 0;
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("footsim %s\n", fs_version());
+        return 0;
     }
     for (int i = 0; i < NCOMMANDS; i++) {
         if (strcmp(argv[1], commands[i].name))
