@@ -94,6 +94,8 @@ static void command_help(const command *c)
         printf(" [--out DIR]");
     if (strstr(c->options, "-j "))
         printf(" [-j N]");
+    if (strstr(c->options, "--seed"))
+        printf(" [--seed N]");
     if (strstr(c->options, "--json"))
         printf(" [--json]");
     if (strstr(c->options, "--quick"))
