@@ -1,11 +1,13 @@
 # Thin wrapper over CMake: the README's two commands, `make demo` and `make test`.
 BUILD ?= build
 CMAKE_FLAGS ?=
+# where `make install` puts footsim (bin/, lib/, include/, share/footsim/, share/man/)
+PREFIX ?= /usr/local
 # extra ctest arguments, e.g. CTEST_ARGS='-L fast'
 CTEST_ARGS ?=
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps configure build demo test check asan clean
+.PHONY: all deps configure build demo test check asan install clean
 
 all: build
 
@@ -34,6 +36,10 @@ check: build
 # The whole suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.
 asan:
 	$(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=Debug -DFS_SANITIZE=ON $(CMAKE_FLAGS)"
+
+# The command, libfootsim (+ footsim.pc), its headers, the shipped scenarios and terrains, the man page.
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
 	rm -rf $(BUILD) build-asan build-norender

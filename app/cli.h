@@ -23,6 +23,7 @@ typedef struct cli_args {
     const char *scenario;           /* --scenario FILE */
     const char *seed;               /* --seed N */
     const char *jobs;               /* -j N: worker processes (campaign) */
+    const char *data;               /* --data DIR: where relative data files are looked for first */
     int quick;                      /* --quick: a smaller sweep (bench) */
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
 } cli_args;
@@ -93,6 +94,23 @@ int cli_have_program(const char *name);
  * PNG (fs_png_check): the chart whole or not at all. Without gnuplot, or when it fails, says so
  * (naming `who`) and returns 0; a damaged chart (a full disk) is FS_IO, said. */
 int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who);
+
+/* Data files (app/cli_data.c). A design, scenario, terrain or campaign path given on the command
+ * line that exists as given (or is absolute, or starts with ./ or ../) is used as is; a relative one
+ * that does not is looked for under --data DIR, then the current folder, then the installed data
+ * (P/share/footsim beside P/bin/footsim, wherever P is; then the configured
+ * CMAKE_INSTALL_FULL_DATADIR/footsim): in each as given, then in the kind's folder (scenarios/,
+ * scenarios/feet/, terrains/), so 'footsim run static_load.ini' finds the shipped scenario. Paths
+ * inside a file stay relative to that file. cli_data_find returns path itself when nothing is
+ * found (the reader then says so), else buf. cli_data_set_dir checks --data (exit 2 when it is not
+ * a folder). cli_data_path resolves one of footsim's own names ("scenarios/static_load.ini") to
+ * text that lives as long as the process. */
+typedef enum cli_data_kind { CLI_DATA_NONE = -1, CLI_DATA_SCENARIO, CLI_DATA_DESIGN, CLI_DATA_TERRAIN } cli_data_kind;
+int cli_data_set_dir(const char *dir);
+const char *cli_data_find(const char *path, cli_data_kind kind, char *buf, size_t size);
+const char *cli_data_path(const char *rel);
+/* The installed data folder the search ends with (for help). */
+const char *cli_data_installed(void);
 
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);

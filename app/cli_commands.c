@@ -329,21 +329,21 @@ int cli_demo(const cli_args *a)
     static fs_scenario sc;
     for (int i = 0; i < 2; i++) {
         fs_run_result res;
-        cli_args run = {.command = "run", .input = scenarios[i]};
+        cli_args run = {.command = "run", .input = cli_data_path(scenarios[i])};
         int s = run_scenario(&run, &res, &sc);
         fs_scenario_free(&sc);
         if (s)
             return s;
         fs_run_free(&res);
     }
-    cli_args st = {.command = "stiffness", .input = "scenarios/feet/biomimetic.ini"};
+    cli_args st = {.command = "stiffness", .input = cli_data_path("scenarios/feet/biomimetic.ini")};
     int s = cli_stiffness(&st);
     if (s)
         return s;
     /* the main job, small: both feet landing on even, simply and complex uneven ground */
     printf("\nlanding comparison (2 seeds each; 'footsim campaign scenarios/landing.ini' runs 50):\n");
     fflush(stdout);
-    cli_args camp = {.command = "campaign", .input = "scenarios/landing_ci.ini", .nset = 1,
+    cli_args camp = {.command = "campaign", .input = cli_data_path("scenarios/landing_ci.ini"), .nset = 1,
                      .set = {"campaign.seeds=2"}, .out = "results/campaigns/demo"};
     return cli_campaign(&camp);
 }

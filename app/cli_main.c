@@ -2,6 +2,8 @@
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
+#include "footsim/base/fs_version.h"
+#include "footsim/io/fs_config.h"
 #include "footsim/io/fs_output.h"
 
 #include <stdio.h>
@@ -21,30 +23,30 @@ const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.
 const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
 
 static const command commands[] = {
-    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --video",
+    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --video --data",
      "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
      "  (default DIR: results/runs/<scenario name>/).\n"
      "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
      "  (1280x720), seen by --camera side|front|three-quarter|follow (side); --video also encodes\n"
      "  DIR/video.mp4 with ffmpeg."},
-    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --video",
+    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --video --data",
      "Runs both scenarios and writes their frames side by side (A left, B right) to DIR/frames/ and key\n"
      "  frames from touch-down to rest to DIR/filmstrip.png (default DIR: results/compare/A-foot_vs_B-foot/).\n"
      "  --set a:KEY=V changes A only, b:KEY=V B only, KEY=V both. Frame options as for run."},
-    {"model", cli_model, "DESIGN", "--json --set",
+    {"model", cli_model, "DESIGN", "--json --set --data",
      "Prints the built model in SI units and world coordinates: bodies, joints, springs, geoms."},
-    {"stiffness", cli_stiffness, "DESIGN", "--json --set",
+    {"stiffness", cli_stiffness, "DESIGN", "--json --set --data",
      "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
      "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
      "  Exit 1 when analytic and measured differ by more than 1 %."},
-    {"terrain", cli_terrain, "TERRAIN", "--height --png --scenario --set",
+    {"terrain", cli_terrain, "TERRAIN", "--height --png --scenario --set --data",
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
      "  --scenario S gives one); with neither, a summary."},
-    {"trial", cli_trial, "SCENARIO", "--seed --json --set",
+    {"trial", cli_trial, "SCENARIO", "--seed --json --set --data",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed or fell) and the metrics."},
-    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set",
+    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --data",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
      "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
@@ -53,10 +55,10 @@ static const command commands[] = {
     {"compare", cli_compare, "RESULT BASELINE", "",
      "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
      "  baseline's 95 % interval or a median moves further than the baseline's tolerance."},
-    {"walk", cli_walk, "SCENARIO", "--json --set",
+    {"walk", cli_walk, "SCENARIO", "--json --set --data",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
-    {"bench", cli_bench, "precision|stability|speed", "-j --quick --out --replace",
+    {"bench", cli_bench, "precision|stability|speed", "-j --quick --out --replace --data",
      "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
      "  refreshed only with --out results/bench):\n"
      "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
@@ -67,7 +69,7 @@ static const command commands[] = {
      "  worker processes (default: the CPUs it may use; the results do not depend on N)."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
-    {"demo", cli_demo, NULL, "",
+    {"demo", cli_demo, NULL, "--data",
      "Runs the paper's first experiments (static load, 10 degree tilt) and the stiffness check,\n"
      "  and says where the results went."},
 };
@@ -75,7 +77,7 @@ enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 
 static void usage(FILE *out)
 {
-    fprintf(out, "usage: footsim COMMAND [ARGS] [OPTIONS]\n\ncommands:\n");
+    fprintf(out, "usage: footsim COMMAND [ARGS] [OPTIONS]\n       footsim --version\n\ncommands:\n");
     for (int i = 0; i < NCOMMANDS; i++)
         fprintf(out, "  %-10s %s %s\n", commands[i].name, commands[i].input ? commands[i].input : "",
                 commands[i].options);
@@ -92,6 +94,8 @@ static void command_help(const command *c)
         printf(" [--out DIR]");
     if (strstr(c->options, "-j "))
         printf(" [-j N]");
+    if (strstr(c->options, "--seed"))
+        printf(" [--seed N]");
     if (strstr(c->options, "--json"))
         printf(" [--json]");
     if (strstr(c->options, "--quick"))
@@ -102,6 +106,8 @@ static void command_help(const command *c)
         printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--video]]");
     if (strstr(c->options, "--set"))
         printf(" [--set section.key=value]...");
+    if (strstr(c->options, "--data"))
+        printf(" [--data DIR]");
     printf("\n\n  %s\n", c->help);
     if (strstr(c->options, "--replace") && !strcmp(c->name, "bench"))
         printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
@@ -110,6 +116,12 @@ static void command_help(const command *c)
         printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
                "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",
                FS_MARKER);
+    if (strstr(c->options, "--data"))
+        printf("\n  A relative design, scenario, terrain or campaign path not found as given is looked for under\n"
+               "  --data DIR, then the current folder, then the installed data (%s), each\n"
+               "  as given and in its scenarios/, scenarios/feet/ or terrains/ folder ('footsim run static_load.ini'\n"
+               "  works anywhere); the shipped scenarios demo and bench run are found the same way.\n",
+               cli_data_installed());
     if (strstr(c->options, "--set"))
         printf("\n  --set overrides one value of the file (or, for a scenario, of its design) without editing\n"
                "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
@@ -124,7 +136,7 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             command_help(c);
             return -1;
         }
-        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
+        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--data") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
                           !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
                           !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
                           !strcmp(arg, "--seed");
@@ -154,7 +166,9 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
         else if (!strcmp(arg, "--height")) {
             a->height_x = argv[++i];
             a->height_y = argv[++i];
-        } else if (!strcmp(arg, "--png"))
+        } else if (!strcmp(arg, "--data"))
+            a->data = argv[++i];
+        else if (!strcmp(arg, "--png"))
             a->png = argv[++i];
         else if (!strcmp(arg, "--scenario"))
             a->scenario = argv[++i];
@@ -202,6 +216,18 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
     return 0;
 }
 
+/* What kind of data file a command's positional arguments are (compare's are results, bench's a name). */
+static cli_data_kind data_kind(const char *command)
+{
+    static const char *const scenarios[] = {"run", "render-compare", "trial", "walk", "campaign"};
+    for (size_t i = 0; i < sizeof scenarios / sizeof *scenarios; i++)
+        if (!strcmp(command, scenarios[i]))
+            return CLI_DATA_SCENARIO;
+    if (!strcmp(command, "model") || !strcmp(command, "stiffness"))
+        return CLI_DATA_DESIGN;
+    return !strcmp(command, "terrain") ? CLI_DATA_TERRAIN : CLI_DATA_NONE;
+}
+
 int cli_report(int status, const char *message)
 {
     fprintf(stderr, "footsim: %s\n", message);
@@ -214,6 +240,10 @@ int main(int argc, char **argv)
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? FS_BAD_INPUT : 0;
     }
+    if (!strcmp(argv[1], "--version")) {
+        printf("footsim %s\n", fs_version());
+        return 0;
+    }
     for (int i = 0; i < NCOMMANDS; i++) {
         if (strcmp(argv[1], commands[i].name))
             continue;
@@ -221,6 +251,14 @@ int main(int argc, char **argv)
         int s = parse_args(&commands[i], argc - 2, argv + 2, &a);
         if (s)
             return s < 0 ? 0 : s;
+        if (a.data && (s = cli_data_set_dir(a.data)) != 0)
+            return s;
+        /* relative data files not found as given: --data, here, the installed data */
+        cli_data_kind kind = data_kind(a.command);
+        static char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX];
+        a.input = cli_data_find(a.input, kind, input, sizeof input);
+        a.input2 = cli_data_find(a.input2, kind, input2, sizeof input2);
+        a.scenario = cli_data_find(a.scenario, CLI_DATA_SCENARIO, scenario, sizeof scenario);
         fs_ode_init();
         s = commands[i].run(&a);
         fs_ode_close();

@@ -19,6 +19,12 @@ expect 2 "give a SCENARIO file" -- run
 expect 2 "unknown command" -- sprint
 expect 2 "cannot create folder" -- run scenarios/static_load.ini --out /proc/footsim/out
 expect 2 "unknown section \[wheels\]" -- stiffness scenarios/feet/biomimetic.ini --set wheels.count=4
+# --data must be a folder; a relative path not found as given is looked for there (and in its
+# scenarios/feet/ for a design), and paths inside the file stay relative to the file
+expect 2 "--data $tmp/none: not a folder" -- run static_load.ini --data "$tmp/none"
+src=$PWD
+check '(cd "$tmp" && "$fs" model biomimetic.ini --data "$src" | grep -q "^$src/scenarios/feet/biomimetic.ini: biomimetic foot")'
+check '(cd "$tmp" && "$fs" terrain heightmap.ini --data "$src" | grep -q "^$src/terrains/heightmap.ini: heightmap terrain")'
 
 # robots: their keys live in robot files (scenarios/robots/), checked like any other file
 printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\nmass_kg = 26\n' "$PWD" >"$tmp/inline.ini"

@@ -121,7 +121,7 @@ static fs_status chain_scene(scene *s, fs_error *err)
     memset(s, 0, sizeof *s);
     s->name = "chain";
     s->title = "pinned chain against the planar reference";
-    s->path = "scenarios/static_load.ini";
+    s->path = cli_data_path("scenarios/static_load.ini");
     s->pinned_chain = 3;
     s->duration_s = 0.2;
     fs_status st = fs_scenario_load(s->path, NULL, 0, &s->base, err);
@@ -157,7 +157,7 @@ static fs_status landing_scene(scene *s, const char *name, const char *title, co
     memset(s, 0, sizeof *s);
     s->name = name;
     s->title = title;
-    s->path = "scenarios/landing_trial.ini";
+    s->path = cli_data_path("scenarios/landing_trial.ini");
     s->duration_s = duration_s;
     char terrain[64] = "scenario.terrain=../terrains/rough.ini", foot[FS_PATH_MAX + 32];
     snprintf(foot, sizeof foot, "scenario.design=%s", design); /* which files: chosen at load */

@@ -185,10 +185,10 @@ static fs_status run_once(const scene *sc, const char *const *extra, const fs_ru
     double t0 = fs_clock_s();
     fs_status s;
     if (sc->how == BY_TRIAL) {
-        s = run_trial(sc->path, set, n, obs, o, err);
+        s = run_trial(cli_data_path(sc->path), set, n, obs, o, err);
     } else {
         static fs_scenario loaded;
-        s = fs_scenario_load(sc->path, set, n, &loaded, err);
+        s = fs_scenario_load(cli_data_path(sc->path), set, n, &loaded, err);
         if (s == FS_OK)
             s = run_engine(&loaded, sc->how, obs, o, err);
         fs_scenario_free(&loaded);
@@ -294,7 +294,7 @@ static fs_status frames_run(const scene *sc, outcome *o, fs_error *err)
     cli_frames *frames = NULL;
     fs_run_observer obs;
     double t0 = fs_clock_s();
-    fs_status s = fs_scenario_load(sc->path, sc->set, count_set(sc->set), &loaded, err);
+    fs_status s = fs_scenario_load(cli_data_path(sc->path), sc->set, count_set(sc->set), &loaded, err);
     if (s == FS_OK && cli_frames_open(&a, &loaded, tmp, &frames, &obs) != 0)
         s = fs_fail(err, FS_BAD_INPUT, "no renderer");
     if (s == FS_OK)

@@ -107,7 +107,7 @@ static void run_config(const config *c, const fs_design_def *base, double durati
     static fs_scenario sc;
     fs_error err = {FS_OK, ""};
     memset(o, 0, sizeof *o);
-    o->status = fs_scenario_load(SLICES[c->slice].scenario, NULL, 0, &sc, &err);
+    o->status = fs_scenario_load(cli_data_path(SLICES[c->slice].scenario), NULL, 0, &sc, &err);
     if (o->status == FS_OK)
         o->status = configure(c, base, duration, &sc, &err);
     fs_sim sim;
@@ -437,7 +437,7 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     jobs = jobs < MAX_WORKERS ? jobs : MAX_WORKERS;
     fs_error err;
     static fs_scenario base;
-    if (fs_scenario_load(SLICES[0].scenario, NULL, 0, &base, &err) != FS_OK)
+    if (fs_scenario_load(cli_data_path(SLICES[0].scenario), NULL, 0, &base, &err) != FS_OK)
         return fail(&err);
     fs_scenario_free(&base);
     if (fs_make_dirs(dir, &err) != FS_OK)
