@@ -127,7 +127,7 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
         const fs_campaign_row *r = &rows[i];
         printf("  %-12s on %-18s under %-14s landed %3d of %3d (%.2f, 95 %% CI [%.2f, %.2f])", c->foot[r->foot].name,
                c->terrain[r->terrain].name, c->robot[r->robot].name, r->landed, r->trials, r->success_rate, r->ci_low, r->ci_high);
-        printf(", fell %3d, undecided %d", r->fell, r->undecided);
+        printf(", fell %3d, undecided %d; law: %s", r->fell, r->undecided, fs_law_name(r->law));
         printf(r->failed_numerics ? ", failed_numerics %d\n" : "\n", r->failed_numerics);
     }
 }

@@ -9,7 +9,10 @@
 #include "footsim/experiment/fs_walk.h"
 #include "footsim/sim/fs_sim.h"
 
+#include "footsim/base/fs_path.h"
+
 #include <cJSON.h>
+#include <dirent.h>
 #include <ode/ode.h>
 #include <math.h>
 #include <stdio.h>
@@ -137,6 +140,110 @@ static void print_mat_row(const char *label, const double m[2][2])
     printf("    %-22s [%9.4f %9.4f; %9.4f %9.4f]\n", label, m[0][0], m[0][1], m[1][0], m[1][1]);
 }
 
+/* ---- the pitch-stiffness law ---------------------------------------------------------------- */
+
+enum { MAX_ROBOTS = 16 };
+
+/* The whole foot's pitch stiffness and, for each shipped robot, what the law says. */
+typedef struct pitch_report {
+    double load_kg, K_model, K_ode_mu1, K_ode_grip;
+    int nrobots;
+    char robot[MAX_ROBOTS][FS_NAME_MAX];
+    fs_robot_def def[MAX_ROBOTS];
+    fs_pitch_law law[MAX_ROBOTS];
+} pitch_report;
+
+static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+/* The robot files beside the design's folder (scenarios/robots/ for scenarios/feet/X.ini), sorted. */
+static void shipped_robots(const char *design, double K, double g, pitch_report *p, fs_error *err)
+{
+    char dir[FS_PATH_MAX];
+    snprintf(dir, sizeof dir, "%s", design);
+    char *slash = strrchr(dir, '/');
+    snprintf(slash ? slash + 1 : dir, sizeof dir - (size_t)(slash ? slash + 1 - dir : 0), "../robots");
+    DIR *d = opendir(dir);
+    char *names[MAX_ROBOTS];
+    int n = 0;
+    for (struct dirent *e; d && (e = readdir(d)) && n < MAX_ROBOTS;) {
+        size_t len = strlen(e->d_name);
+        if (len > 4 && !strcmp(e->d_name + len - 4, ".ini"))
+            names[n++] = strdup(e->d_name);
+    }
+    if (d)
+        closedir(d);
+    qsort(names, (size_t)n, sizeof names[0], by_name);
+    for (int i = 0; i < n; i++) {
+        char path[2 * FS_PATH_MAX];
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        if (names[i] && fs_robot_load(path, NULL, 0, &p->def[p->nrobots], err) == FS_OK) {
+            fs_path_stem(path, p->robot[p->nrobots], FS_NAME_MAX);
+            fs_pitch_law_apply(K, &p->def[p->nrobots], g, &p->law[p->nrobots]);
+            p->nrobots++;
+        }
+        free(names[i]);
+    }
+}
+
+static fs_status pitch_stiffness(const fs_scenario *sc, const char *design, pitch_report *p, fs_error *err)
+{
+    memset(p, 0, sizeof *p);
+    double g = sc->def.gravity_m_per_s2, load_N = sc->design.design_load_kg * g;
+    p->load_kg = sc->design.design_load_kg;
+    fs_status s = fs_pitch_stiffness_model(&sc->design, &sc->geom, load_N, g, &p->K_model, err);
+    if (s == FS_OK)
+        s = fs_pitch_stiffness_measure(sc, load_N, 1, p->K_model, &p->K_ode_mu1, err);
+    if (s == FS_OK)
+        s = fs_pitch_stiffness_measure(sc, load_N, 10, p->K_model, &p->K_ode_grip, err);
+    if (s == FS_OK) {
+        fs_error ignored;
+        shipped_robots(design, p->K_model, g, p, &ignored);
+    }
+    return s;
+}
+
+static void pitch_print(const pitch_report *p)
+{
+    printf("whole foot against pitching its ankle body under %.1f kg at the ankle (docs/landing.md), N m/rad:\n"
+           "  model: each chain rolls in its plane, free across it  %8.2f\n"
+           "  measured in ODE, friction 1 (the landing trials')     %8.2f (%+.1f %%)\n"
+           "  measured in ODE, friction 10 (toes held across too)   %8.2f\n",
+           p->load_kg, p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1), p->K_ode_grip);
+    if (p->nrobots)
+        printf("the law, K (the model's, an Achilles tendon in series) against m g h of each robot:\n");
+    for (int i = 0; i < p->nrobots; i++) {
+        const fs_pitch_law *l = &p->law[i];
+        if (l->held)
+            printf("  %-22s %5.1f kg: pitch held by its slide; stands\n", p->robot[i], p->def[i].mass_kg);
+        else
+            printf("  %-22s %5.1f kg, centre of mass %.3f m up: needs %6.2f, has %6.2f; critical height %.3f m: %s\n",
+                   p->robot[i], p->def[i].mass_kg, p->def[i].com_height_m, l->demand, l->K, l->critical_height_m,
+                   l->stands ? "stands" : "topples");
+    }
+}
+
+static void pitch_json(cJSON *root, const pitch_report *p)
+{
+    cJSON *o = cJSON_AddObjectToObject(root, "pitch_stiffness");
+    cJSON_AddNumberToObject(o, "load_kg", p->load_kg);
+    cJSON_AddNumberToObject(o, "model_N_m_per_rad", p->K_model);
+    cJSON_AddNumberToObject(o, "ode_mu1_N_m_per_rad", p->K_ode_mu1);
+    cJSON_AddNumberToObject(o, "ode_mu10_N_m_per_rad", p->K_ode_grip);
+    cJSON *robots = cJSON_AddArrayToObject(o, "robots");
+    for (int i = 0; i < p->nrobots; i++) {
+        cJSON *r = cJSON_CreateObject();
+        cJSON_AddStringToObject(r, "robot", p->robot[i]);
+        cJSON_AddNumberToObject(r, "mass_kg", p->def[i].mass_kg);
+        cJSON_AddNumberToObject(r, "com_height_m", p->def[i].com_height_m);
+        cJSON_AddBoolToObject(r, "pitch_held", p->law[i].held);
+        cJSON_AddNumberToObject(r, "K_N_m_per_rad", p->law[i].K);
+        cJSON_AddNumberToObject(r, "demand_N_m_per_rad", p->law[i].demand);
+        cJSON_AddNumberToObject(r, "critical_com_height_m", p->law[i].critical_height_m);
+        cJSON_AddBoolToObject(r, "stands", p->law[i].stands);
+        cJSON_AddItemToArray(robots, r);
+    }
+}
+
 int cli_stiffness(const cli_args *a)
 {
     static fs_scenario sc;
@@ -159,6 +266,11 @@ int cli_stiffness(const cli_args *a)
         if (fs_planar_equilibrium(&sc.design, &sc.geom, 2, &load, &eq[f], &err) != FS_OK)
             return fail(&err);
     }
+    /* the whole foot against pitching its ankle body, under the design load: the model, and ODE on
+       the default ground's friction and on gripping ground */
+    pitch_report pitch;
+    if (pitch_stiffness(&sc, a->input, &pitch, &err) != FS_OK)
+        return fail(&err);
     if (a->json) {
         cJSON *root = cJSON_CreateObject();
         cJSON_AddStringToObject(root, "design", a->input);
@@ -174,6 +286,7 @@ int cli_stiffness(const cli_args *a)
             cJSON_AddItemToArray(chains, c);
         }
         cJSON_AddNumberToObject(root, "max_rel_diff", worst);
+        pitch_json(root, &pitch);
         cJSON_AddNumberToObject(root, "tolerance", STIFFNESS_TOLERANCE);
         cJSON *st = cJSON_AddObjectToObject(root, "static_check");
         cJSON_AddNumberToObject(st, "load_kg", sc.design.design_load_kg);
@@ -208,6 +321,7 @@ int cli_stiffness(const cli_args *a)
                    f ? "frictionless" : "gripping", eq[f].converged ? "equilibrium found" : "NO EQUILIBRIUM",
                    eq[f].stable ? "stable" : "UNSTABLE", eq[f].ankle_drop_m * 1e3, eq[f].midfoot_rad * 180 / M_PI,
                    eq[f].mtp_rad * 180 / M_PI, eq[f].ball_clearance_m * 1e3);
+        pitch_print(&pitch);
     }
     return worst <= STIFFNESS_TOLERANCE ? 0 : FS_EXPECTATION_FAILED;
 }

@@ -47,4 +47,56 @@ static void jacobian_has_the_papers_pattern(void)
     }
 }
 
-FS_TEST_MAIN(TEST(default_design_agrees), TEST(other_design_agrees), TEST(jacobian_has_the_papers_pattern))
+/* The whole foot's pitch stiffness (the law of docs/landing.md): the planar model is exact for five
+ * alike, unsplayed chains whose d3 springs lie in their planes, and there ODE on gripping ground
+ * must agree with it. What may separate them: the contacts' compliance (about 9e6 N/m at each of
+ * seven points some 0.1 m apart: over 1e4 N m/rad in parallel, against 12: 0.1 %), the probe's
+ * 1e-3 rad (second-order terms of that size: 0.1 %), the hinges' softness (far stiffer still):
+ * allow 1 %. The model must also see the springs: doubling them all must stiffen the foot. */
+static void pitch_stiffness_model_and_ode_agree(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    const char *alike[] = {"chains.splay_deg=0,0,0,0,0", "chains.scale=1,1,1,1,1", "springs.d3_heel_spread=1"};
+    REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", alike, 3, &sc, &err) == FS_OK);
+    double g = sc.def.gravity_m_per_s2, load = 26 * g, K, K_ode;
+    REQUIRE(fs_pitch_stiffness_model(&sc.design, &sc.geom, load, g, &K, &err) == FS_OK);
+    REQUIRE(fs_pitch_stiffness_measure(&sc, load, 10, K, &K_ode, &err) == FS_OK);
+    CHECK(K > 0);
+    CHECK_NEAR(K_ode / K, 1, 0.01);
+    const char *stiffer[] = {"chains.splay_deg=0,0,0,0,0", "chains.scale=1,1,1,1,1", "springs.d3_heel_spread=1",
+                             "springs.k_d1_N_per_m=24000", "springs.k_d2_N_per_m=24000", "springs.k_d3_N_per_m=24000"};
+    static fs_scenario sc2;
+    REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", stiffer, 6, &sc2, &err) == FS_OK);
+    double K2;
+    REQUIRE(fs_pitch_stiffness_model(&sc2.design, &sc2.geom, load, g, &K2, &err) == FS_OK);
+    CHECK(K2 > 1.5 * K);
+    /* a flat sole has no such model: its contacts govern */
+    static fs_scenario flat;
+    REQUIRE(fs_scenario_for_design("scenarios/feet/flat.ini", NULL, 0, &flat, &err) == FS_OK);
+    CHECK(fs_pitch_stiffness_model(&flat.design, &flat.geom, load, g, &K, &err) == FS_BAD_INPUT);
+}
+
+/* The law for each kind of robot: rigid, an Achilles tendon in series, a slide that holds pitch. */
+static void pitch_law_for_each_robot(void)
+{
+    fs_robot_def r = {.mass_kg = 26, .com_height_m = 0.3, .joint = FS_ROBOT_RIGID};
+    fs_pitch_law l;
+    fs_pitch_law_apply(13, &r, 9.81, &l);
+    CHECK_NEAR(l.demand, 26 * 9.81 * 0.3, 1e-9);
+    CHECK(!l.stands && l.K == 13 && !l.held);
+    CHECK_NEAR(l.critical_height_m, 13 / (26 * 9.81), 1e-12);
+    r.com_height_m = 0.05;
+    fs_pitch_law_apply(13, &r, 9.81, &l);
+    CHECK(l.stands);
+    r.joint = FS_ROBOT_ACHILLES, r.achilles_k_N_per_m = 1e6; /* 400 N m/rad in series */
+    fs_pitch_law_apply(13, &r, 9.81, &l);
+    CHECK_NEAR(l.K, 1 / (1 / 13.0 + 1 / 400.0), 1e-9);
+    CHECK(!l.stands); /* 12.6 against 12.75 */
+    r.mount = FS_ROBOT_VERTICAL;
+    fs_pitch_law_apply(13, &r, 9.81, &l);
+    CHECK(l.held && l.stands);
+}
+
+FS_TEST_MAIN(TEST(default_design_agrees), TEST(other_design_agrees), TEST(jacobian_has_the_papers_pattern),
+             TEST(pitch_stiffness_model_and_ode_agree), TEST(pitch_law_for_each_robot))

@@ -9,6 +9,7 @@
 #include "fs_test.h"
 
 #include "footsim/base/fs_error.h"
+#include "footsim/analysis/fs_analysis.h"
 #include "footsim/experiment/fs_trial.h"
 
 enum { NSEEDS = 3, NCONFIGS = 4 };
@@ -58,6 +59,36 @@ static void biomimetic_foot_under_drop_weight_lands_whatever_the_layer_and_step(
     judged_alike("biomimetic", "drop_weight", FS_LANDED);
 }
 
-FS_TEST_MAIN(TEST(flat_foot_under_single_tall_lands_whatever_the_layer_and_step),
+/* The pitch-stiffness law predicts where landings start to fail: the Table I foot under a 26 kg body
+ * over its ankle (drop_weight) lands with the body's centre of mass at 0.8 of the law's critical
+ * height K / (m g) and falls at 1.2 of it, on every seed (so the simulated boundary lies within
+ * +-20 % of the law's). */
+static void the_law_predicts_the_landing_boundary(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", (const char *[]){"robot.design=robots/drop_weight.ini"}, 1,
+                             &sc, &err) == FS_OK);
+    double g = sc.def.gravity_m_per_s2, m = sc.def.robot.mass_kg, K;
+    REQUIRE(fs_pitch_stiffness_model(&sc.design, &sc.geom, m * g, g, &K, &err) == FS_OK);
+    fs_scenario_free(&sc);
+    double critical = K / (m * g);
+    for (int side = 0; side < 2; side++) {
+        char height[64];
+        snprintf(height, sizeof height, "robot.com_height_m=%.6f", critical * (side ? 1.2 : 0.8));
+        const char *set[] = {"robot.design=robots/drop_weight.ini", height};
+        for (int seed = 1; seed <= NSEEDS; seed++) {
+            fs_trial_result r;
+            REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 2, seed, NULL, &r, &err) == FS_OK);
+            if (r.outcome != (side ? FS_FELL : FS_LANDED))
+                fprintf(stderr, "  %s (critical %.4f m), seed %d: %s (%s)\n", height, critical, seed,
+                        fs_outcome_name(r.outcome), fs_rule_name(r.rule));
+            CHECK(r.outcome == (side ? FS_FELL : FS_LANDED));
+        }
+    }
+}
+
+FS_TEST_MAIN(TEST(the_law_predicts_the_landing_boundary),
+             TEST(flat_foot_under_single_tall_lands_whatever_the_layer_and_step),
              TEST(biomimetic_foot_under_single_tall_falls_whatever_the_layer_and_step),
              TEST(biomimetic_foot_under_drop_weight_lands_whatever_the_layer_and_step))

@@ -211,3 +211,29 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
         out->spring_force_N[k] = c.k[k] * (spring_length(&c, &J, b, k) - c.rest[k]);
     return FS_OK;
 }
+
+fs_status fs_pitch_stiffness_model(const fs_design_def *d, const fs_foot_geom *g, double load_N,
+                                   double gravity_m_per_s2, double *K, fs_error *err)
+{
+    *K = NAN;
+    if (g->kind != FS_FOOT_BIOMIMETIC)
+        return fs_fail(err, FS_BAD_INPUT, "the pitch-stiffness model is for the biomimetic foot; a flat sole's "
+                                          "pitch stiffness is its contacts' (docs/landing.md)");
+    double sum[2][2] = {{0, 0}, {0, 0}};
+    fs_planar_load load = {load_N, gravity_m_per_s2, 0, 0};
+    for (int i = 0; i < FS_CHAINS; i++) {
+        fs_planar_result eq;
+        fs_status s = fs_planar_equilibrium(d, g, i, &load, &eq, err);
+        if (s != FS_OK)
+            return s;
+        if (!eq.converged || !eq.stable)
+            return fs_fail(err, FS_NUMERICAL, "chain %d has no stable equilibrium under %.4g N at the ankle: the arch "
+                                              "folds, and its pitch stiffness is not positive", i + 1, load_N);
+        for (int r = 0; r < 2; r++)
+            for (int c = 0; c < 2; c++)
+                sum[r][c] += eq.K_reduced[r][c];
+    }
+    /* the heel turns freely: condensed out of (heel, talus) */
+    *K = sum[1][1] - sum[0][1] * sum[1][0] / sum[0][0];
+    return FS_OK;
+}

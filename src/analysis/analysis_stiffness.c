@@ -171,3 +171,77 @@ fs_status fs_stiffness_measure(const fs_scenario *sc_in, fs_chain_stiffness out[
     }
     return FS_OK;
 }
+
+/* ---- the whole foot's pitch stiffness, measured --------------------------------------------- */
+
+/* A pitch probe: torque tau about the world's lateral axis on the ankle body, rising with the load. */
+typedef struct pitch_load {
+    double tau, ramp_s;
+} pitch_load;
+
+static void apply_pitch(void *user, fs_sim *sim)
+{
+    const pitch_load *p = user;
+    double rise = p->ramp_s > 0 ? fmin(1, sim->time_s / p->ramp_s) : 1;
+    dBodyAddTorque(sim->body[sim->geom->ankle_body], 0, p->tau * rise, 0);
+}
+
+/* Still, once the load and torque have risen: every body slower than 1e-7 m/s. */
+static int still_after_ramp(void *user, fs_sim *sim)
+{
+    const pitch_load *p = user;
+    return sim->time_s > p->ramp_s + 0.1 && fs_sim_max_speed(sim) < 1e-7;
+}
+
+/* The ankle body's pitch at rest under torque tau: the turn of its x axis about the world's y. */
+static fs_status pitch_probe(const fs_scenario *sc, double tau, double *pitch, fs_error *err)
+{
+    fs_sim sim;
+    fs_sim_options opts = {.with_ground = 1};
+    fs_status s = fs_sim_build(&sim, sc, &opts, err);
+    pitch_load load = {tau, sc->def.ramp_s};
+    const fs_step_hook hooks[] = {{"still", still_after_ramp, &load}, {"out of time", out_of_time, NULL}};
+    fs_drive_spec spec = {.max_steps = LONG_MAX, .before_step = apply_pitch, .before_user = &load, .hooks = hooks,
+                          .nhooks = 2};
+    fs_drive_result r;
+    if (s == FS_OK)
+        s = fs_drive(&sim, &spec, &r, err);
+    if (s == FS_OK && r.stopped_by != 0)
+        s = fs_fail(err, FS_NUMERICAL, "%s: the foot did not come to rest within %g s under a pitch torque of %.3g N m",
+                    sc->path, SETTLE_S, tau);
+    if (s == FS_OK) {
+        const dReal *R = dBodyGetRotation(sim.body[sim.geom->ankle_body]);
+        *pitch = atan2(-R[8], R[0]);
+    }
+    fs_sim_destroy(&sim);
+    return s;
+}
+
+fs_status fs_pitch_stiffness_measure(const fs_scenario *sc_in, double load_N, double mu, double K_guess, double *K,
+                                     fs_error *err)
+{
+    fs_scenario sc = *sc_in;
+    sc.def.load_kg = load_N / sc.def.gravity_m_per_s2;
+    sc.def.robot.mass_kg = 0;
+    sc.design.sole_mu = sc.terrain.def.mu = mu;
+    /* a probe about 1e-3 rad deep: linear, yet far above the solver's residuals */
+    double tau = 1e-3 * K_guess, plus, minus;
+    fs_status s = pitch_probe(&sc, tau, &plus, err);
+    if (s == FS_OK)
+        s = pitch_probe(&sc, -tau, &minus, err);
+    *K = s == FS_OK ? 2 * tau / (plus - minus) : NAN;
+    return s;
+}
+
+void fs_pitch_law_apply(double K_foot, const fs_robot_def *r, double gravity_m_per_s2, fs_pitch_law *out)
+{
+    memset(out, 0, sizeof *out);
+    out->K_foot = K_foot;
+    out->held = r->mount == FS_ROBOT_VERTICAL;
+    out->K_series = r->joint == FS_ROBOT_ACHILLES ? r->achilles_k_N_per_m * FS_ACHILLES_LEVER_M * FS_ACHILLES_LEVER_M
+                                                  : INFINITY;
+    out->K = isfinite(out->K_series) ? 1 / (1 / K_foot + 1 / out->K_series) : K_foot;
+    out->demand = r->mass_kg * gravity_m_per_s2 * r->com_height_m;
+    out->critical_height_m = r->mass_kg > 0 ? out->K / (r->mass_kg * gravity_m_per_s2) : INFINITY;
+    out->stands = out->held || out->demand < out->K;
+}

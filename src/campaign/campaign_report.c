@@ -100,7 +100,7 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
             c->sweep);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
-    fputc('\n', f);
+    fputs(",law_prediction,law_K_N_m_per_rad,law_critical_com_height_m\n", f);
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         csv_row_key(f, c, r->foot, r->terrain, r->robot);
@@ -110,6 +110,9 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
         csv_number(f, r->ci_high);
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             csv_number(f, r->median[m]);
+        fprintf(f, ",%s", fs_law_name(r->law));
+        csv_number(f, r->law_K);
+        csv_number(f, r->law_critical_m);
         fputc('\n', f);
     }
     return 1;
@@ -125,18 +128,23 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
                "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically.\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
             c->sweep[0] ? "; terrain swept over " : "", c->sweep);
-    fputs("| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | success | 95 % CI |", f);
+    fputs("| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | success | 95 % CI | law |", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, " %s |", fs_campaign_metrics[m].name);
-    fputs("\n|---|---|---|--:|--:|--:|--:|--:|--:|---|", f);
+    fputs("\n|---|---|---|--:|--:|--:|--:|--:|--:|---|---|", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fputs("--:|", f);
     fputc('\n', f);
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         fprintf(f, "| %s | %s | %s | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
-                c->terrain[r->terrain].name, c->robot[r->robot].name, r->trials, r->landed, r->fell, r->undecided, r->failed_numerics, r->success_rate,
-                r->ci_low, r->ci_high);
+                c->terrain[r->terrain].name, c->robot[r->robot].name, r->trials, r->landed, r->fell, r->undecided,
+                r->failed_numerics, r->success_rate, r->ci_low, r->ci_high);
+        if (isfinite(r->law_K))
+            fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m) |", fs_law_name(r->law), r->law_K,
+                    r->law_critical_m);
+        else
+            fprintf(f, " %s |", r->law == FS_LAW_STANDS ? "stands (pitch held)" : fs_law_name(r->law));
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
@@ -191,6 +199,9 @@ static cJSON *summary_json(const out_ctx *x)
         cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
         cJSON_AddNumberToObject(o, "ci_low", r->ci_low);
         cJSON_AddNumberToObject(o, "ci_high", r->ci_high);
+        cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law));
+        cJSON_AddNumberToObject(o, "law_K_N_m_per_rad", r->law_K); /* NAN, INFINITY: null */
+        cJSON_AddNumberToObject(o, "law_critical_com_height_m", r->law_critical_m);
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
             char key[FS_NAME_MAX + 8];
             snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);

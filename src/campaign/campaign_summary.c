@@ -2,6 +2,7 @@
  * rates with Wilson intervals, medians). */
 #include "campaign_internal.h"
 
+#include "footsim/analysis/fs_analysis.h"
 #include "footsim/base/fs_stats.h"
 
 #include <math.h>
@@ -43,6 +44,27 @@ void fs_wilson(int k, int n, double *low, double *high)
         *high = 1;
 }
 
+const char *fs_law_name(int law) { return law == FS_LAW_STANDS ? "stands" : law == FS_LAW_TOPPLES ? "topples" : "n/a"; }
+
+/* The law for a cell's foot and robot: the model's pitch stiffness under the robot's weight. A flat
+ * sole has none (its contacts govern); an arch that folds under the weight has none left. */
+static void law_of(const fs_scenario *sc, fs_campaign_row *row)
+{
+    row->law = FS_LAW_NONE;
+    row->law_K = row->law_critical_m = NAN;
+    const fs_robot_def *r = &sc->def.robot;
+    double g = sc->def.gravity_m_per_s2, K;
+    fs_error err;
+    if (sc->geom.kind != FS_FOOT_BIOMIMETIC || r->mass_kg <= 0)
+        return;
+    fs_status s = fs_pitch_stiffness_model(&sc->design, &sc->geom, r->mass_kg * g, g, &K, &err);
+    fs_pitch_law law;
+    fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, &law);
+    row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
+    row->law_K = law.held ? INFINITY : law.K;
+    row->law_critical_m = law.held ? INFINITY : law.critical_height_m;
+}
+
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows)
 {
     double *v = malloc((size_t)c->seeds * sizeof *v);
@@ -68,6 +90,10 @@ void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results,
             row->nmetric = n;
             row->median[m] = fs_median(v, n);
         }
+        if (c->pair)
+            law_of(fs_campaign_pair(c, cell), row);
+        else
+            row->law = FS_LAW_NONE, row->law_K = row->law_critical_m = NAN;
     }
     free(v);
 }

@@ -204,7 +204,7 @@ static void build_robot(fs_sim *sim)
     dJointAttach(sim->robot_joint, sim->robot, ankle_body);
     dJointSetHingeAnchor(sim->robot_joint, a.x, a.y, a.z);
     dJointSetHingeAxis(sim->robot_joint, axis.x, axis.y, axis.z);
-    const double behind = 0.02; /* m: the tendon's line behind the ankle axis */
+    const double behind = FS_ACHILLES_LEVER_M; /* the tendon's line behind the ankle axis */
     fs_vec3 heel = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, -0.01)));
     fs_vec3 leg = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, s->robot.achilles_leg_anchor_m)));
     double p1[3] = {heel.x, heel.y, heel.z}, p2[3] = {leg.x, leg.y, leg.z};

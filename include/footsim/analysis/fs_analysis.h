@@ -51,6 +51,37 @@ typedef struct fs_planar_load {
 fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, int chain, const fs_planar_load *load,
                                 fs_planar_result *out, fs_error *err);
 
+/* The pitch-stiffness law (docs/landing.md): the whole foot's stiffness against pitching its ankle
+ * body (the talus) about the lateral axis, N m/rad, on gripping ground (heel and toes roll without
+ * slipping, none lifts), the heel free to turn, under load_N at the ankle and gravity: each chain's
+ * K_reduced at its equilibrium (as if all five were like it, so each with a fifth of the load)
+ * summed, and the heel's angle condensed out. Exact for alike, unsplayed chains; a projection
+ * otherwise. A robot of mass m whose centre of mass stands h above the ankle stands on the foot
+ * when m g h < K. FS_BAD_INPUT for a flat foot (its contacts govern); FS_NUMERICAL when a chain
+ * has no stable equilibrium under the load. */
+fs_status fs_pitch_stiffness_model(const fs_design_def *d, const fs_foot_geom *g, double load_N,
+                                   double gravity_m_per_s2, double *K, fs_error *err);
+
+/* The same stiffness measured in ODE: the foot on the scenario's ground with friction mu (sole and
+ * ground), under load_N at the ankle (the scenario's load and robot replaced), torques +tau and
+ * -tau (1e-3 rad times K_guess) about the lateral axis on the ankle body, risen with the load and
+ * held until still; K = 2 tau / (pitch(+tau) - pitch(-tau)). With mu = 10 heel and toes grip
+ * (the model's assumption in each chain's plane, but splayed toes are then held across their
+ * planes too); docs/landing.md gives both. */
+fs_status fs_pitch_stiffness_measure(const fs_scenario *sc, double load_N, double mu, double K_guess, double *K,
+                                     fs_error *err);
+
+/* The law for one robot on a foot of pitch stiffness K_foot: an Achilles tendon acts in series
+ * (k times its 2 cm lever squared), a robot on a vertical slide cannot lean. */
+typedef struct fs_pitch_law {
+    double K_foot, K_series, K;  /* N m/rad: the foot's, the robot's joint's (INFINITY when rigid), in series */
+    double demand;               /* m g h, N m/rad: what the robot's weight asks of K */
+    double critical_height_m;    /* K / (m g): the highest centre of mass that stands */
+    int held;                    /* pitch held (the rig): it stands whatever K */
+    int stands;                  /* held, or demand < K */
+} fs_pitch_law;
+void fs_pitch_law_apply(double K_foot, const fs_robot_def *robot, double gravity_m_per_s2, fs_pitch_law *out);
+
 /* The reference transient: chain `chain` (0-based, unsplayed) from rest, the load rising linearly
  * over ramp_s. Masses: a fifth of heel and talus, the whole metatarsal and phalanx; a fifth of the
  * load. */

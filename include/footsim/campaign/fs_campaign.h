@@ -114,7 +114,14 @@ typedef struct fs_campaign_row {
     double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
     int nmetric;                           /* trials the medians are over (all but failed_numerics) */
     double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
+    /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
+    int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: a flat sole */
+    double law_K, law_critical_m;          /* N m/rad with any tendon in series; K / (m g), m */
 } fs_campaign_row;
+enum { FS_LAW_NONE = -1, FS_LAW_TOPPLES = 0, FS_LAW_STANDS = 1 };
+
+/* "stands", "topples" or "n/a". */
+const char *fs_law_name(int law);
 
 /* Fills rows[fs_campaign_ncells(c)] (by cell) from results[fs_campaign_ntrials(c)]. */
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows);

@@ -13,6 +13,9 @@
 #include "footsim/io/fs_config.h"
 
 typedef enum fs_robot_joint { FS_ROBOT_RIGID = 0, FS_ROBOT_ACHILLES = 1 } fs_robot_joint;
+
+/* The Achilles tendon's line lies this far behind the ankle axis, m. */
+#define FS_ACHILLES_LEVER_M 0.02
 typedef enum fs_robot_mount { FS_ROBOT_FREE = 0, FS_ROBOT_VERTICAL = 1 } fs_robot_mount;
 
 typedef struct fs_robot_def {
