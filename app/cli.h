@@ -46,6 +46,7 @@ int cli_render_compare(const cli_args *a);
 /* What each command writes in its results folder (NULL-terminated): an earlier version's folder,
  * without the marker, is recognised by these (fs_outdir_open). */
 extern const char *const cli_run_files[], *const cli_campaign_files[], *const cli_compare_files[];
+extern const char *const cli_optimize_files[]; /* app/cli_optimize.c */
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);
@@ -56,6 +57,15 @@ int cli_terrain(const cli_args *a);
 int cli_trial(const cli_args *a);
 int cli_walk(const cli_args *a);
 int cli_campaign(const cli_args *a);  /* app/cli_campaign.c */
+int cli_optimize(const cli_args *a);  /* app/cli_optimize.c */
+/* Runs every trial of c in `jobs` worker processes into results (by trial index), with progress on
+ * stderr under the name who; a dead worker's trial is failed_numerics (app/cli_campaign.c). Returns
+ * an fs_status. */
+struct fs_campaign;
+struct fs_trial_result;
+struct fs_error;
+int cli_campaign_trials(const struct fs_campaign *c, struct fs_trial_result *results, int jobs, const char *who,
+                        struct fs_error *err);
 int cli_compare(const cli_args *a);
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown

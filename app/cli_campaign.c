@@ -105,6 +105,23 @@ static void draw_progress(int done, int ntrials, void *user)
 
 /* ---- campaign ----------------------------------------------------------------------------- */
 
+int cli_campaign_trials(const fs_campaign *c, fs_trial_result *results, int jobs, const char *who, fs_error *err)
+{
+    const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED"), *stop = getenv("FOOTSIM_TEST_STOP_SEED");
+    campaign_run run = {.c = c, .results = results, .crash_seed = crash ? atoi(crash) : -1,
+                        .stop_seed = stop ? atoi(stop) : -1};
+    cli_progress_start(&run.progress, who, "trials");
+    fs_pool_spec spec = {.ntasks = fs_campaign_ntrials(c), .jobs = jobs, .result_size = sizeof(message), .user = &run,
+                         .run = run_one, .done = take_one, .died = record_death, .progress = draw_progress};
+    fs_pool_stats stats;
+    fs_status s = fs_pool_run(&spec, &stats, err);
+    if (s == FS_OK && stats.timed_out)
+        fprintf(stderr, "%s: %d worker%s made no progress for the watchdog's time and %s killed; their trials are "
+                        "counted as failed_numerics\n", who, stats.timed_out, stats.timed_out > 1 ? "s" : "",
+                stats.timed_out > 1 ? "were" : "was");
+    return s;
+}
+
 int cli_parse_jobs(const cli_args *a, int *jobs)
 {
     *jobs = fs_pool_default_jobs(); /* the CPUs this process may use */
@@ -195,22 +212,10 @@ int cli_campaign(const cli_args *a)
         fs_campaign_free(&c);
         return cli_report(FS_NO_MEMORY, "out of memory");
     }
-    const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED"), *stop = getenv("FOOTSIM_TEST_STOP_SEED");
-    campaign_run run = {.c = &c, .results = results, .crash_seed = crash ? atoi(crash) : -1,
-                        .stop_seed = stop ? atoi(stop) : -1};
-    cli_progress_start(&run.progress, "footsim campaign", "trials");
-    fs_pool_spec spec = {.ntasks = ntrials, .jobs = jobs, .result_size = sizeof(message), .user = &run,
-                         .run = run_one, .done = take_one, .died = record_death, .progress = draw_progress};
-    fs_pool_stats stats;
-    if (fs_pool_run(&spec, &stats, &err) != FS_OK) {
+    if (cli_campaign_trials(&c, results, jobs, "footsim campaign", &err) != FS_OK)
         s = fail(&err);
-    } else {
-        if (stats.timed_out)
-            fprintf(stderr, "footsim campaign: %d worker%s made no progress for the watchdog's time and %s killed; "
-                            "their trials are counted as failed_numerics\n", stats.timed_out,
-                    stats.timed_out > 1 ? "s" : "", stats.timed_out > 1 ? "were" : "was");
+    else
         s = finish(&c, results, &out);
-    }
     fs_outdir_abort(&out); /* when it was not committed */
     free(results);
     fs_campaign_free(&c);

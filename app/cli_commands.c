@@ -143,6 +143,8 @@ static void print_mat_row(const char *label, const double m[2][2])
 /* ---- the pitch-stiffness law ---------------------------------------------------------------- */
 
 enum { MAX_ROBOTS = 16 };
+/* The lean a landing counts as upright below ([landing] landed_tilt_deg's default). */
+static const double LAW_LEAN_DEG = 15;
 
 /* The whole foot's pitch stiffness and, for each shipped robot, what the law says. */
 typedef struct pitch_report {
@@ -178,7 +180,7 @@ static void shipped_robots(const char *design, double K, double g, pitch_report 
         snprintf(path, sizeof path, "%s/%s", dir, names[i]);
         if (names[i] && fs_robot_load(path, NULL, 0, &p->def[p->nrobots], err) == FS_OK) {
             fs_path_stem(path, p->robot[p->nrobots], FS_NAME_MAX);
-            fs_pitch_law_apply(K, &p->def[p->nrobots], g, &p->law[p->nrobots]);
+            fs_pitch_law_apply(K, &p->def[p->nrobots], g, LAW_LEAN_DEG * M_PI / 180, &p->law[p->nrobots]);
             p->nrobots++;
         }
         free(names[i]);
@@ -215,10 +217,15 @@ static void pitch_print(const pitch_report *p)
         const fs_pitch_law *l = &p->law[i];
         if (l->held)
             printf("  %-22s %5.1f kg: pitch held by its slide; stands\n", p->robot[i], p->def[i].mass_kg);
-        else
-            printf("  %-22s %5.1f kg, centre of mass %.3f m up: needs %6.2f, has %6.2f; critical height %.3f m: %s\n",
-                   p->robot[i], p->def[i].mass_kg, p->def[i].com_height_m, l->demand, l->K, l->critical_height_m,
-                   l->stands ? "stands" : "topples");
+        else {
+            char lean[48] = "no rest: too high";
+            if (isfinite(l->lean_rad))
+                snprintf(lean, sizeof lean, "lean at rest %.1f deg", l->lean_rad * 180 / M_PI);
+            printf("  %-22s %5.1f kg, centre of mass %.3f m up, %.3f m ahead: needs %6.2f, has %6.2f; critical height "
+                   "%.3f m; %s: %s\n",
+                   p->robot[i], p->def[i].mass_kg, p->def[i].com_height_m, p->def[i].com_forward_m, l->demand, l->K,
+                   l->critical_height_m, lean, l->stands ? "stands" : "topples");
+        }
     }
 }
 
@@ -239,6 +246,7 @@ static void pitch_json(cJSON *root, const pitch_report *p)
         cJSON_AddNumberToObject(r, "K_N_m_per_rad", p->law[i].K);
         cJSON_AddNumberToObject(r, "demand_N_m_per_rad", p->law[i].demand);
         cJSON_AddNumberToObject(r, "critical_com_height_m", p->law[i].critical_height_m);
+        cJSON_AddNumberToObject(r, "lean_at_rest_rad", p->law[i].lean_rad);
         cJSON_AddBoolToObject(r, "stands", p->law[i].stands);
         cJSON_AddItemToArray(robots, r);
     }

@@ -52,6 +52,12 @@ static const command commands[] = {
      "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
      "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
      "  sections go to every trial."},
+    {"optimize", cli_optimize, "FILE", "-j --out --replace --set --data",
+     "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
+     "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"
+     "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
+     "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
+     "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
     {"compare", cli_compare, "RESULT BASELINE", "",
      "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
      "  baseline's 95 % interval or a median moves further than the baseline's tolerance."},
@@ -219,7 +225,7 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
 /* What kind of data file a command's positional arguments are (compare's are results, bench's a name). */
 static cli_data_kind data_kind(const char *command)
 {
-    static const char *const scenarios[] = {"run", "render-compare", "trial", "walk", "campaign"};
+    static const char *const scenarios[] = {"run", "render-compare", "trial", "walk", "campaign", "optimize"};
     for (size_t i = 0; i < sizeof scenarios / sizeof *scenarios; i++)
         if (!strcmp(command, scenarios[i]))
             return CLI_DATA_SCENARIO;

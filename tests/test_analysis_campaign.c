@@ -184,7 +184,7 @@ static void test_load(void)
     static fs_campaign c;
     fs_error err;
     REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", NULL, 0, &c, &err) == FS_OK);
-    CHECK(c.nfeet == 2 && c.nterrains == 3 && c.seeds == 5 && c.first_seed == 1 && !c.sweep[0]);
+    CHECK(c.nfeet == 2 && c.nterrains == 3 && c.seeds == 5 && c.first_seed == 1 && !c.nsweep && !c.sweep[0][0]);
     CHECK(!strcmp(c.foot[1].name, "flat") && !strcmp(c.terrain[2].name, "complex_uneven"));
     CHECK(c.foot[0].path[0] == '/');
     CHECK(fs_campaign_ntrials(&c) == 60);
@@ -202,8 +202,8 @@ static void test_load(void)
     CHECK(c.nexpect == 1 && c.expect[0].foot == 1 && c.expect[0].terrain == 0 && c.expect[0].robot == 1 &&
           c.expect[0].min_success == 0);
     CHECK(c.tolerance[4][0] == 0.2 && c.tolerance[4][1] == 3);
-    char buf[4][FS_PATH_MAX + 32];
-    const char *ov[FS_CAMPAIGN_MAX_SET + 4];
+    char buf[5][FS_PATH_MAX + 32];
+    const char *ov[FS_CAMPAIGN_MAX_SET + 5];
     CHECK(fs_campaign_overrides(&c, 10, buf, ov) == 4);
     CHECK(!strncmp(ov[0], "scenario.design=/", 17) && strstr(ov[0], "/scenarios/feet/flat.ini"));
     CHECK(strstr(ov[1], "/terrains/complex_uneven.ini") && strstr(ov[2], "robots/single_tall.ini") &&
@@ -233,9 +233,9 @@ static void test_sweep(void)
     static fs_campaign c;
     fs_error err;
     REQUIRE(fs_campaign_load("scenarios/roughness.ini", NULL, 0, &c, &err) == FS_OK);
-    CHECK(!strcmp(c.sweep, "rough.rms_m") && c.nterrains == 11);
-    CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set, "rough.rms_m=0.003"));
-    CHECK(c.terrain[10].sweep_value == 0.02);
+    CHECK(!strcmp(c.sweep[0], "rough.rms_m") && c.nsweep == 1 && c.nterrains == 11 && c.nbase == 1);
+    CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set[0], "rough.rms_m=0.003"));
+    CHECK(c.terrain[10].sweep_value[0] == 0.02 && !c.terrain[10].set[1][0]);
     CHECK(fs_campaign_pair(&c, 3)->terrain.def.rms_m == 0.003); /* the swept value in its cell */
     /* no [robot.NAME]: the trial scenario's own robot, named after its file */
     CHECK(c.nrobots == 1 && !strcmp(c.robot[0].name, "single_tall") && fs_campaign_pair(&c, 3)->def.robot.mass_kg == 26);
@@ -245,5 +245,35 @@ static void test_sweep(void)
     CHECK(strstr(err.message, "rms_m = '-0.001' is out of range") && strstr(err.message, "rough@-0.001"));
 }
 
+/* Two keys of the design and the robot swept over every pair of values, on each of two terrains. */
+static void test_sweep_two_keys(void)
+{
+    static fs_campaign c;
+    fs_error err;
+    const char *set[] = {"campaign.sweep_values=1, 10", "campaign.sweep2_values=0.02, 0.1, 0.3", "campaign.seeds=1"};
+    REQUIRE(fs_campaign_load("scenarios/envelope.ini", set, 3, &c, &err) == FS_OK);
+    CHECK(c.nsweep == 2 && !strcmp(c.sweep[0], "springs.scale") && !strcmp(c.sweep[1], "robot.com_height_m"));
+    CHECK(c.nbase == 2 && c.nvalues[0] == 2 && c.nvalues[1] == 3 && c.nterrains == 12 && fs_campaign_ntrials(&c) == 12);
+    /* terrain-major, then the first key, then the second */
+    const fs_campaign_item *p = &c.terrain[6 + 1 * 3 + 2];
+    CHECK(!strcmp(p->name, "complex_uneven@10,0.3") && p->base == 1 && p->point[0] == 1 && p->point[1] == 2);
+    CHECK(!strcmp(p->set[0], "springs.scale=10") && !strcmp(p->set[1], "robot.com_height_m=0.3"));
+    const fs_scenario *sc = fs_campaign_pair(&c, 6 + 1 * 3 + 2);
+    CHECK(sc->design.spring_scale == 10 && sc->geom.spring[0].k_N_per_m == 10 * sc->design.k_N_per_m[0]);
+    CHECK(sc->def.robot.com_height_m == 0.3 && sc->terrain.def.kind == FS_TERRAIN_COMPLEX_UNEVEN);
+    /* the stretched body: its moments scale with the height squared */
+    double I[3];
+    fs_robot_inertia(&fs_campaign_pair(&c, 0)->def.robot, I);
+    CHECK_NEAR(I[0], 1.4 * (0.02 / 0.3) * (0.02 / 0.3), 1e-12);
+    CHECK(I[2] == 0.1);
+    fs_campaign_free(&c);
+    /* the same key twice, and sweep2 alone, are refused */
+    const char *twice[] = {"campaign.sweep2=springs.scale"};
+    CHECK(fs_campaign_load("scenarios/envelope.ini", twice, 1, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "sweep two different keys") != NULL);
+    const char *alone[] = {"campaign.sweep=none", "campaign.sweep_values=", "campaign.sweep2_values=0.1"};
+    CHECK(fs_campaign_load("scenarios/envelope.ini", alone, 3, &c, &err) == FS_BAD_INPUT);
+}
+
 FS_TEST_MAIN(TEST(test_wilson), TEST(test_median), TEST(test_summarize), TEST(test_expectations), TEST(test_compare),
-             TEST(test_load), TEST(test_sweep))
+             TEST(test_load), TEST(test_sweep), TEST(test_sweep_two_keys))

@@ -82,19 +82,28 @@ static void pitch_law_for_each_robot(void)
 {
     fs_robot_def r = {.mass_kg = 26, .com_height_m = 0.3, .joint = FS_ROBOT_RIGID};
     fs_pitch_law l;
-    fs_pitch_law_apply(13, &r, 9.81, &l);
+    fs_pitch_law_apply(13, &r, 9.81, 0.26, &l);
     CHECK_NEAR(l.demand, 26 * 9.81 * 0.3, 1e-9);
     CHECK(!l.stands && l.K == 13 && !l.held);
     CHECK_NEAR(l.critical_height_m, 13 / (26 * 9.81), 1e-12);
     r.com_height_m = 0.05;
-    fs_pitch_law_apply(13, &r, 9.81, &l);
+    fs_pitch_law_apply(13, &r, 9.81, 0.26, &l);
     CHECK(l.stands);
     r.joint = FS_ROBOT_ACHILLES, r.achilles_k_N_per_m = 1e6; /* 400 N m/rad in series */
-    fs_pitch_law_apply(13, &r, 9.81, &l);
+    fs_pitch_law_apply(13, &r, 9.81, 0.26, &l);
     CHECK_NEAR(l.K, 1 / (1 / 13.0 + 1 / 400.0), 1e-9);
     CHECK(!l.stands); /* 12.6 against 12.75 */
+    /* a centre of mass ahead of the ankle leans it by m g x / (K - m g h) */
+    r.joint = FS_ROBOT_RIGID, r.com_forward_m = 0.01;
+    r.com_height_m = 0.02; /* 2.55 / (13 - 5.10) = 0.32 rad: past 0.26 */
+    fs_pitch_law_apply(13, &r, 9.81, 0.26, &l);
+    CHECK_NEAR(l.lean_rad, 26 * 9.81 * 0.01 / (13 - 26 * 9.81 * 0.02), 1e-12);
+    CHECK(!l.stands);
+    r.com_forward_m = 0.005; /* 0.16 rad */
+    fs_pitch_law_apply(13, &r, 9.81, 0.26, &l);
+    CHECK(l.stands);
     r.mount = FS_ROBOT_VERTICAL;
-    fs_pitch_law_apply(13, &r, 9.81, &l);
+    fs_pitch_law_apply(13, &r, 9.81, 0.26, &l);
     CHECK(l.held && l.stands);
 }
 

@@ -2,7 +2,7 @@
 # Installs footsim's Debian build dependencies when any is missing.
 # Run as root on Debian 12; otherwise it prints the apt-get line to run.
 set -eu
-pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev libosmesa6-dev libpng-dev libgsl-dev gnuplot-nox"
+pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev libosmesa6-dev libpng-dev libgsl-dev libnlopt-dev gnuplot-nox"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -233,7 +233,8 @@ fs_status fs_pitch_stiffness_measure(const fs_scenario *sc_in, double load_N, do
     return s;
 }
 
-void fs_pitch_law_apply(double K_foot, const fs_robot_def *r, double gravity_m_per_s2, fs_pitch_law *out)
+void fs_pitch_law_apply(double K_foot, const fs_robot_def *r, double gravity_m_per_s2, double max_lean_rad,
+                        fs_pitch_law *out)
 {
     memset(out, 0, sizeof *out);
     out->K_foot = K_foot;
@@ -243,5 +244,8 @@ void fs_pitch_law_apply(double K_foot, const fs_robot_def *r, double gravity_m_p
     out->K = isfinite(out->K_series) ? 1 / (1 / K_foot + 1 / out->K_series) : K_foot;
     out->demand = r->mass_kg * gravity_m_per_s2 * r->com_height_m;
     out->critical_height_m = r->mass_kg > 0 ? out->K / (r->mass_kg * gravity_m_per_s2) : INFINITY;
-    out->stands = out->held || out->demand < out->K;
+    double margin = out->K - out->demand;
+    out->lean_rad = out->held ? 0 : margin > 0 ? r->mass_kg * gravity_m_per_s2 * fabs(r->com_forward_m) / margin
+                                               : INFINITY;
+    out->stands = out->held || (margin > 0 && out->lean_rad < max_lean_rad);
 }

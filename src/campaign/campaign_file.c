@@ -28,9 +28,11 @@ typedef struct binder {
     char foot_choices[FS_CAMPAIGN_MAX_FEET * FS_NAME_MAX];
     char terrain_choices[FS_CAMPAIGN_MAX_TERRAINS * FS_NAME_MAX];
     char robot_choices[FS_CAMPAIGN_MAX_ROBOTS * FS_NAME_MAX];
-    char sweep_choices[4096];
-    char sweep_values[FS_VALUE_MAX];  /* as given, or "" */
-    char sweep_where[FS_PATH_MAX + 80];
+    char sweep_choices[16384];
+    char sweep_values[2][FS_VALUE_MAX];  /* sweep_values and sweep2_values as given, or "" */
+    char sweep_where[2][FS_PATH_MAX + 80];
+    char values[2][FS_CAMPAIGN_MAX_TERRAINS][FS_NAME_MAX]; /* the sweep's values, parsed */
+    fs_campaign_item base[FS_CAMPAIGN_MAX_TERRAINS];         /* the terrains a sweep expands */
 } binder;
 
 #define C(member) offsetof(fs_campaign, member)
@@ -76,47 +78,65 @@ static fs_status check_name(const fs_config *cfg, const fs_entry *e, const char 
                    fs_config_where(cfg, e->section, e->name, where, sizeof where), e->section);
 }
 
-/* Takes [campaign] sweep_values out of cfg (fs_config has no list of arbitrary length). */
+static const char *const sweep_values_key[2] = {"sweep_values", "sweep2_values"};
+static const char *const sweep_key[2] = {"sweep", "sweep2"};
+
+/* Takes [campaign] sweep_values and sweep2_values out of cfg (fs_config has no list of arbitrary
+ * length). */
 static void take_sweep_values(fs_config *cfg, binder *b)
 {
     for (int i = 0; i < cfg->count; i++) {
         fs_entry *e = &cfg->entries[i];
-        if (strcmp(e->section, "campaign") || strcmp(e->name, "sweep_values"))
-            continue;
-        snprintf(b->sweep_values, sizeof b->sweep_values, "%s", e->value);
-        fs_config_where(cfg, "campaign", "sweep_values", b->sweep_where, sizeof b->sweep_where);
-        memmove(e, e + 1, (size_t)(cfg->count - i - 1) * sizeof *e);
-        cfg->count--;
-        return;
+        for (int w = 0; w < 2; w++) {
+            if (strcmp(e->section, "campaign") || strcmp(e->name, sweep_values_key[w]))
+                continue;
+            snprintf(b->sweep_values[w], sizeof b->sweep_values[w], "%s", e->value);
+            fs_config_where(cfg, "campaign", sweep_values_key[w], b->sweep_where[w], sizeof b->sweep_where[w]);
+            memmove(e, e + 1, (size_t)(cfg->count - i - 1) * sizeof *e);
+            cfg->count--;
+            i--;
+            break;
+        }
     }
 }
 
-/* Splits the sweep values; each must be a finite number. Returns the count, or -1 (err set). */
-static int parse_sweep(const binder *b, char values[][FS_NAME_MAX], fs_error *err)
+/* Splits the values of sweep w; each must be a finite number. Returns the count, or -1 (err set). */
+static int parse_sweep(const binder *b, int w, char values[][FS_NAME_MAX], fs_error *err)
 {
     char buf[FS_VALUE_MAX];
-    snprintf(buf, sizeof buf, "%s", b->sweep_values);
+    snprintf(buf, sizeof buf, "%s", b->sweep_values[w]);
     int n = 0;
     char *save = NULL;
     for (char *tok = strtok_r(buf, ", \t", &save); tok; tok = strtok_r(NULL, ", \t", &save)) {
         double v;
         fs_number num = fs_parse_number(tok, &v);
-        if (num != FS_NUMBER_OK || strlen(tok) >= FS_NAME_MAX / 2) {
-            fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: '%s' %s; allowed: comma-separated numbers", b->sweep_where,
-                    tok, num != FS_NUMBER_OK ? fs_number_problem(num) : "is too long");
+        if (num != FS_NUMBER_OK || strlen(tok) >= FS_NAME_MAX / 4) {
+            fs_fail(err, FS_BAD_INPUT, "%s: %s: '%s' %s; allowed: comma-separated numbers", b->sweep_where[w],
+                    sweep_values_key[w], tok, num != FS_NUMBER_OK ? fs_number_problem(num) : "is too long");
             return -1;
         }
         if (n == FS_CAMPAIGN_MAX_TERRAINS) {
-            fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: more than %d values", b->sweep_where,
+            fs_fail(err, FS_BAD_INPUT, "%s: %s: more than %d values", b->sweep_where[w], sweep_values_key[w],
                     FS_CAMPAIGN_MAX_TERRAINS);
             return -1;
         }
         snprintf(values[n++], FS_NAME_MAX, "%s", tok);
     }
     if (n == 0)
-        fs_fail(err, FS_BAD_INPUT, "%s: sweep_values is empty; give the values of the swept key, e.g. 0, 0.001, 0.002",
-                b->sweep_where);
+        fs_fail(err, FS_BAD_INPUT, "%s: %s is empty; give the values of the swept key, e.g. 0, 0.001, 0.002",
+                b->sweep_where[w], sweep_values_key[w]);
     return n ? n : -1;
+}
+
+const fs_key *fs_campaign_sweepable(int n)
+{
+    const fs_key *schema[4] = {fs_terrain_keys, fs_design_keys, fs_robot_keys, fs_scenario_keys};
+    const int nkeys[4] = {fs_terrain_nkeys, fs_design_nkeys, fs_robot_nkeys, fs_scenario_nkeys};
+    for (int s = 0, k = 0; s < 4; s++)
+        for (int i = 0; i < nkeys[s]; i++)
+            if ((schema[s][i].type == FS_KEY_NUMBER || schema[s][i].type == FS_KEY_INTEGER) && ++k == n)
+                return &schema[s][i];
+    return NULL;
 }
 
 /* The [campaign] and [tolerance] keys. */
@@ -124,18 +144,22 @@ static void add_static_keys(binder *b)
 {
     for (int i = 0; i < NCAMPAIGN_KEYS; i++)
         b->keys[b->nkeys++] = campaign_keys[i];
-    /* the terrain keys a sweep may vary: every number of a terrain file */
+    /* the keys a sweep may vary: every number of a terrain, design, robot or scenario file */
     snprintf(b->sweep_choices, sizeof b->sweep_choices, "none");
-    for (int i = 0; i < fs_terrain_nkeys; i++)
-        if (fs_terrain_keys[i].type == FS_KEY_NUMBER || fs_terrain_keys[i].type == FS_KEY_INTEGER) {
-            char word[2 * FS_NAME_MAX + 2];
-            snprintf(word, sizeof word, "%s.%s", fs_terrain_keys[i].section, fs_terrain_keys[i].name);
-            append_choice(b->sweep_choices, sizeof b->sweep_choices, word);
-        }
-    fs_key *k = add_key(b, "campaign", "sweep", FS_KEY_CHOICE, C(sweep_choice));
-    k->choices = b->sweep_choices;
-    k->fallback = "none";
-    k->help = "a terrain key to sweep over sweep_values (the campaign then has one terrain)";
+    for (int n = 1; fs_campaign_sweepable(n); n++) {
+        char word[2 * FS_NAME_MAX + 2];
+        snprintf(word, sizeof word, "%s.%s", fs_campaign_sweepable(n)->section, fs_campaign_sweepable(n)->name);
+        append_choice(b->sweep_choices, sizeof b->sweep_choices, word);
+    }
+    fs_key *k = NULL;
+    for (int w = 0; w < 2; w++) {
+        k = add_key(b, "campaign", sweep_key[w], FS_KEY_CHOICE, C(sweep_choice[w]));
+        k->choices = b->sweep_choices;
+        k->fallback = "none";
+        k->help = w ? "a second key to sweep over sweep2_values: every pair of values is a point"
+                    : "a terrain, design, robot or scenario key to sweep over sweep_values: each terrain becomes a "
+                      "terrain per value";
+    }
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         k = add_key(b, "tolerance", fs_campaign_metrics[m].name, FS_KEY_LIST, C(tolerance[m]));
         k->max = 1e12;
@@ -221,8 +245,11 @@ static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_
         snprintf(c->expect[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
         add_key(b, sec, "foot", FS_KEY_CHOICE, C(expect[i].foot))->choices = b->foot_choices;
         add_key(b, sec, "terrain", FS_KEY_CHOICE, C(expect[i].terrain))->choices = b->terrain_choices;
-        if (c->nrobots)
-            add_key(b, sec, "robot", FS_KEY_CHOICE, C(expect[i].robot))->choices = b->robot_choices;
+        if (c->nrobots) { /* one robot: it is the default; several: check_expect_given wants it named */
+            fs_key *r = add_key(b, sec, "robot", FS_KEY_CHOICE, C(expect[i].robot));
+            r->choices = b->robot_choices;
+            r->fallback = c->robot[0].name;
+        }
         fs_key *k = add_key(b, sec, "min_success", FS_KEY_NUMBER, C(expect[i].min_success));
         k->max = 1;
         k->fallback = "0";
@@ -233,58 +260,104 @@ static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_
     return FS_OK;
 }
 
-/* The terrain names an expectation may give: each terrain, or for a sweep each "NAME@value". */
-static fs_status terrain_choices(binder *b, const fs_campaign *c, fs_error *err)
+/* Parses the values of each swept key into b->values (one empty "value" for a key not swept);
+ * returns FS_OK or FS_BAD_INPUT. */
+static fs_status sweep_values(binder *b, int nsweep, int n[2], fs_error *err)
 {
-    if (!b->sweep_values[0]) {
-        for (int i = 0; i < c->nterrains; i++)
-            append_choice(b->terrain_choices, sizeof b->terrain_choices, c->terrain[i].name);
-        return FS_OK;
-    }
-    char values[FS_CAMPAIGN_MAX_TERRAINS][FS_NAME_MAX];
-    int n = parse_sweep(b, values, err);
-    if (n < 0)
-        return FS_BAD_INPUT;
-    for (int i = 0; i < n; i++) {
-        char label[2 * FS_NAME_MAX];
-        snprintf(label, sizeof label, "%.30s@%.31s", c->nterrains ? c->terrain[0].name : "terrain", values[i]);
-        append_choice(b->terrain_choices, sizeof b->terrain_choices, label);
+    for (int w = 0; w < 2; w++) {
+        n[w] = 1;
+        b->values[w][0][0] = 0;
+        if (w < nsweep && (n[w] = parse_sweep(b, w, b->values[w], err)) < 0)
+            return FS_BAD_INPUT;
     }
     return FS_OK;
 }
 
-/* One terrain swept over the values: it becomes a terrain per value, with the key's override. */
+/* A point's name: "NAME@v1" or "NAME@v1,v2". */
+static void point_name(char *out, const char *base, const char *v1, const char *v2)
+{
+    snprintf(out, FS_NAME_MAX, "%.24s@%.15s%s%.15s", base, v1, v2[0] ? "," : "", v2);
+}
+
+/* How many keys the file sweeps: sweep2 only beside sweep. */
+static int nsweep_of(const binder *b) { return b->sweep_values[1][0] ? 2 : b->sweep_values[0][0] ? 1 : 0; }
+
+/* The terrain names an expectation may give: each terrain, or for a sweep each point's. */
+static fs_status terrain_choices(binder *b, const fs_campaign *c, fs_error *err)
+{
+    int nsweep = nsweep_of(b);
+    if (!nsweep) {
+        for (int i = 0; i < c->nterrains; i++)
+            append_choice(b->terrain_choices, sizeof b->terrain_choices, c->terrain[i].name);
+        return FS_OK;
+    }
+    int n[2];
+    if (sweep_values(b, nsweep, n, err) != FS_OK)
+        return FS_BAD_INPUT;
+    for (int t = 0; t < (c->nterrains ? c->nterrains : 1); t++)
+        for (int i = 0; i < n[0]; i++)
+            for (int j = 0; j < n[1]; j++) {
+                char label[FS_NAME_MAX];
+                point_name(label, c->nterrains ? c->terrain[t].name : "terrain", b->values[0][i], b->values[1][j]);
+                append_choice(b->terrain_choices, sizeof b->terrain_choices, label);
+            }
+    return FS_OK;
+}
+
+/* A sweep: every terrain becomes a point per value (per pair of values, with two keys), each with
+ * the keys' overrides; the values are checked when each point's trial scenario is loaded. */
 static fs_status expand_sweep(const fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
 {
-    int have_sweep = c->sweep_choice > 0;
     char where[FS_PATH_MAX + 80];
-    if (!have_sweep && !b->sweep_values[0])
-        return FS_OK;
-    if (!have_sweep)
-        return fs_fail(err, FS_BAD_INPUT, "%s: sweep_values without sweep; name the key to sweep, e.g. sweep = rough.rms_m",
-                       b->sweep_where);
-    if (!b->sweep_values[0])
-        return fs_fail(err, FS_BAD_INPUT, "%s: sweep needs sweep_values (comma-separated values of the key)",
-                       fs_config_where(cfg, "campaign", "sweep", where, sizeof where));
-    if (c->nterrains != 1)
-        return fs_fail(err, FS_BAD_INPUT, "%s: a sweep varies one terrain; give exactly one [terrain.NAME] (there are %d)",
-                       fs_config_where(cfg, "campaign", "sweep", where, sizeof where), c->nterrains);
-    const fs_key *k = &fs_terrain_keys[0];
-    for (int i = 0, n = 0; i < fs_terrain_nkeys; i++)
-        if ((fs_terrain_keys[i].type == FS_KEY_NUMBER || fs_terrain_keys[i].type == FS_KEY_INTEGER) &&
-            ++n == c->sweep_choice)
-            k = &fs_terrain_keys[i];
-    snprintf(c->sweep, sizeof c->sweep, "%s.%s", k->section, k->name);
-    char values[FS_CAMPAIGN_MAX_TERRAINS][FS_NAME_MAX];
-    int n = parse_sweep(b, values, err);
-    fs_campaign_item base = c->terrain[0];
-    for (int i = 0; i < n; i++) {
-        fs_campaign_item *t = &c->terrain[i];
-        *t = base;
-        snprintf(t->name, sizeof t->name, "%.30s@%.31s", base.name, values[i]);
-        snprintf(t->set, sizeof t->set, "%s=%.31s", c->sweep, values[i]);
-        t->sweep_value = strtod(values[i], NULL);
+    for (int w = 0; w < 2; w++) {
+        int named = c->sweep_choice[w] > 0, valued = b->sweep_values[w][0] != 0;
+        if (valued && !named)
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s without %s; name the key to sweep, e.g. %s = %s",
+                           b->sweep_where[w], sweep_values_key[w], sweep_key[w], sweep_key[w],
+                           w ? "robot.com_height_m" : "rough.rms_m");
+        if (named && !valued)
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s needs %s (comma-separated values of the key)",
+                           fs_config_where(cfg, "campaign", sweep_key[w], where, sizeof where), sweep_key[w],
+                           sweep_values_key[w]);
     }
+    if (c->sweep_choice[1] && !c->sweep_choice[0])
+        return fs_fail(err, FS_BAD_INPUT, "%s: sweep2 without sweep; name the first key with sweep = ...",
+                       fs_config_where(cfg, "campaign", "sweep2", where, sizeof where));
+    c->nsweep = nsweep_of(b);
+    if (!c->nsweep)
+        return FS_OK;
+    for (int w = 0; w < c->nsweep; w++) {
+        const fs_key *k = fs_campaign_sweepable(c->sweep_choice[w]);
+        snprintf(c->sweep[w], sizeof c->sweep[w], "%s.%s", k->section, k->name);
+    }
+    if (c->nsweep == 2 && !strcmp(c->sweep[0], c->sweep[1]))
+        return fs_fail(err, FS_BAD_INPUT, "%s: sweep2 = %s is sweep's key too; sweep two different keys",
+                       fs_config_where(cfg, "campaign", "sweep2", where, sizeof where), c->sweep[1]);
+    if (sweep_values(b, c->nsweep, c->nvalues, err) != FS_OK)
+        return FS_BAD_INPUT;
+    long points = (long)c->nterrains * c->nvalues[0] * c->nvalues[1];
+    if (points > FS_CAMPAIGN_MAX_TERRAINS)
+        return fs_fail(err, FS_BAD_INPUT, "%s: %d terrains x %d x %d values = %ld points; a campaign may have at most "
+                       "%d: fewer values or terrains", fs_config_where(cfg, "campaign", "sweep", where, sizeof where),
+                       c->nterrains, c->nvalues[0], c->nvalues[1], points, FS_CAMPAIGN_MAX_TERRAINS);
+    fs_campaign_item *base = b->base;
+    memcpy(base, c->terrain, (size_t)c->nterrains * sizeof base[0]);
+    c->nbase = c->nterrains;
+    int n = 0;
+    for (int t = 0; t < c->nbase; t++)
+        for (int i = 0; i < c->nvalues[0]; i++)
+            for (int j = 0; j < c->nvalues[1]; j++) {
+                fs_campaign_item *p = &c->terrain[n++];
+                *p = base[t];
+                point_name(p->name, base[t].name, b->values[0][i], b->values[1][j]);
+                p->base = t;
+                p->point[0] = i, p->point[1] = j;
+                for (int w = 0; w < c->nsweep; w++) {
+                    const char *v = b->values[w][w ? j : i];
+                    snprintf(p->set[w], sizeof p->set[w], "%s=%s", c->sweep[w], v);
+                    p->sweep_value[w] = strtod(v, NULL);
+                }
+            }
     c->nterrains = n;
     return FS_OK;
 }
@@ -382,8 +455,8 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
         return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", ncells);
     fs_status s = FS_OK;
     for (int cell = 0; cell < ncells && s == FS_OK; cell++) {
-        char buf[4][FS_PATH_MAX + 32];
-        const char *ov[FS_CAMPAIGN_MAX_SET + 4];
+        char buf[5][FS_PATH_MAX + 32];
+        const char *ov[FS_CAMPAIGN_MAX_SET + 5];
         int n = fs_campaign_overrides(c, cell, buf, ov);
         fs_error e;
         fs_scenario *sc = &c->pair[cell];
@@ -506,7 +579,7 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
     return s == FS_OK ? load_pairs(c, err) : s;
 }
 
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[4][FS_PATH_MAX + 32], const char **out)
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out)
 {
     int foot, terrain, robot, n = 0;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
@@ -518,10 +591,11 @@ int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[4][FS_PATH_MA
         snprintf(buf[2], sizeof buf[2], "robot.design=%s", c->robot[robot].path);
         out[n++] = buf[2];
     }
-    if (c->terrain[terrain].set[0]) {
-        snprintf(buf[3], sizeof buf[3], "%s", c->terrain[terrain].set);
-        out[n++] = buf[3];
-    }
+    for (int w = 0; w < 2; w++)
+        if (c->terrain[terrain].set[w][0]) {
+            snprintf(buf[3 + w], sizeof buf[3 + w], "%s", c->terrain[terrain].set[w]);
+            out[n++] = buf[3 + w];
+        }
     for (int i = 0; i < c->nset; i++)
         out[n++] = c->set[i];
     return n;

@@ -63,14 +63,23 @@ static void csv_text(FILE *f, const char *s)
 static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain, int robot)
 {
     fprintf(f, "%s,%s,%s", c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name);
-    if (c->sweep[0])
-        csv_number(f, c->terrain[terrain].sweep_value);
+    for (int w = 0; w < c->nsweep; w++)
+        csv_number(f, c->terrain[terrain].sweep_value[w]);
+}
+
+/* The header's key columns: foot, terrain, robot and the swept keys. */
+static void csv_key_header(FILE *f, const fs_campaign *c)
+{
+    fputs("foot,terrain,robot", f);
+    for (int w = 0; w < c->nsweep; w++)
+        fprintf(f, ",%s", c->sweep[w]);
 }
 
 static int fill_trials(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    fprintf(f, "foot,terrain,robot%s%s,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", c->sweep[0] ? "," : "", c->sweep);
+    csv_key_header(f, c);
+    fputs(",seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",%s", fs_campaign_metrics[m].name);
     fputs(",failure\n", f);
@@ -96,8 +105,8 @@ static int fill_trials(FILE *f, const out_ctx *x)
 static int fill_summary_csv(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    fprintf(f, "foot,terrain,robot%s%s,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high", c->sweep[0] ? "," : "",
-            c->sweep);
+    csv_key_header(f, c);
+    fputs(",trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
     fputs(",law_prediction,law_K_N_m_per_rad,law_critical_com_height_m\n", f);
@@ -127,7 +136,10 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
                "trial landed; undecided trials (the window ended first) count as not landed and are shown apart; "
                "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically.\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
-            c->sweep[0] ? "; terrain swept over " : "", c->sweep);
+            c->nsweep ? "; each terrain swept over " : "", c->sweep[0]);
+    if (c->nsweep == 2)
+        fprintf(f, "Swept over %s and %s: a terrain named NAME@v1,v2 is the point (%s = v1, %s = v2).\n\n", c->sweep[0],
+                c->sweep[1], c->sweep[0], c->sweep[1]);
     fputs("| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | success | 95 % CI | law |", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, " %s |", fs_campaign_metrics[m].name);
@@ -172,10 +184,11 @@ static cJSON *summary_json(const out_ctx *x)
     cJSON_AddStringToObject(root, "trial", trial);
     cJSON_AddNumberToObject(root, "seeds", c->seeds);
     cJSON_AddNumberToObject(root, "first_seed", c->first_seed);
-    if (c->sweep[0])
-        cJSON_AddStringToObject(root, "sweep", c->sweep);
-    else
-        cJSON_AddNullToObject(root, "sweep");
+    for (int w = 0; w < 2; w++)
+        if (w < c->nsweep)
+            cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]);
+        else
+            cJSON_AddNullToObject(root, w ? "sweep2" : "sweep");
     cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         cJSON *t = cJSON_AddObjectToObject(tol, fs_campaign_metrics[m].name);
@@ -189,8 +202,8 @@ static cJSON *summary_json(const out_ctx *x)
         cJSON_AddStringToObject(o, "foot", c->foot[r->foot].name);
         cJSON_AddStringToObject(o, "terrain", c->terrain[r->terrain].name);
         cJSON_AddStringToObject(o, "robot", c->robot[r->robot].name);
-        if (c->sweep[0])
-            cJSON_AddNumberToObject(o, "sweep_value", c->terrain[r->terrain].sweep_value);
+        for (int w = 0; w < c->nsweep; w++)
+            cJSON_AddNumberToObject(o, w ? "sweep_value2" : "sweep_value", c->terrain[r->terrain].sweep_value[w]);
         cJSON_AddNumberToObject(o, "trials", r->trials);
         cJSON_AddNumberToObject(o, "landed", r->landed);
         cJSON_AddNumberToObject(o, "fell", r->fell);
@@ -258,32 +271,76 @@ fs_status fs_campaign_write_summary(const fs_campaign *c, const fs_campaign_row 
 
 /* ---- the chart ---------------------------------------------------------------------------- */
 
-/* The chart's series are the (foot, robot) pairs, foot-major; a series' title names the robot only
- * when the campaign has several. */
-static int nseries(const fs_campaign *c) { return c->nfeet * c->nrobots; }
+/* The chart's series are the (foot, robot) pairs, foot-major, and for a sweep each of its terrains
+ * too; a series' title names the robot only when the campaign has several, the terrain only when a
+ * sweep has several. */
+static int nseries(const fs_campaign *c) { return c->nfeet * c->nrobots * (c->nsweep ? c->nbase : 1); }
+
+static void series_of(const fs_campaign *c, int k, int *foot, int *robot, int *base)
+{
+    int nbase = c->nsweep ? c->nbase : 1;
+    *base = k % nbase;
+    *robot = k / nbase % c->nrobots;
+    *foot = k / nbase / c->nrobots;
+}
 
 static void series_title(const fs_campaign *c, int k, char *buf, size_t size)
 {
-    const char *foot = c->foot[k / c->nrobots].name, *robot = c->robot[k % c->nrobots].name;
-    if (c->nrobots > 1)
-        snprintf(buf, size, "%s, %s", foot, robot);
-    else
-        snprintf(buf, size, "%s", foot);
+    int foot, robot, base;
+    series_of(c, k, &foot, &robot, &base);
+    const char *terrain = c->nsweep && c->nbase > 1 ? c->terrain[base * c->nvalues[0] * c->nvalues[1]].name : "";
+    int cut = (int)strcspn(terrain, "@");
+    snprintf(buf, size, "%s%s%s%s%.*s", c->foot[foot].name, c->nrobots > 1 ? ", " : "",
+             c->nrobots > 1 ? c->robot[robot].name : "", *terrain ? ", " : "", cut, terrain);
 }
 
-static const fs_campaign_row *series_row(const out_ctx *x, int k, int terrain)
+/* A sweep's row of series k at point (i, j) of its values. */
+static const fs_campaign_row *point_row(const out_ctx *x, int k, int i, int j)
 {
     const fs_campaign *c = x->c;
-    return fs_campaign_row_of(c, x->rows, k / c->nrobots, terrain, k % c->nrobots);
+    int foot, robot, base;
+    series_of(c, k, &foot, &robot, &base);
+    return fs_campaign_row_of(c, x->rows, foot, (base * c->nvalues[0] + i) * c->nvalues[1] + j, robot);
 }
 
-/* Bars: a line per terrain with each series' rate, low and high. Sweep: a block per series of
- * (value, rate, low, high). */
+/* The swept values of key w, in the file's order. */
+static double value_of(const fs_campaign *c, int w, int i)
+{
+    return c->terrain[w ? i : i * c->nvalues[1]].sweep_value[w];
+}
+
+/* Log scale for an axis whose values are all positive and span a factor of 20 or more. */
+static int log_axis(const fs_campaign *c, int w)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < c->nvalues[w]; i++)
+        lo = fmin(lo, value_of(c, w, i)), hi = fmax(hi, value_of(c, w, i));
+    return lo > 0 && hi >= 20 * lo;
+}
+
+/* The edges of value i's cell of a heat map: half-way (geometrically on a log axis) to its neighbours. */
+static void cell_edges(const fs_campaign *c, int w, int i, double edge[2])
+{
+    int n = c->nvalues[w], lg = log_axis(c, w);
+    double v = value_of(c, w, i);
+    for (int side = 0; side < 2; side++) {
+        int nb = side ? i + 1 : i - 1;
+        double other = nb >= 0 && nb < n ? value_of(c, w, nb) : NAN;
+        if (isnan(other)) /* the outer edge: as far out as the inner one */
+            other = n > 1 ? (lg ? v * v / value_of(c, w, side ? i - 1 : i + 1) : 2 * v - value_of(c, w, side ? i - 1 : i + 1))
+                          : (lg ? v * (side ? 2 : 0.5) : v + (side ? 0.5 : -0.5) * (v ? fabs(v) : 1));
+        edge[side] = lg ? sqrt(v * other) : (v + other) / 2;
+    }
+}
+
+/* Bars: a line per terrain with each series' rate, low and high. One key swept: a block per series
+ * of (value, rate, low, high). Two: a block per series of heat-map cells (v1, v2, their cell's
+ * edges, rate, the law's prediction 1 stands, 0 topples, -1 none, and its critical height). */
 static int fill_chart_data(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    char title[2 * FS_NAME_MAX + 4];
-    if (!c->sweep[0]) {
+    char title[4 * FS_NAME_MAX];
+    if (!c->nsweep) {
         fputs("# terrain", f);
         for (int k = 0; k < nseries(c); k++) {
             series_title(c, k, title, sizeof title);
@@ -293,7 +350,9 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
         for (int t = 0; t < c->nterrains; t++) {
             fprintf(f, "\"%s\"", c->terrain[t].name);
             for (int k = 0; k < nseries(c); k++) {
-                const fs_campaign_row *r = series_row(x, k, t);
+                int foot, robot, base;
+                series_of(c, k, &foot, &robot, &base);
+                const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, foot, t, robot);
                 fprintf(f, " %.17g %.17g %.17g", r->success_rate, r->ci_low, r->ci_high);
             }
             fputc('\n', f);
@@ -302,28 +361,88 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
     }
     for (int k = 0; k < nseries(c); k++) {
         series_title(c, k, title, sizeof title);
-        fprintf(f, "%s# %s: %s rate low high\n", k ? "\n\n" : "", title, c->sweep);
-        for (int t = 0; t < c->nterrains; t++) {
-            const fs_campaign_row *r = series_row(x, k, t);
-            fprintf(f, "%.17g %.17g %.17g %.17g\n", c->terrain[t].sweep_value, r->success_rate, r->ci_low, r->ci_high);
+        if (c->nsweep == 1) {
+            fprintf(f, "%s# %s: %s rate low high\n", k ? "\n\n" : "", title, c->sweep[0]);
+            for (int i = 0; i < c->nvalues[0]; i++) {
+                const fs_campaign_row *r = point_row(x, k, i, 0);
+                fprintf(f, "%.17g %.17g %.17g %.17g\n", value_of(c, 0, i), r->success_rate, r->ci_low, r->ci_high);
+            }
+            continue;
         }
+        fprintf(f, "%s# %s: %s %s x_low x_high y_low y_high rate law critical_height_m\n", k ? "\n\n" : "", title,
+                c->sweep[0], c->sweep[1]);
+        for (int i = 0; i < c->nvalues[0]; i++)
+            for (int j = 0; j < c->nvalues[1]; j++) {
+                const fs_campaign_row *r = point_row(x, k, i, j);
+                double ex[2], ey[2];
+                cell_edges(c, 0, i, ex);
+                cell_edges(c, 1, j, ey);
+                fprintf(f, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g\n", value_of(c, 0, i), value_of(c, 1, j),
+                        ex[0], ex[1], ey[0], ey[1], r->success_rate, r->law,
+                        isfinite(r->law_critical_m) ? r->law_critical_m : NAN);
+            }
     }
     return 1;
+}
+
+/* Which swept key is a robot's centre-of-mass height: the law's critical height is then a line on
+ * the heat map; -1 when neither. */
+static int height_key(const fs_campaign *c)
+{
+    for (int w = 0; w < c->nsweep; w++)
+        if (!strcmp(c->sweep[w], "robot.com_height_m"))
+            return w;
+    return -1;
+}
+
+static void heat_map_script(FILE *f, const fs_campaign *c)
+{
+    int n = nseries(c), cols = n < 3 ? n : 3, rows = (n + cols - 1) / cols, hk = height_key(c);
+    fprintf(f, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\nset output out\n"
+               "set multiplot layout %d,%d title 'Campaign %s: success rate (%d seeds per point); law: o stands, "
+               "x topples%s'\n"
+               "set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')\nset cbrange [0:1]\n"
+               "set cblabel 'success rate'\nset xlabel '%s'\nset ylabel '%s'\n%s%s"
+               "set key off\nset style fill solid 1.0 noborder\n",
+            560 * cols, 440 * rows, rows, cols, c->name, c->seeds,
+            hk >= 0 ? "; line: the critical height K/(m g)" : "", c->sweep[0], c->sweep[1],
+            log_axis(c, 0) ? "set logscale x\n" : "", log_axis(c, 1) ? "set logscale y\n" : "");
+    char title[4 * FS_NAME_MAX];
+    for (int k = 0; k < n; k++) {
+        series_title(c, k, title, sizeof title);
+        fprintf(f, "set title '%s'\nplot 'chart.dat' index %d using 1:2:3:4:5:6:7 with boxxyerror lc palette, \\\n"
+                   "     '' index %d using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \\\n"
+                   "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black'",
+                title, k, k, k);
+        if (hk == 1) /* the critical height against the first key */
+            fprintf(f, ", \\\n     '' index %d using 1:($2 == %.17g ? $9 : 1/0) with lines lw 2 lc rgb 'black'", k,
+                    value_of(c, 1, 0));
+        else if (hk == 0)
+            fprintf(f, ", \\\n     '' index %d using ($1 == %.17g ? $9 : 1/0):2 with lines lw 2 lc rgb 'black'", k,
+                    value_of(c, 0, 0));
+        fputc('\n', f);
+    }
+    fputs("unset multiplot\n", f);
 }
 
 static int fill_chart_script(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    char title[2 * FS_NAME_MAX + 4];
+    char title[4 * FS_NAME_MAX];
     fprintf(f, "# The chart of campaign %s: 'gnuplot chart.gp' in this folder draws success.png.\n"
-               "if (!exists(\"out\")) out = 'success.png'\n"
-               "set terminal pngcairo size 960,540 noenhanced font 'sans,11'\n"
+               "if (!exists(\"out\")) out = 'success.png'\n",
+            c->name);
+    if (c->nsweep == 2) {
+        heat_map_script(f, c);
+        return 1;
+    }
+    fprintf(f, "set terminal pngcairo size 960,540 noenhanced font 'sans,11'\n"
                "set output out\n"
                "set title 'Campaign %s: success rate with 95 %% Wilson interval (%d seeds each)'\n"
                "set ylabel 'success rate (landed / trials)'\n"
                "set yrange [0:1.05]\nset grid ytics\nset key outside right top\n",
-            c->name, c->name, c->seeds);
-    if (!c->sweep[0]) {
+            c->name, c->seeds);
+    if (!c->nsweep) {
         fputs("set style data histogram\nset style histogram errorbars gap 2 lw 1\n"
               "set style fill solid 0.6 border -1\nset xlabel 'terrain'\nplot ",
               f);
@@ -335,7 +454,7 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
         fputc('\n', f);
         return 1;
     }
-    fprintf(f, "set xlabel '%s'\nplot ", c->sweep);
+    fprintf(f, "set xlabel '%s'\nplot ", c->sweep[0]);
     for (int k = 0; k < nseries(c); k++) {
         series_title(c, k, title, sizeof title);
         fprintf(f, "%s'chart.dat' index %d using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc %d "

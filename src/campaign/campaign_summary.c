@@ -59,7 +59,7 @@ static void law_of(const fs_scenario *sc, fs_campaign_row *row)
         return;
     fs_status s = fs_pitch_stiffness_model(&sc->design, &sc->geom, r->mass_kg * g, g, &K, &err);
     fs_pitch_law law;
-    fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, &law);
+    fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, sc->def.landed_tilt_deg * M_PI / 180, &law);
     row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
     row->law_K = law.held ? INFINITY : law.K;
     row->law_critical_m = law.held ? INFINITY : law.critical_height_m;

@@ -30,6 +30,8 @@ const fs_key fs_design_keys[] = {
     NUM("springs", "k_d1_N_per_m", k_N_per_m[0], 0, 1e9, POS, "N/m", "12000", "midfoot spring stiffness (Table I)"),
     NUM("springs", "k_d2_N_per_m", k_N_per_m[1], 0, 1e9, POS, "N/m", "12000", "MTP spring stiffness (Table I)"),
     NUM("springs", "k_d3_N_per_m", k_N_per_m[2], 0, 1e9, POS, "N/m", "12000", "heel-to-toe spring stiffness (Table I)"),
+    NUM("springs", "scale", spring_scale, 0, 1e6, POS, "", "1",
+        "multiplies the three stiffnesses above (not the damping): one key for a sweep or a search"),
     NUM("springs", "c_d1_Ns_per_m", c_Ns_per_m[0], 0, 1e7, 0, "N s/m", "200", "midfoot damping (Table I)"),
     NUM("springs", "c_d2_Ns_per_m", c_Ns_per_m[1], 0, 1e7, 0, "N s/m", "200", "MTP damping (Table I)"),
     NUM("springs", "c_d3_Ns_per_m", c_Ns_per_m[2], 0, 1e7, 0, "N s/m", "200", "heel-to-toe damping (Table I)"),
@@ -113,7 +115,7 @@ static void add_spring(fs_foot_geom *g, const fs_design_def *d, int which, int c
     s->body2 = b2;
     s->p1 = p1;
     s->p2 = p2;
-    s->k_N_per_m = d->k_N_per_m[which];
+    s->k_N_per_m = d->k_N_per_m[which] * d->spring_scale;
     s->c_Ns_per_m = d->c_Ns_per_m[which];
     s->rest_length_m = fs_norm(fs_sub(p2, p1)); /* the neutral pose is unstrained */
 }

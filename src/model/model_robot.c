@@ -21,6 +21,9 @@ const fs_key fs_robot_keys[] = {
         "Achilles tendon stiffness (2 cm behind the ankle: k (0.02 m)^2 must beat m g com_height)"),
     NUM("achilles_c_Ns_per_m", achilles_c_Ns_per_m, 0, 1e7, 0, "N s/m", "2000", "Achilles tendon damping"),
     NUM("achilles_leg_anchor_m", achilles_leg_anchor_m, 0, 10, POS, "m", "0.1", "where the tendon meets the leg, above the ankle"),
+    NUM("inertia_height_m", inertia_height_m, 0, 10, 0, "m", "0",
+        "0: inertia_kgm2 as given; else the moments are the body's at this COM height and those about x and y "
+        "scale with (com_height_m / this)^2 (a sweep of the height stretches the same body)"),
     {"robot", "mount", FS_KEY_CHOICE, F(mount), 0, 0, 0, 0, "free|vertical", "", "free",
      "free: all six degrees of freedom; vertical: on a vertical slide, only up and down (the walking machine's carriage)"},
 };
@@ -39,4 +42,12 @@ fs_status fs_robot_load(const char *path, const char *const *overrides, int nove
         def->mass_kg = 0; /* no file: no robot, unless --set gives it a mass */
     fs_config_free(&cfg);
     return s;
+}
+
+void fs_robot_inertia(const fs_robot_def *r, double I[3])
+{
+    double f = r->inertia_height_m > 0 ? r->com_height_m / r->inertia_height_m : 1;
+    I[0] = r->inertia_kgm2[0] * f * f;
+    I[1] = r->inertia_kgm2[1] * f * f;
+    I[2] = r->inertia_kgm2[2];
 }

@@ -299,3 +299,25 @@ fs_status fs_scenario_for_design(const char *design_path, const char *const *ove
     snprintf(sc->def.design_path, sizeof sc->def.design_path, "%s", design_path);
     return fs_design_load(design_path, overrides, noverrides, &sc->design, &sc->geom, err);
 }
+
+double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key)
+{
+    const fs_key *schema[4] = {fs_scenario_keys, fs_design_keys, fs_robot_keys, fs_terrain_keys};
+    const int nkeys[4] = {fs_scenario_nkeys, fs_design_nkeys, fs_robot_nkeys, fs_terrain_nkeys};
+    char *def[4] = {(char *)&sc->def, (char *)&sc->design, (char *)&sc->def.robot, (char *)&sc->terrain.def};
+    const char *dot = strchr(name, '.');
+    if (!dot)
+        return NULL;
+    size_t len = (size_t)(dot - name);
+    for (int s = 0; s < 4; s++)
+        for (int i = 0; i < nkeys[s]; i++) {
+            const fs_key *k = &schema[s][i];
+            if (k->type == FS_KEY_NUMBER && strlen(k->section) == len && !strncmp(k->section, name, len) &&
+                !strcmp(k->name, dot + 1)) {
+                if (key)
+                    *key = k;
+                return (double *)(def[s] + k->offset);
+            }
+        }
+    return NULL;
+}

@@ -180,7 +180,8 @@ static void build_robot(fs_sim *sim)
     dBodyID ankle_body = sim->body[g->ankle_body];
     sim->robot = dBodyCreate(sim->world);
     dMass m;
-    const double *I = s->robot.inertia_kgm2;
+    double I[3];
+    fs_robot_inertia(&s->robot, I);
     dMassSetParameters(&m, s->robot.mass_kg, 0, 0, 0, I[0], I[1], I[2], 0, 0, 0);
     dBodySetMass(sim->robot, &m);
     fs_vec3 com = place(sim, fs_add(g->ankle, fs_v3(s->robot.com_forward_m, 0, s->robot.com_height_m)));

@@ -72,15 +72,19 @@ fs_status fs_pitch_stiffness_measure(const fs_scenario *sc, double load_N, doubl
                                      fs_error *err);
 
 /* The law for one robot on a foot of pitch stiffness K_foot: an Achilles tendon acts in series
- * (k times its 2 cm lever squared), a robot on a vertical slide cannot lean. */
+ * (k times its 2 cm lever squared), a robot on a vertical slide cannot lean. A centre of mass x
+ * ahead of the ankle leans the robot by m g x / (K - m g h) at rest (small angles): it stands when
+ * m g h < K and that lean is below max_lean_rad (a landing's upright bound). */
 typedef struct fs_pitch_law {
     double K_foot, K_series, K;  /* N m/rad: the foot's, the robot's joint's (INFINITY when rigid), in series */
     double demand;               /* m g h, N m/rad: what the robot's weight asks of K */
     double critical_height_m;    /* K / (m g): the highest centre of mass that stands */
+    double lean_rad;             /* the lean at rest from the forward offset (INFINITY past the height) */
     int held;                    /* pitch held (the rig): it stands whatever K */
-    int stands;                  /* held, or demand < K */
+    int stands;                  /* held, or demand < K and lean_rad < max_lean_rad */
 } fs_pitch_law;
-void fs_pitch_law_apply(double K_foot, const fs_robot_def *robot, double gravity_m_per_s2, fs_pitch_law *out);
+void fs_pitch_law_apply(double K_foot, const fs_robot_def *robot, double gravity_m_per_s2, double max_lean_rad,
+                        fs_pitch_law *out);
 
 /* The reference transient: chain `chain` (0-based, unsplayed) from rest, the load rising linearly
  * over ramp_s. Masses: a fifth of heel and talus, the whole metatarsal and phalanx; a fifth of the

@@ -23,7 +23,7 @@
 enum {
     FS_CAMPAIGN_MAX_FEET = 8,
     FS_CAMPAIGN_MAX_ROBOTS = 8,
-    FS_CAMPAIGN_MAX_TERRAINS = 64,
+    FS_CAMPAIGN_MAX_TERRAINS = 256, /* a sweep's points count: base terrains x values x values */
     FS_CAMPAIGN_MAX_EXPECT = 32,
     FS_CAMPAIGN_MAX_SEEDS = 100000,
     FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x robots x seeds (docs/keys.md) */
@@ -47,8 +47,10 @@ double fs_metric_value(const fs_trial_result *r, int m);
 typedef struct fs_campaign_item {
     char name[FS_NAME_MAX];  /* the section's NAME, or for a sweep "NAME@value" */
     char path[FS_PATH_MAX];  /* absolute; for the one robot of a campaign without [robot.NAME], "": the trial's */
-    char set[FS_VALUE_MAX];  /* a sweep's override "section.key=value", or "" */
-    double sweep_value;      /* the swept value (0 without a sweep) */
+    char set[2][FS_VALUE_MAX]; /* a sweep's overrides "section.key=value" (first and second key), or "" */
+    double sweep_value[2];   /* the swept values (0 without a sweep) */
+    int base;                /* a sweep's point: the index of the terrain it is a point of ... */
+    int point[2];            /* ... and of its value of each key */
 } fs_campaign_item;
 
 /* [expect.NAME]: the success rate of foot on terrain under robot must lie in [min_success, max_success]. */
@@ -63,8 +65,12 @@ typedef struct fs_campaign {
     char name[FS_NAME_MAX];            /* the file's base name without .ini */
     char trial_path[FS_PATH_MAX];      /* the trial scenario, as the file resolves it */
     int seeds, first_seed;             /* seeds first_seed, first_seed + 1, ... */
-    char sweep[2 * FS_NAME_MAX];       /* "section.key" swept on the terrain, or "" */
-    int sweep_choice;                  /* [campaign] sweep as bound: 0 none, n the n-th numeric terrain key */
+    char sweep[2][2 * FS_NAME_MAX];    /* the "section.key" swept ([campaign] sweep, sweep2), or "" */
+    int sweep_choice[2];               /* as bound: 0 none, n the n-th sweepable key (fs_campaign_sweepable) */
+    int nsweep;                        /* 0, 1 or 2 keys swept */
+    int nbase, nvalues[2];             /* a sweep's terrains before it, and its values of each key; the
+                                          terrains become nbase x nvalues[0] x nvalues[1] points,
+                                          named "NAME@v1" or "NAME@v1,v2" */
     int nfeet, nterrains, nrobots, nexpect;
     fs_campaign_item foot[FS_CAMPAIGN_MAX_FEET];
     fs_campaign_item terrain[FS_CAMPAIGN_MAX_TERRAINS];
@@ -86,6 +92,10 @@ typedef struct fs_campaign {
 fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets, fs_campaign *c, fs_error *err);
 void fs_campaign_free(fs_campaign *c);
 
+/* The n-th key (1-based) a sweep may vary: every number of a terrain, design, robot or scenario
+ * file, in that order; NULL past the last. */
+const fs_key *fs_campaign_sweepable(int n);
+
 /* A cell is a (foot, terrain, robot), numbered foot-major: cell = (foot * nterrains + terrain) *
  * nrobots + robot. */
 int fs_campaign_ncells(const fs_campaign *c);
@@ -96,8 +106,8 @@ const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell);
 
 /* The overrides of a cell's trials: scenario.design, scenario.terrain, robot.design (when the
  * campaign names robots), the sweep's, then c->set. buf holds their text; out gets up to
- * FS_CAMPAIGN_MAX_SET + 4 pointers; returns the count. */
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[4][FS_PATH_MAX + 32], const char **out);
+ * FS_CAMPAIGN_MAX_SET + 5 pointers; returns the count. */
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out);
 
 /* Trials are numbered cell-major: index = cell * seeds + seed - first_seed. */
 int fs_campaign_ntrials(const fs_campaign *c);

@@ -29,6 +29,7 @@ typedef struct fs_design_def {
     double l1_m, l2_m, l3_m, l4_m;     /* heel, talus, metatarsal, phalanx (Table I) */
     double heel_deg, talus_deg, toe_deg; /* neutral link directions above the horizontal */
     double k_N_per_m[3];               /* d1 midfoot, d2 MTP, d3 heel to toe */
+    double spring_scale;               /* multiplies the three (the geometry's springs carry the product) */
     double c_Ns_per_m[3];
     double d1_b_m, d1_h_m;             /* d1 anchors: distance along the links from the midfoot
                                           joint, and offset toward the sole */

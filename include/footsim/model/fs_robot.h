@@ -24,7 +24,13 @@ typedef struct fs_robot_def {
     int joint;                 /* fs_robot_joint: rigid, or an ankle hinge with an Achilles spring-damper */
     double achilles_k_N_per_m, achilles_c_Ns_per_m, achilles_leg_anchor_m;
     int mount;                 /* fs_robot_mount: free, or held but for vertical motion */
+    double inertia_height_m;   /* > 0: inertia_kgm2 is the body's at this COM height, and its moments
+                                  about x and y scale with (com_height_m / this)^2: the same body
+                                  stretched (fs_robot_inertia) */
 } fs_robot_def;
+
+/* The body's principal moments for its centre-of-mass height (inertia_height_m says how). */
+void fs_robot_inertia(const fs_robot_def *r, double I[3]);
 
 extern const fs_key fs_robot_keys[];
 extern const int fs_robot_nkeys;

@@ -103,6 +103,12 @@ fs_status fs_scenario_copy(fs_scenario *dst, const fs_scenario *src, fs_error *e
  * terrain, heightmap) need fs_scenario_load. */
 fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err);
 
+/* The number a key "section.key" of the scenario, its design, robot or terrain sets, as a typed
+ * field of sc's definitions: for code that varies a model (a search, a sweep) by editing its
+ * definitions and compiling (fs_scenario_compile). NULL when no schema has that key as a number;
+ * *key (may be NULL) gets its schema entry, for its range and unit. */
+double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key);
+
 /* The rectangle [xmin, xmax] x [ymin, ymax] the foot covers at its start pose. */
 void fs_scenario_footprint(const fs_scenario *sc, double box[4]);
 

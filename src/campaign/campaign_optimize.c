@@ -1,0 +1,335 @@
+/* campaign_optimize.c: the design search of fs_optimize.h: its file, a candidate put into the
+ * campaign's definitions, the penalised objective and NLopt's Subplex over it. */
+#include "footsim/campaign/fs_optimize.h"
+
+#include "footsim/base/fs_path.h"
+
+#include <math.h>
+#include <nlopt.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- the file ----------------------------------------------------------------------------- */
+
+#define O(member) offsetof(fs_optimize, member)
+
+typedef struct binder {
+    fs_key keys[3 + 6 * FS_OPTIMIZE_MAX_PARAMS];
+    int nkeys;
+    char sections[FS_OPTIMIZE_MAX_PARAMS][FS_NAME_MAX];
+    char key_choices[16384];
+    int key_choice[FS_OPTIMIZE_MAX_PARAMS]; /* bound: the n-th sweepable key */
+} binder;
+
+static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_type type, size_t offset,
+                       const char *fallback, const char *help)
+{
+    fs_key *k = &b->keys[b->nkeys++];
+    *k = (fs_key){section, name, type, offset, 0, 0, 0, 0, NULL, "", fallback, help};
+    return k;
+}
+
+/* The [param.NAME] sections, in file order. */
+static fs_status collect_params(const fs_config *cfg, binder *b, fs_optimize *o, fs_error *err)
+{
+    for (int i = 0; i < cfg->count; i++) {
+        const char *sec = cfg->entries[i].section;
+        if (strncmp(sec, "param.", 6))
+            continue;
+        int known = 0;
+        for (int p = 0; p < o->nparams; p++)
+            known |= !strcmp(b->sections[p], sec);
+        if (known)
+            continue;
+        if (o->nparams == FS_OPTIMIZE_MAX_PARAMS)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: at most %d parameters", cfg->path, sec, FS_OPTIMIZE_MAX_PARAMS);
+        snprintf(b->sections[o->nparams], FS_NAME_MAX, "%s", sec);
+        snprintf(o->param[o->nparams].name, FS_NAME_MAX, "%s", sec + 6);
+        o->nparams++;
+    }
+    if (!o->nparams)
+        return fs_fail(err, FS_BAD_INPUT, "%s: no parameters; add a section like [param.k_d1] with key = "
+                                          "springs.k_d1_N_per_m, min, max and start", cfg->path);
+    return FS_OK;
+}
+
+/* A fs_optimize to bind into, and where each param's choice index lands (the binder's). */
+typedef struct target {
+    fs_optimize o;
+    int key_choice[FS_OPTIMIZE_MAX_PARAMS];
+    int log[FS_OPTIMIZE_MAX_PARAMS];
+} target;
+
+#define T(member) offsetof(target, member)
+
+static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
+{
+    fs_optimize *o = &t->o;
+    add_key(b, "optimize", "campaign", FS_KEY_PATH, T(o.campaign_path), "",
+            "the campaign whose trials every candidate runs and whose expectations are the targets");
+    fs_key *k = add_key(b, "optimize", "max_evaluations", FS_KEY_INTEGER, T(o.max_evaluations), "40",
+                        "the most candidates the search runs");
+    k->min = 1, k->max = 100000;
+    k = add_key(b, "optimize", "validation_first_seed", FS_KEY_INTEGER, T(o.validation_first_seed), "1001",
+                "the best design is rerun on as many fresh seeds, from this one");
+    k->max = 1e9;
+    fs_status s = collect_params(cfg, b, o, err);
+    if (s != FS_OK)
+        return s;
+    snprintf(b->key_choices, sizeof b->key_choices, "none");
+    for (int n = 1; fs_campaign_sweepable(n); n++) {
+        char word[2 * FS_NAME_MAX + 2];
+        snprintf(word, sizeof word, "%s.%s", fs_campaign_sweepable(n)->section, fs_campaign_sweepable(n)->name);
+        size_t len = strlen(b->key_choices);
+        snprintf(b->key_choices + len, sizeof b->key_choices - len, "|%s", word);
+    }
+    for (int p = 0; p < o->nparams; p++) {
+        const char *sec = b->sections[p];
+        k = add_key(b, sec, "key", FS_KEY_CHOICE, T(key_choice[p]), "none", "the number the search varies");
+        k->choices = b->key_choices;
+        k = add_key(b, sec, "min", FS_KEY_NUMBER, T(o.param[p].min), "0", "its lower bound");
+        k->min = -1e12, k->max = 1e12;
+        k = add_key(b, sec, "max", FS_KEY_NUMBER, T(o.param[p].max), "0", "its upper bound");
+        k->min = -1e12, k->max = 1e12;
+        k = add_key(b, sec, "start", FS_KEY_NUMBER, T(o.param[p].start), "0", "where the search starts");
+        k->min = -1e12, k->max = 1e12;
+        k = add_key(b, sec, "log", FS_KEY_CHOICE, T(log[p]), "no", "yes: searched in log space (min > 0)");
+        k->choices = "no|yes";
+    }
+    return fs_config_bind(cfg, b->keys, b->nkeys, t, err);
+}
+
+/* Every parameter names a key, with min < max, the start within, min > 0 for a log one. */
+static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize *o, fs_error *err)
+{
+    char where[FS_PATH_MAX + 80], sec[FS_NAME_MAX + 8];
+    if (!o->campaign_path[0])
+        return fs_fail(err, FS_BAD_INPUT, "%s: [optimize] campaign is missing; name the campaign whose trials and "
+                                          "expectations the search uses", cfg->path);
+    for (int p = 0; p < o->nparams; p++) {
+        fs_opt_param *q = &o->param[p];
+        snprintf(sec, sizeof sec, "param.%s", q->name);
+        const fs_key *k = t->key_choice[p] > 0 ? fs_campaign_sweepable(t->key_choice[p]) : NULL;
+        if (!k)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] needs key = a number of a design, robot, scenario or terrain "
+                           "file, e.g. springs.k_d1_N_per_m", cfg->path, sec);
+        snprintf(q->key, sizeof q->key, "%s.%s", k->section, k->name);
+        q->log = t->log[p];
+        if (!(q->min < q->max) || q->start < q->min || q->start > q->max)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] min = %g, max = %g, start = %g: give min < max and the start "
+                           "between them", fs_config_where(cfg, sec, "start", where, sizeof where), sec, q->min,
+                           q->max, q->start);
+        if (q->log && !(q->min > 0))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] log = yes needs min > 0 (it is %g)",
+                           fs_config_where(cfg, sec, "log", where, sizeof where), sec, q->min);
+    }
+    return FS_OK;
+}
+
+fs_status fs_optimize_load(const char *path, const char *const *sets, int nsets, fs_optimize *o, fs_error *err)
+{
+    memset(o, 0, sizeof *o);
+    fs_config cfg;
+    fs_status s = fs_config_load(&cfg, path, err);
+    /* --set optimize.KEY=... changes this file; any other goes to the campaign (and on to the trials) */
+    const char *rest[FS_CAMPAIGN_MAX_SET];
+    int nrest = 0;
+    for (int i = 0; s == FS_OK && i < nsets; i++)
+        if (!strncmp(sets[i], "optimize.", 9))
+            s = fs_config_override(&cfg, sets[i], err);
+        else if (nrest < FS_CAMPAIGN_MAX_SET)
+            rest[nrest++] = sets[i];
+        else
+            s = fs_fail(err, FS_BAD_INPUT, "--set: at most %d overrides", FS_CAMPAIGN_MAX_SET);
+    binder *b = calloc(1, sizeof *b);
+    target *t = calloc(1, sizeof *t);
+    if (s == FS_OK && (!b || !t))
+        s = fs_fail(err, FS_NO_MEMORY, "out of memory");
+    if (s == FS_OK)
+        s = bind_file(&cfg, b, t, err);
+    if (s == FS_OK) {
+        *o = t->o;
+        s = check_params(&cfg, t, o, err);
+    }
+    snprintf(o->path, sizeof o->path, "%s", path);
+    fs_path_stem(path, o->name, sizeof o->name);
+    free(b);
+    free(t);
+    fs_config_free(&cfg);
+    if (s == FS_OK)
+        s = fs_campaign_load(o->campaign_path, rest, nrest, &o->campaign, err);
+    if (s == FS_OK && !o->campaign.nexpect)
+        s = fs_fail(err, FS_BAD_INPUT, "%s: campaign %s states no expectations: give it [expect.NAME] sections, the "
+                    "targets the search must meet", path, o->campaign_path);
+    /* every parameter must be a number of every cell's scenario, and its bounds within the key's range */
+    for (int p = 0; s == FS_OK && p < o->nparams; p++) {
+        fs_scenario *sc = &o->campaign.pair[0];
+        const fs_key *k;
+        if (!fs_scenario_number(sc, o->param[p].key, &k))
+            s = fs_fail(err, FS_BAD_INPUT, "%s: [param.%s] key = %s is not a number the trials have", path,
+                        o->param[p].name, o->param[p].key);
+        else if (o->param[p].min < k->min || o->param[p].max > k->max)
+            s = fs_fail(err, FS_BAD_INPUT, "%s: [param.%s] min = %g, max = %g leave %s's range [%g, %g]", path,
+                        o->param[p].name, o->param[p].min, o->param[p].max, o->param[p].key, k->min, k->max);
+    }
+    if (s == FS_OK) {
+        double x[FS_OPTIMIZE_MAX_PARAMS];
+        for (int p = 0; p < o->nparams; p++)
+            x[p] = o->param[p].start;
+        s = fs_optimize_apply(o, x, err);
+    }
+    if (s != FS_OK && o->campaign.pair)
+        fs_campaign_free(&o->campaign);
+    return s;
+}
+
+void fs_optimize_free(fs_optimize *o) { fs_campaign_free(&o->campaign); }
+
+/* ---- a candidate -------------------------------------------------------------------------- */
+
+fs_status fs_optimize_apply(fs_optimize *o, const double *x, fs_error *err)
+{
+    for (int cell = 0; cell < fs_campaign_ncells(&o->campaign); cell++) {
+        fs_scenario *sc = &o->campaign.pair[cell];
+        for (int p = 0; p < o->nparams; p++)
+            *fs_scenario_number(sc, o->param[p].key, NULL) = x[p];
+        fs_status s = fs_scenario_compile(sc, err);
+        if (s != FS_OK)
+            return s;
+    }
+    return FS_OK;
+}
+
+double fs_optimize_objective(const fs_optimize *o, const double *x)
+{
+    double sum = 0;
+    for (int p = 0; p < o->nparams; p++)
+        sum += x[p] / o->param[p].min;
+    return sum;
+}
+
+double fs_optimize_shortfall(const fs_campaign *c, const fs_campaign_row *rows)
+{
+    double miss = 0;
+    for (int i = 0; i < c->nexpect; i++) {
+        const fs_expectation *e = &c->expect[i];
+        double rate = rows[(e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot].success_rate;
+        miss += fmax(0, e->min_success - rate) + fmax(0, rate - e->max_success);
+    }
+    return miss;
+}
+
+double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results)
+{
+    const fs_campaign *c = &o->campaign;
+    double sum = 0;
+    for (int i = 0; i < c->nexpect; i++) {
+        const fs_expectation *e = &c->expect[i];
+        int cell = (e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot, n = 0;
+        double window = fs_campaign_pair(c, cell)->def.duration_s, miss = 0;
+        for (int k = 0; k < c->seeds; k++) {
+            const fs_trial_result *r = &results[cell * c->seeds + k];
+            if (r->outcome == FS_LANDED)
+                continue;
+            double up = isfinite(r->end_time_s) ? fmin(1, fmax(0, r->end_time_s / window)) : 0;
+            miss += 1 - up;
+            n++;
+        }
+        sum += n ? miss / n : 0;
+    }
+    return sum;
+}
+
+/* ---- the search --------------------------------------------------------------------------- */
+
+typedef struct search {
+    fs_optimize *o;
+    fs_optimize_trials trials;
+    fs_optimize_report report;
+    void *user;
+    fs_trial_result *results;
+    fs_campaign_row *rows;
+    double weight;               /* per unit of shortfall */
+    int evaluations;
+    double best[FS_OPTIMIZE_MAX_PARAMS], best_value;
+    fs_status status;            /* the first failure; the search is then forced to stop */
+    fs_error err;
+} search;
+
+/* The search's coordinates: log x for a log parameter. */
+static double to_u(const fs_opt_param *q, double x) { return q->log ? log(x) : x; }
+static double to_x(const fs_opt_param *q, double u) { return q->log ? exp(u) : u; }
+
+static double penalised(unsigned n, const double *u, double *grad, void *data)
+{
+    (void)grad;
+    search *s = data;
+    fs_optimize *o = s->o;
+    double x[FS_OPTIMIZE_MAX_PARAMS];
+    for (unsigned p = 0; p < n; p++)
+        x[p] = fmin(o->param[p].max, fmax(o->param[p].min, to_x(&o->param[p], u[p])));
+    fs_status st = fs_optimize_apply(o, x, &s->err);
+    if (st == FS_OK)
+        st = s->trials(s->user, o, s->results, &s->err);
+    if (st != FS_OK) {
+        s->status = st;
+        return HUGE_VAL;
+    }
+    fs_campaign_summarize(&o->campaign, s->results, s->rows);
+    double obj = fs_optimize_objective(o, x), miss = fs_optimize_shortfall(&o->campaign, s->rows);
+    /* how soon the misses fell, worth less than one seed on any target */
+    double slope = fs_optimize_closeness(o, s->results) / (o->campaign.nexpect + 1) / o->campaign.seeds;
+    double value = obj + s->weight * (miss + slope);
+    s->evaluations++;
+    if (s->report)
+        s->report(s->user, o, s->evaluations, x, obj, miss, s->rows);
+    if (value < s->best_value) {
+        s->best_value = value;
+        memcpy(s->best, x, n * sizeof x[0]);
+    }
+    return value;
+}
+
+fs_status fs_optimize_run(fs_optimize *o, fs_optimize_trials trials, fs_optimize_report report, void *user,
+                          fs_trial_result *results, fs_campaign_row *rows, double *best, double *value,
+                          fs_error *err)
+{
+    unsigned n = (unsigned)o->nparams;
+    search s = {.o = o, .trials = trials, .report = report, .user = user, .results = results, .rows = rows,
+                .best_value = HUGE_VAL, .status = FS_OK};
+    /* one seed short of a target (1/seeds of shortfall) costs 100 times the objective's whole range */
+    double range = fs_optimize_objective(o, (double[FS_OPTIMIZE_MAX_PARAMS]){0});
+    for (int p = 0; p < o->nparams; p++)
+        range += o->param[p].max / o->param[p].min;
+    s.weight = 100 * range * o->campaign.seeds;
+    double lo[FS_OPTIMIZE_MAX_PARAMS], hi[FS_OPTIMIZE_MAX_PARAMS], u[FS_OPTIMIZE_MAX_PARAMS], step[FS_OPTIMIZE_MAX_PARAMS];
+    for (unsigned p = 0; p < n; p++) {
+        const fs_opt_param *q = &o->param[p];
+        lo[p] = to_u(q, q->min), hi[p] = to_u(q, q->max), u[p] = to_u(q, q->start);
+        step[p] = (hi[p] - lo[p]) / 8; /* the first simplex spans an eighth of each range */
+    }
+    nlopt_opt opt = nlopt_create(NLOPT_LN_SBPLX, n);
+    if (!opt)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the optimizer");
+    nlopt_set_lower_bounds(opt, lo);
+    nlopt_set_upper_bounds(opt, hi);
+    nlopt_set_initial_step(opt, step);
+    nlopt_set_min_objective(opt, penalised, &s);
+    nlopt_set_maxeval(opt, o->max_evaluations);
+    nlopt_set_xtol_rel(opt, 1e-3);
+    double minf;
+    nlopt_result r = nlopt_optimize(opt, u, &minf);
+    nlopt_destroy(opt);
+    if (s.status != FS_OK) {
+        *err = s.err;
+        return s.status;
+    }
+    if (r < 0 && r != NLOPT_ROUNDOFF_LIMITED && s.evaluations == 0)
+        return fs_fail(err, FS_NUMERICAL, "%s: the optimizer stopped before any evaluation (NLopt code %d)", o->path,
+                       (int)r);
+    memcpy(best, s.best, n * sizeof best[0]);
+    *value = s.best_value;
+    return FS_OK;
+}
