@@ -26,6 +26,7 @@ typedef struct cli_args {
     const char *data;               /* --data DIR: where relative data files are looked for first */
     int quick;                      /* --quick: a smaller sweep (bench) */
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
+    int force;                      /* --force: compare results of different provenance */
 } cli_args;
 
 /* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open

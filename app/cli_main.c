@@ -58,9 +58,11 @@ static const command commands[] = {
      "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
      "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
      "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
-    {"compare", cli_compare, "RESULT BASELINE", "",
+    {"compare", cli_compare, "RESULT BASELINE", "--force",
      "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
-     "  baseline's 95 % interval or a median moves further than the baseline's tolerance."},
+     "  baseline's 95 % interval or a median moves further than the baseline's tolerance; exit 2 when\n"
+     "  they were made with other seeds, overrides or input files, unless --force (a version that\n"
+     "  differs is only reported)."},
     {"walk", cli_walk, "SCENARIO", "--json --set --data",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
@@ -106,6 +108,8 @@ static void command_help(const command *c)
         printf(" [--json]");
     if (strstr(c->options, "--quick"))
         printf(" [--quick]");
+    if (strstr(c->options, "--force"))
+        printf(" [--force]");
     if (strstr(c->options, "--height"))
         printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
     if (strstr(c->options, "--frames"))
@@ -188,6 +192,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->replace = 1;
         else if (!strcmp(arg, "--quick"))
             a->quick = 1;
+        else if (!strcmp(arg, "--force") && strstr(c->options, "--force"))
+            a->force = 1;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--frames"))

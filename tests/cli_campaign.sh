@@ -47,7 +47,7 @@ done
 if command -v gnuplot >/dev/null 2>&1; then
     check "success.png the same with -j 1 and -j 4" cmp -s "$tmp/j1/success.png" "$tmp/j4/success.png"
 fi
-check "rows in order of foot, terrain, seed" [ "$(cut -d, -f1,2,4 "$tmp/j1/trials.csv" | tr '\n' ' ')" = \
+check "rows in order of foot, terrain, seed" [ "$(grep -v '^#' "$tmp/j1/trials.csv" | cut -d, -f1,2,4 | tr '\n' ' ')" = \
     "foot,terrain,seed bio,bumpy,1 bio,bumpy,2 bio,bumpy,3 flat,bumpy,1 flat,bumpy,2 flat,bumpy,3 " ]
 # without a terminal: no bar redrawn with carriage returns, but plain progress lines (at each tenth
 # of the trials and at the end); stderr holds nothing else but, gnuplot being optional, the line
@@ -71,11 +71,21 @@ FOOTSIM_TEST_CRASH_SEED=2 PATH="$tmp/nopath" "$fs" campaign "$tmp/small.ini" -j 
 check "a failed expectation exits 1" [ $? -eq 1 ]
 check "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy under none landed . of 3' "$tmp/crash.out"
 check "the dead worker's trials are failed_numerics" [ "$(grep -c ',2,.*failed_numerics,.*seed 2, exited with status 3' "$tmp/crash/trials.csv")" -eq 2 ]
-check "the other trials ran" [ "$(grep -c -v failed_numerics "$tmp/crash/trials.csv")" -eq 5 ]
+check "the other trials ran" [ "$(grep -v '^#' "$tmp/crash/trials.csv" | grep -c -v failed_numerics)" -eq 5 ]
 check "the summary counts them" grep -q '"failed_numerics":	1' "$tmp/crash/summary.json"
 check "the death is reported on stderr" grep -q 'foot bio on terrain bumpy under robot none, seed 2, exited with status 3' "$tmp/crash.err"
 check "no gnuplot: said so" grep -q 'gnuplot is not installed' "$tmp/crash.err"
 check "no gnuplot: no chart" [ ! -e "$tmp/crash/success.png" ]
+
+# provenance: every result file says what made it; compare refuses other overrides unless --force
+check "trials.csv starts with its provenance" sh -c "head -1 '$tmp/j1/trials.csv' | grep -q '^# provenance: footsim .*; seeds 1 to 3; step_s .*; inputs small.ini=[0-9a-f]\{16\} '"
+check "summary.json records the version and the inputs' hashes" grep -q '"hash":' "$tmp/j1/summary.json"
+"$fs" campaign "$tmp/small.ini" -j 2 --out "$tmp/other" --set run.step_s=2e-4 >/dev/null 2>&1
+"$fs" compare "$tmp/other/summary.json" "$tmp/j1/summary.json" >"$tmp/prov.out" 2>"$tmp/prov.err"
+check "compare refuses results of other overrides (exit 2)" [ $? -eq 2 ]
+check "and names the difference" grep -q 'provenance: overrides differs' "$tmp/prov.out"
+"$fs" compare "$tmp/other/summary.json" "$tmp/j1/summary.json" --force >"$tmp/prov.out" 2>&1
+check "compare --force compares them anyway (exit 0 or 1)" [ $? -le 1 ]
 
 # compare: identical summaries exit 0; a planted change in a rate or a median exits 1
 "$fs" compare "$tmp/j4/summary.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"

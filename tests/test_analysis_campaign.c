@@ -89,7 +89,7 @@ static void summarized(fs_campaign *c, fs_campaign_row rows[2])
 
 static void test_summarize(void)
 {
-    fs_campaign c;
+    static fs_campaign c;
     fs_campaign_row rows[2];
     summarized(&c, rows);
     CHECK(rows[0].trials == 4 && rows[0].landed == 3 && rows[0].failed_numerics == 1 && rows[0].fell == 0);
@@ -108,7 +108,7 @@ static void test_summarize(void)
 
 static void test_expectations(void)
 {
-    fs_campaign c;
+    static fs_campaign c;
     fs_campaign_row rows[2];
     summarized(&c, rows);
     c.nexpect = 2;
@@ -125,7 +125,7 @@ static void test_expectations(void)
 /* Writes the small campaign's summary.json into dir, after change() edits its rows. */
 static void write_summary(const char *dir, void (*change)(fs_campaign_row *))
 {
-    fs_campaign c;
+    static fs_campaign c;
     fs_campaign_row rows[2];
     fs_error err;
     summarized(&c, rows);
@@ -150,7 +150,7 @@ static fs_status compare_with(const char *tmp, const char *name, void (*change)(
     snprintf(baseline, sizeof baseline, "%s/base/summary.json", tmp);
     FILE *null = fopen("/dev/null", "w");
     fs_error err;
-    fs_status s = fs_campaign_compare(result, baseline, null, &err);
+    fs_status s = fs_campaign_compare(result, baseline, 0, null, &err);
     fclose(null);
     return s;
 }
@@ -172,7 +172,7 @@ static void test_compare(void)
     fs_error err;
     char path[600];
     snprintf(path, sizeof path, "%s/base/summary.json", tmp);
-    CHECK(fs_campaign_compare("scenarios/landing_ci.ini", path, stdout, &err) == FS_BAD_INPUT);
+    CHECK(fs_campaign_compare("scenarios/landing_ci.ini", path, 0, stdout, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "not a campaign summary") != NULL);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);

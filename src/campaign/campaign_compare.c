@@ -109,13 +109,59 @@ static int compare_row(FILE *out, const cJSON *baseline, const cJSON *b, const c
     return bad;
 }
 
-fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, FILE *out, fs_error *err)
+/* A provenance field as text (arrays and objects printed whole), or NULL when missing. */
+static char *field_text(const cJSON *prov, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(prov, key);
+    return v ? cJSON_PrintUnformatted(v) : NULL;
+}
+
+/* Compares the two summaries' provenance: prints every difference; returns the names of those that
+ * make the comparison meaningless (seeds, overrides, inputs) in `refused`, "" when none. */
+static void compare_provenance(const cJSON *result, const cJSON *baseline, FILE *out, char *refused, size_t size)
+{
+    refused[0] = 0;
+    const cJSON *r = cJSON_GetObjectItemCaseSensitive(result, "provenance");
+    const cJSON *b = cJSON_GetObjectItemCaseSensitive(baseline, "provenance");
+    if (!r || !b) {
+        fprintf(out, "provenance: not checked (%s has none)\n\n", !r ? "the result" : "the baseline");
+        return;
+    }
+    static const char *const keys[] = {"footsim", "seeds", "first_seed", "overrides", "inputs", "settings"};
+    int differ = 0;
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
+        char *x = field_text(r, keys[i]), *y = field_text(b, keys[i]);
+        if (!(x && y && !strcmp(x, y))) {
+            fprintf(out, "provenance: %s differs: result %s, baseline %s\n", keys[i], x ? x : "(none)", y ? y : "(none)");
+            differ = 1;
+            /* another version, or other settings, is what a comparison is for; the rest is not */
+            if (strcmp(keys[i], "footsim") && strcmp(keys[i], "settings")) {
+                size_t n = strlen(refused);
+                snprintf(refused + n, size - n, "%s%s", n ? ", " : "", keys[i]);
+            }
+        }
+        free(x);
+        free(y);
+    }
+    fprintf(out, differ ? "\n" : "provenance: the same seeds, overrides and inputs\n\n");
+}
+
+fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, int force, FILE *out, fs_error *err)
 {
     cJSON *result = read_summary(result_path, err);
     cJSON *baseline = result ? read_summary(baseline_path, err) : NULL;
     if (!baseline) {
         cJSON_Delete(result);
         return FS_BAD_INPUT;
+    }
+    char refused[128];
+    compare_provenance(result, baseline, out, refused, sizeof refused);
+    if (refused[0] && !force) {
+        cJSON_Delete(result);
+        cJSON_Delete(baseline);
+        return fs_fail(err, FS_BAD_INPUT, "%s and %s were made with different %s (above): their numbers do not "
+                       "compare; rerun one like the other, or give --force to compare them anyway", result_path,
+                       baseline_path, refused);
     }
     const cJSON *rrows = cJSON_GetObjectItemCaseSensitive(result, "rows");
     const cJSON *brows = cJSON_GetObjectItemCaseSensitive(baseline, "rows");

@@ -538,6 +538,48 @@ static fs_status override_dotted(fs_config *cfg, const char *assignment, fs_erro
     return FS_OK;
 }
 
+/* Notes an input file (absolute path) once, with the hash of its parsed content. */
+static fs_status note_input(fs_campaign *c, const char *dir, const char *path, fs_error *err)
+{
+    char full[PATH_MAX];
+    if (!*path || !realpath(path, full))
+        return FS_OK; /* none (a flat default terrain, no robot), or reported by whoever reads it */
+    fs_campaign_input in;
+    fs_path_relative(full, dir, in.path, sizeof in.path);
+    for (int i = 0; i < c->ninputs; i++)
+        if (!strcmp(c->input[i].path, in.path))
+            return FS_OK;
+    fs_status s = fs_ini_hash(full, &in.hash, err);
+    if (s == FS_OK && c->ninputs < FS_CAMPAIGN_MAX_INPUTS)
+        c->input[c->ninputs++] = in;
+    return s;
+}
+
+/* What made the campaign's results: the sets as given, and every input file with its hash. */
+static fs_status provenance(fs_campaign *c, const char *const *sets, int nsets, fs_error *err)
+{
+    for (int i = 0; i < nsets && i < FS_CAMPAIGN_MAX_SET; i++)
+        c->given[c->ngiven++] = sets[i];
+    char dir[PATH_MAX];
+    if (!realpath(c->path, dir))
+        return fs_fail(err, FS_BAD_INPUT, "%s: %s", c->path, strerror(errno));
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        *slash = 0;
+    fs_status s = note_input(c, dir, c->path, err);
+    if (s == FS_OK)
+        s = note_input(c, dir, c->trial_path, err);
+    for (int i = 0; s == FS_OK && i < fs_campaign_ncells(c); i++) {
+        const fs_scenario *sc = &c->pair[i];
+        s = note_input(c, dir, sc->def.design_path, err);
+        if (s == FS_OK)
+            s = note_input(c, dir, sc->def.terrain_path, err);
+        if (s == FS_OK)
+            s = note_input(c, dir, sc->def.robot_path, err);
+    }
+    return s;
+}
+
 fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets, fs_campaign *c, fs_error *err)
 {
     memset(c, 0, sizeof *c);
@@ -576,7 +618,11 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
         c->nrobots = 1; /* the trial scenario's own robot (named once its scenario is loaded) */
     free(b);
     fs_config_free(&cfg);
-    return s == FS_OK ? load_pairs(c, err) : s;
+    if (s == FS_OK)
+        s = load_pairs(c, err);
+    if (s == FS_OK && (s = provenance(c, sets, nsets, err)) != FS_OK)
+        fs_campaign_free(c);
+    return s;
 }
 
 int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out)

@@ -3,6 +3,7 @@
 #include "campaign_internal.h"
 
 #include "footsim/base/fs_path.h"
+#include "footsim/base/fs_version.h"
 #include "footsim/io/fs_output.h"
 
 #include <cjson/cJSON.h>
@@ -67,6 +68,34 @@ static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain, in
         csv_number(f, c->terrain[terrain].sweep_value[w]);
 }
 
+/* The solver settings a campaign's trials ran with (its first cell's: --set changes every cell). */
+static void settings_text(const fs_campaign *c, char *buf, size_t size)
+{
+    if (!c->pair) { /* a campaign built in code, not loaded */
+        snprintf(buf, size, "settings unknown");
+        return;
+    }
+    const fs_scenario_def *d = &c->pair[0].def;
+    snprintf(buf, size, "step_s %.6g, stepper %s, iterations %d, springs %s, contact_layer_m %.6g, window %.6g s",
+             d->step_s, d->stepper ? "quickstep" : "step", d->iterations, d->springs ? "explicit" : "implicit",
+             d->contact_layer_m, d->duration_s);
+}
+
+/* The CSV files' first line: what made them. */
+static void csv_provenance(FILE *f, const fs_campaign *c)
+{
+    char settings[256];
+    settings_text(c, settings, sizeof settings);
+    fprintf(f, "# provenance: footsim %s; seeds %d to %d; %s; inputs", fs_version(), c->first_seed,
+            c->first_seed + c->seeds - 1, settings);
+    for (int i = 0; i < c->ninputs; i++)
+        fprintf(f, " %s=%016llx", c->input[i].path, c->input[i].hash);
+    fputs("; overrides", f);
+    for (int i = 0; i < c->ngiven; i++)
+        fprintf(f, " '%s'", c->given[i]);
+    fputs(c->ngiven ? "\n" : " none\n", f);
+}
+
 /* The header's key columns: foot, terrain, robot and the swept keys. */
 static void csv_key_header(FILE *f, const fs_campaign *c)
 {
@@ -78,6 +107,7 @@ static void csv_key_header(FILE *f, const fs_campaign *c)
 static int fill_trials(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
+    csv_provenance(f, c);
     csv_key_header(f, c);
     fputs(",seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
@@ -105,6 +135,7 @@ static int fill_trials(FILE *f, const out_ctx *x)
 static int fill_summary_csv(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
+    csv_provenance(f, c);
     csv_key_header(f, c);
     fputs(",trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
@@ -161,6 +192,15 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
     }
+    char settings[256];
+    settings_text(c, settings, sizeof settings);
+    fprintf(f, "\nMade by footsim %s with %s; inputs:", fs_version(), settings);
+    for (int i = 0; i < c->ninputs; i++)
+        fprintf(f, "%s `%s` (%016llx)", i ? "," : "", c->input[i].path, c->input[i].hash);
+    fputs("; overrides:", f);
+    for (int i = 0; i < c->ngiven; i++)
+        fprintf(f, " `%s`", c->given[i]);
+    fputs(c->ngiven ? ".\n" : " none.\n", f);
     if (c->nexpect)
         fputs("\n## Expectations\n\n| expectation | foot | terrain | robot | success | wanted | met |\n"
               "|---|---|---|---|--:|---|---|\n", f);
@@ -189,6 +229,25 @@ static cJSON *summary_json(const out_ctx *x)
             cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]);
         else
             cJSON_AddNullToObject(root, w ? "sweep2" : "sweep");
+    cJSON *prov = cJSON_AddObjectToObject(root, "provenance");
+    cJSON_AddStringToObject(prov, "footsim", fs_version());
+    cJSON *given = cJSON_AddArrayToObject(prov, "overrides");
+    for (int i = 0; i < c->ngiven; i++)
+        cJSON_AddItemToArray(given, cJSON_CreateString(c->given[i]));
+    cJSON *inputs = cJSON_AddArrayToObject(prov, "inputs");
+    for (int i = 0; i < c->ninputs; i++) {
+        char hash[24];
+        snprintf(hash, sizeof hash, "%016llx", c->input[i].hash);
+        cJSON *in = cJSON_CreateObject();
+        cJSON_AddStringToObject(in, "path", c->input[i].path);
+        cJSON_AddStringToObject(in, "hash", hash);
+        cJSON_AddItemToArray(inputs, in);
+    }
+    char settings[256];
+    settings_text(c, settings, sizeof settings);
+    cJSON_AddStringToObject(prov, "settings", settings);
+    cJSON_AddNumberToObject(prov, "seeds", c->seeds);
+    cJSON_AddNumberToObject(prov, "first_seed", c->first_seed);
     cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         cJSON *t = cJSON_AddObjectToObject(tol, fs_campaign_metrics[m].name);
@@ -398,15 +457,20 @@ static int height_key(const fs_campaign *c)
 static void heat_map_script(FILE *f, const fs_campaign *c)
 {
     int n = nseries(c), cols = n < 3 ? n : 3, rows = (n + cols - 1) / cols, hk = height_key(c);
+    double ex[2], ey[2], xr[2], yr[2];
+    cell_edges(c, 0, 0, ex), cell_edges(c, 0, c->nvalues[0] - 1, xr);
+    cell_edges(c, 1, 0, ey), cell_edges(c, 1, c->nvalues[1] - 1, yr);
     fprintf(f, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\nset output out\n"
                "set multiplot layout %d,%d title 'Campaign %s: success rate (%d seeds per point); law: o stands, "
                "x topples%s'\n"
                "set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')\nset cbrange [0:1]\n"
                "set cblabel 'success rate'\nset xlabel '%s'\nset ylabel '%s'\n%s%s"
+               "set xrange [%.17g:%.17g]\nset yrange [%.17g:%.17g]\n"
                "set key off\nset style fill solid 1.0 noborder\n",
             560 * cols, 440 * rows, rows, cols, c->name, c->seeds,
             hk >= 0 ? "; line: the critical height K/(m g)" : "", c->sweep[0], c->sweep[1],
-            log_axis(c, 0) ? "set logscale x\n" : "", log_axis(c, 1) ? "set logscale y\n" : "");
+            log_axis(c, 0) ? "set logscale x\n" : "", log_axis(c, 1) ? "set logscale y\n" : "", fmin(ex[0], xr[1]),
+            fmax(ex[0], xr[1]), fmin(ey[0], yr[1]), fmax(ey[0], yr[1]));
     char title[4 * FS_NAME_MAX];
     for (int k = 0; k < n; k++) {
         series_title(c, k, title, sizeof title);

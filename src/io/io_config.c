@@ -634,3 +634,46 @@ void fs_config_print_keys(const fs_key *schema, int nkeys, const char *title, vo
     }
     fputc('\n', out);
 }
+
+/* Entries in sorted order: section, then key. */
+static int by_key(const void *a, const void *b)
+{
+    const fs_entry *x = *(const fs_entry *const *)a, *y = *(const fs_entry *const *)b;
+    int c = strcmp(x->section, y->section);
+    return c ? c : strcmp(x->name, y->name);
+}
+
+static unsigned long long fnv1a(unsigned long long h, const char *s, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ (unsigned char)s[i]) * 0x100000001b3ULL;
+    return h;
+}
+
+unsigned long long fs_config_hash(const fs_config *cfg)
+{
+    unsigned long long h = 0xcbf29ce484222325ULL;
+    const fs_entry **e = malloc((size_t)(cfg->count ? cfg->count : 1) * sizeof *e);
+    if (!e)
+        return 0;
+    for (int i = 0; i < cfg->count; i++)
+        e[i] = &cfg->entries[i];
+    qsort(e, (size_t)cfg->count, sizeof *e, by_key);
+    for (int i = 0; i < cfg->count; i++) { /* each field with its terminating zero: no two texts collide */
+        h = fnv1a(h, e[i]->section, strlen(e[i]->section) + 1);
+        h = fnv1a(h, e[i]->name, strlen(e[i]->name) + 1);
+        h = fnv1a(h, e[i]->value, strlen(e[i]->value) + 1);
+    }
+    free(e);
+    return h;
+}
+
+fs_status fs_ini_hash(const char *path, unsigned long long *hash, fs_error *err)
+{
+    fs_config cfg;
+    fs_status s = fs_config_load(&cfg, path, err);
+    if (s == FS_OK)
+        *hash = fs_config_hash(&cfg);
+    fs_config_free(&cfg);
+    return s;
+}

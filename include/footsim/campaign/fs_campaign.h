@@ -43,6 +43,14 @@ extern const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS];
 /* The value of metric m (an index into fs_campaign_metrics) in r. */
 double fs_metric_value(const fs_trial_result *r, int m);
 
+/* An input file of a campaign, for its provenance: its path relative to the campaign file's folder
+ * and the hash of its parsed content (fs_config_hash). */
+typedef struct fs_campaign_input {
+    char path[FS_PATH_MAX];
+    unsigned long long hash;
+} fs_campaign_input;
+enum { FS_CAMPAIGN_MAX_INPUTS = 2 + FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_ROBOTS };
+
 /* One foot, terrain or robot of the campaign. */
 typedef struct fs_campaign_item {
     char name[FS_NAME_MAX];  /* the section's NAME, or for a sweep "NAME@value" */
@@ -80,6 +88,11 @@ typedef struct fs_campaign {
     double tolerance[FS_CAMPAIGN_NMETRICS][2]; /* relative, absolute (metric's unit) */
     const char *set[FS_CAMPAIGN_MAX_SET];      /* the command's --set meant for the trials */
     int nset;
+    /* provenance (written into every result file): every --set as given, and the input files */
+    const char *given[FS_CAMPAIGN_MAX_SET];
+    int ngiven;
+    fs_campaign_input input[FS_CAMPAIGN_MAX_INPUTS];
+    int ninputs;
     fs_scenario *pair;                 /* the trial scenario of each cell, loaded once:
                                           fs_campaign_pair; fs_campaign_free releases them */
 } fs_campaign;
@@ -151,11 +164,15 @@ fs_status fs_campaign_write_chart(const fs_campaign *c, const fs_campaign_row *r
 /* Checks every expectation, printing each with its numbers to out; returns how many failed. */
 int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *out);
 
-/* Compares two summary.json files, printing a table of what changed to out. FS_OK when every
+/* Compares two summary.json files, printing a table of what changed to out. First their
+ * provenance: results made with other seeds, overrides or input files (by content) are refused
+ * (FS_BAD_INPUT, each difference named) unless force, when they are only reported; another footsim
+ * version is only reported (CI compares new code against an old baseline); a summary without
+ * provenance is reported as not checked. Then FS_OK when every
  * success rate lies in its baseline's [ci_low, ci_high], no cell has more undecided trials than the
  * baseline's, and every median lies within the baseline's tolerance
  * (|result - baseline| <= relative * |baseline| + absolute); FS_EXPECTATION_FAILED when
  * not, or when a row is missing on either side; FS_BAD_INPUT when a file cannot be read as a summary. */
-fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, FILE *out, fs_error *err);
+fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, int force, FILE *out, fs_error *err);
 
 #endif

@@ -100,6 +100,14 @@ void fs_config_dir(const fs_config *cfg, char *buf, size_t size);
 
 void fs_config_free(fs_config *cfg);
 
+/* A hash of a file's parsed content (FNV-1a, 64 bits): its entries (section, key, value) in sorted
+ * order, so that comments, blank lines, spacing and the order of keys do not change it, and any
+ * changed value does. For provenance: which inputs made a result. */
+unsigned long long fs_config_hash(const fs_config *cfg);
+
+/* fs_config_hash of the INI file at path, or FS_BAD_INPUT when it cannot be read. */
+fs_status fs_ini_hash(const char *path, unsigned long long *hash, fs_error *err);
+
 /* Writes the schema as a Markdown table (key, unit, range, default, meaning) to out. */
 void fs_config_print_keys(const fs_key *schema, int nkeys, const char *title, void *out_file);
 
