@@ -33,6 +33,8 @@ printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign =
 expect 2 "$tmp/inline.ini:4: 'mass_kg' is a key of a robot file, not of a scenario" -- trial "$tmp/inline.ini"
 expect 2 "$tmp/bad_robot.ini:3: mount = 'sideways'" -- trial "$tmp/uses_bad.ini"
 expect 2 "--set robot.mass: unknown key 'mass' in \[robot\]" -- trial scenarios/landing_trial.ini --set robot.mass=3
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[landing]\nlanded_tilt_deg = 15\n' "$PWD" >"$tmp/norobot.ini"
+expect 2 "$tmp/norobot.ini: a landing trial drops a robot and this scenario has none" -- trial "$tmp/norobot.ini"
 
 # campaigns: refused with file:line before any trial runs (nothing written)
 camp() { # camp NAME BODY: a campaign file on the stand-in trial with one foot and one terrain

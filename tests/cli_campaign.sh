@@ -69,11 +69,11 @@ FOOTSIM_TEST_CRASH_SEED=2 PATH="$tmp/nopath" "$fs" campaign "$tmp/small.ini" -j 
     --set expect.all.foot=flat --set expect.all.terrain=bumpy --set expect.all.min_success=1 \
     >"$tmp/crash.out" 2>"$tmp/crash.err"
 check "a failed expectation exits 1" [ $? -eq 1 ]
-check "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy under none landed . of 3' "$tmp/crash.out"
+check "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy under drop_weight landed . of 3' "$tmp/crash.out"
 check "the dead worker's trials are failed_numerics" [ "$(grep -c ',2,.*failed_numerics,.*seed 2, exited with status 3' "$tmp/crash/trials.csv")" -eq 2 ]
 check "the other trials ran" [ "$(grep -v '^#' "$tmp/crash/trials.csv" | grep -c -v failed_numerics)" -eq 5 ]
 check "the summary counts them" grep -q '"failed_numerics":	1' "$tmp/crash/summary.json"
-check "the death is reported on stderr" grep -q 'foot bio on terrain bumpy under robot none, seed 2, exited with status 3' "$tmp/crash.err"
+check "the death is reported on stderr" grep -q 'foot bio on terrain bumpy under robot drop_weight, seed 2, exited with status 3' "$tmp/crash.err"
 check "no gnuplot: said so" grep -q 'gnuplot is not installed' "$tmp/crash.err"
 check "no gnuplot: no chart" [ ! -e "$tmp/crash/success.png" ]
 
@@ -94,7 +94,7 @@ check "compare says identical" grep -q 'identical' "$tmp/cmp.out"
 sed '0,/"success_rate":/s/"success_rate":[^,]*/"success_rate":	-1/' "$tmp/j1/summary.json" >"$tmp/rate.json"
 "$fs" compare "$tmp/rate.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
 check "compare exits 1 when a rate leaves the baseline interval" [ $? -eq 1 ]
-check "compare names the rate" grep -q '| bio | bumpy | none | success_rate | .* | -1 |.*outside' "$tmp/cmp.out"
+check "compare names the rate" grep -q '| bio | bumpy | drop_weight | success_rate | .* | -1 |.*outside' "$tmp/cmp.out"
 sed '0,/"median_steps":/s/"median_steps":[^,]*/"median_steps":	1e12/' "$tmp/j1/summary.json" >"$tmp/steps.json"
 "$fs" compare "$tmp/steps.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
 check "compare exits 1 when a median moves too far" [ $? -eq 1 ]

@@ -41,7 +41,7 @@ FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=5 "$fs" campaign "$tmp/camp.ini" $sh
 status=$?
 check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 5 s and was killed by the watchdog" "$tmp/werr"'
 check 'grep -q "1 worker made no progress" "$tmp/werr" && [ "$(grep -c "failed_numerics" "$tmp/w/trials.csv")" -eq 1 ]'
-check 'grep "failed_numerics" "$tmp/w/trials.csv" | grep -q "^bio,flat,none,2,"'
+check 'grep "failed_numerics" "$tmp/w/trials.csv" | grep -q "^bio,flat,drop_weight,2,"'
 # finding 9: a refused fork (at most one process for an unprivileged user) leaves no folder
 if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null && command -v prlimit >/dev/null; then
     mkdir "$tmp/nobody" && chmod 777 "$tmp/nobody" && chmod 755 "$tmp" && cp "$tmp/camp.ini" "$tmp/nobody/" && chmod 644 "$tmp/nobody/camp.ini"

@@ -220,6 +220,9 @@ fs_status fs_scenario_require(const fs_scenario *sc, const char *command, fs_err
     /* what the file is for: walk (kind = walk), trial ([robot] or [landing]), else run */
     const char *is = sc->def.kind == FS_SCENARIO_WALK ? "walk" : sc->is_trial ? "trial" : "run";
     int ok = !strcmp(command, is) || (!strcmp(command, "run") && !strcmp(is, "trial"));
+    if (ok && !strcmp(command, "trial") && sc->def.robot.mass_kg <= 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s: a landing trial drops a robot and this scenario has none (mass 0): name "
+                       "one in [robot] with design = robots/single_tall.ini (or drop_weight, rig)", sc->path);
     if (ok)
         return FS_OK;
     static const char *what[] = {"a walking-machine scenario ([scenario] kind = walk)",
