@@ -49,6 +49,9 @@ typedef struct timing {
     fs_profile prof;
     double prof_wall_s;
     double clock_read_s;        /* what one clock read cost, taken off each profiled interval */
+    int joint_rows;             /* constraint rows of joints and springs */
+    double mean_rows;           /* all rows, contacts too, averaged over the steps */
+    int max_rows;
 } timing;
 
 /* A skip measured: the scene with it (the cheap way) and without (the costly way). */
@@ -243,9 +246,31 @@ static void take_clock_off(fs_profile *p, double read_s)
         p->stage_s[k] = fmax(0, p->stage_s[k] - p->laps[k] * read_s);
 }
 
-/* n profiled runs: each stage's median time (clock reads taken off), and the median wall time. */
+/* The constraint rows of a run, seen after every step (fs_sim_constraint_rows). */
+typedef struct row_count {
+    int joints;                 /* rows of joints and springs (all but contacts) */
+    double sum;                 /* of the total, over the steps seen */
+    long seen;
+    int max;
+} row_count;
+
+static fs_status count_rows(void *user, const fs_sim *sim, fs_error *err)
+{
+    (void)err;
+    row_count *c = user;
+    fs_rows r;
+    fs_sim_constraint_rows(sim, &r);
+    c->joints = r.total - r.contact;
+    c->sum += r.total;
+    c->seen++;
+    c->max = r.total > c->max ? r.total : c->max;
+    return FS_OK;
+}
+
+/* n profiled runs: each stage's median time (clock reads taken off), and the median wall time; the
+ * first also counts the constraint rows after every step (outside the stages it times). */
 static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double *wall_s, double *read_s,
-                               fs_error *err)
+                               row_count *rows, fs_error *err)
 {
     *read_s = clock_read_s();
     double stage[FS_NSTAGES][MAX_RUNS], wall[MAX_RUNS];
@@ -253,7 +278,10 @@ static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double 
     for (int i = 0; i < n && s == FS_OK; i++) {
         outcome o;
         fs_profile p = {0};
-        s = run_once(sc, NULL, &(fs_run_observer){.profile = &p}, &o, err);
+        fs_run_observer obs = {.profile = &p};
+        if (i == 0)
+            obs.fn = count_rows, obs.user = rows, obs.interval_s = 1e-12; /* every step */
+        s = run_once(sc, NULL, &obs, &o, err);
         take_clock_off(&p, *read_s);
         for (int k = 0; k < FS_NSTAGES; k++)
             stage[k][i] = p.stage_s[k];
@@ -275,10 +303,12 @@ static fs_status time_scene(const scene *sc, int runs, int profiled, timing *t, 
         s = run_once(sc, NULL, NULL, &o[i], err);
     fs_profile prof;
     double wall_s, read_s;
+    row_count rows = {0};
     if (s == FS_OK)
-        s = profile_scene(sc, profiled, &prof, &wall_s, &read_s, err);
+        s = profile_scene(sc, profiled, &prof, &wall_s, &read_s, &rows, err);
     if (s == FS_OK)
-        *t = (timing){sc, runs, median_run(o, runs), prof, wall_s, read_s};
+        *t = (timing){sc, runs, median_run(o, runs), prof, wall_s, read_s, rows.joints,
+                      rows.seen ? rows.sum / rows.seen : 0, rows.max};
     return s;
 }
 
@@ -369,16 +399,19 @@ static void speed_csv(FILE *f, const context *c, const timing *t, int n)
 {
     speed_header(f, c);
     fprintf(f, "scene,runner,runs,steps,sim_s,step_s,wall_s,steps_per_s,rtf,us_per_step,profiled_wall_s,collision_pct,"
-               "ode_pct,own_pct,own_loads_pct,own_springs_pct,own_contacts_pct,own_check_pct,own_caller_pct,clock_read_ns\n");
+               "ode_pct,own_pct,own_loads_pct,own_springs_pct,own_contacts_pct,own_check_pct,own_caller_pct,clock_read_ns,"
+               "joint_rows,mean_rows,max_rows\n");
     for (int i = 0; i < n; i++) {
         const outcome *m = &t[i].median;
         figures g = figures_of(&t[i]);
-        fprintf(f, "%s,%s,%d,%ld,%.4f,%.3g,%.4f,%.0f,%.3f,%.2f,%.4f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f\n",
+        fprintf(f, "%s,%s,%d,%ld,%.4f,%.3g,%.4f,%.0f,%.3f,%.2f,%.4f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%d,%.1f,"
+                   "%d\n",
                 t[i].sc->name, runner_name(t[i].sc->how), t[i].runs, m->steps, m->sim_s, m->sim_s / m->steps,
                 m->wall_s, g.steps_per_s, g.rtf, g.us_per_step, t[i].prof_wall_s, g.collision_pct, g.ode_pct,
                 g.own_pct, stage_pct(&t[i].prof, FS_STAGE_LOADS), stage_pct(&t[i].prof, FS_STAGE_SPRINGS),
                 stage_pct(&t[i].prof, FS_STAGE_CONTACTS), stage_pct(&t[i].prof, FS_STAGE_CHECK),
-                stage_pct(&t[i].prof, FS_STAGE_CALLER), 1e9 * t[i].clock_read_s);
+                stage_pct(&t[i].prof, FS_STAGE_CALLER), 1e9 * t[i].clock_read_s, t[i].joint_rows, t[i].mean_rows,
+                t[i].max_rows);
     }
 }
 
@@ -402,13 +435,13 @@ static void skips_csv(FILE *f, const context *c, const skip_timing *t, int n)
 
 static void speed_md_table(FILE *f, const timing *t, int n)
 {
-    fprintf(f, "| scene | steps | wall s | steps/s | real-time factor | µs/step | collision | ODE step | own code |\n"
-               "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+    fprintf(f, "| scene | steps | wall s | steps/s | real-time factor | µs/step | collision | ODE step | own code | "
+               "rows: joints, mean, max |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
     for (int i = 0; i < n; i++) {
         figures g = figures_of(&t[i]);
-        fprintf(f, "| %s | %ld | %.3f | %.0f | %.3f | %.1f | %.1f %% | %.1f %% | %.1f %% |\n", t[i].sc->name,
-                t[i].median.steps, t[i].median.wall_s, g.steps_per_s, g.rtf, g.us_per_step, g.collision_pct,
-                g.ode_pct, g.own_pct);
+        fprintf(f, "| %s | %ld | %.3f | %.0f | %.3f | %.1f | %.1f %% | %.1f %% | %.1f %% | %d, %.0f, %d |\n",
+                t[i].sc->name, t[i].median.steps, t[i].median.wall_s, g.steps_per_s, g.rtf, g.us_per_step,
+                g.collision_pct, g.ode_pct, g.own_pct, t[i].joint_rows, t[i].mean_rows, t[i].max_rows);
     }
 }
 
@@ -449,7 +482,7 @@ static void speed_md(FILE *f, const context *c, const timing *t, int n, const sk
                "1-minute load average %.2f at the start, %.2f at the end.\n\n",
             c->command, c->date, c->machine, c->load_start, c->load_end);
     fprintf(f, "Each time is the median wall time of repeated runs (speed.csv says how many) of loading, building, "
-               "stepping and measuring; the shares of the step loop come from further runs with a profile (fs_observer.h) (each stage's median, less the cost of the clock reads that timed it, calibrated per scene: speed.csv's clock_read_ns; profiled_wall_s is their median wall time).\n\n");
+               "stepping and measuring; the shares of the step loop come from further runs with a profile (fs_observer.h) (each stage's median, less the cost of the clock reads that timed it, calibrated per scene: speed.csv's clock_read_ns; profiled_wall_s is their median wall time). Rows: the constraint rows ODE's step solves (fs_sim_constraint_rows): those of the joints and implicit springs, and all rows with the contacts', mean and most over the first profiled run's steps.\n\n");
     speed_md_table(f, t, n);
     fprintf(f, "\nfootsim's own code takes at most %.1f %% of a step (%s): %s the 10 %% bound.\n\n", own,
             t[w].sc->name, own < 10 ? "under" : "OVER");

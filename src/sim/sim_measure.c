@@ -119,3 +119,36 @@ double fs_sim_hinge_angle(const fs_sim *sim, int i)
     /* ODE's hinge angle turns body1 about the axis relative to body2; ours turns body2 (distal). */
     return -dJointGetHingeAngle(sim->hinge[i]);
 }
+
+void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows)
+{
+    memset(rows, 0, sizeof *rows);
+    /* every joint on a body, once (each is met from both its bodies): contacts are counted apart */
+    enum { MAX_JOINTS = 4 * FS_MAX_BODIES + 16 };
+    dJointID seen[MAX_JOINTS];
+    int nseen = 0;
+    for (int i = 0; i < sim->geom->nbodies + (sim->robot != NULL); i++) {
+        dBodyID b = i < sim->geom->nbodies ? sim->body[i] : sim->robot;
+        for (int k = 0; k < dBodyGetNumJoints(b); k++) {
+            dJointID j = dBodyGetJoint(b, k);
+            int known = 0;
+            for (int m = 0; m < nseen; m++)
+                known |= seen[m] == j;
+            if (known || nseen == MAX_JOINTS)
+                continue;
+            seen[nseen++] = j;
+            switch (dJointGetType(j)) {
+            case dJointTypeHinge: rows->hinge += 5; break;
+            case dJointTypeFixed: rows->fixed += 6; break;
+            case dJointTypeSlider: rows->slider += 5; break;
+            case dJointTypeBall: rows->ball += 3; break;
+            case dJointTypeDBall: rows->spring += 1; break;
+            case dJointTypeContact: break;
+            default: rows->other++; break;
+            }
+        }
+    }
+    rows->contacts = sim->contacts_now;
+    rows->contact = sim->contacts_now * (sim->contact_template.surface.mu > 0 ? 3 : 1);
+    rows->total = rows->hinge + rows->fixed + rows->slider + rows->ball + rows->spring + rows->contact + rows->other;
+}

@@ -134,6 +134,17 @@ void fs_sim_ground_force(const fs_sim *sim, double force[3]);
  * forces, the load). */
 void fs_sim_scene(const fs_sim *sim, fs_scene *scene);
 
+/* The constraint rows the solver handles in a step, by kind: what a step's cost grows with (a
+ * dense direct solver's time grows with the cube of the total). Hinges and sliders 5, a fixed
+ * joint 6, a ball 3, an implicit spring's DBall row 1, a contact 3 with friction (1 without), for
+ * the contacts of the last step. */
+typedef struct fs_rows {
+    int hinge, fixed, slider, ball, spring, contact, other; /* other: joints of any other kind, one each */
+    int total;
+    int contacts;          /* the contact points the contact rows are for */
+} fs_rows;
+void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows);
+
 /* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. */
 double fs_sim_robot_tilt(const fs_sim *sim);
 
