@@ -1,12 +1,14 @@
 /* Determinism: the static-load scenario's whole trajectory hashes to the value committed in
- * tests/determinism_static_load.txt. A change of the physics, the solver settings, the compiler's
+ * tests/determinism_static_load.txt, and a landing trial's state after every step to
+ * tests/determinism_landing.txt. A change of the physics, the solver settings, the compiler's
  * floating-point contraction or the ODE build shows up here; if the change is meant, rewrite the
- * file with FS_HASH_UPDATE=1 build/tests/test_engine_determinism (from the source folder) and say
+ * files with FS_HASH_UPDATE=1 build/tests/test_engine_determinism (from the source folder) and say
  * why in the commit. (That the same inputs give the same bits in one build is tested directly in
  * test_model_terrain and cli_campaign.sh.) */
 #include "fs_test.h"
 
 #include "footsim/experiment/fs_run.h"
+#include "footsim/experiment/fs_trial.h"
 #include "footsim/sim/fs_sim.h"
 
 #include <inttypes.h>
@@ -25,6 +27,26 @@ static uint64_t hash_rows(const fs_run_result *r)
     return h;
 }
 
+/* h against the value committed in file (FS_HASH_UPDATE=1: writes it instead). */
+static void check_hash(const char *file, const char *what, uint64_t h)
+{
+    if (getenv("FS_HASH_UPDATE")) {
+        FILE *f = fopen(file, "w");
+        REQUIRE(f != NULL);
+        fprintf(f, "%016" PRIx64 "\n", h);
+        fclose(f);
+        return;
+    }
+    FILE *f = fopen(file, "r");
+    REQUIRE(f != NULL);
+    uint64_t want = 0;
+    CHECK(fscanf(f, "%" SCNx64, &want) == 1);
+    fclose(f);
+    if (h != want)
+        fprintf(stderr, "  %s hash %016" PRIx64 ", committed %016" PRIx64 " (%s)\n", what, h, want, file);
+    CHECK(h == want);
+}
+
 static void static_load_hashes_to_its_committed_value(void)
 {
     static fs_scenario sc;
@@ -35,22 +57,39 @@ static void static_load_hashes_to_its_committed_value(void)
     uint64_t h = hash_rows(&r);
     fs_run_free(&r);
     fs_scenario_free(&sc);
-    if (getenv("FS_HASH_UPDATE")) {
-        FILE *f = fopen(HASH_FILE, "w");
-        REQUIRE(f != NULL);
-        fprintf(f, "%016" PRIx64 "\n", h);
-        fclose(f);
-        return;
+    check_hash(HASH_FILE, "trajectory", h);
+}
+
+/* After every step of a landing trial: every body's position, orientation and velocities, and the
+ * contact count (so collision and contact changes show, not only the springs' and hinges'). */
+static fs_status hash_state(void *user, const fs_sim *sim, fs_error *err)
+{
+    (void)err;
+    uint64_t *h = user;
+    for (int i = 0; i < sim->geom->nbodies + (sim->robot != NULL); i++) {
+        dBodyID b = i < sim->geom->nbodies ? sim->body[i] : sim->robot;
+        const dReal *v[4] = {dBodyGetPosition(b), dBodyGetQuaternion(b), dBodyGetLinearVel(b), dBodyGetAngularVel(b)};
+        for (int k = 0; k < 4; k++) {
+            const unsigned char *p = (const unsigned char *)v[k];
+            for (size_t j = 0; j < (k == 1 ? 4 : 3) * sizeof(dReal); j++)
+                *h = (*h ^ p[j]) * 1099511628211ULL;
+        }
     }
-    FILE *f = fopen(HASH_FILE, "r");
-    REQUIRE(f != NULL);
-    uint64_t want = 0;
-    CHECK(f && fscanf(f, "%" SCNx64, &want) == 1);
-    if (f)
-        fclose(f);
-    if (h != want)
-        fprintf(stderr, "  trajectory hash %016" PRIx64 ", committed %016" PRIx64 "\n", h, want);
-    CHECK(h == want);
+    *h = (*h ^ (uint64_t)sim->contacts_now) * 1099511628211ULL;
+    return FS_OK;
+}
+
+/* The default landing trial (seed 1: the biomimetic foot under single_tall on flat ground, from
+ * the drop to the fall) hashes to tests/determinism_landing.txt. */
+static void landing_trial_hashes_to_its_committed_value(void)
+{
+    uint64_t h = 1469598103934665603ULL;
+    fs_run_observer obs = {.interval_s = 1e-12, .fn = hash_state, .user = &h};
+    fs_trial_result r;
+    fs_error err;
+    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", NULL, 0, 1, &obs, &r, &err) == FS_OK);
+    CHECK(r.steps > 1000);
+    check_hash("tests/determinism_landing.txt", "landing trial", h);
 }
 
 /* The end of a quickstep run, which draws on ODE's random generator to order its constraints. */
@@ -157,5 +196,6 @@ static void interleaved_sims_give_the_bits_of_each_alone(void)
     CHECK(alone[0] != alone[1] && alone[1] != alone[2]); /* three different runs, or the test proves nothing */
 }
 
-FS_TEST_MAIN(TEST(static_load_hashes_to_its_committed_value), TEST(quickstep_does_not_depend_on_earlier_runs),
+FS_TEST_MAIN(TEST(static_load_hashes_to_its_committed_value), TEST(landing_trial_hashes_to_its_committed_value),
+             TEST(quickstep_does_not_depend_on_earlier_runs),
              TEST(interleaved_sims_give_the_bits_of_each_alone))
