@@ -48,6 +48,7 @@ int cli_render_compare(const cli_args *a);
  * without the marker, is recognised by these (fs_outdir_open). */
 extern const char *const cli_run_files[], *const cli_campaign_files[], *const cli_compare_files[];
 extern const char *const cli_optimize_files[]; /* app/cli_optimize.c */
+extern const char *const cli_trial_files[];
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);

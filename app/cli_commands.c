@@ -342,6 +342,86 @@ int cli_stiffness(const cli_args *a)
 
 /* ---- trial ------------------------------------------------------------------------------------ */
 
+/* A trial's result as JSON (footsim trial --json, and trial.json in its folder). */
+static cJSON *trial_json(const fs_trial_result *r)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "seed", r->draw.seed);
+    cJSON_AddStringToObject(o, "outcome", fs_outcome_name(r->outcome));
+    cJSON_AddStringToObject(o, "rule", fs_rule_name(r->rule));
+    cJSON_AddStringToObject(o, "failure", r->failure);
+    cJSON_AddNumberToObject(o, "robot_mass_kg", r->robot_mass_kg);
+    double pose[5] = {r->draw.x_m, r->draw.y_m, r->draw.yaw_deg, r->draw.pitch_deg, r->draw.roll_deg};
+    cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
+    cJSON_AddNumberToObject(o, "touchdown_s", r->touchdown_s);
+    cJSON_AddNumberToObject(o, "end_time_s", r->end_time_s);
+    cJSON_AddNumberToObject(o, "peak_tilt_deg", r->peak_tilt_deg);
+    cJSON_AddNumberToObject(o, "final_tilt_deg", r->final_tilt_deg);
+    cJSON_AddNumberToObject(o, "peak_force_N", r->peak_force_N);
+    cJSON_AddNumberToObject(o, "impact_impulse_Ns", r->impact_impulse_Ns);
+    cJSON_AddNumberToObject(o, "settle_time_s", r->settle_time_s);
+    cJSON_AddNumberToObject(o, "mean_contacts", r->mean_contacts);
+    cJSON_AddNumberToObject(o, "final_contacts", r->final_contacts);
+    cJSON_AddNumberToObject(o, "ankle_drop_m", r->ankle_drop_m);
+    cJSON_AddNumberToObject(o, "slip_m", r->slip_m);
+    return o;
+}
+
+static int fill_json(FILE *f, const void *user)
+{
+    char *text = cJSON_Print((const cJSON *)user);
+    if (text)
+        fprintf(f, "%s\n", text);
+    free(text);
+    return text != NULL;
+}
+
+/* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
+ * trial.json and the frames, swapped in whole at the end. The frames are framed on the pose the
+ * seed draws. */
+static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
+{
+    static fs_scenario base, placed;
+    fs_error err;
+    if (fs_scenario_load(a->input, a->set, a->nset, &base, &err) != FS_OK || fs_scenario_require(&base, "trial", &err) != FS_OK)
+        return fail(&err);
+    char dir[FS_PATH_MAX + 64];
+    if (a->out)
+        snprintf(dir, sizeof dir, "%s", a->out);
+    else
+        snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base.name, seed);
+    static fs_outdir out;
+    int s = 0;
+    if (fs_outdir_open(&out, dir, cli_trial_files, a->replace, "--out", &err) != FS_OK) {
+        fs_scenario_free(&base);
+        return fail(&err);
+    }
+    cli_frames *frames = NULL;
+    fs_run_observer observer, *obs = NULL;
+    if (a->frames) {
+        if (fs_scenario_copy(&placed, &base, &err) != FS_OK || fs_trial_place(&placed, seed, NULL, &err) != FS_OK)
+            s = fail(&err);
+        if (!s && !(s = cli_frames_open(a, &placed, out.partial, &frames, &observer)))
+            obs = &observer;
+        fs_scenario_free(&placed);
+    }
+    fs_status rs = s ? FS_OK : fs_trial_run_scenario(&base, seed, obs, r, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
+    if (!s && rs == FS_OK && !fstatus) {
+        cJSON *o = trial_json(r);
+        rs = fs_write_in(out.partial, "trial.json", fill_json, o, &err);
+        cJSON_Delete(o);
+        if (rs == FS_OK)
+            rs = fs_outdir_commit(&out, &err);
+    }
+    fs_outdir_abort(&out);
+    fs_scenario_free(&base);
+    if (!s && rs != FS_OK)
+        s = fail(&err);
+    snprintf(dir_out, size, "%s", out.path);
+    return s ? s : fstatus;
+}
+
 int cli_trial(const cli_args *a)
 {
     char *end;
@@ -350,27 +430,16 @@ int cli_trial(const cli_args *a)
         return cli_report(FS_BAD_INPUT, "--seed: give a whole number from 0 to 2147483647");
     fs_trial_result r;
     fs_error err;
-    if (fs_trial_run(a->input, a->set, a->nset, (int)seed, NULL, &r, &err) != FS_OK)
+    char dir[4 * FS_PATH_MAX + 64] = "";
+    if (a->frames || a->out) {
+        int s = trial_in_folder(a, (int)seed, &r, dir, sizeof dir);
+        if (s)
+            return s;
+    } else if (fs_trial_run(a->input, a->set, a->nset, (int)seed, NULL, &r, &err) != FS_OK) {
         return fail(&err);
+    }
     if (a->json) {
-        cJSON *o = cJSON_CreateObject();
-        cJSON_AddNumberToObject(o, "seed", r.draw.seed);
-        cJSON_AddStringToObject(o, "outcome", fs_outcome_name(r.outcome));
-        cJSON_AddStringToObject(o, "rule", fs_rule_name(r.rule));
-        cJSON_AddStringToObject(o, "failure", r.failure);
-        double pose[5] = {r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg};
-        cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
-        cJSON_AddNumberToObject(o, "touchdown_s", r.touchdown_s);
-        cJSON_AddNumberToObject(o, "end_time_s", r.end_time_s);
-        cJSON_AddNumberToObject(o, "peak_tilt_deg", r.peak_tilt_deg);
-        cJSON_AddNumberToObject(o, "final_tilt_deg", r.final_tilt_deg);
-        cJSON_AddNumberToObject(o, "peak_force_N", r.peak_force_N);
-        cJSON_AddNumberToObject(o, "impact_impulse_Ns", r.impact_impulse_Ns);
-        cJSON_AddNumberToObject(o, "settle_time_s", r.settle_time_s);
-        cJSON_AddNumberToObject(o, "mean_contacts", r.mean_contacts);
-        cJSON_AddNumberToObject(o, "final_contacts", r.final_contacts);
-        cJSON_AddNumberToObject(o, "ankle_drop_m", r.ankle_drop_m);
-        cJSON_AddNumberToObject(o, "slip_m", r.slip_m);
+        cJSON *o = trial_json(&r);
         print_json(o);
         cJSON_Delete(o);
     } else {
@@ -387,6 +456,8 @@ int cli_trial(const cli_args *a)
                r.robot_mass_kg, r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg, r.touchdown_s,
                r.end_time_s, r.peak_tilt_deg, r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, rest,
                r.mean_contacts, r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
+        if (dir[0])
+            printf("  results: %s/trial.json%s\n", dir, a->frames ? ", frames/" : "");
     }
     return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
 }

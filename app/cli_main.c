@@ -18,6 +18,7 @@ typedef struct command {
 } command;
 
 const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames", "video.mp4", NULL};
+const char *const cli_trial_files[] = {"trial.json", "frames", "video.mp4", NULL};
 const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
                                           "chart.dat", "chart.gp", NULL};
 const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
@@ -43,9 +44,11 @@ static const command commands[] = {
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
      "  --scenario S gives one); with neither, a summary."},
-    {"trial", cli_trial, "SCENARIO", "--seed --json --set --data",
+    {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --video --set --data",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
-     "  the drawn pose, the outcome (landed or fell) and the metrics."},
+     "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
+     "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json and the frames of exactly\n"
+     "  that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
     {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --data",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"

@@ -40,5 +40,11 @@ check "render-compare" "$fs" render-compare $sl $sl --set b:foot.kind=flat --siz
 check "names both feet" grep -q "biomimetic foot, left.*flat foot, right" "$tmp/out"
 check "compare frames are 128x48" [ "$(png_size "$tmp/cmp/frames/000000.png")" = 128x48 ]
 check "filmstrip: 5 cells of 32x24 by 2 rows" [ "$(png_size "$tmp/cmp/filmstrip.png")" = 160x48 ]
+# a landing trial looked at by its seed: its frames and its result, the same outcome as without frames
+check "trial --frames" "$fs" trial scenarios/landing_trial.ini --seed 3 --frames --size 64x48 --fps 20 --out "$tmp/trial"
+check "trial frames written" [ -s "$tmp/trial/frames/000000.png" ]
+check "trial.json beside them" grep -q '"seed":[[:space:]]*3' "$tmp/trial/trial.json"
+"$fs" trial scenarios/landing_trial.ini --seed 3 --json >"$tmp/plain.json"
+check "the same outcome and rule as without frames" [ "$(grep -E '"(outcome|rule|end_time_s)"' "$tmp/plain.json")" = "$(grep -E '"(outcome|rule|end_time_s)"' "$tmp/trial/trial.json")" ]
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
