@@ -68,8 +68,13 @@ static void explicit_springs_beyond_their_limit_blow_up(void)
         s = fs_sim_step(&sim, &err), steps++;
     CHECK(s == FS_NUMERICAL);
     CHECK(steps < 20);
-    CHECK(fs_check_class_of(sim.check.failure) == FS_CHECK_BLOWN_UP);
-    CHECK(strstr(err.message, "body '") && strstr(err.message, "t = ") && strstr(err.message, "run.step_s"));
+    /* what gives first: a body too fast, or a hinge torn open by the spring forces (with friction
+       bounded by the last step's normal forces, the toes' hinges tear a step before any body passes
+       100 m/s); either way the cause is named: the explicit springs and their limit */
+    CHECK(fs_check_class_of(sim.check.failure) == FS_CHECK_BLOWN_UP || sim.check.failure == FS_CHECK_LOOP);
+    CHECK((strstr(err.message, "body '") || strstr(err.message, "hinge '")) && strstr(err.message, "t = ") &&
+          strstr(err.message, "run.step_s") && strstr(err.message, "explicit springs are stable below") &&
+          strstr(err.message, "run.springs = implicit"));
     fs_sim_destroy(&sim);
     fs_scenario_free(&sc);
 }

@@ -126,6 +126,7 @@ static void build_shapes(fs_sim *sim)
         dGeomSetBody(geom, sim->body[s->body]);
         const fs_vec3 c = g->body[s->body].com;
         dGeomSetOffsetPosition(geom, s->centre.x - c.x, s->centre.y - c.y, s->centre.z - c.z);
+        sim->match_m[sim->nshapes] = s->radius_m / 4; /* far more than a contact moves in a step */
         sim->shape[sim->nshapes++] = geom;
     }
     if (g->has_box) {
@@ -133,6 +134,7 @@ static void build_shapes(fs_sim *sim)
         dGeomSetBody(box, sim->body[0]);
         const fs_vec3 c = g->body[0].com;
         dGeomSetOffsetPosition(box, g->box_centre.x - c.x, g->box_centre.y - c.y, g->box_centre.z - c.z);
+        sim->match_m[sim->nshapes] = fmin(g->box_size.x, g->box_size.y) / 4; /* corners lie farther apart */
         sim->shape[sim->nshapes++] = box;
     }
 }

@@ -197,6 +197,8 @@ static const char *advice(const fs_sim *sim, fs_check_kind kind, char *buf, size
     double limit = fs_check_explicit_step_limit(sim);
     if (d->springs == FS_SPRING_EXPLICIT && isfinite(limit))
         snprintf(springs, sizeof springs, "; explicit springs are stable below about %.1e s here", limit);
+    if (d->springs == FS_SPRING_EXPLICIT && d->step_s > limit) /* whatever gave first, that is the cause */
+        kind = FS_CHECK_SPEED;
     const char *more = kind == FS_CHECK_LOOP ? ", run.stepper = step or more run.iterations"
                        : kind == FS_CHECK_ENERGY
                            ? ", run.springs = implicit, or a larger check.energy_margin_J if something footsim "

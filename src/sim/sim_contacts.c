@@ -135,8 +135,73 @@ static void box_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g)
     }
 }
 
+/* ---- friction bounds ------------------------------------------------------------------------ */
+
+void fs_sim_remember_contacts(fs_sim *sim)
+{
+    gathered *g = sim->scratch;
+    g->prev_n = sim->contacts_now;
+    for (int i = 0; i < sim->contacts_now; i++) {
+        const dReal *f = sim->feedback[i].f1; /* on the shape's body, along the normal when it pushes */
+        double N = f[0] * g->normal[i][0] + f[1] * g->normal[i][1] + f[2] * g->normal[i][2];
+        g->prev_N[i] = isfinite(N) ? fmax(0, N) : -1; /* -1: no force to go by */
+        g->prev_shape[i] = g->shape[i];
+        memcpy(g->prev_pos[i], sim->contact_pos[i], sizeof g->prev_pos[i]);
+        g->share[i] = 0;
+    }
+}
+
+/* For each of shape s's n contacts, the last step's contact of the same shape it continues: the
+ * nearest within match_m (a contact moves by its speed times a step), each shared out among the
+ * contacts that continue it. */
+static void match_contacts(gathered *g, int s, int n, double match_m)
+{
+    for (int i = 0; i < n; i++) {
+        double best = match_m * match_m;
+        g->match[i] = -1;
+        for (int j = 0; j < g->prev_n; j++) {
+            if (g->prev_shape[j] != s || g->prev_N[j] < 0)
+                continue;
+            double d2 = 0;
+            for (int k = 0; k < 3; k++)
+                d2 += (g->c[i].pos[k] - g->prev_pos[j][k]) * (g->c[i].pos[k] - g->prev_pos[j][k]);
+            if (d2 < best)
+                best = d2, g->match[i] = j;
+        }
+        if (g->match[i] >= 0)
+            g->share[g->match[i]]++;
+    }
+}
+
+/* The friction bound of a contact that continues one of the last step's (docs/model.md, Contact):
+ * dContactApprox1 bounds friction by mu times the normal force of the same solve, but ODE's direct
+ * solver (Dantzig) fixes each friction row's bound from the normal forces it has when it reaches
+ * the friction rows, which it takes last: those of the frictionless problem. Once friction enters,
+ * the normal forces change and the bounds do not, so at small steps a toe can slide under friction
+ * well below mu N (or grip beyond it). A continuing contact gets a fixed bound instead: mu times the
+ * normal force ODE gave it in the last step (its share, when several continue one), one step late,
+ * an error of order h. A new contact keeps dContactApprox1: it has no force yet. */
+static void bound_friction(dContact *ct, double N)
+{
+    ct->surface.mode &= ~dContactApprox1;
+    ct->surface.mu *= N;
+}
+
+/* One contact joint of this step between b1 and b2 (b2 0: the terrain), from shape (-1: foot
+ * against foot); its force is recorded after the step. */
+static void add_contact(fs_sim *sim, const dContact *ct, dBodyID b1, dBodyID b2, int shape)
+{
+    gathered *g = sim->scratch;
+    dJointID j = dJointCreateContact(sim->world, sim->contact_group, ct);
+    dJointAttach(j, b1, b2);
+    dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
+    g->shape[sim->contacts_now] = (short)shape;
+    memcpy(g->normal[sim->contacts_now], ct->geom.normal, 3 * sizeof(double));
+    memcpy(sim->contact_pos[sim->contacts_now++], ct->geom.pos, 3 * sizeof(double));
+}
+
 /* Two foot shapes (run.collide = all): bodies joined by a joint are skipped, and whatever touches
- * becomes contact joints between the two bodies. */
+ * becomes contact joints between the two bodies (dContactApprox1: no history is kept for them). */
 static void foot_pair(void *data, dGeomID a, dGeomID b)
 {
     fs_sim *sim = data;
@@ -149,10 +214,7 @@ static void foot_pair(void *data, dGeomID a, dGeomID b)
     for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
         dContact ct = sim->contact_template;
         ct.geom = c[i];
-        dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
-        dJointAttach(j, b1, b2);
-        dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
-        memcpy(sim->contact_pos[sim->contacts_now++], c[i].pos, 3 * sizeof(double));
+        add_contact(sim, &ct, b1, b2, -1);
     }
 }
 
@@ -173,14 +235,13 @@ void fs_sim_collide(fs_sim *sim)
             box_vertex_contacts(t, sim->shape[s], g);
         int n = select_contacts(g, sim->sc->def.max_contacts, merge_m, from_ode);
         dBodyID body = dGeomGetBody(sim->shape[s]);
+        match_contacts(g, s, n, sim->match_m[s]);
         for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
             dContact ct = sim->contact_template;
             ct.geom = g->c[i];
-            dJointID j = dJointCreateContact(sim->world, sim->contact_group, &ct);
-            dJointAttach(j, body, 0);
-            dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
-            memcpy(sim->contact_pos[sim->contacts_now], g->c[i].pos, 3 * sizeof(double));
-            sim->contacts_now++;
+            if (g->match[i] >= 0 && sim->contact_template.surface.mu > 0)
+                bound_friction(&ct, g->prev_N[g->match[i]] / g->share[g->match[i]]);
+            add_contact(sim, &ct, body, 0, s);
         }
     }
     if (sim->sc->def.collide_all) {

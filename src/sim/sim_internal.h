@@ -15,7 +15,20 @@ typedef struct fs_contact_scratch {
     fs_sim *sim;
     int n;
     dContactGeom c[FS_MAX_CONTACTS];
+    /* each contact joint of the step: its shape (-1 foot against foot) and normal, and, kept for
+       the next step's friction bounds, the last step's contacts with their normal forces */
+    short shape[FS_MAX_STEP_CONTACTS];
+    double normal[FS_MAX_STEP_CONTACTS][3];
+    int prev_n;
+    short prev_shape[FS_MAX_STEP_CONTACTS];
+    double prev_pos[FS_MAX_STEP_CONTACTS][3], prev_N[FS_MAX_STEP_CONTACTS];
+    int share[FS_MAX_STEP_CONTACTS];   /* how many of this step's contacts took each one's force */
+    int match[FS_MAX_CONTACTS];        /* this shape's contacts: the last step's contact each continues, or -1 */
 } gathered;
+
+/* Keeps the last step's contacts and the normal force ODE gave each (its feedback), for the next
+ * step's friction bounds; call before the contacts of a step are made (sim_contacts.c). */
+void fs_sim_remember_contacts(fs_sim *sim);
 
 /* Adds the time since the last timed stage ended to stage, when sim is profiled (sim_step.c). */
 void fs_sim_lap(fs_sim *sim, fs_stage stage);

@@ -56,6 +56,7 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
         fs_spring_prepare(&sim->achilles, h);
     fs_sim_lap(sim, FS_STAGE_SPRINGS);
     /* collision: the foot's shapes against the ground, nothing else */
+    fs_sim_remember_contacts(sim);
     sim->contacts_now = 0;
     if (sim->ground)
         fs_sim_collide(sim);

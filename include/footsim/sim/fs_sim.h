@@ -60,6 +60,8 @@ typedef struct fs_sim {
     dVector3 ankle_local;  /* the load's point on the ankle body */
     dVector3 down;         /* unit direction of the load and gravity */
     dContact contact_template;
+    double match_m[FS_MAX_SPHERES + 1]; /* how far a shape's contact may move in a step and still
+                                           continue the last step's (its friction bound) */
     double time_s;
     double load_N;         /* the load's weight; fs_sim_step ramps it in */
     int contacts_now;      /* contact points in the last step */
