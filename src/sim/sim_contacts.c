@@ -187,6 +187,17 @@ static void bound_friction(dContact *ct, double N)
     ct->surface.mu *= N;
 }
 
+/* Whether the contact point leaves the surface faster than SEPARATING_M_PER_S: the last step's
+ * force says nothing of a contact that is coming apart (a foot bounced off a rock), and a bound
+ * from it could hold the point to the surface; such a contact keeps dContactApprox1. */
+static const double SEPARATING_M_PER_S = 0.01;
+static int separating(dBodyID body, const dContactGeom *c)
+{
+    dVector3 v;
+    dBodyGetPointVel(body, c->pos[0], c->pos[1], c->pos[2], v);
+    return v[0] * c->normal[0] + v[1] * c->normal[1] + v[2] * c->normal[2] > SEPARATING_M_PER_S;
+}
+
 /* One contact joint of this step between b1 and b2 (b2 0: the terrain), from shape (-1: foot
  * against foot); its force is recorded after the step. */
 static void add_contact(fs_sim *sim, const dContact *ct, dBodyID b1, dBodyID b2, int shape)
@@ -239,7 +250,7 @@ void fs_sim_collide(fs_sim *sim)
         for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
             dContact ct = sim->contact_template;
             ct.geom = g->c[i];
-            if (g->match[i] >= 0 && sim->contact_template.surface.mu > 0)
+            if (g->match[i] >= 0 && sim->contact_template.surface.mu > 0 && !separating(body, &g->c[i]))
                 bound_friction(&ct, g->prev_N[g->match[i]] / g->share[g->match[i]]);
             add_contact(sim, &ct, body, 0, s);
         }
