@@ -8,9 +8,9 @@ status=$?
 check '[ "$status" -eq 0 ]'
 csv="$tmp/bench/precision.csv"
 check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default$"'
-# 3 steps x 2 steppers: x 2 spring implementations for the chain and the biomimetic foot, x 1 for the flat foot
-check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 30 ]'
-for scene in chain landing_flat landing_biomimetic; do
+# 3 steps x 2 steppers: x 2 spring implementations for the chain and the two biomimetic landings, x 1 for the flat foot
+check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 42 ]'
+for scene in chain landing_flat landing_biomimetic landing_biomimetic_rough; do
   check '[ "$(awk -F, -v s=$scene "\$1 == s && \$15 == 1" "$csv" | wc -l)" -eq 1 ]'
   check '[ "$(awk -F, -v s=$scene "\$1 == s && \$14 == 1" "$csv" | wc -l)" -ge 1 ]'
 done
