@@ -73,10 +73,15 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
                  res->end_time_s);
     else
         snprintf(settled, sizeof settled, "not at rest when the run stopped at t = %.3f s", res->end_time_s);
-    printf("%s: %s foot, %.1f kg at %.0f deg%s: ankle drop %.3f mm, %s\n  results: %s/metrics.json, "
-           "%s/trajectory.csv\n",
-           sc->name, sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", sc->def.load_kg, sc->def.tilt_deg,
-           sc->def.robot.mass_kg > 0 ? ", robot on the ankle" : "", res->ankle_drop_m * 1e3, settled, out.path,
+    /* the load: the scenario's, or for a landing trial run as a plain run its robot on the ankle */
+    char load[160];
+    if (sc->def.robot.mass_kg > 0)
+        snprintf(load, sizeof load, "a %.1f kg robot on the ankle from the nominal pose (no drawn pose or landing "
+                 "rules: `footsim trial` judges a landing)", sc->def.robot.mass_kg);
+    else
+        snprintf(load, sizeof load, "%.1f kg at %.0f deg", sc->def.load_kg, sc->def.tilt_deg);
+    printf("%s: %s foot, %s: ankle drop %.3f mm, %s\n  results: %s/metrics.json, %s/trajectory.csv\n", sc->name,
+           sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", load, res->ankle_drop_m * 1e3, settled, out.path,
            out.path);
     return 0;
 }
