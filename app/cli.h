@@ -69,6 +69,9 @@ struct fs_error;
 int cli_campaign_trials(const struct fs_campaign *c, struct fs_trial_result *results, int jobs, const char *who,
                         struct fs_error *err);
 int cli_compare(const cli_args *a);
+/* plot RUN_DIR|CAMPAIGN_DIR [--out DIR]: a run's time series as DIR/plot.png, or a campaign's chart
+ * drawn again from its summary.json as DIR/success.png (app/cli_plot.c). */
+int cli_plot(const cli_args *a);
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
  * table to --out DIR (default results/bench/), whole or not at all. */

@@ -66,6 +66,11 @@ static const command commands[] = {
      "  baseline's 95 % interval or a median moves further than the baseline's tolerance; exit 2 when\n"
      "  they were made with other seeds, overrides or input files, unless --force (a version that\n"
      "  differs is only reported)."},
+    {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out",
+     "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
+     "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
+     "  against time (script DIR/plot.gp). A campaign's folder: its chart drawn again from summary.json\n"
+     "  as DIR/success.png (chart.dat, chart.gp). DIR is the folder itself unless --out DIR."},
     {"walk", cli_walk, "SCENARIO", "--json --set --data",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
