@@ -307,8 +307,8 @@ static int plot_campaign(const char *dir, const char *out)
         return cli_report(err.status, err.message);
     int s = cli_gnuplot(out, "chart.gp", "success.png", "plot");
     if (!s)
-        printf("%s/success.png: campaign %s, %d feet x %d terrains x %d robots (data %s/chart.dat)\n", out, c.name,
-               c.nfeet, c.nterrains, c.nrobots, out);
+        printf("%s/success.png: campaign %s, %d cells (feet x terrains x robots: %d x %d x %d; data %s/chart.dat)\n",
+               out, c.name, fs_campaign_ncells(&c), c.nfeet, c.nterrains, c.nrobots, out);
     return s;
 }
 
