@@ -66,7 +66,7 @@ static const command commands[] = {
      "  baseline's 95 % interval or a median moves further than the baseline's tolerance; exit 2 when\n"
      "  they were made with other seeds, overrides or input files, unless --force (a version that\n"
      "  differs is only reported)."},
-    {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out",
+    {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out --replace",
      "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
      "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
      "  against time (script DIR/plot.gp). A campaign's folder: its chart drawn again from summary.json\n"
@@ -127,9 +127,10 @@ static void command_help(const command *c)
     if (strstr(c->options, "--data"))
         printf(" [--data DIR]");
     printf("\n\n  %s\n", c->help);
-    if (strstr(c->options, "--replace") && !strcmp(c->name, "bench"))
+    if (strstr(c->options, "--replace") && (!strcmp(c->name, "bench") || !strcmp(c->name, "plot")))
         printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
-               "  without footsim's %s marker or only bench files in it is refused unless --replace.\n", FS_MARKER);
+               "  without footsim's %s marker or only %s files in it is refused unless --replace.\n", FS_MARKER,
+               c->name);
     else if (strstr(c->options, "--replace"))
         printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
                "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",

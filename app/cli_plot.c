@@ -35,20 +35,38 @@ int cli_have_program(const char *name)
     return 0;
 }
 
-int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who)
+/* A gnuplot single-quoted string: a quote doubled. */
+void cli_gp_string(FILE *f, const char *s)
 {
-    char png[2 * FS_PATH_MAX], temp[2 * FS_PATH_MAX + 64], var[2 * FS_PATH_MAX + 96];
-    snprintf(png, sizeof png, "%s/%s", dir, png_name);
+    fputc('\'', f);
+    for (; *s; s++)
+        fputs(*s == '\'' ? "''" : (char[2]){*s, 0}, f);
+    fputc('\'', f);
+}
+
+int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who)
+{
+    char temp[2 * FS_PATH_MAX + 64], abs_temp[PATH_MAX + 2 * FS_PATH_MAX + 64], cwd[PATH_MAX];
+    char var[2 * sizeof abs_temp + 16];
     if (!cli_have_program("gnuplot")) {
         fprintf(stderr, "footsim %s: gnuplot is not installed: no chart %s (apt-get install gnuplot-nox "
                         "draws it; or run 'gnuplot %s' in %s later)\n", who, png, script, dir);
-        return 0;
+        return -1;
     }
     fs_error err;
     if (fs_temp_name(png, temp, sizeof temp, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    /* gnuplot runs in dir: it is given the temporary file's name there */
-    snprintf(var, sizeof var, "out='%s.tmp.%ld'", png_name, (long)getpid());
+    /* gnuplot runs in dir: it is given the temporary file's absolute name */
+    if (temp[0] == '/' || !getcwd(cwd, sizeof cwd))
+        snprintf(abs_temp, sizeof abs_temp, "%s", temp);
+    else
+        snprintf(abs_temp, sizeof abs_temp, "%s/%s", cwd, temp);
+    FILE *v = fmemopen(var, sizeof var, "w");
+    if (!v)
+        return cli_report(FS_NO_MEMORY, "out of memory");
+    fputs("out=", v);
+    cli_gp_string(v, abs_temp);
+    fclose(v);
     fflush(stdout);
     fflush(stderr);
     pid_t pid = fork();
@@ -64,7 +82,7 @@ int cli_gnuplot(const char *dir, const char *script, const char *png_name, const
         remove(temp);
         fprintf(stderr, "footsim %s: gnuplot failed: no chart %s (the data and script %s are in %s)\n", who, png,
                 script, dir);
-        return 0;
+        return -1;
     }
     /* gnuplot says nothing when it could not write all of it (a full disk): the file must be a
      * whole PNG before it joins the results */
@@ -75,19 +93,18 @@ int cli_gnuplot(const char *dir, const char *script, const char *png_name, const
     return 0;
 }
 
+int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who)
+{
+    char png[2 * FS_PATH_MAX];
+    snprintf(png, sizeof png, "%s/%s", dir, png_name);
+    int s = cli_gnuplot_to(dir, script, png, who);
+    return s < 0 ? 0 : s;
+}
+
 /* ---- footsim plot ----------------------------------------------------------------------------- */
 
 /* What plot writes in --out DIR (and may find there from an earlier plot). */
 static const char *const plot_files[] = {"plot.png", "plot.gp", "success.png", "chart.dat", "chart.gp", NULL};
-
-/* A gnuplot single-quoted string: a quote doubled. */
-static void gp_string(FILE *f, const char *s)
-{
-    fputc('\'', f);
-    for (; *s; s++)
-        fputs(*s == '\'' ? "''" : (char[2]){*s, 0}, f);
-    fputc('\'', f);
-}
 
 static int is_file(const char *dir, const char *name)
 {
@@ -240,13 +257,13 @@ static int fill_run_script(FILE *f, const void *user)
     fputs("# A run's time series: 'gnuplot plot.gp' in this folder draws plot.png.\n"
           "if (!exists(\"out\")) out = 'plot.png'\ndata = ",
           f);
-    gp_string(f, t->path);
+    cli_gp_string(f, t->path);
     fprintf(f, "\nset terminal pngcairo size 1200,%d noenhanced font 'sans,10'\nset output out\n"
                "set datafile separator ','\nset datafile columnheaders\n"
                "set multiplot layout %d,2 title ",
             60 + 330 * rows, rows);
-    gp_string(f, t->title);
-    fprintf(f, "\nset grid\nset xlabel 'time (s)'\nset key outside right top samplen 2\n"
+    cli_gp_string(f, t->title);
+    fprintf(f, "\nset grid\nset autoscale xfix\nset xlabel 'time (s)'\nset key outside right top samplen 2\n"
                "set title 'ankle drop: first height minus height (mm)'\nset ylabel 'ankle drop (mm)'\n"
                "plot data using 1:((%.17g - column(%d)) * 1000) with lines lw 2 lc rgb '#1f5fa0' notitle\n"
                "set title 'contact points with the ground'\nset ylabel 'contact points'\nset yrange [0:*]\n"
@@ -289,10 +306,12 @@ static int plot_run(const char *dir, const char *out)
     fs_error err;
     if (fs_write_in(out, "plot.gp", fill_run_script, &t, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    s = cli_gnuplot(out, "plot.gp", "plot.png", "plot");
+    char png[FS_PATH_MAX + 16];
+    snprintf(png, sizeof png, "%s/plot.png", out);
+    s = cli_gnuplot_to(out, "plot.gp", png, "plot");
     if (!s)
-        printf("%s/plot.png: %s (script %s/plot.gp)\n", out, t.title, out);
-    return s;
+        printf("%s: %s (script %s/plot.gp)\n", png, t.title, out);
+    return s < 0 ? 0 : s;
 }
 
 /* A campaign's folder: its chart drawn again from dir/summary.json into out/success.png. */
@@ -305,11 +324,12 @@ static int plot_campaign(const char *dir, const char *out)
     fs_error err;
     if (fs_campaign_reload(path, &c, rows, &err) != FS_OK || fs_campaign_write_chart(&c, rows, out, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    int s = cli_gnuplot(out, "chart.gp", "success.png", "plot");
+    snprintf(path, sizeof path, "%s/success.png", out);
+    int s = cli_gnuplot_to(out, "chart.gp", path, "plot");
     if (!s)
         printf("%s/success.png: campaign %s, %d cells (feet x terrains x robots: %d x %d x %d; data %s/chart.dat)\n",
                out, c.name, fs_campaign_ncells(&c), c.nfeet, c.nterrains, c.nrobots, out);
-    return s;
+    return s < 0 ? 0 : s;
 }
 
 int cli_plot(const cli_args *a)
@@ -335,7 +355,7 @@ int cli_plot(const cli_args *a)
     }
     const char *out = a->out ? a->out : dir;
     fs_error err;
-    if (a->out && fs_outdir_shared(a->out, plot_files, 0, "--out", &err) != FS_OK)
+    if (a->out && fs_outdir_shared(a->out, plot_files, a->replace, "--out", &err) != FS_OK)
         return cli_report(err.status, err.message);
     return campaign ? plot_campaign(dir, out) : plot_run(dir, out);
 }
