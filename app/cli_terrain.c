@@ -71,9 +71,10 @@ static int fill_figure_script(FILE *f, const void *user)
             W, H, FIG_LEFT_PX / W, (FIG_LEFT_PX + g->w) / W, FIG_BOTTOM_PX / H, (FIG_BOTTOM_PX + g->h) / H);
     /* pixel centres at the sampled points: the axes reach half a pixel further */
     fprintf(f, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\nset tics out\nset xlabel 'x (mm)'\n"
-               "set ylabel 'y (mm)'\nset cblabel 'height (mm)'\nset cbrange [%.9g:%.9g]\nset palette defined (",
+               "set ylabel 'y (mm)'\nset cblabel 'height (mm)' offset 1.5,0\nset cbrange [%.9g:%.9g]\nset palette defined (",
             r[0] * 1e3 - sx / 2, r[1] * 1e3 + sx / 2, r[2] * 1e3 - sy / 2, r[3] * 1e3 + sy / 2, g->zrange[0] * 1e3,
-            g->zrange[1] * 1e3);
+            /* level ground is drawn in the lowest colour: the bar then spans 1 mm up from it */
+            g->zrange[1] - g->zrange[0] > 1e-9 ? g->zrange[1] * 1e3 : g->zrange[0] * 1e3 + 1);
     /* the map's colour ramp is linear between these four */
     for (int k = 0; k <= 3; k++) {
         double c[3];
@@ -112,12 +113,17 @@ static int write_figure(const figure *g, const unsigned char *rgb, const char *p
     fs_error err;
     char map[FS_PATH_MAX + 16];
     snprintf(map, sizeof map, "%s/map.png", dir);
-    int s = -1;
-    if (fs_png_write_rgb(map, g->w, g->h, rgb, &err) == FS_OK && fs_write_in(dir, "terrain.gp", fill_figure_script, g, &err) == FS_OK)
-        s = cli_gnuplot_to(dir, "terrain.gp", png, "terrain");
-    else
+    if (fs_png_write_rgb(map, g->w, g->h, rgb, &err) != FS_OK ||
+        fs_write_in(dir, "terrain.gp", fill_figure_script, g, &err) != FS_OK) {
         fprintf(stderr, "footsim terrain: %s: %s is the bare map\n", err.message, png);
-    fs_remove_tree(dir);
+        fs_remove_tree(dir);
+        return -1;
+    }
+    int s = cli_gnuplot_to(dir, "terrain.gp", png, "terrain");
+    if (s < 0) /* gnuplot failed: its message names the folder, left for a look */
+        fprintf(stderr, "footsim terrain: %s is the bare map\n", png);
+    else
+        fs_remove_tree(dir);
     return s;
 }
 

@@ -136,6 +136,8 @@ mkdir -p "$tmp/nognuplot"
 PATH="$tmp/nognuplot" "$fs" terrain terrains/complex_uneven.ini --png "$tmp/bare.png" >/dev/null 2>"$tmp/err.txt"
 check "terrain --png without gnuplot: exit 0, the bare map, said" png_ok "$tmp/bare.png" &&
     grep -q 'the bare map, without axes or colour bar' "$tmp/err.txt"
+"$fs" terrain terrains/flat.ini --png "$tmp/flat.png" >"$tmp/out.txt" 2>&1
+check "terrain --png of level ground: a figure too (a bar 1 mm up from its height)" grep -q 'axes and colour bar in mm' "$tmp/out.txt"
 "$fs" terrain terrains/complex_uneven.ini --png "$tmp/fig.png" >"$tmp/out.txt"
 check "terrain --png exits 0 and says axes in mm" grep -q 'axes and colour bar in mm' "$tmp/out.txt"
 check "terrain --png: a whole PNG" png_ok "$tmp/fig.png"
