@@ -3,6 +3,7 @@
 #define FS_CLI_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 enum { CLI_MAX_SET = 256 };
 
@@ -70,6 +71,9 @@ struct fs_error;
 int cli_campaign_trials(const struct fs_campaign *c, struct fs_trial_result *results, int jobs, const char *who,
                         struct fs_error *err);
 int cli_compare(const cli_args *a);
+/* plot RUN_DIR|CAMPAIGN_DIR [--out DIR]: a run's time series as DIR/plot.png, or a campaign's chart
+ * drawn again from its summary.json as DIR/success.png (app/cli_plot.c). */
+int cli_plot(const cli_args *a);
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
  * table to --out DIR (default results/bench/), whole or not at all. */
@@ -107,6 +111,11 @@ int cli_have_program(const char *name);
  * PNG (fs_png_check): the chart whole or not at all. Without gnuplot, or when it fails, says so
  * (naming `who`) and returns 0; a damaged chart (a full disk) is FS_IO, said. */
 int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who);
+/* The same, the chart going to png (any path; whole or not at all): 0 drawn, -1 not drawn (no
+ * gnuplot, or it failed: said), else the exit status of a damaged chart (FS_IO). */
+int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who);
+/* Writes s to f as a gnuplot single-quoted string. */
+void cli_gp_string(FILE *f, const char *s);
 
 /* Data files (app/cli_data.c). A design, scenario, terrain or campaign path given on the command
  * line that exists as given (or is absolute, or starts with ./ or ../) is used as is; a relative one

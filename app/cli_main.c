@@ -69,6 +69,11 @@ static const command commands[] = {
      "  run.step_s=...), against BASELINE as a reference campaign of the same seeds and inputs: exit 1\n"
      "  unless every cell's success intervals overlap and its medians of impulse, final lean, ankle\n"
      "  drop, settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
+    {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out --replace",
+     "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
+     "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
+     "  against time (script DIR/plot.gp). A campaign's folder: its chart drawn again from summary.json\n"
+     "  as DIR/success.png (chart.dat, chart.gp). DIR is the folder itself unless --out DIR."},
     {"walk", cli_walk, "SCENARIO", "--json --set --data",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
@@ -127,9 +132,10 @@ static void command_help(const command *c)
     if (strstr(c->options, "--data"))
         printf(" [--data DIR]");
     printf("\n\n  %s\n", c->help);
-    if (strstr(c->options, "--replace") && !strcmp(c->name, "bench"))
+    if (strstr(c->options, "--replace") && (!strcmp(c->name, "bench") || !strcmp(c->name, "plot")))
         printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
-               "  without footsim's %s marker or only bench files in it is refused unless --replace.\n", FS_MARKER);
+               "  without footsim's %s marker or only %s files in it is refused unless --replace.\n", FS_MARKER,
+               c->name);
     else if (strstr(c->options, "--replace"))
         printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
                "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",

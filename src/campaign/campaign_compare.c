@@ -12,7 +12,7 @@
 
 /* ---- comparison --------------------------------------------------------------------------- */
 
-static cJSON *read_summary(const char *path, fs_error *err)
+cJSON *campaign_read_summary(const char *path, fs_error *err)
 {
     char *text;
     size_t len;
@@ -29,19 +29,6 @@ static cJSON *read_summary(const char *path, fs_error *err)
         return NULL;
     }
     return root;
-}
-
-static const char *text_of(const cJSON *row, const char *key)
-{
-    const char *s = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(row, key));
-    return s ? s : "?";
-}
-
-/* A number of a row: NAN when it is null or missing. */
-static double number_of(const cJSON *row, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(row, key);
-    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
 /* The row of the same cell: foot, terrain and robot (a summary from before robots has none: "?"). */
@@ -217,11 +204,11 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
 
 /* The two comparisons share reading, provenance and the pairing of rows; `equivalence` picks the
  * rule a pair of rows is judged by. */
-static fs_status compare_mode(const char *result_path, const char *baseline_path, int force,
-                                          int equivalence, FILE *out, fs_error *err)
+static fs_status compare_mode(const char *result_path, const char *baseline_path, int force, int equivalence,
+                              FILE *out, fs_error *err)
 {
-    cJSON *result = read_summary(result_path, err);
-    cJSON *baseline = result ? read_summary(baseline_path, err) : NULL;
+    cJSON *result = campaign_read_summary(result_path, err);
+    cJSON *baseline = result ? campaign_read_summary(baseline_path, err) : NULL;
     if (!baseline) {
         cJSON_Delete(result);
         return FS_BAD_INPUT;

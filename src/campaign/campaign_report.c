@@ -478,12 +478,14 @@ static void heat_map_script(FILE *f, const fs_campaign *c)
                    "     '' index %d using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \\\n"
                    "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black'",
                 title, k, k, k);
-        if (hk == 1) /* the critical height against the first key */
-            fprintf(f, ", \\\n     '' index %d using 1:($2 == %.17g ? $9 : 1/0) with lines lw 2 lc rgb 'black'", k,
-                    value_of(c, 1, 0));
+        /* the critical height against the other key: one point per value of it (a row of the block
+         * each, picked with every, so that the line is not broken by skipped rows), clipped by the
+         * axes' ranges, which the data set */
+        if (hk == 1)
+            fprintf(f, ", \\\n     '' index %d every %d using 1:9 with lines lw 2 lc rgb 'black'", k, c->nvalues[1]);
         else if (hk == 0)
-            fprintf(f, ", \\\n     '' index %d using ($1 == %.17g ? $9 : 1/0):2 with lines lw 2 lc rgb 'black'", k,
-                    value_of(c, 0, 0));
+            fprintf(f, ", \\\n     '' index %d every ::0::%d using 9:2 with lines lw 2 lc rgb 'black'", k,
+                    c->nvalues[1] - 1);
         fputc('\n', f);
     }
     fputs("unset multiplot\n", f);
@@ -500,20 +502,40 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
         heat_map_script(f, c);
         return 1;
     }
-    fprintf(f, "set terminal pngcairo size 960,540 noenhanced font 'sans,11'\n"
+    int n = nseries(c), nt = c->nterrains, longest = 1;
+    for (int t = 0; t < nt; t++)
+        if ((int)strlen(c->terrain[t].name) > longest)
+            longest = (int)strlen(c->terrain[t].name);
+    /* wide enough for every bar (a bar at least 16 px); the legend takes about 300 px */
+    int width = c->nsweep ? 960 : (int)fmax(960, 400 + 16.0 * nt * (n + 1));
+    fprintf(f, "set terminal pngcairo size %d,540 noenhanced font 'sans,11'\n"
                "set output out\n"
                "set title 'Campaign %s: success rate with 95 %% Wilson interval (%d seeds each)'\n"
                "set ylabel 'success rate (landed / trials)'\n"
-               "set yrange [0:1.05]\nset grid ytics\nset key outside right top\n",
-            c->name, c->seeds);
+               "set yrange [-0.05:1.05]\nset ytics 0,0.2,1\nset grid ytics\nset key outside right top\n"
+               "set arrow from graph 0, first 0 to graph 1, first 0 nohead lc rgb 'gray30'\n",
+            width, c->name, c->seeds);
     if (!c->nsweep) {
-        fputs("set style data histogram\nset style histogram errorbars gap 2 lw 1\n"
-              "set style fill solid 0.6 border -1\nset xlabel 'terrain'\nplot ",
-              f);
-        for (int k = 0; k < nseries(c); k++) {
+        /* bars drawn as boxes at known places (not gnuplot's histogram), so that a rate of zero gets
+         * a thin bar under the zero line in its colour, with its interval (a vector from low to high:
+         * error bars would leave a hole at the rate); terrain names turned when
+         * they are wider than their group of bars (about 7.5 px a character at 11 pt) */
+        double group_px = (width - 400.0) / nt, bar = 0.8 / n;
+        fprintf(f, "set xrange [-0.6:%d.4]\nset xtics scale 0%s\nset boxwidth %.6g absolute\n"
+                   "set style fill solid 0.6 border -1\nset xlabel 'terrain'\n"
+                   "set label \"a thin bar under the zero line:\\nno trial landed\" at graph 1.03, graph 0.05 "
+                   "font 'sans,9' tc rgb 'gray30'\nplot ",
+                nt - 1, 7.5 * longest > 0.9 * group_px ? " rotate by 30 right" : "", bar);
+        for (int k = 0; k < n; k++) {
             series_title(c, k, title, sizeof title);
-            fprintf(f, "%s'chart.dat' using %d:%d:%d%s title '%s'", k ? ", \\\n     " : "", 2 + 3 * k, 3 + 3 * k,
-                    4 + 3 * k, k ? "" : ":xtic(1)", title);
+            double off = -0.4 + (k + 0.5) * bar;
+            int rate = 2 + 3 * k;
+            fprintf(f, "%s'chart.dat' using ($0%+.6g):%d%s with boxes lc %d title '%s', \\\n"
+                       "     '' using ($0%+.6g):(column(%d) == 0 ? -0.025 : 1/0) with boxes lc %d notitle, \\\n"
+                       "     '' using ($0%+.6g):%d:(0):(column(%d) - column(%d)) with vectors heads size screen 0.004,90 "
+                       "lw 1 lc rgb 'black' notitle",
+                    k ? ", \\\n     " : "", off, rate, k ? "" : ":xtic(1)", k + 1, title, off, rate, k + 1, off,
+                    rate + 1, rate + 2, rate + 1);
         }
         fputc('\n', f);
         return 1;

@@ -21,6 +21,10 @@ static void name_columns(fs_run_result *res, const fs_foot_geom *g)
         snprintf(res->hinge_col[i], sizeof res->hinge_col[i], "%s_rad", g->hinge[i].name);
         res->col_name[res->ncols++] = res->hinge_col[i];
     }
+    for (int i = 0; i < g->nsprings; i++) {
+        snprintf(res->spring_col[i], sizeof res->spring_col[i], "%s_N", g->spring[i].name);
+        res->col_name[res->ncols++] = res->spring_col[i];
+    }
 }
 
 static void log_row(fs_run_result *res, const fs_sim *sim)
@@ -36,6 +40,8 @@ static void log_row(fs_run_result *res, const fs_sim *sim)
     row[4] = sim->contacts_now;
     for (int i = 0; i < sim->geom->nhinges; i++)
         row[5 + i] = fs_sim_hinge_angle(sim, i);
+    for (int i = 0; i < sim->geom->nsprings; i++)
+        row[5 + sim->geom->nhinges + i] = fs_spring_measure(&sim->spring[i]).force_N;
     res->nrows++;
 }
 

@@ -58,3 +58,5 @@ void fs_terrain_map(const fs_terrain *t, const double region[4], const double *o
     zrange[0] = lo;
     zrange[1] = hi;
 }
+
+void fs_terrain_map_colour(double u, double rgb[3]) { colour(u, rgb); }

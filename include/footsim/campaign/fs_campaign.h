@@ -161,6 +161,13 @@ fs_status fs_campaign_write_summary(const fs_campaign *c, const fs_campaign_row 
  * CI whiskers, or for a sweep each foot's rate and CI band against the swept value. */
 fs_status fs_campaign_write_chart(const fs_campaign *c, const fs_campaign_row *rows, const char *dir, fs_error *err);
 
+/* Reads back from a summary.json (path) what fs_campaign_write_chart needs: c's name, seeds, swept
+ * keys, feet, terrains (with their swept values) and robots, and rows[fs_campaign_ncells(c)] (rates,
+ * intervals, the law's prediction; medians NAN). Nothing else of c is set (c->pair is NULL).
+ * rows must hold FS_CAMPAIGN_MAX_FEET x FS_CAMPAIGN_MAX_TERRAINS x FS_CAMPAIGN_MAX_ROBOTS rows.
+ * FS_BAD_INPUT (said) when the file is not a campaign's summary. */
+fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *rows, fs_error *err);
+
 /* Checks every expectation, printing each with its numbers to out; returns how many failed. */
 int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *out);
 

@@ -10,7 +10,9 @@
 #include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
-enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES };
+/* trajectory columns: t_s, the ankle's x, y, z (m), contacts, each hinge's angle (NAME_rad), each
+ * spring-damper's force (NAME_N, positive in tension) */
+enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES + FS_MAX_SPRINGS };
 
 /* The most memory a run's trajectory may take (docs/keys.md); a run asking for more is refused
  * (FS_BAD_INPUT) before its first step. */
@@ -32,6 +34,7 @@ typedef struct fs_run_result {
     int ncols, nrows, capacity;
     const char *col_name[FS_TRAJ_MAX_COLS]; /* point into the fixed names or hinge_col */
     char hinge_col[FS_MAX_HINGES][48];      /* the hinge columns' names, owned by the result */
+    char spring_col[FS_MAX_SPRINGS][48];    /* the spring columns' names, owned by the result */
     double *rows;
 } fs_run_result;
 

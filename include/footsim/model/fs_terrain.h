@@ -100,6 +100,10 @@ void fs_terrain_free(fs_terrain *t);
 /* Whether a section belongs to terrain files (for routing --set overrides). */
 int fs_terrain_has_section(const char *section, size_t len);
 
+/* The colour fs_terrain_map gives a height a fraction u (0 lowest, 1 highest) of the way up, on
+ * level ground (unshaded), 0-255 per channel: for a colour bar. */
+void fs_terrain_map_colour(double u, double rgb[3]);
+
 #endif
 
 /* A shaded top-down picture of the surface over region [xmin, xmax, ymin, ymax]: heights as
