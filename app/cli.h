@@ -18,6 +18,8 @@ typedef struct cli_args {
     int frames;                     /* --frames: write DIR/frames/NNNNNN.png */
     const char *fps, *size, *camera;/* --fps N, --size WxH, --camera NAME (as given; checked by the renderer) */
     int video;                      /* --video: also DIR/video.mp4 */
+    const char *exaggerate;         /* --exaggerate F: displacements from the neutral pose times F */
+    const char *frames_of;          /* --frames-of SELECTORS: frames of chosen campaign trials */
     const char *height_x, *height_y;/* --height X Y */
     const char *png;                /* --png FILE */
     const char *scenario;           /* --scenario FILE */
@@ -48,7 +50,7 @@ int cli_render_compare(const cli_args *a);
  * without the marker, is recognised by these (fs_outdir_open). */
 extern const char *const cli_run_files[], *const cli_campaign_files[], *const cli_compare_files[];
 extern const char *const cli_optimize_files[]; /* app/cli_optimize.c */
-extern const char *const cli_trial_files[];
+extern const char *const cli_trial_files[], *const cli_walk_files[];
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);
