@@ -41,6 +41,23 @@ typedef struct cli_frames cli_frames;
 int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
                     fs_run_observer *obs);
 int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir);
+/* The same with the frames straight in frames_dir (made already); no video. */
+int cli_frames_open_at(const cli_args *a, const fs_scenario *sc, const char *frames_dir, cli_frames **frames,
+                       fs_run_observer *obs);
+/* Checks the frame options for sc and that frames can be drawn, before anything is simulated. */
+int cli_frames_check(const cli_args *a, const fs_scenario *sc);
+
+/* campaign --frames-of (app/cli_frames_of.c): cli_frames_of_open checks the selectors against the
+ * campaign and the frame options before any trial runs (NULL and 0 without --frames-of);
+ * cli_frames_of_write draws each chosen trial (run again, alone, as the campaign ran it) into
+ * dir/frames/<foot>-<terrain>-<robot>-seed<N>/ (shown_dir: what the folder will be called) and
+ * frees (f may be NULL). Neither changes any result. */
+typedef struct fs_campaign fs_campaign;
+typedef struct fs_trial_result fs_trial_result;
+typedef struct cli_frames_of cli_frames_of;
+int cli_frames_of_open(const cli_args *a, const fs_campaign *c, cli_frames_of **f);
+int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_result *results, const char *dir,
+                        const char *shown_dir);
 
 /* render-compare A B: both runs side by side in DIR/frames/, and DIR/filmstrip.png
  * (app/cli_compare.c; app/cli_render.c without the renderer: exit 2). */

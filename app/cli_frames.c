@@ -196,6 +196,7 @@ struct cli_frames {
     fs_render_view view;
     char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
     int n;           /* frames written */
+    int flat;        /* 1: the frames straight in dir (cli_frames_open_at) */
     fs_scene scene;  /* the snapshot, reused for each frame */
     fs_scene neutral;/* the first snapshot: the pose --exaggerate measures displacements from */
     fs_scene drawn;  /* the snapshot as drawn (exaggerated) */
@@ -219,31 +220,67 @@ static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
     return cli_frames_write(f->r, f->frames_dir, f->n++, err);
 }
 
-int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
-                    fs_run_observer *obs)
+/* The frame options for sc, checked (frames it would draw included). */
+static int frames_opts(const cli_args *a, const fs_scenario *sc, cli_frame_opts *o)
+{
+    int s = cli_frame_opts_parse(a, sc->def.step_s, 1, o);
+    double duration_s = sc->def.kind == FS_SCENARIO_WALK ? sc->def.walk_steps * sc->def.walk_period_s : sc->def.duration_s;
+    if (!s && floor(duration_s * o->fps) + 2 > CLI_MAX_FRAMES)
+        s = cli_report(FS_BAD_INPUT, "--fps: the run's duration x fps asks for more than 999999 frames (six-digit "
+                                     "names); lower --fps or shorten the run");
+    return s;
+}
+
+int cli_frames_check(const cli_args *a, const fs_scenario *sc)
+{
+    cli_frame_opts o;
+    fs_render *r = NULL;
+    int s = frames_opts(a, sc, &o);
+    if (!s)
+        s = cli_render_open(&r, 1, 1, 1); /* OSMesa is there */
+    fs_render_close(r);
+    return s;
+}
+
+int cli_frames_open_at(const cli_args *a, const fs_scenario *sc, const char *frames_dir, cli_frames **frames,
+                       fs_run_observer *obs)
 {
     *frames = NULL;
     cli_frames *f = calloc(1, sizeof *f);
     if (!f)
         return cli_report(FS_NO_MEMORY, "out of memory");
-    int s = cli_frame_opts_parse(a, sc->def.step_s, 1, &f->o);
-    double duration_s = sc->def.kind == FS_SCENARIO_WALK ? sc->def.walk_steps * sc->def.walk_period_s : sc->def.duration_s;
-    if (!s && floor(duration_s * f->o.fps) + 2 > CLI_MAX_FRAMES)
-        s = cli_report(FS_BAD_INPUT, "--fps: the run's duration x fps asks for more than 999999 frames (six-digit "
-                                     "names); lower --fps or shorten the run");
-    if (!s && snprintf(f->dir, sizeof f->dir, "%s", dir) >= (int)sizeof f->dir)
+    int s = frames_opts(a, sc, &f->o);
+    if (!s && (snprintf(f->dir, sizeof f->dir, "%s", frames_dir) >= (int)sizeof f->dir ||
+               snprintf(f->frames_dir, sizeof f->frames_dir, "%s", frames_dir) >= (int)sizeof f->frames_dir))
         s = cli_report(FS_BAD_INPUT, "--out: path too long");
-    if (!s)
-        s = cli_frames_folder(dir, f->frames_dir, sizeof f->frames_dir);
     if (!s)
         s = cli_render_open(&f->r, f->o.width, f->o.height, f->o.exaggerate);
     if (s) {
         free(f);
         return s;
     }
+    f->flat = 1;
     *obs = (fs_run_observer){.interval_s = 1 / f->o.fps, .fn = draw_frame, .user = f};
     *frames = f;
     return 0;
+}
+
+int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
+                    fs_run_observer *obs)
+{
+    *frames = NULL;
+    cli_frame_opts o;
+    char frames_dir[CLI_FRAMES_PATH];
+    int s = frames_opts(a, sc, &o); /* before the folder is made */
+    if (!s)
+        s = cli_frames_folder(dir, frames_dir, sizeof frames_dir);
+    if (!s)
+        s = cli_frames_open_at(a, sc, frames_dir, frames, obs);
+    if (!s) {
+        (*frames)->flat = 0;
+        snprintf((*frames)->dir, sizeof (*frames)->dir, "%s", dir); /* shorter than frames_dir */
+    }
+    return s;
 }
 
 int cli_frames_close(cli_frames *f, int ok, const char *shown_dir)
@@ -252,8 +289,8 @@ int cli_frames_close(cli_frames *f, int ok, const char *shown_dir)
         return 0;
     int s = 0;
     if (ok) {
-        printf("  frames: %s/frames/000000.png ... %06d.png (%d at %g per simulated second, %dx%d, camera %s",
-               shown_dir, f->n - 1, f->n, f->o.fps, f->o.width, f->o.height, fs_render_camera_names[f->o.camera]);
+        printf("  frames: %s%s/000000.png ... %06d.png (%d at %g per simulated second, %dx%d, camera %s",
+               shown_dir, f->flat ? "" : "/frames", f->n - 1, f->n, f->o.fps, f->o.width, f->o.height, fs_render_camera_names[f->o.camera]);
         if (f->o.exaggerate != 1)
             printf(", displacements x%g from the first frame's pose, said on each frame", f->o.exaggerate);
         printf(")\n");

@@ -434,14 +434,16 @@ static void set_lighting(void)
 /* Text scale for a viewport: 1 up to 480 px tall, then a step per 480 px. */
 static int text_scale(int w, int h) { return (int)fmax(1, fmin(h / 480, w / 640)); }
 
-/* Time, scenario, foot, terrain and the note, one line along the viewport's top on a thin strip. */
+/* Time, the note, scenario, foot and terrain, one line along the viewport's top on a thin strip. */
 static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, int w, int h)
 {
     static const unsigned char white[3] = {255, 255, 255};
     int scale = text_scale(w, h);
     char text[256];
-    snprintf(text, sizeof text, "T %.3f S  %s  %s  %s%s%s", scene->time_s, scene->scenario ? scene->scenario : "-",
-             scene->foot ? scene->foot : "-", scene->terrain ? scene->terrain : "-", r->note[0] ? "  " : "", r->note);
+    /* the note (an exaggeration) before the names: cut off last on a narrow tile */
+    snprintf(text, sizeof text, "T %.3f S  %s%s%s  %s  %s", scene->time_s, r->note, r->note[0] ? "  " : "",
+             scene->scenario ? scene->scenario : "-", scene->foot ? scene->foot : "-",
+             scene->terrain ? scene->terrain : "-");
     int pad = 2 * scale, bw = (int)strlen(text) * 6 * scale + 2 * pad - scale, bh = 7 * scale + 2 * pad;
     render_shade_box(r, x0, y0, bw < w ? bw : w, bh < h ? bh : h, 0.45);
     render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
