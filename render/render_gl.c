@@ -444,7 +444,10 @@ static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, in
     snprintf(text, sizeof text, "T %.3f S  %s%s%s  %s  %s", scene->time_s, r->note, r->note[0] ? "  " : "",
              scene->scenario ? scene->scenario : "-", scene->foot ? scene->foot : "-",
              scene->terrain ? scene->terrain : "-");
-    int pad = 2 * scale, bw = (int)strlen(text) * 6 * scale + 2 * pad - scale, bh = 7 * scale + 2 * pad;
+    int pad = 2 * scale, fit = (w - 2 * pad) / (6 * scale);
+    if (fit >= 0 && (size_t)fit < strlen(text))
+        text[fit] = 0; /* cut at the tile's edge, not into its neighbour */
+    int bw = (int)strlen(text) * 6 * scale + 2 * pad - scale, bh = 7 * scale + 2 * pad;
     render_shade_box(r, x0, y0, bw < w ? bw : w, bh < h ? bh : h, 0.45);
     render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
 }
