@@ -31,9 +31,9 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     fs_error err;
     if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "run", &err) != FS_OK)
         return fail(&err);
-    if (!a->frames && (a->fps || a->size || a->camera))
+    if (!a->frames && (a->fps || a->size || a->camera || a->exaggerate))
         fprintf(stderr, "footsim run: warning: %s is unused without --frames; add --frames to draw frames\n",
-                a->fps ? "--fps" : a->size ? "--size" : "--camera");
+                a->fps ? "--fps" : a->size ? "--size" : a->camera ? "--camera" : "--exaggerate");
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);

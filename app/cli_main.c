@@ -148,6 +148,17 @@ static void command_help(const command *c)
                "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
 }
 
+/* Whether the space-separated options list names option as a whole word (--frames is not
+ * --frames-of). */
+static int takes_option(const char *options, const char *option)
+{
+    size_t n = strlen(option);
+    for (const char *p = strstr(options, option); p; p = strstr(p + 1, option))
+        if ((p == options || p[-1] == ' ') && (p[n] == ' ' || p[n] == 0))
+            return 1;
+    return 0;
+}
+
 /* Parses argv after the command name into a, refusing what c does not take. */
 static int parse_args(const command *c, int argc, char **argv, cli_args *a)
 {
@@ -165,7 +176,7 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
             return 2;
         }
-        if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
+        if (arg[0] == '-' && arg[1] == '-' && !takes_option(c->options, arg)) {
             fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
                     *c->options ? c->options : "no options");
             return 2;

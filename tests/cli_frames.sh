@@ -82,8 +82,8 @@ file = $PWD/scenarios/feet/biomimetic.ini
 [terrain.flat]
 file = $PWD/terrains/flat.ini
 EOF
-check "campaign" "$fs" campaign "$tmp/small.ini" -j 2 --out "$tmp/camp1"
-check "campaign --frames-of" "$fs" campaign "$tmp/small.ini" -j 2 --out "$tmp/camp2" --frames-of foot=bio,seed=2 --size 64x48 --fps 10
+check "campaign" "$fs" campaign "$tmp/small.ini" -j 2 --set run.duration_s=0.3 --out "$tmp/camp1"
+check "campaign --frames-of" "$fs" campaign "$tmp/small.ini" -j 2 --set run.duration_s=0.3 --out "$tmp/camp2" --frames-of foot=bio,seed=2 --size 64x48 --fps 10
 check "the chosen trial's frames" [ -s "$tmp/camp2/frames/bio-flat-drop_weight-seed2/000000.png" ]
 check "no other trial's" [ "$(ls "$tmp/camp2/frames")" = bio-flat-drop_weight-seed2 ]
 for f in summary.md summary.csv summary.json trials.csv chart.dat; do
