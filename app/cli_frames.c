@@ -121,7 +121,7 @@ void cli_frame_legend(fs_render *r, int x0, int y0, int w, int h)
 {
     /* the legend in the bottom-right corner, when the frame is wide enough to keep it off the
      * scale bar (bottom-left) */
-    int lh = 12 * (int)fmax(1, fmin(h / 480, w / 640)), lw = 340 * lh / 12;
+    int lh = 12 * (int)fmax(1, fmin(h / 360, w / 640)), lw = 340 * lh / 12;
     if (w >= lw + w / 3)
         fs_render_legend(r, x0 + w - lw, y0 + h - lh - 2, lw, lh);
 }

@@ -431,8 +431,8 @@ static void set_lighting(void)
     gl.ShadeModel(GL_SMOOTH);
 }
 
-/* Text scale for a viewport: 1 up to 480 px tall, then a step per 480 px. */
-static int text_scale(int w, int h) { return (int)fmax(1, fmin(h / 480, w / 640)); }
+/* Text scale for a viewport: 1 up to 720 px tall (or 1280 wide), then a step per 360 px. */
+static int text_scale(int w, int h) { return (int)fmax(1, fmin(h / 360, w / 640)); }
 
 /* Time, the note, scenario, foot and terrain, one line along the viewport's top on a thin strip. */
 static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, int w, int h)
@@ -483,7 +483,7 @@ int fs_render_legend(fs_render *r, int x0, int y0, int w, int h)
     static const unsigned char ink[3] = {20, 20, 24};
     static const char *const words[4] = {"SPRING TENSION", "COMPRESSION", "CONTACT FORCE", "LOAD"};
     const float *colour[4] = {TENSION_RGB, COMPRESSION_RGB, FORCE_RGB, ANKLE_RGB};
-    int scale = (int)fmax(1, fmin(h / 12, w / 420)), x = x0 + 3 * scale, cy = y0 + h / 2;
+    int scale = (int)fmax(1, fmin(h / 12, w / 340)), x = x0 + 3 * scale, cy = y0 + h / 2;
     for (int i = 0; i < 4; i++) {
         int sw = 8 * scale;
         render_fill_box(r, x, cy - 2 * scale, sw, 4 * scale, colour[i]);
