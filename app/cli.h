@@ -19,6 +19,8 @@ typedef struct cli_args {
     int frames;                     /* --frames: write DIR/frames/NNNNNN.png */
     const char *fps, *size, *camera;/* --fps N, --size WxH, --camera NAME (as given; checked by the renderer) */
     int video;                      /* --video: also DIR/video.mp4 */
+    const char *exaggerate;         /* --exaggerate F: displacements from the neutral pose times F */
+    const char *frames_of;          /* --frames-of SELECTORS: frames of chosen campaign trials */
     const char *height_x, *height_y;/* --height X Y */
     const char *png;                /* --png FILE */
     const char *scenario;           /* --scenario FILE */
@@ -41,6 +43,23 @@ typedef struct cli_frames cli_frames;
 int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
                     fs_run_observer *obs);
 int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir);
+/* The same with the frames straight in frames_dir (made already); no video. */
+int cli_frames_open_at(const cli_args *a, const fs_scenario *sc, const char *frames_dir, cli_frames **frames,
+                       fs_run_observer *obs);
+/* Checks the frame options for sc and that frames can be drawn, before anything is simulated. */
+int cli_frames_check(const cli_args *a, const fs_scenario *sc);
+
+/* campaign --frames-of (app/cli_frames_of.c): cli_frames_of_open checks the selectors against the
+ * campaign and the frame options before any trial runs (NULL and 0 without --frames-of);
+ * cli_frames_of_write draws each chosen trial (run again, alone, as the campaign ran it) into
+ * dir/frames/<foot>-<terrain>-<robot>-seed<N>/ (shown_dir: what the folder will be called) and
+ * frees (f may be NULL). Neither changes any result. */
+typedef struct fs_campaign fs_campaign;
+typedef struct fs_trial_result fs_trial_result;
+typedef struct cli_frames_of cli_frames_of;
+int cli_frames_of_open(const cli_args *a, const fs_campaign *c, cli_frames_of **f);
+int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_result *results, const char *dir,
+                        const char *shown_dir);
 
 /* render-compare A B: both runs side by side in DIR/frames/, and DIR/filmstrip.png
  * (app/cli_compare.c; app/cli_render.c without the renderer: exit 2). */
@@ -50,7 +69,7 @@ int cli_render_compare(const cli_args *a);
  * without the marker, is recognised by these (fs_outdir_open). */
 extern const char *const cli_run_files[], *const cli_campaign_files[], *const cli_compare_files[];
 extern const char *const cli_optimize_files[]; /* app/cli_optimize.c */
-extern const char *const cli_trial_files[];
+extern const char *const cli_trial_files[], *const cli_walk_files[];
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);

@@ -207,6 +207,13 @@ int cli_campaign(const cli_args *a)
     }
     int ntrials = fs_campaign_ntrials(&c);
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
+    cli_frames_of *frames_of = NULL; /* --frames-of (app/cli_frames_of.c): checked before any trial */
+    if (results && (s = cli_frames_of_open(a, &c, &frames_of))) {
+        fs_outdir_abort(&out);
+        free(results);
+        fs_campaign_free(&c);
+        return s;
+    }
     if (!results) {
         fs_outdir_abort(&out);
         fs_campaign_free(&c);
@@ -214,7 +221,7 @@ int cli_campaign(const cli_args *a)
     }
     if (cli_campaign_trials(&c, results, jobs, "footsim campaign", &err) != FS_OK)
         s = fail(&err);
-    else
+    else if (!(s = cli_frames_of_write(frames_of, &c, results, out.partial, out.path)))
         s = finish(&c, results, &out);
     fs_outdir_abort(&out); /* when it was not committed */
     free(results);

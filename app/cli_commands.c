@@ -31,9 +31,9 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     fs_error err;
     if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "run", &err) != FS_OK)
         return fail(&err);
-    if (!a->frames && (a->fps || a->size || a->camera))
+    if (!a->frames && (a->fps || a->size || a->camera || a->exaggerate))
         fprintf(stderr, "footsim run: warning: %s is unused without --frames; add --frames to draw frames\n",
-                a->fps ? "--fps" : a->size ? "--size" : "--camera");
+                a->fps ? "--fps" : a->size ? "--size" : a->camera ? "--camera" : "--exaggerate");
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);
@@ -409,6 +409,61 @@ static int fill_json(FILE *f, const void *user)
     return text != NULL;
 }
 
+/* A command's results in a folder of its own: run(user, observer) with frames of framed (when
+ * --frames), then name (the result as JSON, to_json(result)) beside them, swapped in whole at the
+ * end; dir_out gets the folder as shown. */
+typedef struct folder_job {
+    const char *dir;                 /* the folder asked for */
+    const char *const *files;        /* what the command writes there (fs_outdir_open) */
+    const fs_scenario *framed;       /* the scenario the frames are framed on */
+    fs_status (*run)(void *user, const fs_run_observer *obs, fs_error *err);
+    void *user;
+    const char *name;                /* the JSON file */
+    cJSON *(*to_json)(const void *result);
+    const void *result;
+} folder_job;
+
+static int in_folder(const cli_args *a, const folder_job *j, char *dir_out, size_t size)
+{
+    static fs_outdir out;
+    fs_error err;
+    if (fs_outdir_open(&out, j->dir, j->files, a->replace, "--out", &err) != FS_OK)
+        return fail(&err);
+    cli_frames *frames = NULL;
+    fs_run_observer observer, *obs = NULL;
+    int s = 0;
+    if (a->frames && !(s = cli_frames_open(a, j->framed, out.partial, &frames, &observer)))
+        obs = &observer;
+    fs_status rs = s ? FS_OK : j->run(j->user, obs, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
+    if (!s && rs == FS_OK && !fstatus) {
+        cJSON *o = j->to_json(j->result);
+        rs = fs_write_in(out.partial, j->name, fill_json, o, &err);
+        cJSON_Delete(o);
+        if (rs == FS_OK)
+            rs = fs_outdir_commit(&out, &err);
+    }
+    fs_outdir_abort(&out);
+    if (!s && rs != FS_OK)
+        s = fail(&err);
+    snprintf(dir_out, size, "%s", out.path);
+    return s ? s : fstatus;
+}
+
+typedef struct trial_job {
+    const fs_scenario *sc;
+    int seed;
+    fs_trial_result *r;
+} trial_job;
+
+static fs_status run_trial_job(void *user, const fs_run_observer *obs, fs_error *err)
+{
+    trial_job *t = user;
+    return fs_trial_run_scenario(t->sc, t->seed, obs, t->r, err);
+}
+
+static cJSON *trial_json_of(const void *r) { return trial_json(r); }
+
 /* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
  * trial.json and the frames, swapped in whole at the end. The frames are framed on the pose the
  * seed draws. */
@@ -423,36 +478,17 @@ static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char
         snprintf(dir, sizeof dir, "%s", a->out);
     else
         snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base.name, seed);
-    static fs_outdir out;
     int s = 0;
-    if (fs_outdir_open(&out, dir, cli_trial_files, a->replace, "--out", &err) != FS_OK) {
-        fs_scenario_free(&base);
-        return fail(&err);
-    }
-    cli_frames *frames = NULL;
-    fs_run_observer observer, *obs = NULL;
-    if (a->frames) {
-        if (fs_scenario_copy(&placed, &base, &err) != FS_OK || fs_trial_place(&placed, seed, NULL, &err) != FS_OK)
-            s = fail(&err);
-        if (!s && !(s = cli_frames_open(a, &placed, out.partial, &frames, &observer)))
-            obs = &observer;
-        fs_scenario_free(&placed);
-    }
-    fs_status rs = s ? FS_OK : fs_trial_run_scenario(&base, seed, obs, r, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
-    if (!s && rs == FS_OK && !fstatus) {
-        cJSON *o = trial_json(r);
-        rs = fs_write_in(out.partial, "trial.json", fill_json, o, &err);
-        cJSON_Delete(o);
-        if (rs == FS_OK)
-            rs = fs_outdir_commit(&out, &err);
-    }
-    fs_outdir_abort(&out);
-    fs_scenario_free(&base);
-    if (!s && rs != FS_OK)
+    if (a->frames && (fs_scenario_copy(&placed, &base, &err) != FS_OK || fs_trial_place(&placed, seed, NULL, &err) != FS_OK))
         s = fail(&err);
-    snprintf(dir_out, size, "%s", out.path);
-    return s ? s : fstatus;
+    trial_job t = {&base, seed, r};
+    folder_job j = {dir, cli_trial_files, &placed, run_trial_job, &t, "trial.json", trial_json_of, r};
+    if (!s)
+        s = in_folder(a, &j, dir_out, size);
+    if (a->frames)
+        fs_scenario_free(&placed);
+    fs_scenario_free(&base);
+    return s;
 }
 
 int cli_trial(const cli_args *a)
@@ -497,6 +533,31 @@ int cli_trial(const cli_args *a)
 
 /* ---- walk ------------------------------------------------------------------------------------- */
 
+static cJSON *walk_json(const void *result)
+{
+    const fs_walk_result *r = result;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "steps_completed", r->steps_completed);
+    cJSON_AddNumberToObject(o, "falls", r->falls);
+    cJSON_AddNumberToObject(o, "rough_steps", r->rough_steps);
+    cJSON_AddNumberToObject(o, "rough_contacts_mean", r->rough_contacts_mean);
+    cJSON_AddNumberToObject(o, "flat_contacts_mean", r->flat_contacts_mean);
+    cJSON_AddNumberToObject(o, "peak_force_N", r->peak_force_N);
+    cJSON_AddNumberToObject(o, "peak_tilt_deg", r->peak_tilt_deg);
+    return o;
+}
+
+typedef struct walk_job {
+    const fs_scenario *sc;
+    fs_walk_result *r;
+} walk_job;
+
+static fs_status run_walk_job(void *user, const fs_run_observer *obs, fs_error *err)
+{
+    walk_job *w = user;
+    return fs_walk_run(w->sc, obs, w->r, err);
+}
+
 int cli_walk(const cli_args *a)
 {
     static fs_scenario sc;
@@ -504,21 +565,27 @@ int cli_walk(const cli_args *a)
     if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK || fs_scenario_require(&sc, "walk", &err) != FS_OK)
         return fail(&err);
     fs_walk_result r;
-    fs_status s = fs_walk_run(&sc, NULL, &r, &err);
     const char *foot = sc.geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
+    char dir[FS_PATH_MAX + 64], shown[4 * FS_PATH_MAX + 64] = "";
+    int s = 0;
+    if (a->frames || a->out) {
+        /* a folder of its own (default results/walks/NAME/): walk.json and the frames, whole */
+        if (a->out)
+            snprintf(dir, sizeof dir, "%s", a->out);
+        else
+            snprintf(dir, sizeof dir, "results/walks/%s", sc.name);
+        walk_job w = {&sc, &r};
+        folder_job j = {dir, cli_walk_files, &sc, run_walk_job, &w, "walk.json", walk_json, &r};
+        s = in_folder(a, &j, shown, sizeof shown);
+    } else if (fs_walk_run(&sc, NULL, &r, &err) != FS_OK) {
+        s = fail(&err);
+    }
     fs_scenario_free(&sc);
-    if (s != FS_OK)
-        return fail(&err);
+    if (s)
+        return s;
     if (a->json) {
-        cJSON *o = cJSON_CreateObject();
+        cJSON *o = walk_json(&r);
         cJSON_AddStringToObject(o, "foot", foot);
-        cJSON_AddNumberToObject(o, "steps_completed", r.steps_completed);
-        cJSON_AddNumberToObject(o, "falls", r.falls);
-        cJSON_AddNumberToObject(o, "rough_steps", r.rough_steps);
-        cJSON_AddNumberToObject(o, "rough_contacts_mean", r.rough_contacts_mean);
-        cJSON_AddNumberToObject(o, "flat_contacts_mean", r.flat_contacts_mean);
-        cJSON_AddNumberToObject(o, "peak_force_N", r.peak_force_N);
-        cJSON_AddNumberToObject(o, "peak_tilt_deg", r.peak_tilt_deg);
         print_json(o);
         cJSON_Delete(o);
     } else {
@@ -526,6 +593,8 @@ int cli_walk(const cli_args *a)
                "section (%d steps), %.1f off it; peak ground force %.0f N; ankle tilt up to %.1f deg\n",
                a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
                r.peak_force_N, r.peak_tilt_deg);
+        if (shown[0])
+            printf("  results: %s/walk.json%s\n", shown, a->frames ? ", frames/" : "");
     }
     return 0;
 }

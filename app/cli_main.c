@@ -19,18 +19,20 @@ typedef struct command {
 
 const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames", "video.mp4", NULL};
 const char *const cli_trial_files[] = {"trial.json", "frames", "video.mp4", NULL};
+const char *const cli_walk_files[] = {"walk.json", "frames", "video.mp4", NULL};
 const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
                                           "chart.dat", "chart.gp", NULL};
 const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
 
 static const command commands[] = {
-    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --video --data",
+    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --exaggerate --video --data",
      "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
      "  (default DIR: results/runs/<scenario name>/).\n"
      "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
-     "  (1280x720), seen by --camera side|front|three-quarter|follow (side); --video also encodes\n"
-     "  DIR/video.mp4 with ffmpeg."},
-    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --video --data",
+     "  (1280x720), seen by --camera foot|side|front|three-quarter|follow (foot: the foot filling the\n"
+     "  frame); --exaggerate F multiplies each body's displacement from its first pose, in the ankle\n"
+     "  body's frame, by F (said on every frame); --video also encodes DIR/video.mp4 with ffmpeg."},
+    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --exaggerate --video --data",
      "Runs both scenarios and writes their frames side by side (A left, B right) to DIR/frames/ and key\n"
      "  frames from touch-down to rest to DIR/filmstrip.png (default DIR: results/compare/A-foot_vs_B-foot/).\n"
      "  --set a:KEY=V changes A only, b:KEY=V B only, KEY=V both. Frame options as for run."},
@@ -44,17 +46,19 @@ static const command commands[] = {
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
      "  --scenario S gives one); with neither, a summary."},
-    {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --video --set --data",
+    {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
      "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json and the frames of exactly\n"
      "  that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
-    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --data",
+    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
      "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
      "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
-     "  sections go to every trial."},
+     "  sections go to every trial. --frames-of foot=F,terrain=T,robot=R,seed=N (any of them; repeat\n"
+     "  a key with / for several values: seed=1/3) also draws the chosen trials into\n"
+     "  DIR/frames/<foot>-<terrain>-<robot>-seed<N>/ (frame options as for run); results unchanged."},
     {"optimize", cli_optimize, "FILE", "-j --out --replace --set --data",
      "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
      "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"
@@ -74,9 +78,11 @@ static const command commands[] = {
      "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
      "  against time (script DIR/plot.gp). A campaign's folder: its chart drawn again from summary.json\n"
      "  as DIR/success.png (chart.dat, chart.gp). DIR is the folder itself unless --out DIR."},
-    {"walk", cli_walk, "SCENARIO", "--json --set --data",
+    {"walk", cli_walk, "SCENARIO", "--json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
-     "  toe contact points on the rough section and off it, peak ground force."},
+     "  toe contact points on the rough section and off it, peak ground force. With --frames (or\n"
+     "  --out DIR) it also writes DIR/walk.json and the frames of the walk (default DIR:\n"
+     "  results/walks/<scenario>/), whole."},
     {"bench", cli_bench, "precision|stability|speed", "-j --quick --out --replace --data",
      "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
      "  refreshed only with --out results/bench):\n"
@@ -125,8 +131,10 @@ static void command_help(const command *c)
         printf(" [--equivalence]");
     if (strstr(c->options, "--height"))
         printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
-    if (strstr(c->options, "--frames"))
-        printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--video]]");
+    if (strstr(c->options, "--frames "))
+        printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--exaggerate F] [--video]]");
+    if (strstr(c->options, "--frames-of"))
+        printf(" [--frames-of SELECTORS [--fps N] [--size WxH] [--camera NAME] [--exaggerate F]]");
     if (strstr(c->options, "--set"))
         printf(" [--set section.key=value]...");
     if (strstr(c->options, "--data"))
@@ -151,6 +159,17 @@ static void command_help(const command *c)
                "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
 }
 
+/* Whether the space-separated options list names option as a whole word (--frames is not
+ * --frames-of). */
+static int takes_option(const char *options, const char *option)
+{
+    size_t n = strlen(option);
+    for (const char *p = strstr(options, option); p; p = strstr(p + 1, option))
+        if ((p == options || p[-1] == ' ') && (p[n] == ' ' || p[n] == 0))
+            return 1;
+    return 0;
+}
+
 /* Parses argv after the command name into a, refusing what c does not take. */
 static int parse_args(const command *c, int argc, char **argv, cli_args *a)
 {
@@ -163,12 +182,12 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
         int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--data") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
                           !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
                           !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
-                          !strcmp(arg, "--seed");
+                          !strcmp(arg, "--seed") || !strcmp(arg, "--exaggerate") || !strcmp(arg, "--frames-of");
         if (!strcmp(arg, "-j") && !strstr(c->options, "-j ")) {
             fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
             return 2;
         }
-        if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
+        if (arg[0] == '-' && arg[1] == '-' && !takes_option(c->options, arg)) {
             fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
                     *c->options ? c->options : "no options");
             return 2;
@@ -222,6 +241,10 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->size = argv[++i];
         else if (!strcmp(arg, "--camera"))
             a->camera = argv[++i];
+        else if (!strcmp(arg, "--exaggerate"))
+            a->exaggerate = argv[++i];
+        else if (!strcmp(arg, "--frames-of"))
+            a->frames_of = argv[++i];
         else if (!strcmp(arg, "--set")) {
             if (a->nset == CLI_MAX_SET) {
                 fprintf(stderr, "footsim %s: at most %d --set options\n", c->name, CLI_MAX_SET);
