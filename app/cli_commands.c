@@ -58,10 +58,14 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     }
     if (getenv("FOOTSIM_TEST_ODE_ERROR"))
         dDebug(1, "FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
-    fs_status rs = fs_run(sc, obs, res, &err);
+    fs_provenance prov; /* what made the results: the files, the --set, the settings */
+    fs_status rs = fs_scenario_provenance(sc, a->set, a->nset, &prov, &err);
+    if (rs == FS_OK)
+        rs = fs_run(sc, obs, res, &err);
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
-    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, out.partial, &err)) == FS_OK)
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, &prov, out.partial, &err)) == FS_OK)
         rs = fs_outdir_commit(&out, &err);
+    fs_provenance_free(&prov);
     if (rs != FS_OK || fstatus) {
         fs_outdir_abort(&out);
         fs_run_free(res);
@@ -405,16 +409,22 @@ static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char
             obs = &observer;
         fs_scenario_free(&placed);
     }
-    fs_status rs = s ? FS_OK : fs_trial_run_scenario(&base, seed, obs, r, &err);
+    fs_provenance prov; /* what made the result: the files, the --set, the settings, the seed */
+    fs_status rs = fs_scenario_provenance(&base, a->set, a->nset, &prov, &err);
+    prov.first_seed = seed, prov.nseeds = 1;
+    if (!s && rs == FS_OK)
+        rs = fs_trial_run_scenario(&base, seed, obs, r, &err);
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
     if (!s && rs == FS_OK && !fstatus) {
         cJSON *o = trial_json(r);
+        cJSON_AddItemToObject(o, "provenance", fs_provenance_json(&prov));
         rs = fs_write_in(out.partial, "trial.json", fill_json, o, &err);
         cJSON_Delete(o);
         if (rs == FS_OK)
             rs = fs_outdir_commit(&out, &err);
     }
     fs_outdir_abort(&out);
+    fs_provenance_free(&prov);
     fs_scenario_free(&base);
     if (!s && rs != FS_OK)
         s = fail(&err);

@@ -26,11 +26,14 @@ typedef struct optimize_run {
     int jobs;
     evaluation *log;
     int nlog;
+    int round, nrounds;     /* evaluations so far, and at most: the search's and the three reruns */
 } optimize_run;
 
+/* One candidate's trials, in the worker pool; progress counts evaluations and their trials. */
 static fs_status run_trials(void *user, const fs_optimize *o, fs_trial_result *results, fs_error *err)
 {
-    const optimize_run *r = user;
+    optimize_run *r = user;
+    cli_progress_round("evaluation", ++r->round, r->nrounds);
     return (fs_status)cli_campaign_trials(&o->campaign, results, r->jobs, "footsim optimize", err);
 }
 
@@ -173,7 +176,8 @@ int cli_optimize(const cli_args *a)
         return cli_report(err.status, err.message);
     }
     int ntrials = fs_campaign_ntrials(&o.campaign), ncells = fs_campaign_ncells(&o.campaign);
-    optimize_run run = {.jobs = jobs, .log = calloc(MAX_EVALUATIONS_KEPT, sizeof(evaluation))};
+    optimize_run run = {.jobs = jobs, .log = calloc(MAX_EVALUATIONS_KEPT, sizeof(evaluation)),
+                        .nrounds = o.max_evaluations + 3};
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
     fs_campaign_row *rows = calloc(3 * (size_t)ncells, sizeof *rows);
     double start[FS_OPTIMIZE_MAX_PARAMS], best[FS_OPTIMIZE_MAX_PARAMS], value;
@@ -186,6 +190,7 @@ int cli_optimize(const cli_args *a)
         st = fs_optimize_run(&o, run_trials, report, &run, results, rows, best, &value, &err);
     /* the start and the best again, on the search's seeds and on fresh ones */
     int first = o.campaign.first_seed;
+    run.round = o.max_evaluations; /* the reruns are the last three rounds, however soon the search ended */
     if (st == FS_OK)
         st = fs_optimize_apply(&o, start, &err);
     if (st == FS_OK)
@@ -198,6 +203,7 @@ int cli_optimize(const cli_args *a)
     if (st == FS_OK)
         st = evaluate(&o, &run, results, rows + 2 * ncells, &err);
     o.campaign.first_seed = first;
+    cli_progress_round(NULL, 0, 0);
     optimize_out x = {&o, &run, start, best, rows, rows + ncells, rows + 2 * ncells, o.validation_first_seed};
     if (st == FS_OK)
         st = fs_write_in(out.partial, "evaluations.csv", fill_evaluations, &x, &err);

@@ -38,7 +38,8 @@ typedef struct fs_pool_spec {
     fs_status (*done)(int task, const void *result, void *user, fs_error *err);
     /* in the parent: the worker running task died or was killed by the watchdog */
     void (*died)(int task, const fs_pool_death *death, void *user);
-    /* in the parent, optional: after each task, answered or dead */
+    /* in the parent, optional: after each task, answered or dead, and at least every
+       FS_POOL_TICK_S while no task ends (done unchanged), so that a reporter's clock moves */
     void (*progress)(int done, int ntasks, void *user);
 } fs_pool_spec;
 
@@ -47,6 +48,9 @@ enum { FS_POOL_MAX_JOBS = 1024 };
 /* The watchdog's default, s: far beyond any trial or benchmark run footsim ships (seconds each).
  * FOOTSIM_WATCHDOG_S in the environment replaces it (and any watchdog_s), e.g. for tests. */
 #define FS_POOL_WATCHDOG_S 600.0
+
+/* The longest the pool waits for an answer before telling progress again, s. */
+#define FS_POOL_TICK_S 5.0
 
 /* What a pool run saw. */
 typedef struct fs_pool_stats {
