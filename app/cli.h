@@ -27,6 +27,7 @@ typedef struct cli_args {
     int quick;                      /* --quick: a smaller sweep (bench) */
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
     int force;                      /* --force: compare results of different provenance */
+    int equivalence;                /* --equivalence: compare judges equivalence to a reference */
 } cli_args;
 
 /* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open

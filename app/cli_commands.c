@@ -159,6 +159,7 @@ static const double LAW_LEAN_DEG = 15;
 /* The whole foot's pitch stiffness and, for each shipped robot, what the law says. */
 typedef struct pitch_report {
     double load_kg, K_model, K_ode_mu1, K_ode_grip;
+    int flat;                     /* a flat sole: the model is its contacts' springs */
     int nrobots;
     char robot[MAX_ROBOTS][FS_NAME_MAX];
     fs_robot_def def[MAX_ROBOTS];
@@ -202,7 +203,8 @@ static fs_status pitch_stiffness(const fs_scenario *sc, const char *design, pitc
     memset(p, 0, sizeof *p);
     double g = sc->def.gravity_m_per_s2, load_N = sc->design.design_load_kg * g;
     p->load_kg = sc->design.design_load_kg;
-    fs_status s = fs_pitch_stiffness_model(&sc->design, &sc->geom, load_N, g, &p->K_model, err);
+    p->flat = sc->geom.kind == FS_FOOT_FLAT;
+    fs_status s = fs_pitch_stiffness_foot(sc, load_N, &p->K_model, err);
     if (s == FS_OK)
         s = fs_pitch_stiffness_measure(sc, load_N, 1, p->K_model, &p->K_ode_mu1, err);
     if (s == FS_OK)
@@ -217,10 +219,12 @@ static fs_status pitch_stiffness(const fs_scenario *sc, const char *design, pitc
 static void pitch_print(const pitch_report *p)
 {
     printf("whole foot against pitching its ankle body under %.1f kg at the ankle (docs/landing.md), N m/rad:\n"
-           "  model: each chain rolls in its plane, free across it  %8.2f\n"
+           "  model: %-46s %8.2f\n"
            "  measured in ODE, friction 1 (the landing trials')     %8.2f (%+.1f %%)\n"
            "  measured in ODE, friction 10 (toes held across too)   %8.2f\n",
-           p->load_kg, p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1), p->K_ode_grip);
+           p->load_kg,
+           p->flat ? "the sole's corners on the contacts' springs" : "each chain rolls in its plane, free across it",
+           p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1), p->K_ode_grip);
     if (p->nrobots)
         printf("the law, K (the model's, an Achilles tendon in series) against m g h of each robot:\n");
     for (int i = 0; i < p->nrobots; i++) {
@@ -243,6 +247,7 @@ static void pitch_json(cJSON *root, const pitch_report *p)
 {
     cJSON *o = cJSON_AddObjectToObject(root, "pitch_stiffness");
     cJSON_AddNumberToObject(o, "load_kg", p->load_kg);
+    cJSON_AddStringToObject(o, "model", p->flat ? "flat sole on its contacts" : "chains rolling in their planes");
     cJSON_AddNumberToObject(o, "model_N_m_per_rad", p->K_model);
     cJSON_AddNumberToObject(o, "ode_mu1_N_m_per_rad", p->K_ode_mu1);
     cJSON_AddNumberToObject(o, "ode_mu10_N_m_per_rad", p->K_ode_grip);
@@ -262,14 +267,37 @@ static void pitch_json(cJSON *root, const pitch_report *p)
     }
 }
 
+/* A flat sole has no joints or arch: only its pitch stiffness, which its contacts give. */
+static int flat_stiffness(const cli_args *a, const fs_scenario *sc)
+{
+    pitch_report pitch;
+    fs_error err;
+    if (pitch_stiffness(sc, a->input, &pitch, &err) != FS_OK)
+        return fail(&err);
+    if (a->json) {
+        cJSON *root = cJSON_CreateObject();
+        cJSON_AddStringToObject(root, "design", a->input);
+        pitch_json(root, &pitch);
+        print_json(root);
+        cJSON_Delete(root);
+    } else {
+        printf("%s: a flat sole: no joints or springs; its pitch stiffness is its contacts' (sole and ground in "
+               "series)\n", a->input);
+        pitch_print(&pitch);
+        printf("for a rigid sole the law's height is not the limit: a centre of mass that passes over the "
+               "footprint's edge tips it first (docs/landing.md)\n");
+    }
+    return 0;
+}
+
 int cli_stiffness(const cli_args *a)
 {
     static fs_scenario sc;
     fs_error err;
     if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
         return fail(&err);
-    if (sc.geom.kind != FS_FOOT_BIOMIMETIC)
-        return cli_report(FS_BAD_INPUT, "stiffness: the flat foot has no joints; give a biomimetic design");
+    if (sc.geom.kind == FS_FOOT_FLAT)
+        return flat_stiffness(a, &sc);
     fs_chain_stiffness k[FS_CHAINS];
     fs_stiffness_analytic(&sc.geom, k);
     if (fs_stiffness_measure(&sc, k, &err) != FS_OK)

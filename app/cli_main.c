@@ -61,11 +61,14 @@ static const command commands[] = {
      "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
      "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
      "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
-    {"compare", cli_compare, "RESULT BASELINE", "--force",
+    {"compare", cli_compare, "RESULT BASELINE", "--force --equivalence",
      "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
      "  baseline's 95 % interval or a median moves further than the baseline's tolerance; exit 2 when\n"
      "  they were made with other seeds, overrides or input files, unless --force (a version that\n"
-     "  differs is only reported)."},
+     "  differs is only reported). --equivalence judges RESULT, run at another setting (--set\n"
+     "  run.step_s=...), against BASELINE as a reference campaign of the same seeds and inputs: exit 1\n"
+     "  unless every cell's success intervals overlap and its medians of impulse, final lean, ankle\n"
+     "  drop, settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
     {"walk", cli_walk, "SCENARIO", "--json --set --data",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force."},
@@ -113,6 +116,8 @@ static void command_help(const command *c)
         printf(" [--quick]");
     if (strstr(c->options, "--force"))
         printf(" [--force]");
+    if (strstr(c->options, "--equivalence"))
+        printf(" [--equivalence]");
     if (strstr(c->options, "--height"))
         printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
     if (strstr(c->options, "--frames"))
@@ -197,6 +202,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->quick = 1;
         else if (!strcmp(arg, "--force") && strstr(c->options, "--force"))
             a->force = 1;
+        else if (!strcmp(arg, "--equivalence") && strstr(c->options, "--equivalence"))
+            a->equivalence = 1;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--frames"))

@@ -129,7 +129,7 @@ typedef struct fs_campaign_row {
     int nmetric;                           /* trials the medians are over (all but failed_numerics) */
     double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
     /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
-    int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: a flat sole */
+    int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */
     double law_K, law_critical_m;          /* N m/rad with any tendon in series; K / (m g), m */
 } fs_campaign_row;
 enum { FS_LAW_NONE = -1, FS_LAW_TOPPLES = 0, FS_LAW_STANDS = 1 };
@@ -165,5 +165,16 @@ int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *o
  * (|result - baseline| <= relative * |baseline| + absolute); FS_EXPECTATION_FAILED when
  * not, or when a row is missing on either side; FS_BAD_INPUT when a file cannot be read as a summary. */
 fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, int force, FILE *out, fs_error *err);
+
+/* Campaign equivalence (docs/bench.md): whether a campaign run at some setting (a step, a solver)
+ * tells what a reference campaign of the same seeds and inputs tells. Provenance as in
+ * fs_campaign_compare, but overrides may differ (they carry the setting). Per cell: the two success
+ * rates' 95 % Wilson intervals overlap, and the medians of the well-posed metrics (impact impulse,
+ * final lean, ankle drop, settle time, mean and final contacts) lie within 5 % of the reference's or
+ * an absolute floor (0.5 deg, 0.1 mm, 5 ms, 1 contact), whichever is larger; peak force is reported,
+ * not judged. FS_OK when every cell is equivalent, FS_EXPECTATION_FAILED when not or a row is
+ * missing, FS_BAD_INPUT as fs_campaign_compare. */
+fs_status fs_campaign_equivalence(const char *result_path, const char *reference_path, int force, FILE *out,
+                                  fs_error *err);
 
 #endif
