@@ -250,8 +250,9 @@ fs_status fs_pool_run(const fs_pool_spec *spec, fs_pool_stats *stats, fs_error *
             s = fs_fail(err, FS_IO, "the worker pool has tasks left and no worker running them");
             break;
         }
-        /* wake at least every FS_POOL_TICK_S: progress is told while no task ends */
-        wait_s = wait_s < FS_POOL_TICK_S ? wait_s : FS_POOL_TICK_S;
+        /* wake at least every tick: progress is told while no task ends */
+        double tick_s = spec->tick_s > 0 ? spec->tick_s : FS_POOL_TICK_S;
+        wait_s = wait_s < tick_s ? wait_s : tick_s;
         int ms = wait_s <= 0 ? 0 : (int)(wait_s * 1000) + 1;
         int ready = poll(fds, (nfds_t)n, ms);
         if (ready < 0 && errno != EINTR) {

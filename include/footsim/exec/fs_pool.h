@@ -31,6 +31,7 @@ typedef struct fs_pool_spec {
     int jobs;            /* worker processes (at most FS_POOL_MAX_JOBS; fewer when fewer tasks) */
     size_t result_size;  /* bytes of one answer */
     double watchdog_s;   /* a worker with no answer for this long is killed; <= 0: FS_POOL_WATCHDOG_S */
+    double tick_s;       /* progress is told again after this long without an answer; <= 0: FS_POOL_TICK_S */
     void *user;
     /* in a worker: runs task, filling result (result_size bytes, zeroed before) */
     void (*run)(int task, void *result, void *user);
@@ -39,7 +40,7 @@ typedef struct fs_pool_spec {
     /* in the parent: the worker running task died or was killed by the watchdog */
     void (*died)(int task, const fs_pool_death *death, void *user);
     /* in the parent, optional: after each task, answered or dead, and at least every
-       FS_POOL_TICK_S while no task ends (done unchanged), so that a reporter's clock moves */
+       tick_s while no task ends (done unchanged), so that a reporter's clock moves */
     void (*progress)(int done, int ntasks, void *user);
 } fs_pool_spec;
 
