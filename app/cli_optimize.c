@@ -75,6 +75,7 @@ typedef struct optimize_out {
     const double *start, *best;
     const fs_campaign_row *rows_best, *rows_start, *rows_fresh;
     int first_fresh;
+    const fs_provenance *prov;
 } optimize_out;
 
 static int fill_evaluations(FILE *f, const void *user)
@@ -82,6 +83,7 @@ static int fill_evaluations(FILE *f, const void *user)
     const optimize_out *x = user;
     const fs_optimize *o = x->o;
     const fs_campaign *c = &o->campaign;
+    fs_provenance_csv(x->prov, f);
     fputs("evaluation", f);
     for (int p = 0; p < o->nparams; p++)
         fprintf(f, ",%s", o->param[p].key);
@@ -144,7 +146,9 @@ static int fill_result(FILE *f, const void *user)
     fputs("\nTo run the best design: `--set", f);
     for (int p = 0; p < o->nparams; p++)
         fprintf(f, "%s%s=%.6g", p ? " --set " : " ", o->param[p].key, x->best[p]);
-    fputs("`\n", f);
+    fputs("`\n\nProvenance: ", f);
+    fs_provenance_print(x->prov, f);
+    fputs(".\n", f);
     return 1;
 }
 
@@ -204,7 +208,13 @@ int cli_optimize(const cli_args *a)
         st = evaluate(&o, &run, results, rows + 2 * ncells, &err);
     o.campaign.first_seed = first;
     cli_progress_round(NULL, 0, 0);
-    optimize_out x = {&o, &run, start, best, rows, rows + ncells, rows + 2 * ncells, o.validation_first_seed};
+    /* what made the results: the optimize file, every --set, and its campaign's inputs and settings */
+    fs_provenance prov = {.ninputs = 0};
+    if (st == FS_OK && (st = fs_provenance_init(&prov, o.path, &err)) == FS_OK &&
+        (st = fs_provenance_overrides(&prov, a->set, a->nset, &err)) == FS_OK &&
+        (st = fs_provenance_add_ini(&prov, o.path, &err)) == FS_OK)
+        st = fs_provenance_include(&prov, &o.campaign.provenance, &err);
+    optimize_out x = {&o, &run, start, best, rows, rows + ncells, rows + 2 * ncells, o.validation_first_seed, &prov};
     if (st == FS_OK)
         st = fs_write_in(out.partial, "evaluations.csv", fill_evaluations, &x, &err);
     if (st == FS_OK)
@@ -224,6 +234,7 @@ int cli_optimize(const cli_args *a)
                o.validation_first_seed + o.campaign.seeds - 1, out.path);
     }
     fs_outdir_abort(&out);
+    fs_provenance_free(&prov);
     free(run.log);
     free(results);
     free(rows);

@@ -111,6 +111,8 @@ EOF
 "$fs" optimize "$tmp/opt.ini" -j 2 --set run.duration_s=0.3 --set campaign.seeds=1 --out "$tmp/opt" >/dev/null 2>"$tmp/opt.err"
 check "a tiny optimize runs (exit 0: its target holds)" [ $? -eq 0 ]
 check "optimize: no carriage return in a log" [ -z "$(tr -dc '\r' <"$tmp/opt.err")" ]
+check "optimize: evaluations.csv says what made it (the optimize file, the campaign's files, every --set)" sh -c \
+    "head -1 '$tmp/opt/evaluations.csv' | grep -q \"^# provenance: footsim .*; seeds 1 to 1; .*; inputs opt.ini=[0-9a-f]\{16\} small.ini=.*; overrides 'run.duration_s=0.3' 'campaign.seeds=1'\$\""
 check "optimize: evaluations done of at most, then trials" grep -q '^footsim optimize: evaluation 4/4, 2/2 trials done, 0 failed, ' "$tmp/opt.err"
 
 # compare: identical summaries exit 0; a planted change in a rate or a median exits 1

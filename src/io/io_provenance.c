@@ -90,7 +90,8 @@ static fs_status hash_file(const char *path, unsigned long long *hash, fs_error 
     return FS_OK;
 }
 
-static fs_status add(fs_provenance *p, const char *path, int ini, fs_error *err)
+/* Notes path once: hashed by how (0 bytes, 1 INI), or with *known's hash when known is given. */
+static fs_status add(fs_provenance *p, const char *path, int ini, const unsigned long long *known, fs_error *err)
 {
     char full[PATH_MAX], rel[FS_PATH_MAX];
     if (!path || !*path)
@@ -101,8 +102,8 @@ static fs_status add(fs_provenance *p, const char *path, int ini, fs_error *err)
     for (int i = 0; i < p->ninputs; i++)
         if (!strcmp(p->inputs[i].path, rel))
             return FS_OK;
-    unsigned long long h;
-    fs_status s = ini ? fs_ini_hash(full, &h, err) : hash_file(full, &h, err);
+    unsigned long long h = known ? *known : 0;
+    fs_status s = known ? FS_OK : ini ? fs_ini_hash(full, &h, err) : hash_file(full, &h, err);
     if (s != FS_OK)
         return s;
     fs_provenance_input *grown = realloc(p->inputs, (size_t)(p->ninputs + 1) * sizeof *grown);
@@ -118,9 +119,24 @@ static fs_status add(fs_provenance *p, const char *path, int ini, fs_error *err)
     return FS_OK;
 }
 
-fs_status fs_provenance_add_ini(fs_provenance *p, const char *path, fs_error *err) { return add(p, path, 1, err); }
+fs_status fs_provenance_add_ini(fs_provenance *p, const char *path, fs_error *err) { return add(p, path, 1, NULL, err); }
 
-fs_status fs_provenance_add_data(fs_provenance *p, const char *path, fs_error *err) { return add(p, path, 0, err); }
+fs_status fs_provenance_add_data(fs_provenance *p, const char *path, fs_error *err) { return add(p, path, 0, NULL, err); }
+
+fs_status fs_provenance_include(fs_provenance *p, const fs_provenance *from, fs_error *err)
+{
+    fs_status s = FS_OK;
+    for (int i = 0; s == FS_OK && i < from->ninputs; i++) {
+        char full[2 * FS_PATH_MAX + 2];
+        snprintf(full, sizeof full, "%s/%s", from->dir, from->inputs[i].path);
+        s = add(p, full, 0, &from->inputs[i].hash, err);
+    }
+    if (!p->settings[0])
+        memcpy(p->settings, from->settings, sizeof p->settings);
+    if (!p->nseeds)
+        p->first_seed = from->first_seed, p->nseeds = from->nseeds;
+    return s;
+}
 
 void fs_provenance_print(const fs_provenance *p, FILE *f)
 {

@@ -51,6 +51,11 @@ fs_status fs_provenance_overrides(fs_provenance *p, const char *const *sets, int
 fs_status fs_provenance_add_ini(fs_provenance *p, const char *path, fs_error *err);
 fs_status fs_provenance_add_data(fs_provenance *p, const char *path, fs_error *err);
 
+/* Adds from's inputs (their hashes as from recorded them, their paths relative to p's folder) and,
+ * where p has none, its settings and seeds: a result made of another's (a design search of its
+ * campaign). */
+fs_status fs_provenance_include(fs_provenance *p, const fs_provenance *from, fs_error *err);
+
 /* The record as one line of text without a newline: "footsim V; seeds A to B; SETTINGS; inputs
  * PATH=HASH ...; overrides 'SET' ..." ("seeds none", "overrides none" when there are none).
  * fs_provenance_csv writes it as a CSV file's first line, "# provenance: TEXT\n". */
