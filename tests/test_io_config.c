@@ -5,6 +5,8 @@
 #include "footsim/model/fs_scenario.h"
 #include "footsim/io/fs_input.h"
 
+#include <cJSON.h>
+
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -228,6 +230,15 @@ static void provenance_hashes_content(void)
     snprintf(cmd, sizeof cmd, "%s/dunes.png", png);
     REQUIRE(fs_provenance_add_data(&c, cmd, &err) == FS_OK);
     CHECK(c.ninputs == 2 && c.inputs[0].hash == a.inputs[3].hash && c.inputs[1].hash != a.inputs[3].hash);
+    /* read back from its JSON, a record is the same record; with another seed it is not */
+    cJSON *json = fs_provenance_json(&a);
+    fs_provenance back;
+    CHECK(fs_provenance_from_json(json, &back, &err) == FS_OK && fs_provenance_equal(&a, &back));
+    fs_provenance_free(&back);
+    cJSON_DeleteItemFromObject(json, "inputs");
+    CHECK(fs_provenance_from_json(json, &back, &err) == FS_BAD_INPUT);
+    fs_provenance_free(&back);
+    cJSON_Delete(json);
     b.first_seed = 1, b.nseeds = 1;
     CHECK(!fs_provenance_equal(&a, &b));
     fs_provenance_free(&a);

@@ -50,6 +50,8 @@ void fs_provenance_free(fs_provenance *p)
         free(p->inputs[i].path);
     free(p->overrides);
     free(p->inputs);
+    free(p->version_text);
+    p->version_text = NULL;
     p->overrides = NULL;
     p->inputs = NULL;
     p->noverrides = p->ninputs = 0;
@@ -197,4 +199,59 @@ int fs_provenance_equal(const fs_provenance *a, const fs_provenance *b)
         if (strcmp(a->inputs[i].path, b->inputs[i].path) || a->inputs[i].hash != b->inputs[i].hash)
             return 0;
     return 1;
+}
+
+/* The text of a string member of o, or NULL. */
+static const char *text_of(const cJSON *o, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    return cJSON_IsString(v) ? v->valuestring : NULL;
+}
+
+fs_status fs_provenance_from_json(const cJSON *o, fs_provenance *p, fs_error *err)
+{
+    memset(p, 0, sizeof *p);
+    const cJSON *given = cJSON_GetObjectItemCaseSensitive(o, "overrides");
+    const cJSON *inputs = cJSON_GetObjectItemCaseSensitive(o, "inputs");
+    const cJSON *seeds = cJSON_GetObjectItemCaseSensitive(o, "seeds");
+    const cJSON *first = cJSON_GetObjectItemCaseSensitive(o, "first_seed");
+    const char *version = text_of(o, "footsim"), *settings = text_of(o, "settings");
+    if (!version || !settings || !cJSON_IsArray(given) || !cJSON_IsArray(inputs) || !cJSON_IsNumber(seeds) ||
+        !cJSON_IsNumber(first) || strlen(settings) >= sizeof p->settings)
+        return fs_fail(err, FS_BAD_INPUT, "provenance: not a record footsim wrote (it needs footsim, overrides, "
+                       "inputs, settings, seeds and first_seed)");
+    fs_status s = FS_OK;
+    const cJSON *item;
+    cJSON_ArrayForEach(item, given) {
+        const char *set = cJSON_IsString(item) ? item->valuestring : NULL;
+        s = set ? fs_provenance_overrides(p, &set, 1, err) : fs_fail(err, FS_BAD_INPUT, "provenance: an override is not text");
+        if (s != FS_OK)
+            break;
+    }
+    cJSON_ArrayForEach(item, inputs) {
+        const char *path = text_of(item, "path"), *hash = text_of(item, "hash");
+        char *end = NULL;
+        unsigned long long h = hash ? strtoull(hash, &end, 16) : 0;
+        if (s != FS_OK)
+            break;
+        if (!path || !hash || strlen(hash) != 16 || *end)
+            s = fs_fail(err, FS_BAD_INPUT, "provenance: an input without a path and a 16-digit hash");
+        fs_provenance_input *grown = s == FS_OK ? realloc(p->inputs, (size_t)(p->ninputs + 1) * sizeof *grown) : NULL;
+        char *copy = grown ? strdup(path) : NULL;
+        if (grown)
+            p->inputs = grown;
+        if (s == FS_OK && !copy)
+            s = fs_fail(err, FS_NO_MEMORY, "out of memory for the provenance");
+        if (s == FS_OK)
+            p->inputs[p->ninputs++] = (fs_provenance_input){copy, h};
+    }
+    /* the version is kept as text of its own: the record outlives o */
+    p->version_text = s == FS_OK ? strdup(version) : NULL;
+    if (s == FS_OK && !p->version_text)
+        s = fs_fail(err, FS_NO_MEMORY, "out of memory for the provenance");
+    p->version = p->version_text;
+    memcpy(p->settings, settings, strlen(settings) + 1);
+    p->nseeds = (int)seeds->valuedouble;
+    p->first_seed = (int)first->valuedouble;
+    return s;
 }

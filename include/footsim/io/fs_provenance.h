@@ -29,7 +29,8 @@ typedef struct fs_provenance_input {
 
 typedef struct fs_provenance {
     char dir[FS_PATH_MAX];   /* absolute: the folder input paths are relative to */
-    const char *version;     /* fs_version() */
+    const char *version;     /* fs_version(), or version_text for a record read back */
+    char *version_text;      /* owned: the version of a record read from JSON, else NULL */
     char **overrides;        /* every --set as given, in order */
     int noverrides;
     fs_provenance_input *inputs; /* each file once, in the order noted */
@@ -66,6 +67,11 @@ void fs_provenance_csv(const fs_provenance *p, FILE *f);
  * {"footsim", "overrides": [...], "inputs": [{"path", "hash"}...], "settings", "seeds",
  * "first_seed"}; `footsim compare` reads these fields. */
 struct cJSON *fs_provenance_json(const fs_provenance *p);
+
+/* Reads a record back from the JSON object fs_provenance_json wrote (a summary's "provenance", a
+ * journal's header), to compare with fs_provenance_equal. FS_BAD_INPUT when a field is missing or
+ * of the wrong kind; p is to be freed either way. The folder (dir) is not recorded: "" */
+fs_status fs_provenance_from_json(const struct cJSON *o, fs_provenance *p, fs_error *err);
 
 /* Whether a and b record the same version, overrides, inputs, settings and seeds. */
 int fs_provenance_equal(const fs_provenance *a, const fs_provenance *b);
