@@ -110,18 +110,37 @@ void cli_machine(char *out, size_t size);
 /* The 1-minute load average from /proc/loadavg, or -1 when it cannot be read. */
 double cli_load_average(void);
 
+/* What made a bench's results (fs_provenance.h): the files of the n scenarios it loaded, relative
+ * to the shipped scenarios/ folder, with their hashes; settings as text (which columns vary); no
+ * overrides (benches take none) and no seeds (set them when the runs draw from one). An fs_status;
+ * fs_provenance_free releases p, also after a failure. */
+typedef struct fs_provenance fs_provenance;
+int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings,
+                         struct fs_error *err);
+
 /* Progress of a long command on stderr (cli_progress.c): on a terminal one line redrawn in place
  * (done/total, failures, elapsed, ETA); without one, a plain line at every tenth of the work, at
- * least once a minute, and at the end. `who` names the command ("footsim campaign"), `unit` what
- * is counted ("trials"). */
+ * least once a minute, and at the end, never a carriage return. `who` names the command ("footsim
+ * campaign"), `unit` what is counted ("trials"). cli_progress_update gives the state after a task;
+ * cli_progress_tick repeats it (a terminal's clock moves; a log gets its line once a minute passed
+ * since the last): call it every few seconds while tasks run (the worker pool's progress callback
+ * is called so, fs_pool.h). cli_progress_say prints a message line (a result, a dead worker) above
+ * the progress line. cli_progress_round: a command of several rounds of tasks (optimize: one round
+ * of trials per candidate) says which round it starts (1-based; unit "candidate"); every reporter
+ * then shows the round and counts elapsed time, ETA and tenths over the whole command; NULL ends
+ * the rounds. */
 typedef struct cli_progress {
     const char *who, *unit;
     int tty;
     double t0, last_line_s;
     int last_tenth;
+    int done, total, failed, started; /* the last state given */
 } cli_progress;
 void cli_progress_start(cli_progress *p, const char *who, const char *unit);
 void cli_progress_update(cli_progress *p, int done, int total, int failed);
+void cli_progress_tick(cli_progress *p);
+void cli_progress_say(cli_progress *p, const char *format, ...);
+void cli_progress_round(const char *unit, int round, int nrounds);
 
 /* Whether an executable is on PATH. */
 int cli_have_program(const char *name);

@@ -58,10 +58,14 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     }
     if (getenv("FOOTSIM_TEST_ODE_ERROR"))
         dDebug(1, "FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
-    fs_status rs = fs_run(sc, obs, res, &err);
+    fs_provenance prov; /* what made the results: the files, the --set, the settings */
+    fs_status rs = fs_scenario_provenance(sc, a->set, a->nset, &prov, &err);
+    if (rs == FS_OK)
+        rs = fs_run(sc, obs, res, &err);
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
-    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, out.partial, &err)) == FS_OK)
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, &prov, out.partial, &err)) == FS_OK)
         rs = fs_outdir_commit(&out, &err);
+    fs_provenance_free(&prov);
     if (rs != FS_OK || fstatus) {
         fs_outdir_abort(&out);
         fs_run_free(res);
@@ -421,6 +425,7 @@ typedef struct folder_job {
     const char *name;                /* the JSON file */
     cJSON *(*to_json)(const void *result);
     const void *result;
+    const fs_provenance *provenance; /* what made the result, put into the JSON (NULL: none) */
 } folder_job;
 
 static int in_folder(const cli_args *a, const folder_job *j, char *dir_out, size_t size)
@@ -438,6 +443,8 @@ static int in_folder(const cli_args *a, const folder_job *j, char *dir_out, size
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
     if (!s && rs == FS_OK && !fstatus) {
         cJSON *o = j->to_json(j->result);
+        if (j->provenance)
+            cJSON_AddItemToObject(o, "provenance", fs_provenance_json(j->provenance));
         rs = fs_write_in(out.partial, j->name, fill_json, o, &err);
         cJSON_Delete(o);
         if (rs == FS_OK)
@@ -481,10 +488,15 @@ static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char
     int s = 0;
     if (a->frames && (fs_scenario_copy(&placed, &base, &err) != FS_OK || fs_trial_place(&placed, seed, NULL, &err) != FS_OK))
         s = fail(&err);
+    fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings, the seed */
+    if (!s && fs_scenario_provenance(&base, a->set, a->nset, &prov, &err) != FS_OK)
+        s = fail(&err);
+    prov.first_seed = seed, prov.nseeds = 1;
     trial_job t = {&base, seed, r};
-    folder_job j = {dir, cli_trial_files, &placed, run_trial_job, &t, "trial.json", trial_json_of, r};
+    folder_job j = {dir, cli_trial_files, &placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov};
     if (!s)
         s = in_folder(a, &j, dir_out, size);
+    fs_provenance_free(&prov);
     if (a->frames)
         fs_scenario_free(&placed);
     fs_scenario_free(&base);
@@ -575,8 +587,13 @@ int cli_walk(const cli_args *a)
         else
             snprintf(dir, sizeof dir, "results/walks/%s", sc.name);
         walk_job w = {&sc, &r};
-        folder_job j = {dir, cli_walk_files, &sc, run_walk_job, &w, "walk.json", walk_json, &r};
-        s = in_folder(a, &j, shown, sizeof shown);
+        fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
+        if (fs_scenario_provenance(&sc, a->set, a->nset, &prov, &err) != FS_OK)
+            s = fail(&err);
+        folder_job j = {dir, cli_walk_files, &sc, run_walk_job, &w, "walk.json", walk_json, &r, &prov};
+        if (!s)
+            s = in_folder(a, &j, shown, sizeof shown);
+        fs_provenance_free(&prov);
     } else if (fs_walk_run(&sc, NULL, &r, &err) != FS_OK) {
         s = fail(&err);
     }

@@ -224,6 +224,10 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
     int repeats = quick ? 1 : 5, total = 0, n = 0;
     for (int c = 0; c < nscenes; c++)
         total += nsteps * nits * (1 + scenes[c].has_springs);
+    cli_progress progress;
+    cli_progress_start(&progress, "footsim bench precision", "configurations");
+    cli_progress_update(&progress, 0, total, 0);
+    int blown = 0;
     fs_status s = FS_OK;
     for (int c = 0; c < nscenes && s == FS_OK; c++)
         for (int i = 0; i < nits && s == FS_OK; i++)
@@ -233,12 +237,11 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
                     *r = (row){.sc = &scenes[c], .stepper = its[i] ? FS_STEPPER_QUICKSTEP : FS_STEPPER_STEP,
                                .iterations = its[i], .springs = sp ? FS_SPRING_EXPLICIT : FS_SPRING_IMPLICIT,
                                .step_s = steps[h]};
-                    fprintf(stderr, "\rfootsim bench precision: %d/%d  %-7s %-9s %3d %-8s h = %-6g", n, total,
-                            r->sc->name, stepper_name(r->stepper), r->iterations, spring_name(r->springs), r->step_s);
                     s = measure(r, repeats, err);
                     r->is_default = is_default(r);
+                    blown += !r->ok;
+                    cli_progress_update(&progress, n, total, blown);
                 }
-    fprintf(stderr, "\n");
     *nrows = n;
     mark_pareto(rows, n);
     return s;
@@ -254,6 +257,7 @@ typedef struct report {
     int nscenes;
     const char *machine;
     int quick;
+    const fs_provenance *prov;
 } report;
 
 static int fill_csv(FILE *f, const void *user)
@@ -261,6 +265,7 @@ static int fill_csv(FILE *f, const void *user)
     const report *x = user;
     const row *rows = x->rows;
     int n = x->n;
+    fs_provenance_csv(x->prov, f);
     fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
             "wall_s,wall_per_sim_s,rtf,status,pareto,default\n");
     for (int i = 0; i < n; i++) {
@@ -390,6 +395,9 @@ static int fill_md(FILE *f, const void *user)
     fprintf(f, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
             "from nowhere: `status` in the CSV; neither is put on a front); `footsim bench stability` maps where.\n",
         blown, n, drifting);
+    fputs("\nProvenance: ", f);
+    fs_provenance_print(x->prov, f);
+    fputs(".\n", f);
     return 1;
 }
 
@@ -418,15 +426,15 @@ static int fill_chart(FILE *f, const void *user)
         "set key bottom right font ',9'\n";
     static const char panel[] =
         "set title '%s'\n"
-        "plot 'precision.csv' skip 1 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
+        "plot 'precision.csv' skip 2 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
         "with points pt 7 ps 1 lc rgb '#1f77b4' title 'dWorldStep, implicit springs', \\\n"
-        "     '' skip 1 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
+        "     '' skip 2 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
         "lc rgb '#ff7f0e' title 'dWorldStep, explicit', \\\n"
-        "     '' skip 1 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
+        "     '' skip 2 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
         "pt 6 ps 1 lc rgb '#2ca02c' title 'QuickStep, implicit', \\\n"
-        "     '' skip 1 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
+        "     '' skip 2 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
         "pt 4 ps 1 lc rgb '#d62728' title 'QuickStep, explicit', \\\n"
-        "     '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
+        "     '' skip 2 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
         "title 'scenario default', \\\n"
         "     $front%d using 1:2 with lines lw 2 lc rgb 'black' title 'Pareto front'\n";
     fprintf(f, "%s", head);
@@ -480,9 +488,17 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     scenes[1].goal_rtf = 100;
     scenes[2].goal_rtf = 100, scenes[2].goal_fine_rtf = 10;
     scenes[3].goal_rtf = 30;
+    fs_provenance prov = {.ninputs = 0};
+    const fs_scenario *loaded[NSCENES] = {&scenes[0].base, &scenes[1].base, &scenes[2].base, &scenes[3].base};
+    if (s == FS_OK)
+        s = cli_bench_provenance(&prov, loaded, NSCENES, "each row's stepper, iterations, spring and step_s; the "
+                                 "rest as the inputs give them; landing_flat from seed 10's pose and rough ground "
+                                 "under single_tall, landing_biomimetic from seed 1's on flat ground and "
+                                 "landing_biomimetic_rough from seed 4's on rough ground, both under drop_weight",
+                                 &err);
     if (s == FS_OK)
         s = sweep(scenes, NSCENES, a->quick, rows, &nrows, &err);
-    const report x = {rows, nrows, scenes, NSCENES, machine, a->quick};
+    const report x = {rows, nrows, scenes, NSCENES, machine, a->quick, &prov};
     if (s == FS_OK)
         s = fs_write_in(dir, "precision.csv", fill_csv, &x, &err);
     if (s == FS_OK)
@@ -491,6 +507,7 @@ int cli_bench_precision(const cli_args *a, const char *dir)
         s = fs_write_in(dir, "precision.gp", fill_chart, &x, &err);
     if (s == FS_OK)
         cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
+    fs_provenance_free(&prov);
     for (int c = 0; c < NSCENES; c++) {
         fs_track_free(&scenes[c].ref);
         fs_scenario_free(&scenes[c].base);

@@ -3,7 +3,6 @@
 #include "campaign_internal.h"
 
 #include "footsim/base/fs_path.h"
-#include "footsim/base/fs_version.h"
 #include "footsim/io/fs_output.h"
 
 #include <cjson/cJSON.h>
@@ -68,32 +67,23 @@ static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain, in
         csv_number(f, c->terrain[terrain].sweep_value[w]);
 }
 
-/* The solver settings a campaign's trials ran with (its first cell's: --set changes every cell). */
-static void settings_text(const fs_campaign *c, char *buf, size_t size)
+/* What made the results: the campaign's record with its seeds as they are now (a design search
+ * reruns its best on fresh seeds); a read-only view of c's record, not to be freed. */
+static fs_provenance provenance_of(const fs_campaign *c)
 {
-    if (!c->pair) { /* a campaign built in code, not loaded */
-        snprintf(buf, size, "settings unknown");
-        return;
-    }
-    const fs_scenario_def *d = &c->pair[0].def;
-    snprintf(buf, size, "step_s %.6g, stepper %s, iterations %d, springs %s, contact_layer_m %.6g, window %.6g s",
-             d->step_s, d->stepper ? "quickstep" : "step", d->iterations, d->springs ? "explicit" : "implicit",
-             d->contact_layer_m, d->duration_s);
+    fs_provenance p = c->provenance;
+    p.first_seed = c->first_seed;
+    p.nseeds = c->seeds;
+    if (!c->pair) /* a campaign built in code, not loaded */
+        snprintf(p.settings, sizeof p.settings, "settings unknown");
+    return p;
 }
 
 /* The CSV files' first line: what made them. */
 static void csv_provenance(FILE *f, const fs_campaign *c)
 {
-    char settings[256];
-    settings_text(c, settings, sizeof settings);
-    fprintf(f, "# provenance: footsim %s; seeds %d to %d; %s; inputs", fs_version(), c->first_seed,
-            c->first_seed + c->seeds - 1, settings);
-    for (int i = 0; i < c->ninputs; i++)
-        fprintf(f, " %s=%016llx", c->input[i].path, c->input[i].hash);
-    fputs("; overrides", f);
-    for (int i = 0; i < c->ngiven; i++)
-        fprintf(f, " '%s'", c->given[i]);
-    fputs(c->ngiven ? "\n" : " none\n", f);
+    fs_provenance p = provenance_of(c);
+    fs_provenance_csv(&p, f);
 }
 
 /* The header's key columns: foot, terrain, robot and the swept keys. */
@@ -192,15 +182,10 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
     }
-    char settings[256];
-    settings_text(c, settings, sizeof settings);
-    fprintf(f, "\nMade by footsim %s with %s; inputs:", fs_version(), settings);
-    for (int i = 0; i < c->ninputs; i++)
-        fprintf(f, "%s `%s` (%016llx)", i ? "," : "", c->input[i].path, c->input[i].hash);
-    fputs("; overrides:", f);
-    for (int i = 0; i < c->ngiven; i++)
-        fprintf(f, " `%s`", c->given[i]);
-    fputs(c->ngiven ? ".\n" : " none.\n", f);
+    fs_provenance p = provenance_of(c);
+    fputs("\nProvenance: ", f);
+    fs_provenance_print(&p, f);
+    fputs(".\n", f);
     if (c->nexpect)
         fputs("\n## Expectations\n\n| expectation | foot | terrain | robot | success | wanted | met |\n"
               "|---|---|---|---|--:|---|---|\n", f);
@@ -229,25 +214,8 @@ static cJSON *summary_json(const out_ctx *x)
             cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]);
         else
             cJSON_AddNullToObject(root, w ? "sweep2" : "sweep");
-    cJSON *prov = cJSON_AddObjectToObject(root, "provenance");
-    cJSON_AddStringToObject(prov, "footsim", fs_version());
-    cJSON *given = cJSON_AddArrayToObject(prov, "overrides");
-    for (int i = 0; i < c->ngiven; i++)
-        cJSON_AddItemToArray(given, cJSON_CreateString(c->given[i]));
-    cJSON *inputs = cJSON_AddArrayToObject(prov, "inputs");
-    for (int i = 0; i < c->ninputs; i++) {
-        char hash[24];
-        snprintf(hash, sizeof hash, "%016llx", c->input[i].hash);
-        cJSON *in = cJSON_CreateObject();
-        cJSON_AddStringToObject(in, "path", c->input[i].path);
-        cJSON_AddStringToObject(in, "hash", hash);
-        cJSON_AddItemToArray(inputs, in);
-    }
-    char settings[256];
-    settings_text(c, settings, sizeof settings);
-    cJSON_AddStringToObject(prov, "settings", settings);
-    cJSON_AddNumberToObject(prov, "seeds", c->seeds);
-    cJSON_AddNumberToObject(prov, "first_seed", c->first_seed);
+    fs_provenance p = provenance_of(c);
+    cJSON_AddItemToObject(root, "provenance", fs_provenance_json(&p));
     cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         cJSON *t = cJSON_AddObjectToObject(tol, fs_campaign_metrics[m].name);

@@ -250,11 +250,17 @@ fs_status fs_pool_run(const fs_pool_spec *spec, fs_pool_stats *stats, fs_error *
             s = fs_fail(err, FS_IO, "the worker pool has tasks left and no worker running them");
             break;
         }
-        int ms = wait_s <= 0 ? 0 : wait_s > 3600 ? 3600000 : (int)(wait_s * 1000) + 1;
-        if (poll(fds, (nfds_t)n, ms) < 0 && errno != EINTR) {
+        /* wake at least every tick: progress is told while no task ends */
+        double tick_s = spec->tick_s > 0 ? spec->tick_s : FS_POOL_TICK_S;
+        wait_s = wait_s < tick_s ? wait_s : tick_s;
+        int ms = wait_s <= 0 ? 0 : (int)(wait_s * 1000) + 1;
+        int ready = poll(fds, (nfds_t)n, ms);
+        if (ready < 0 && errno != EINTR) {
             s = fs_fail(err, FS_IO, "poll: %s", strerror(errno));
             break;
         }
+        if (ready == 0)
+            progress(&p);
         for (int k = 0; k < n && s == FS_OK; k++)
             if (fds[k].revents)
                 s = collect(&p, &p.w[who[k]], err);

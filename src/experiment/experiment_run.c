@@ -234,7 +234,8 @@ static fs_status write_trajectory(const fs_run_result *res, const char *path, fs
     return fs_write_file(path, fill_trajectory, res, err);
 }
 
-fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const char *dir, fs_error *err)
+fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const fs_provenance *prov, const char *dir,
+                       fs_error *err)
 {
     fs_status s = fs_make_dirs(dir, err);
     if (s != FS_OK)
@@ -246,6 +247,8 @@ fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const ch
         return s;
     snprintf(path, sizeof path, "%s/metrics.json", dir);
     cJSON *root = metrics_json(sc, res);
+    if (prov)
+        cJSON_AddItemToObject(root, "provenance", fs_provenance_json(prov));
     s = write_json(path, root, err);
     cJSON_Delete(root);
     return s;

@@ -43,14 +43,6 @@ extern const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS];
 /* The value of metric m (an index into fs_campaign_metrics) in r. */
 double fs_metric_value(const fs_trial_result *r, int m);
 
-/* An input file of a campaign, for its provenance: its path relative to the campaign file's folder
- * and the hash of its parsed content (fs_config_hash). */
-typedef struct fs_campaign_input {
-    char path[FS_PATH_MAX];
-    unsigned long long hash;
-} fs_campaign_input;
-enum { FS_CAMPAIGN_MAX_INPUTS = 2 + FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_ROBOTS };
-
 /* One foot, terrain or robot of the campaign. */
 typedef struct fs_campaign_item {
     char name[FS_NAME_MAX];  /* the section's NAME, or for a sweep "NAME@value" */
@@ -88,11 +80,10 @@ typedef struct fs_campaign {
     double tolerance[FS_CAMPAIGN_NMETRICS][2]; /* relative, absolute (metric's unit) */
     const char *set[FS_CAMPAIGN_MAX_SET];      /* the command's --set meant for the trials */
     int nset;
-    /* provenance (written into every result file): every --set as given, and the input files */
-    const char *given[FS_CAMPAIGN_MAX_SET];
-    int ngiven;
-    fs_campaign_input input[FS_CAMPAIGN_MAX_INPUTS];
-    int ninputs;
+    /* what made the results (written into every result file, fs_provenance.h): every --set as
+       given, every input file (relative to the campaign file's folder) with its hash, the first
+       cell's settings; the seeds are c's own when written */
+    fs_provenance provenance;
     fs_scenario *pair;                 /* the trial scenario of each cell, loaded once:
                                           fs_campaign_pair; fs_campaign_free releases them */
 } fs_campaign;

@@ -31,6 +31,7 @@ typedef struct fs_pool_spec {
     int jobs;            /* worker processes (at most FS_POOL_MAX_JOBS; fewer when fewer tasks) */
     size_t result_size;  /* bytes of one answer */
     double watchdog_s;   /* a worker with no answer for this long is killed; <= 0: FS_POOL_WATCHDOG_S */
+    double tick_s;       /* progress is told again after this long without an answer; <= 0: FS_POOL_TICK_S */
     void *user;
     /* in a worker: runs task, filling result (result_size bytes, zeroed before) */
     void (*run)(int task, void *result, void *user);
@@ -38,7 +39,8 @@ typedef struct fs_pool_spec {
     fs_status (*done)(int task, const void *result, void *user, fs_error *err);
     /* in the parent: the worker running task died or was killed by the watchdog */
     void (*died)(int task, const fs_pool_death *death, void *user);
-    /* in the parent, optional: after each task, answered or dead */
+    /* in the parent, optional: after each task, answered or dead, and at least every
+       tick_s while no task ends (done unchanged), so that a reporter's clock moves */
     void (*progress)(int done, int ntasks, void *user);
 } fs_pool_spec;
 
@@ -47,6 +49,9 @@ enum { FS_POOL_MAX_JOBS = 1024 };
 /* The watchdog's default, s: far beyond any trial or benchmark run footsim ships (seconds each).
  * FOOTSIM_WATCHDOG_S in the environment replaces it (and any watchdog_s), e.g. for tests. */
 #define FS_POOL_WATCHDOG_S 600.0
+
+/* The longest the pool waits for an answer before telling progress again, s. */
+#define FS_POOL_TICK_S 5.0
 
 /* What a pool run saw. */
 typedef struct fs_pool_stats {

@@ -42,7 +42,9 @@ typedef struct fs_run_result {
 fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err);
 void fs_run_free(fs_run_result *res);
 
-/* Writes DIR/metrics.json and DIR/trajectory.csv (creating DIR and its parents). */
-fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const char *dir, fs_error *err);
+/* Writes DIR/metrics.json and DIR/trajectory.csv (creating DIR and its parents); metrics.json
+ * records prov (fs_provenance.h; may be NULL) as its "provenance". */
+fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const fs_provenance *prov, const char *dir,
+                       fs_error *err);
 
 #endif
