@@ -8,13 +8,14 @@
  * ground only), the ODE step, and the state checks of fs_check.h (finite, speed, loop closure,
  * energy). fs_sim_options.profile times them.
  *
- * Re-entrant: everything a simulation uses lives in its fs_sim (contact scratch, profile, names),
- * so simulations may be built and stepped interleaved in one process and give the bits each gives
- * alone. The one process-wide piece is ODE's message handler's context (fs_error.h), which each
- * step points at its own sim. Workers still run as processes (fs_pool.h): ODE ends the process
- * after its error handler and keeps one random generator, which fs_sim_build reseeds — so the
- * guarantee holds for dWorldStep (the default); QuickStep sims interleaved share that generator.
- * test_engine_determinism steps three sims interleaved against each alone. */
+ * Re-entrant: everything a simulation uses lives in its fs_sim (contact scratch, profile, names,
+ * its state of ODE's random generator), so simulations may be built and stepped interleaved in one
+ * process and give the bits each gives alone, with either stepper. ODE's handlers and its random
+ * generator are process-wide: each step points the handlers' context at its own sim (fs_ode.h) and
+ * sets the generator to the sim's own state before the ODE step, saving it after. Workers still
+ * run as processes (fs_pool.h): ODE ends the process after its error handler, and a generator
+ * shared between threads would be raced. test_engine_determinism steps five sims (two with
+ * QuickStep) interleaved against each alone. */
 #ifndef FS_SIM_H
 #define FS_SIM_H
 
@@ -72,6 +73,7 @@ typedef struct fs_sim {
     long contacts_total, collision_tests;
     fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
     struct fs_contact_scratch *scratch; /* one shape's contacts while a step gathers them */
+    unsigned long rand_seed; /* this sim's state of ODE's random generator, which QuickStep draws on */
     char ode_context[FS_PATH_MAX]; /* what ODE's complaints name while this sim steps: its scenario */
     struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_options.profile) */
     double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
