@@ -40,6 +40,11 @@ static void apply_load(fs_sim *sim)
                        p[1], p[2]);
 }
 
+void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3])
+{
+    dBodyAddTorque(fs_sim_body_id(sim, i), torque_N_m[0], torque_N_m[1], torque_N_m[2]);
+}
+
 fs_status fs_sim_step(fs_sim *sim, fs_error *err)
 {
     const fs_scenario_def *s = &sim->sc->def;

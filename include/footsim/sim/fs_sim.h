@@ -21,6 +21,7 @@
 
 #include "footsim/sim/fs_check.h"
 #include "footsim/model/fs_scenario.h"
+#include "footsim/sim/fs_ode.h"
 #include "footsim/sim/fs_scene.h"
 #include "footsim/sim/fs_spring.h"
 
@@ -148,6 +149,14 @@ typedef struct fs_rows {
     int contacts;          /* the contact points the contact rows are for */
 } fs_rows;
 void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows);
+
+/* Body i (0 .. nbodies - 1; nbodies: the robot) now: its position, m, and rotation R (row-major,
+ * R[3 * r + c]: its axes are the columns, world = R * body), either of them NULL if not wanted. */
+void fs_sim_body_pose(const fs_sim *sim, int i, double p[3], double R[9]);
+/* Body i's linear velocity, m/s, and angular velocity, rad/s (world frame), either NULL if not wanted. */
+void fs_sim_body_velocity(const fs_sim *sim, int i, double v[3], double w[3]);
+/* Adds a torque (world frame, N m) to body i for the coming step only (a driver's before_step). */
+void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3]);
 
 /* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. */
 double fs_sim_robot_tilt(const fs_sim *sim);
