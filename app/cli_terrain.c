@@ -68,8 +68,9 @@ static int write_map(fs_terrain *t, const cli_args *a)
     if (!rgb)
         return cli_report(FS_NO_MEMORY, "out of memory");
     double z[2];
-    fs_terrain_map(t, region, outline, w, h, rgb, z);
-    fs_status s = fs_png_write_rgb(a->png, w, h, rgb, &err);
+    fs_status s = fs_terrain_map(t, region, outline, w, h, rgb, z, &err);
+    if (s == FS_OK)
+        s = fs_png_write_rgb(a->png, w, h, rgb, &err);
     free(rgb);
     if (s != FS_OK)
         return cli_report(err.status, err.message);
