@@ -5,6 +5,7 @@
 #include "footsim/base/fs_version.h"
 #include "footsim/io/fs_config.h"
 #include "footsim/io/fs_output.h"
+#include "footsim/sim/fs_ode.h"
 
 #include <stdio.h>
 #include <string.h>

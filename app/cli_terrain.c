@@ -150,7 +150,10 @@ static int write_map(fs_terrain *t, const cli_args *a)
     if (!rgb)
         return cli_report(FS_NO_MEMORY, "out of memory");
     double z[2];
-    fs_terrain_map(t, region, outline, w, h, rgb, z);
+    if (fs_terrain_map(t, region, outline, w, h, rgb, z, &err) != FS_OK) {
+        free(rgb);
+        return cli_report(err.status, err.message);
+    }
     const figure g = {t->name, "map.png", region, z, w, h, outline != NULL};
     int s = write_figure(&g, rgb, a->png);
     fs_status ws = s < 0 ? fs_png_write_rgb(a->png, w, h, rgb, &err) : FS_OK;

@@ -85,7 +85,7 @@ fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
         r->rgba = malloc((size_t)width * (size_t)height * 4);
     if (!r || !r->rgba) {
         free(r);
-        return fs_fail(err, FS_BAD_INPUT, "frame size %dx%d: not enough memory for the frame", width, height);
+        return fs_fail(err, FS_NO_MEMORY, "frame size %dx%d: out of memory for the frame", width, height);
     }
     r->w = width, r->h = height;
     /* RGBA, 24-bit depth, 8-bit stencil (for shadows), no accumulation buffer */

@@ -88,8 +88,10 @@ static void apply_torques(void *user, fs_sim *sim)
     double tau = p->tau;
     for (int i = 0; i < FS_CHAINS; i++) {
         const fs_hinge_geom *h = &g->hinge[p->j == 0 ? g->chain[i].midfoot_hinge : g->chain[i].mtp_hinge];
-        dBodyAddTorque(sim->body[h->body2], tau * h->axis.x, tau * h->axis.y, tau * h->axis.z);
-        dBodyAddTorque(sim->body[h->body1], -tau * h->axis.x, -tau * h->axis.y, -tau * h->axis.z);
+        const double on2[3] = {tau * h->axis.x, tau * h->axis.y, tau * h->axis.z};
+        const double on1[3] = {-tau * h->axis.x, -tau * h->axis.y, -tau * h->axis.z};
+        fs_sim_body_add_torque(sim, h->body2, on2);
+        fs_sim_body_add_torque(sim, h->body1, on1);
     }
 }
 
@@ -183,7 +185,8 @@ static void apply_pitch(void *user, fs_sim *sim)
 {
     const pitch_load *p = user;
     double rise = p->ramp_s > 0 ? fmin(1, sim->time_s / p->ramp_s) : 1;
-    dBodyAddTorque(sim->body[sim->geom->ankle_body], 0, p->tau * rise, 0);
+    const double torque[3] = {0, p->tau * rise, 0};
+    fs_sim_body_add_torque(sim, sim->geom->ankle_body, torque);
 }
 
 /* Still, once the load and torque have risen: every body slower than 1e-7 m/s. */
@@ -210,8 +213,9 @@ static fs_status pitch_probe(const fs_scenario *sc, double tau, double *pitch, f
         s = fs_fail(err, FS_NUMERICAL, "%s: the foot did not come to rest within %g s under a pitch torque of %.3g N m",
                     sc->path, SETTLE_S, tau);
     if (s == FS_OK) {
-        const dReal *R = dBodyGetRotation(sim.body[sim.geom->ankle_body]);
-        *pitch = atan2(-R[8], R[0]);
+        double R[9];
+        fs_sim_body_pose(&sim, sim.geom->ankle_body, NULL, R);
+        *pitch = atan2(-R[6], R[0]);
     }
     fs_sim_destroy(&sim);
     return s;

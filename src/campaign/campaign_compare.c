@@ -211,7 +211,7 @@ static fs_status compare_mode(const char *result_path, const char *baseline_path
     cJSON *baseline = result ? campaign_read_summary(baseline_path, err) : NULL;
     if (!baseline) {
         cJSON_Delete(result);
-        return FS_BAD_INPUT;
+        return err ? err->status : FS_BAD_INPUT; /* as read_summary found it: bad input, unreadable, out of memory */
     }
     char refused[128];
     compare_provenance(result, baseline, equivalence, out, refused, sizeof refused);

@@ -203,68 +203,76 @@ static cJSON *summary_json(const out_ctx *x)
 {
     const fs_campaign *c = x->c;
     cJSON *root = cJSON_CreateObject();
+    int ok = root != NULL;
     char trial[FS_NAME_MAX];
     fs_path_stem(c->trial_path, trial, sizeof trial);
-    cJSON_AddStringToObject(root, "campaign", c->name);
-    cJSON_AddStringToObject(root, "trial", trial);
-    cJSON_AddNumberToObject(root, "seeds", c->seeds);
-    cJSON_AddNumberToObject(root, "first_seed", c->first_seed);
+    ok &= cJSON_AddStringToObject(root, "campaign", c->name) != NULL;
+    ok &= cJSON_AddStringToObject(root, "trial", trial) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "seeds", c->seeds) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "first_seed", c->first_seed) != NULL;
     for (int w = 0; w < 2; w++)
         if (w < c->nsweep)
-            cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]);
+            ok &= cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]) != NULL;
         else
-            cJSON_AddNullToObject(root, w ? "sweep2" : "sweep");
+            ok &= cJSON_AddNullToObject(root, w ? "sweep2" : "sweep") != NULL;
     fs_provenance p = provenance_of(c);
-    cJSON_AddItemToObject(root, "provenance", fs_provenance_json(&p));
+    ok &= fs_json_put(root, "provenance", fs_provenance_json(&p));
     cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
+    ok &= tol != NULL;
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         cJSON *t = cJSON_AddObjectToObject(tol, fs_campaign_metrics[m].name);
-        cJSON_AddNumberToObject(t, "relative", c->tolerance[m][0]);
-        cJSON_AddNumberToObject(t, "absolute", c->tolerance[m][1]);
+        ok &= t != NULL;
+        ok &= cJSON_AddNumberToObject(t, "relative", c->tolerance[m][0]) != NULL;
+        ok &= cJSON_AddNumberToObject(t, "absolute", c->tolerance[m][1]) != NULL;
     }
     cJSON *rows = cJSON_AddArrayToObject(root, "rows");
+    ok &= rows != NULL;
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "foot", c->foot[r->foot].name);
-        cJSON_AddStringToObject(o, "terrain", c->terrain[r->terrain].name);
-        cJSON_AddStringToObject(o, "robot", c->robot[r->robot].name);
+        ok &= cJSON_AddStringToObject(o, "foot", c->foot[r->foot].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "terrain", c->terrain[r->terrain].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "robot", c->robot[r->robot].name) != NULL;
         for (int w = 0; w < c->nsweep; w++)
-            cJSON_AddNumberToObject(o, w ? "sweep_value2" : "sweep_value", c->terrain[r->terrain].sweep_value[w]);
-        cJSON_AddNumberToObject(o, "trials", r->trials);
-        cJSON_AddNumberToObject(o, "landed", r->landed);
-        cJSON_AddNumberToObject(o, "fell", r->fell);
-        cJSON_AddNumberToObject(o, "undecided", r->undecided);
-        cJSON_AddNumberToObject(o, "failed_numerics", r->failed_numerics);
-        cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
-        cJSON_AddNumberToObject(o, "ci_low", r->ci_low);
-        cJSON_AddNumberToObject(o, "ci_high", r->ci_high);
-        cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law));
-        cJSON_AddNumberToObject(o, "law_K_N_m_per_rad", r->law_K); /* NAN, INFINITY: null */
-        cJSON_AddNumberToObject(o, "law_critical_com_height_m", r->law_critical_m);
+            ok &= cJSON_AddNumberToObject(o, w ? "sweep_value2" : "sweep_value", c->terrain[r->terrain].sweep_value[w]) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "trials", r->trials) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "landed", r->landed) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "fell", r->fell) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "undecided", r->undecided) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "failed_numerics", r->failed_numerics) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "success_rate", r->success_rate) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "ci_low", r->ci_low) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "ci_high", r->ci_high) != NULL;
+        ok &= cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law)) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "law_K_N_m_per_rad", r->law_K) != NULL; /* NAN, INFINITY: null */
+        ok &= cJSON_AddNumberToObject(o, "law_critical_com_height_m", r->law_critical_m) != NULL;
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
             char key[FS_NAME_MAX + 8];
             snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);
-            cJSON_AddNumberToObject(o, key, r->median[m]); /* NAN is written as null */
+            ok &= cJSON_AddNumberToObject(o, key, r->median[m]) != NULL; /* NAN is written as null */
         }
-        cJSON_AddItemToArray(rows, o);
+        ok &= fs_json_put(rows, NULL, o);
     }
     cJSON *ex = cJSON_AddArrayToObject(root, "expectations");
+    ok &= ex != NULL;
     for (int i = 0; i < c->nexpect; i++) {
         const fs_expectation *e = &c->expect[i];
         cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "name", e->name);
-        cJSON_AddStringToObject(o, "foot", c->foot[e->foot].name);
-        cJSON_AddStringToObject(o, "terrain", c->terrain[e->terrain].name);
-        cJSON_AddStringToObject(o, "robot", c->robot[e->robot].name);
-        cJSON_AddNumberToObject(o, "min_success", e->min_success);
-        cJSON_AddNumberToObject(o, "max_success", e->max_success);
+        ok &= cJSON_AddStringToObject(o, "name", e->name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "foot", c->foot[e->foot].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "terrain", c->terrain[e->terrain].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "robot", c->robot[e->robot].name) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "min_success", e->min_success) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "max_success", e->max_success) != NULL;
         const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, e->foot, e->terrain, e->robot);
-        cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
-        cJSON_AddBoolToObject(o, "met", fs_expectation_met(e, r));
-        cJSON_AddItemToArray(ex, o);
+        ok &= cJSON_AddNumberToObject(o, "success_rate", r->success_rate) != NULL;
+        ok &= cJSON_AddBoolToObject(o, "met", fs_expectation_met(e, r)) != NULL;
+        ok &= fs_json_put(ex, NULL, o);
     }
-    return root;
+    if (ok)
+        return root;
+    cJSON_Delete(root); /* a field could not be added (out of memory): no result rather than one short of it */
+    return NULL;
 }
 
 static int fill_summary_json(FILE *f, const out_ctx *x)

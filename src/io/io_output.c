@@ -3,6 +3,7 @@
 #define _GNU_SOURCE /* renameat2: swapping two folders in one step (Linux) */
 #include "footsim/io/fs_output.h"
 
+#include <cJSON.h>
 #include <dirent.h>
 #include <signal.h>
 #include <sys/syscall.h>
@@ -752,4 +753,12 @@ fs_status fs_outdir_shared(const char *dir, const char *const *known, int replac
     if (s == FS_OK && lstat(marker, &st) != 0)
         s = fs_write_file(marker, fill_marker, NULL, err);
     return s;
+}
+
+int fs_json_put(cJSON *parent, const char *name, cJSON *item)
+{
+    if (item && parent && (name ? cJSON_AddItemToObject(parent, name, item) : cJSON_AddItemToArray(parent, item)))
+        return 1;
+    cJSON_Delete(item);
+    return 0;
 }

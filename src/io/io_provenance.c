@@ -2,6 +2,8 @@
  * as a line of text or a JSON object. */
 #include "footsim/io/fs_provenance.h"
 
+#include "footsim/io/fs_output.h"
+
 #include "footsim/base/fs_path.h"
 #include "footsim/base/fs_version.h"
 #include "footsim/io/fs_input.h"
@@ -166,23 +168,30 @@ void fs_provenance_csv(const fs_provenance *p, FILE *f)
 
 cJSON *fs_provenance_json(const fs_provenance *p)
 {
+    /* every add checked: a record short of memory is no record (NULL), never a partial one */
     cJSON *prov = cJSON_CreateObject();
-    cJSON_AddStringToObject(prov, "footsim", p->version ? p->version : fs_version());
-    cJSON *given = cJSON_AddArrayToObject(prov, "overrides");
-    for (int i = 0; i < p->noverrides; i++)
-        cJSON_AddItemToArray(given, cJSON_CreateString(p->overrides[i]));
-    cJSON *inputs = cJSON_AddArrayToObject(prov, "inputs");
-    for (int i = 0; i < p->ninputs; i++) {
+    int ok = prov != NULL;
+    ok = ok && cJSON_AddStringToObject(prov, "footsim", p->version ? p->version : fs_version()) != NULL;
+    cJSON *given = ok ? cJSON_AddArrayToObject(prov, "overrides") : NULL;
+    ok = ok && given != NULL;
+    for (int i = 0; ok && i < p->noverrides; i++)
+        ok = fs_json_put(given, NULL, cJSON_CreateString(p->overrides[i]));
+    cJSON *inputs = ok ? cJSON_AddArrayToObject(prov, "inputs") : NULL;
+    ok = ok && inputs != NULL;
+    for (int i = 0; ok && i < p->ninputs; i++) {
         char hash[24];
         snprintf(hash, sizeof hash, "%016llx", p->inputs[i].hash);
         cJSON *in = cJSON_CreateObject();
-        cJSON_AddStringToObject(in, "path", p->inputs[i].path);
-        cJSON_AddStringToObject(in, "hash", hash);
-        cJSON_AddItemToArray(inputs, in);
+        ok = in && cJSON_AddStringToObject(in, "path", p->inputs[i].path) && cJSON_AddStringToObject(in, "hash", hash);
+        ok = fs_json_put(inputs, NULL, ok ? in : (cJSON_Delete(in), NULL)) && ok;
     }
-    cJSON_AddStringToObject(prov, "settings", p->settings);
-    cJSON_AddNumberToObject(prov, "seeds", p->nseeds);
-    cJSON_AddNumberToObject(prov, "first_seed", p->first_seed);
+    ok = ok && cJSON_AddStringToObject(prov, "settings", p->settings) != NULL;
+    ok = ok && cJSON_AddNumberToObject(prov, "seeds", p->nseeds) != NULL;
+    ok = ok && cJSON_AddNumberToObject(prov, "first_seed", p->first_seed) != NULL;
+    if (!ok) {
+        cJSON_Delete(prov);
+        return NULL;
+    }
     return prov;
 }
 

@@ -90,4 +90,12 @@ fs_status fs_outdir_shared(const char *dir, const char *const *known, int replac
  * ".." is resolved. Refuses the root and the empty path. */
 fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *option, fs_error *err);
 
+/* Puts item into a JSON tree being built for a result: into parent under name (an object), or at
+ * its end when name is NULL (an array). cJSON's adds fail silently on out of memory, leaving a
+ * field out of a result file; a builder ands every put (and every cJSON_Add...ToObject's non-NULL
+ * result) and refuses an incomplete tree (FS_NO_MEMORY). When the put fails, or item is NULL
+ * because making it failed, item is deleted; returns 1 when put. */
+struct cJSON;
+int fs_json_put(struct cJSON *parent, const char *name, struct cJSON *item);
+
 #endif

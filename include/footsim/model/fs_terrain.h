@@ -109,6 +109,7 @@ void fs_terrain_map_colour(double u, double rgb[3]);
 /* A shaded top-down picture of the surface over region [xmin, xmax, ymin, ymax]: heights as
  * colours (low blue-green to high sand), lit from the north-west; when outline is not NULL, the
  * rectangle [xmin, xmax, ymin, ymax] it gives is drawn in white (a footprint). rgb holds w*h*3
- * bytes, row 0 at the largest y. Returns the lowest and highest height drawn in zrange. */
-void fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
-                    unsigned char *rgb, double zrange[2]);
+ * bytes, row 0 at the largest y. Returns the lowest and highest height drawn in zrange; FS_NO_MEMORY
+ * (rgb not filled) when the heights' memory is refused. */
+fs_status fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
+                         unsigned char *rgb, double zrange[2], fs_error *err);
