@@ -86,9 +86,18 @@ static void attrf(exporter *x, const char *name, const char *fmt, ...)
     attr(x, name, buf);
 }
 
+/* XML forbids "--" inside a comment (and a comment ending in "-"): a path may hold them. */
 static void comment(exporter *x, const char *text)
 {
-    if (xmlTextWriterWriteComment(x->w, BAD_CAST text) < 0)
+    char safe[2 * (2 * FS_PATH_MAX + 256)];
+    size_t n = 0;
+    for (const char *c = text; *c && n + 3 < sizeof safe; c++) {
+        safe[n++] = *c;
+        if (*c == '-' && (c[1] == '-' || c[1] == 0))
+            safe[n++] = ' ';
+    }
+    safe[n] = 0;
+    if (xmlTextWriterWriteComment(x->w, BAD_CAST safe) < 0)
         x->ok = 0;
 }
 
@@ -600,7 +609,7 @@ static void document(exporter *x)
         x->ok = 0;
     char text[2 * FS_PATH_MAX + 256];
     snprintf(text, sizeof text,
-             " footsim export --mjcf: %s%s%s. SI units, x forward, y left, z up. docs/export.md says what maps "
+             " footsim export (MJCF) of %s%s%s. SI units, x forward, y left, z up. docs/export.md says what maps "
              "one to one and what does not. ",
              sc->def.design_path, x->with_scenario ? ", scenario " : "", x->with_scenario ? sc->path : "");
     comment(x, text);
