@@ -371,8 +371,11 @@ static void joint_to_parent(exporter *x, int i)
             attr_num(x, "axis", v, 3);
             end(x);
         } else {
-            start(x, "freejoint");
-            attr(x, "name", "root");
+            start(x, "freejoint"); /* "root"; a body no joint holds (a cut loop's) is free on its own */
+            if (i == (x->sim->robot ? x->nnodes - 1 : 0))
+                attr(x, "name", "root");
+            else
+                attrf(x, "name", "%s_free", n->name);
             end(x);
         }
         return;
@@ -529,6 +532,7 @@ static void defaults(exporter *x)
     /* foot shapes touch the ground only, as in footsim (contype & conaffinity decide pairs) */
     attr(x, "contype", "1");
     attr(x, "conaffinity", "0");
+    attr(x, "group", "1"); /* the ground is group 0: a ray or a viewer can tell them apart */
     contact_attrs(x);
     attr(x, "rgba", "0.8 0.6 0.4 1");
     end(x);
