@@ -630,6 +630,8 @@ static void document(exporter *x)
     attr_num(x, "gravity", gvec, 3);
     /* damping implicit, as footsim's implicit springs are (their stiffness stays explicit) */
     attr(x, "integrator", "implicit");
+    /* friction as stiff as ODE's (no creep under the static load; docs/export.md measures it) */
+    attr(x, "impratio", "100");
     end(x);
     defaults(x);
     if (has_hfield(x)) {
