@@ -668,7 +668,7 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
                         fs_error *err)
 {
     memset(out, 0, sizeof *out);
-    static fs_sim sim; /* large: kept off the stack */
+    fs_sim sim;
     fs_sim_options opts = {.with_ground = with_scenario};
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
