@@ -451,14 +451,17 @@ static void static_load_scenario(void)
     fs_scenario_free(&sc);
 }
 
+/* A free robot welded to the talus, tilted gravity, and the rig: a robot on the vertical slide. */
 static void robot_scenarios(void)
 {
-    const char *files[] = {"scenarios/landing_trial.ini", "scenarios/tilt10.ini"};
-    for (int f = 0; f < 2; f++) {
+    const char *files[] = {"scenarios/landing_trial.ini", "scenarios/tilt10.ini", "scenarios/landing_trial.ini"};
+    const char *rig[] = {"robot.design=robots/rig.ini"};
+    for (int f = 0; f < 3; f++) {
         static fs_scenario sc;
         static xmodel m;
         fs_error err;
-        REQUIRE(fs_scenario_load(files[f], NULL, 0, &sc, &err) == FS_OK);
+        REQUIRE(fs_scenario_load(files[f], rig, f == 2, &sc, &err) == FS_OK);
+        REQUIRE(f < 2 || sc.def.robot.mount == FS_ROBOT_VERTICAL);
         fs_mjcf out;
         export_scenario(&sc, 1, &out, &m);
         check_against_sim(&sc, &m);

@@ -113,17 +113,24 @@ static void flat_foot_on_static_load(void)
     fs_scenario_free(&sc);
 }
 
-static void landing_trial_robot(void)
+/* The landing trial's free robot, and the rig on its vertical slide (one degree of freedom). */
+static void landing_trial_robots(void)
 {
-    static fs_scenario sc;
-    fs_error err;
-    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", NULL, 0, &sc, &err) == FS_OK);
-    mjModel *m = load(&sc, 1);
-    REQUIRE(m);
-    CHECK(m->ntendon == 15);
-    check_model(m, &sc, 1);
-    mj_deleteModel(m);
-    fs_scenario_free(&sc);
+    const char *rig[] = {"robot.design=robots/rig.ini"};
+    for (int r = 0; r < 2; r++) {
+        static fs_scenario sc;
+        fs_error err;
+        REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", rig, r, &sc, &err) == FS_OK);
+        mjModel *m = load(&sc, 1);
+        REQUIRE(m);
+        CHECK(m->ntendon == 15);
+        int robot = mj_name2id(m, mjOBJ_BODY, "robot");
+        REQUIRE(robot >= 0);
+        CHECK(m->body_jntnum[robot] == 1 && m->jnt_type[m->body_jntadr[robot]] == (r ? mjJNT_SLIDE : mjJNT_FREE));
+        check_model(m, &sc, 1);
+        mj_deleteModel(m);
+        fs_scenario_free(&sc);
+    }
 }
 
 /* The walking machine's heightfield: MuJoCo's ray cast down onto the ground (group 0 only) finds
@@ -210,6 +217,6 @@ static void static_loads_run(void)
     }
 }
 
-FS_TEST_MAIN(TEST(static_loads_run), TEST(biomimetic_foot), TEST(flat_foot_on_static_load), TEST(landing_trial_robot),
+FS_TEST_MAIN(TEST(static_loads_run), TEST(biomimetic_foot), TEST(flat_foot_on_static_load), TEST(landing_trial_robots),
              TEST(walking_heightfield), TEST(loop_closure))
 #endif
