@@ -31,6 +31,7 @@ typedef struct cli_args {
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
     int force;                      /* --force: compare results of different provenance */
     int equivalence;                /* --equivalence: compare judges equivalence to a reference */
+    int mjcf;                       /* --mjcf: export as MuJoCo MJCF */
 } cli_args;
 
 /* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open
@@ -93,6 +94,7 @@ int cli_compare(const cli_args *a);
 /* plot RUN_DIR|CAMPAIGN_DIR [--out DIR]: a run's time series as DIR/plot.png, or a campaign's chart
  * drawn again from its summary.json as DIR/success.png (app/cli_plot.c). */
 int cli_plot(const cli_args *a);
+int cli_export(const cli_args *a);    /* app/cli_export.c */
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
  * table to --out DIR (default results/bench/), whole or not at all. */

@@ -93,6 +93,11 @@ static const command commands[] = {
      "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves.\n"
      "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
      "  worker processes (default: the CPUs it may use; the results do not depend on N)."},
+    {"export", cli_export, "DESIGN", "--mjcf --scenario --out --set --data",
+     "Writes the foot as MuJoCo MJCF (docs/export.md) to --out FILE (default results/export/<design>.xml):\n"
+     "  bodies with their masses and inertias, the hinges as a tree, the springs as spatial tendons, the\n"
+     "  contact spheres and box; with --scenario S, in S's start pose with its ground (a heightfield's\n"
+     "  samples in FILE's name with .hfield.bin), gravity, step, robot and load."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "--data",
@@ -116,6 +121,8 @@ static void command_help(const command *c)
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
     if (strstr(c->options, "--replace"))
         printf(" [--out DIR [--replace]]");
+    else if (strstr(c->options, "--mjcf"))
+        printf(" --mjcf [--scenario SCENARIO] [--out FILE]");
     else if (strstr(c->options, "--out"))
         printf(" [--out DIR]");
     if (strstr(c->options, "-j "))
@@ -232,6 +239,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->equivalence = 1;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
+        else if (!strcmp(arg, "--mjcf"))
+            a->mjcf = 1;
         else if (!strcmp(arg, "--frames"))
             a->frames = 1;
         else if (!strcmp(arg, "--video"))
@@ -275,7 +284,7 @@ static cli_data_kind data_kind(const char *command)
     for (size_t i = 0; i < sizeof scenarios / sizeof *scenarios; i++)
         if (!strcmp(command, scenarios[i]))
             return CLI_DATA_SCENARIO;
-    if (!strcmp(command, "model") || !strcmp(command, "stiffness"))
+    if (!strcmp(command, "model") || !strcmp(command, "stiffness") || !strcmp(command, "export"))
         return CLI_DATA_DESIGN;
     return !strcmp(command, "terrain") ? CLI_DATA_TERRAIN : CLI_DATA_NONE;
 }
