@@ -27,6 +27,10 @@ typedef struct cli_args {
     int quick;                      /* --quick: a smaller sweep (bench) */
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
     int force;                      /* --force: compare results of different provenance */
+    const char *shard;              /* --shard I/N (campaign) */
+    int fresh;                      /* --fresh: start a campaign over, its journal removed */
+    const char *more[CLI_MAX_SET];  /* merge: the folders after the first */
+    int nmore;
 } cli_args;
 
 /* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open
@@ -69,6 +73,7 @@ struct fs_error;
 int cli_campaign_trials(const struct fs_campaign *c, struct fs_trial_result *results, int jobs, const char *who,
                         struct fs_error *err);
 int cli_compare(const cli_args *a);
+int cli_merge(const cli_args *a);     /* app/cli_campaign.c: shard folders into one campaign's results */
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
  * table to --out DIR (default results/bench/), whole or not at all. */
