@@ -650,10 +650,12 @@ int cli_merge(const cli_args *a)
             if (!d[i])
                 continue;
             if (from[i] >= 0) {
-                int cell, seed;
+                int cell, seed, foot, terrain, robot;
                 fs_campaign_trial_of(&c, i, &cell, &seed);
-                fprintf(stderr, "footsim merge: trial %d (cell %d, seed %d) is in both %s and %s; give each shard "
-                        "once, and shards of one --shard I/N split\n", i, cell, seed, dirs[from[i]], dirs[k]);
+                fs_campaign_cell_of(&c, cell, &foot, &terrain, &robot);
+                fprintf(stderr, "footsim merge: trial %d (foot %s on terrain %s under robot %s, seed %d) is in both "
+                        "%s and %s; give each shard once, all of one --shard I/N split\n", i, c.foot[foot].name,
+                        c.terrain[terrain].name, c.robot[robot].name, seed, dirs[from[i]], dirs[k]);
                 s = FS_BAD_INPUT;
             } else {
                 results[i] = r[i];
@@ -670,9 +672,14 @@ int cli_merge(const cli_args *a)
         while (from[first] >= 0)
             first++;
         int nshards = heads[0].nshards;
-        fprintf(stderr, "footsim merge: %d of %d trials missing (the first: trial %d, of shard %d/%d); give every "
-                "shard's folder, or run the missing shard: footsim campaign %s --shard %d/%d --out DIR\n", missing,
-                heads[0].ntrials, first, first % nshards + 1, nshards, heads[0].campaign, first % nshards + 1, nshards);
+        char run[4 * FS_OUT_PATH], shard[32];
+        snprintf(shard, sizeof shard, "%d/%d", first % nshards + 1, nshards);
+        cli_args again = {.input = heads[0].campaign, .shard = shard, .nset = heads[0].nset};
+        for (int i = 0; i < heads[0].nset; i++)
+            again.set[i] = heads[0].set[i];
+        command_of(&again, "DIR", run, sizeof run);
+        fprintf(stderr, "footsim merge: %d of %d trials missing (the first: trial %d, of shard %s); give every "
+                "shard's folder, or run the missing shard: %s\n", missing, heads[0].ntrials, first, shard, run);
         s = FS_BAD_INPUT;
     }
     if (!s) {

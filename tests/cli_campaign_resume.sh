@@ -17,26 +17,7 @@ check() { # check DESCRIPTION COMMAND...: the command must succeed
     if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $what" >&2; fi
 }
 
-# 2 feet x 1 terrain x 3 seeds = 6 trials, a short window (the numbers do not matter here)
-cp scenarios/campaign_test_trial.ini "$tmp/trial.ini"
-sed -i "s#^design = feet/#design = $PWD/scenarios/feet/#; s#^terrain = ../terrains/#terrain = $PWD/terrains/#; s#^design = robots/#design = $PWD/scenarios/robots/#" "$tmp/trial.ini"
-cat >"$tmp/small.ini" <<EOF
-[campaign]
-trial = trial.ini
-seeds = 3
-
-[foot.bio]
-file = $PWD/scenarios/feet/biomimetic.ini
-
-[foot.flat]
-file = $PWD/scenarios/feet/flat.ini
-
-[terrain.bumpy]
-file = $PWD/terrains/simply_uneven.ini
-EOF
-files="summary.json summary.csv summary.md trials.csv chart.dat chart.gp"
-command -v gnuplot >/dev/null 2>&1 && files="$files success.png"
-camp() { nice "$fs" campaign "$tmp/small.ini" --set run.duration_s=0.15 "$@"; }
+. tests/small_campaign.sh
 same_as_ref() { # same_as_ref DIR WHAT
     for f in $files; do
         check "$2: $f byte for byte an uninterrupted run's" cmp -s "$tmp/ref/$f" "$1/$f"
