@@ -62,7 +62,8 @@ check "SIGINT: exit 130" [ $? -eq 130 ]
 check "SIGINT: one line with the trials done and where they are" \
     grep -q "^footsim campaign: stopped by SIGINT: 2 of 6 trials done, kept in $tmp/int.journal/; to continue: footsim campaign " "$tmp/int.err"
 check "SIGINT: no worker left" [ -z "$(ps -eo args= | grep -F "$tmp/small.ini" | grep -v grep)" ]
-check "SIGINT: no results folder, no partial folder" [ ! -e "$tmp/int" ] && [ -z "$(ls "$tmp" | grep '\.partial\.')" ]
+check "SIGINT: no results folder" [ ! -e "$tmp/int" ]
+check "SIGINT: no partial folder" [ -z "$(ls "$tmp" | grep '\.partial\.')" ]
 again=$(sed -n 's/^footsim campaign: stopped by SIGINT: .*; to continue: footsim //p' "$tmp/int.err")
 check "SIGINT: the command names the overrides" [ -n "$(echo "$again" | grep -e '--set run.duration_s=0.15')" ]
 eval "nice \"\$fs\" $again" >/dev/null 2>"$tmp/int2.err"

@@ -62,7 +62,8 @@ camp -j 1 --shard 3/3 --set run.step_s=2e-4 --out "$tmp/s3other" >/dev/null 2>&1
 check "a shard of other overrides: exit 2" [ $? -eq 2 ]
 check "a shard of other overrides: says what differs" grep -q "s3other and .*s1 are shards of different campaigns or inputs (settings: 'step_s 0.0002,' in" "$tmp/other.err"
 "$fs" merge "$tmp/s1" "$tmp/ref" --out "$tmp/bad" >/dev/null 2>"$tmp/noshard.err"
-check "a folder that is no shard: exit 2" [ $? -eq 2 ] && grep -q "ref: holds no trials.journal" "$tmp/noshard.err"
+check "a folder that is no shard: exit 2" [ $? -eq 2 ]
+check "a folder that is no shard: said so" grep -q "ref: holds no trials.journal" "$tmp/noshard.err"
 sed -i "s/^landed_tilt_deg = 15/landed_tilt_deg = 14/" "$tmp/trial.ini"
 "$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$tmp/bad" >/dev/null 2>"$tmp/changed.err"
 check "the campaign changed since: exit 2" [ $? -eq 2 ]
@@ -70,7 +71,8 @@ check "the campaign changed since: says which input" grep -q "has changed since 
 check "no refused merge wrote anything" [ ! -e "$tmp/bad" ]
 for bad in 0/3 4/3 1/0 x 1/2/3 2; do
     camp --shard $bad --out "$tmp/badshard" >/dev/null 2>"$tmp/shard.err"
-    check "--shard $bad: exit 2" [ $? -eq 2 ] && grep -q 'give I/N' "$tmp/shard.err"
+    check "--shard $bad: exit 2" [ $? -eq 2 ]
+    check "--shard $bad: says what it takes" grep -q 'give I/N' "$tmp/shard.err"
 done
 
 echo "cli_campaign_shards: $passed passed, $failed failed"
