@@ -32,6 +32,10 @@ typedef struct cli_args {
     int force;                      /* --force: compare results of different provenance */
     int equivalence;                /* --equivalence: compare judges equivalence to a reference */
     int mjcf;                       /* --mjcf: export as MuJoCo MJCF */
+    const char *shard;              /* --shard I/N (campaign) */
+    int fresh;                      /* --fresh: start a campaign over, its journal removed */
+    const char *more[CLI_MAX_SET];  /* merge: the folders after the first */
+    int nmore;
 } cli_args;
 
 /* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open
@@ -59,6 +63,7 @@ typedef struct fs_campaign fs_campaign;
 typedef struct fs_trial_result fs_trial_result;
 typedef struct cli_frames_of cli_frames_of;
 int cli_frames_of_open(const cli_args *a, const fs_campaign *c, cli_frames_of **f);
+void cli_frames_of_free(cli_frames_of *f); /* when not handed to cli_frames_of_write */
 int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_result *results, const char *dir,
                         const char *shown_dir);
 
@@ -95,6 +100,7 @@ int cli_compare(const cli_args *a);
  * drawn again from its summary.json as DIR/success.png (app/cli_plot.c). */
 int cli_plot(const cli_args *a);
 int cli_export(const cli_args *a);    /* app/cli_export.c */
+int cli_merge(const cli_args *a);     /* app/cli_campaign.c: shard folders into one campaign's results */
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
  * table to --out DIR (default results/bench/), whole or not at all. */

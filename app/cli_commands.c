@@ -662,7 +662,7 @@ int cli_demo(const cli_args *a)
     printf("\nlanding comparison (2 seeds each, two robots; 'footsim campaign scenarios/landing.ini' runs 50):\n");
     fflush(stdout);
     cli_args camp = {.command = "campaign", .input = cli_data_path("scenarios/landing_ci.ini"), .nset = 1,
-                     .set = {"campaign.seeds=2"}, .out = "results/campaigns/demo"};
+                     .set = {"campaign.seeds=2"}, .out = "results/campaigns/demo", .fresh = 1}; /* always shown */
     s = cli_campaign(&camp);
     /* the finding, in one line: the law for the trial scenario's robot (single_tall) on Table I */
     fs_error err;

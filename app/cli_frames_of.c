@@ -100,7 +100,7 @@ static int parse(const fs_campaign *c, const char *text, unsigned char *choose[N
     return 0;
 }
 
-static void close_of(cli_frames_of *f)
+void cli_frames_of_free(cli_frames_of *f)
 {
     if (f)
         free(f->trial);
@@ -145,7 +145,7 @@ int cli_frames_of_open(const cli_args *a, const fs_campaign *c, cli_frames_of **
     for (int k = 0; k < NKEYS; k++)
         free(choose[k]);
     if (s) {
-        close_of(f);
+        cli_frames_of_free(f);
         return s;
     }
     f->a = a;
@@ -198,6 +198,6 @@ int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_r
     int s = 0;
     for (int i = 0; f && i < f->n && !s; i++)
         s = draw_trial(f, c, f->trial[i], &results[f->trial[i]], dir, shown_dir);
-    close_of(f);
+    cli_frames_of_free(f);
     return s;
 }

@@ -22,7 +22,7 @@ const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames",
 const char *const cli_trial_files[] = {"trial.json", "frames", "video.mp4", NULL};
 const char *const cli_walk_files[] = {"walk.json", "frames", "video.mp4", NULL};
 const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
-                                          "chart.dat", "chart.gp", NULL};
+                                          "chart.dat", "chart.gp", "trials.journal", NULL};
 const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
 
 static const command commands[] = {
@@ -52,14 +52,26 @@ static const command commands[] = {
      "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
      "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json and the frames of exactly\n"
      "  that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
-    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data",
+    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data --shard --fresh",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
      "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
      "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
      "  sections go to every trial. --frames-of foot=F,terrain=T,robot=R,seed=N (any of them; repeat\n"
      "  a key with / for several values: seed=1/3) also draws the chosen trials into\n"
-     "  DIR/frames/<foot>-<terrain>-<robot>-seed<N>/ (frame options as for run); results unchanged."},
+     "  DIR/frames/<foot>-<terrain>-<robot>-seed<N>/ (frame options as for run); results unchanged.\n"
+     "  Each finished trial is kept in the journal DIR.journal/ as it ends: run the same command again\n"
+     "  after a crash or Ctrl-C and it runs only the trials left (the files are the same as an\n"
+     "  uninterrupted run's); a journal of other inputs, overrides or version is refused (exit 2);\n"
+     "  a finished DIR of the same campaign is left as it is; --fresh starts over. Ctrl-C or SIGTERM\n"
+     "  stops the workers, keeps the journal, prints the command that continues; exit 130 or 143.\n"
+     "  --shard I/N runs only the trials whose index is I-1 modulo N and writes DIR/trials.journal;\n"
+     "  'footsim merge' makes the campaign's files of the N shard folders."},
+    {"merge", cli_merge, "DIR...", "--out --replace",
+     "Merges the shard folders of one campaign (footsim campaign --shard I/N) into its result files,\n"
+     "  the same bytes as the campaign run on one machine (default DIR: results/campaigns/<name>/).\n"
+     "  Refused (exit 2, saying which) when the shards come from other campaigns, inputs, overrides or\n"
+     "  versions, or when trials are missing or repeated. Exit 1 when an expectation fails."},
     {"optimize", cli_optimize, "FILE", "-j --out --replace --set --data",
      "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
      "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"
@@ -137,6 +149,8 @@ static void command_help(const command *c)
         printf(" [--force]");
     if (strstr(c->options, "--equivalence"))
         printf(" [--equivalence]");
+    if (strstr(c->options, "--shard"))
+        printf(" [--shard I/N] [--fresh]");
     if (strstr(c->options, "--height"))
         printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
     if (strstr(c->options, "--frames "))
@@ -190,7 +204,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
         int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--data") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
                           !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
                           !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
-                          !strcmp(arg, "--seed") || !strcmp(arg, "--exaggerate") || !strcmp(arg, "--frames-of");
+                          !strcmp(arg, "--seed") || !strcmp(arg, "--exaggerate") || !strcmp(arg, "--frames-of") ||
+                          !strcmp(arg, "--shard");
         if (!strcmp(arg, "-j") && !strstr(c->options, "-j ")) {
             fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
             return 2;
@@ -229,6 +244,10 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->jobs = argv[++i];
         else if (!strncmp(arg, "-j", 2) && strstr(c->options, "-j "))
             a->jobs = arg + 2;
+        else if (!strcmp(arg, "--shard"))
+            a->shard = argv[++i];
+        else if (!strcmp(arg, "--fresh"))
+            a->fresh = 1;
         else if (!strcmp(arg, "--replace"))
             a->replace = 1;
         else if (!strcmp(arg, "--quick"))
@@ -265,6 +284,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->input = arg;
         else if (c->input && strchr(c->input, ' ') && !a->input2)
             a->input2 = arg;
+        else if (c->input && strstr(c->input, "...") && a->nmore < CLI_MAX_SET)
+            a->more[a->nmore++] = arg;
         else {
             fprintf(stderr, "footsim %s: unexpected argument '%s'; see 'footsim %s --help'\n", c->name, arg, c->name);
             return 2;

@@ -86,6 +86,23 @@ static void csv_provenance(FILE *f, const fs_campaign *c)
     fs_provenance_csv(&p, f);
 }
 
+char *fs_campaign_provenance(const fs_campaign *c)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    if (!f)
+        return NULL;
+    csv_provenance(f, c);
+    if (fclose(f) != 0) {
+        free(text);
+        return NULL;
+    }
+    if (len && text[len - 1] == '\n')
+        text[len - 1] = 0;
+    return text;
+}
+
 /* The header's key columns: foot, terrain, robot and the swept keys. */
 static void csv_key_header(FILE *f, const fs_campaign *c)
 {

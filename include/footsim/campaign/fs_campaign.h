@@ -184,4 +184,70 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
 fs_status fs_campaign_equivalence(const char *result_path, const char *reference_path, int force, FILE *out,
                                   fs_error *err);
 
+/* ---- provenance and the journal (campaign_journal.c) -------------------------------------- */
+
+/* The provenance line the CSV files begin with ("# provenance: footsim VERSION; seeds A to B;
+ * SETTINGS; inputs PATH=HASH ...; overrides ..."), without its newline; malloc'd (NULL: out of
+ * memory). Two runs with the same line ran the same trials. */
+char *fs_campaign_provenance(const fs_campaign *c);
+
+/* Shards: trial index belongs to shard (1-based) of nshards when index % nshards == shard - 1, so
+ * any nshards splits any campaign into disjoint shares, each spread over every cell. */
+static inline int fs_campaign_in_shard(int index, int shard, int nshards)
+{
+    return index % nshards == shard - 1;
+}
+
+/* A journal is a campaign's finished trials, one line each, behind a header that says what made
+ * them: the campaign file (absolute), its --set as given, the shard, the trial count and the
+ * provenance line. A record holds every field of a trial's result exactly (numbers in C99 hex
+ * notation), so results read back are bit for bit those written. A run appends each record as its
+ * trial ends (fs_journal_append: one write, then fdatasync); a shard's results folder holds the
+ * same format sorted by index (trials.journal). A last line without its newline (a kill in the
+ * middle of a write) is ignored. */
+enum { FS_JOURNAL_FORMAT = 1 };
+typedef struct fs_journal_head {
+    char campaign[FS_PATH_MAX];          /* the campaign file, absolute */
+    char *set[FS_CAMPAIGN_MAX_SET];      /* the --set as given (malloc'd) */
+    int nset;
+    int shard, nshards;                  /* 1/1: the whole campaign */
+    int ntrials;                         /* the whole campaign's */
+    char *provenance;                    /* fs_campaign_provenance (malloc'd) */
+} fs_journal_head;
+
+/* The head of c loaded from campaign_path with sets, run as shard/nshards. */
+fs_status fs_journal_head_of(const fs_campaign *c, const char *campaign_path, const char *const *sets, int nsets,
+                             int shard, int nshards, fs_journal_head *h, fs_error *err);
+void fs_journal_head_free(fs_journal_head *h);
+
+/* Where a and b (called name_a and name_b) differ, in words ("inputs: 'feet/bio.ini=12..' in
+ * NAME_A, 'feet/bio.ini=34..' in NAME_B"), into why (size bytes); 0 when they are the same
+ * campaign (provenance and trial count; the shard and the campaign file's path are not compared). */
+int fs_journal_differs(const fs_journal_head *a, const fs_journal_head *b, const char *name_a, const char *name_b,
+                       char *why, size_t size);
+
+/* Writes the header to f; then fs_journal_print_record for each trial. */
+void fs_journal_print_head(FILE *f, const fs_journal_head *h);
+void fs_journal_print_record(FILE *f, int index, const fs_trial_result *r);
+
+/* Reads the journal at path: its head, and its records into results[h->ntrials] and done (1 where
+ * a record was read), both malloc'd. FS_BAD_INPUT ("path:line: ...") for a file that is not a
+ * journal, a malformed record, an index out of range or repeated; FS_NO_MEMORY. */
+fs_status fs_journal_read(const char *path, fs_journal_head *h, fs_trial_result **results, unsigned char **done,
+                          int *ndone, fs_error *err);
+
+/* An open journal being appended to (one process at a time: an exclusive flock on it). */
+typedef struct fs_journal {
+    char path[FS_PATH_MAX + 32];
+    int fd;
+} fs_journal;
+
+/* Opens path for appending; creates it with h's header (written whole) when it does not exist.
+ * FS_BAD_INPUT when another process holds it. */
+fs_status fs_journal_open(fs_journal *j, const char *path, const fs_journal_head *h, fs_error *err);
+
+/* Appends index's record and syncs it to the disk. */
+fs_status fs_journal_append(fs_journal *j, int index, const fs_trial_result *r, fs_error *err);
+void fs_journal_close(fs_journal *j);
+
 #endif

@@ -10,12 +10,14 @@
  * seconds (stopped, hung, looping) is reported to `died` with its task and how it ended, and
  * counted; the watchdog kills it with SIGKILL. A fresh worker takes its place and the pool goes on.
  * `done` may stop the pool by returning a status other than FS_OK: the workers still running are
- * killed and reaped. No worker outlives fs_pool_run. */
+ * killed and reaped. No worker outlives fs_pool_run, nor its parent: a worker whose parent dies (a
+ * kill -9) is killed with it. */
 #ifndef FS_POOL_H
 #define FS_POOL_H
 
 #include "footsim/base/fs_error.h"
 
+#include <signal.h>
 #include <stddef.h>
 
 /* How a worker ended in the middle of a task. */
@@ -42,6 +44,10 @@ typedef struct fs_pool_spec {
     /* in the parent, optional: after each task, answered or dead, and at least every
        tick_s while no task ends (done unchanged), so that a reporter's clock moves */
     void (*progress)(int done, int ntasks, void *user);
+    /* optional: when *stop becomes nonzero (a signal handler's flag), the pool stops within a
+     * fraction of a second: the workers still running are killed and reaped, the tasks they ran
+     * neither answered nor reported dead, and fs_pool_run returns FS_OK (the caller knows why) */
+    const volatile sig_atomic_t *stop;
 } fs_pool_spec;
 
 enum { FS_POOL_MAX_JOBS = 1024 };

@@ -56,6 +56,11 @@ fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
  * failure temp is removed. */
 fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err);
 
+/* Installs handler for sig (no SA_RESTART) unless sig is already ignored or handled. The
+ * results-folder functions install their own cleanup for SIGINT, SIGTERM and SIGHUP this way, so
+ * a caller that handles one itself (a campaign keeping its journal) installs its handler first. */
+void fs_catch_signal(int sig, void (*handler)(int));
+
 /* Removes a folder and everything in it (best effort; never follows symbolic links). */
 void fs_remove_tree(const char *dir);
 
