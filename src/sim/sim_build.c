@@ -243,7 +243,9 @@ static void body_reach(fs_sim *sim)
 }
 
 /* The ground as a grid for fs_sim_scene: a heightfield's own samples, or the plane or steps
- * sampled over the region around the foot. */
+ * sampled over the region around the foot. Only the grid's size and memory are settled here; the
+ * plane or steps are sampled on the scene's first call (sim_scene.c), so a run that draws no frame
+ * never samples them. */
 static fs_status scene_ground(fs_sim *sim, fs_error *err)
 {
     const fs_terrain *t = &sim->sc->terrain;
@@ -255,15 +257,13 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
     fs_scenario_footprint(sim->sc, box);
     int steps = t->def.kind == FS_TERRAIN_STEPPED;
     double dx = steps ? 0.001 : (box[1] - box[0] + 2 * m); /* steps need their edges sampled */
-    int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = steps ? 2 : 2;
+    int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = 2;
     double dy = box[3] - box[2] + 2 * m;
-    sim->ground_grid = malloc((size_t)nx * ny * sizeof *sim->ground_grid);
+    sim->ground_grid = malloc(sizeof *sim->ground_grid + (size_t)nx * ny * sizeof sim->ground_grid->z[0]);
     if (!sim->ground_grid)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sim->sc->path);
-    for (int j = 0; j < ny; j++)
-        for (int i = 0; i < nx; i++)
-            sim->ground_grid[j * nx + i] = fs_terrain_height(t, box[0] - m + i * dx, box[2] - m + j * dy);
-    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid, !steps};
+    sim->ground_grid->sampled = 0;
+    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid->z, !steps};
     return FS_OK;
 }
 

@@ -26,6 +26,13 @@ typedef struct fs_contact_scratch {
     int match[FS_MAX_CONTACTS];        /* this shape's contacts: the last step's contact each continues, or -1 */
 } gathered;
 
+/* A plane's or steps' heights for fs_sim_scene: memory taken at build, sampled when a scene is
+ * first asked for (sim_scene.c), so a run that draws nothing never samples them. */
+typedef struct fs_ground_grid {
+    int sampled;
+    double z[];
+} fs_ground_grid;
+
 /* Keeps the last step's contacts and the normal force ODE gave each (its feedback), for the next
  * step's friction bounds; call before the contacts of a step are made (sim_contacts.c). */
 void fs_sim_remember_contacts(fs_sim *sim);

@@ -9,6 +9,20 @@ static void copy3(double dst[3], const dReal *src)
         dst[k] = src[k];
 }
 
+/* The plane or steps sampled on the grid scene_ground (sim_build.c) set out, once: the first
+ * scene asks for it. A heightfield's grid is its own samples. */
+static void sample_ground(const fs_sim *sim)
+{
+    fs_ground_grid *grid = sim->ground_grid;
+    if (!grid || grid->sampled)
+        return;
+    const fs_scene_ground *g = &sim->scene_ground;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++)
+            grid->z[j * g->nx + i] = fs_terrain_height(&sim->sc->terrain, g->x0 + i * g->dx, g->y0 + j * g->dy);
+    grid->sampled = 1;
+}
+
 void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
 {
     const fs_foot_geom *g = sim->geom;
@@ -17,6 +31,7 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
     scene->scenario = sim->sc->name;
     scene->foot = g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
     scene->terrain = sim->sc->terrain.name;
+    sample_ground(sim);
     scene->ground = sim->scene_ground;
     for (int i = 0; i < sim->nshapes && scene->nshapes < FS_SCENE_MAX_SHAPES; i++) {
         dGeomID geom = sim->shape[i];

@@ -67,7 +67,8 @@ typedef struct fs_sim {
     int contacts_now;      /* contact points in the last step */
     dJointFeedback *feedback; /* FS_MAX_STEP_CONTACTS, filled by the last step */
     double contact_pos[FS_MAX_STEP_CONTACTS][3];
-    double *ground_grid;   /* planes and steps sampled for fs_sim_scene (heightfields use theirs) */
+    struct fs_ground_grid *ground_grid; /* planes and steps sampled for fs_sim_scene on its first
+                                           call (heightfields use theirs), or NULL */
     fs_scene_ground scene_ground;
     long contacts_total, collision_tests;
     fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
