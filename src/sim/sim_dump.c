@@ -127,6 +127,8 @@ cJSON *fs_model_json(const fs_scenario *sc, fs_error *err)
     cJSON_AddNumberToObject(root, "total_mass_kg", sc->geom.total_mass_kg);
     double ankle[3] = {sc->geom.ankle.x, sc->geom.ankle.y, sc->geom.ankle.z};
     cJSON_AddItemToObject(root, "ankle_m", vec(ankle, 3));
+    if (sim.robot_merged) /* a rigid, free robot is part of that body: its mass and inertia are in it */
+        cJSON_AddStringToObject(root, "robot_merged_into", sim.geom->body[sim.geom->ankle_body].name);
     cJSON_AddItemToObject(root, "bodies", bodies_json(&sim));
     cJSON_AddItemToObject(root, "joints", joints_json(&sim));
     cJSON_AddItemToObject(root, "springs", springs_json(&sim));

@@ -74,11 +74,11 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
         copy3(c->force_N, sim->feedback[i].f1);
     }
     fs_sim_ankle(sim, scene->ankle);
-    if (sim->robot && scene->nlinks < FS_SCENE_MAX_SEGMENTS) {
+    if ((sim->robot || sim->robot_merged) && scene->nlinks < FS_SCENE_MAX_SEGMENTS) {
         /* the robot as a line from the ankle to its centre of mass */
         fs_scene_segment *seg = &scene->link[scene->nlinks++];
         memcpy(seg->p1, scene->ankle, sizeof seg->p1);
-        copy3(seg->p2, dBodyGetPosition(sim->robot));
+        fs_sim_robot_com(sim, seg->p2, NULL);
     }
     for (int k = 0; k < 3; k++)
         scene->load_N[k] = fs_sim_load_now_N(sim) * sim->down[k];

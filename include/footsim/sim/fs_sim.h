@@ -52,8 +52,12 @@ typedef struct fs_sim {
     dGeomID shape[FS_MAX_SPHERES + 1];
     int nshapes;
     fs_spring spring[FS_MAX_SPRINGS];
-    dBodyID robot;         /* the passive body on the ankle, or NULL */
+    dBodyID robot;         /* the passive body on the ankle, or NULL (none, or merged) */
     dJointID robot_joint;  /* fixed, or the ankle hinge */
+    int robot_merged;      /* 1: a rigid, free robot is part of the ankle body (no body, no joint) */
+    dVector3 robot_local;  /* a merged robot's centre of mass on the ankle body */
+    fs_vec3 com[FS_MAX_BODIES]; /* each ODE body's centre in the design frame: the geometry's, or
+                                   the ankle body's and a merged robot's together */
     fs_spring achilles;    /* with robot.joint = achilles */
     int has_achilles;
     double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
@@ -127,7 +131,8 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
 /* A bound on the fastest point of any body: COM speed plus angular speed times its reach, m/s. */
 double fs_sim_max_speed(const fs_sim *sim);
 
-/* The same for body i (0 .. nbodies - 1; nbodies: the robot, its reach com_height_m), m/s. */
+/* The same for body i (0 .. nbodies - 1; nbodies: the robot, its own body or merged, its reach
+ * com_height_m), m/s. */
 double fs_sim_body_speed(const fs_sim *sim, int i);
 
 /* The ground's total force on the foot during the last step, N. */
@@ -148,8 +153,13 @@ typedef struct fs_rows {
 } fs_rows;
 void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows);
 
-/* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. */
+/* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. A
+ * merged robot (fs_sim.robot_merged) leans with the ankle body it is part of. */
 double fs_sim_robot_tilt(const fs_sim *sim);
+
+/* The robot's centre of mass and its velocity now (a merged robot's from the ankle body's
+ * motion); without a robot, the ankle body's. Either may be NULL. */
+void fs_sim_robot_com(const fs_sim *sim, double p[3], double v[3]);
 
 /* How far the foot's contact shapes reach below the terrain surface now, m (negative: above). */
 double fs_sim_penetration(const fs_sim *sim);
