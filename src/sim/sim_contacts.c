@@ -235,6 +235,7 @@ void fs_sim_collide(fs_sim *sim)
     const fs_terrain *t = &sim->sc->terrain;
     double merge_m = fs_terrain_is_heightfield(t) ? 1e-3 * t->dx : 1e-9;
     gathered *g = sim->scratch;
+    sim->contacts_found_now = sim->shapes_touching_now = sim->most_found_now = 0;
     for (int s = 0; s < sim->nshapes; s++) {
         g->sim = sim;
         g->n = 0;
@@ -244,6 +245,9 @@ void fs_sim_collide(fs_sim *sim)
         int from_ode = g->n;
         if (t->z && dGeomGetClass(sim->shape[s]) == dBoxClass)
             box_vertex_contacts(t, sim->shape[s], g);
+        sim->contacts_found_now += g->n;
+        sim->shapes_touching_now += g->n > 0;
+        sim->most_found_now = g->n > sim->most_found_now ? g->n : sim->most_found_now;
         int n = select_contacts(g, sim->sc->def.max_contacts, merge_m, from_ode);
         dBodyID body = dGeomGetBody(sim->shape[s]);
         match_contacts(g, s, n, sim->match_m[s]);

@@ -75,6 +75,9 @@ typedef struct fs_sim {
                                            call (heightfields use theirs), or NULL */
     fs_scene_ground scene_ground;
     long contacts_total, collision_tests;
+    /* the last step's contacts before merging and capping (ODE's and the box's lattice vertices),
+       how many foot shapes touched, and the most one shape found: what each shape really needs */
+    int contacts_found_now, shapes_touching_now, most_found_now;
     fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
     struct fs_contact_scratch *scratch; /* one shape's contacts while a step gathers them */
     char ode_context[FS_PATH_MAX]; /* what ODE's complaints name while this sim steps: its scenario */
