@@ -377,10 +377,10 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
             return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the terrain", sc->path);
     }
     sim->robot_merged = robot_merges(sim);
-    /* a merged robot's ankle body is made last, as the robot's own body was: ODE walks the island
-     * from the newest body, and that walk orders the rows its direct solver pivots through (made
-     * in index order, the contact steps of a landing took 16 % more instructions than with the
-     * fixed joint; made last, 13 % fewer) */
+    /* a merged robot's ankle body is made last, as the robot's own body was: the order bodies are
+     * made in sets the order of the rows ODE's direct solver pivots through (made in index order,
+     * the contact steps of a landing took 16 % more instructions than with the fixed joint; made
+     * last, 13 % fewer: docs/bench.md, Leaner step) */
     for (int i = 0; i < sim->geom->nbodies; i++)
         if (!sim->robot_merged || i != sim->geom->ankle_body)
             build_body(sim, i);
