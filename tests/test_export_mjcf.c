@@ -368,7 +368,8 @@ static void check_against_sim(const fs_scenario *sc, const xmodel *m)
 {
     static fs_sim sim;
     fs_error err;
-    REQUIRE(fs_sim_build(&sim, sc, NULL, &err) == FS_OK);
+    fs_sim_options opts = {.with_ground = 1, .keep_robot_body = 1}; /* as the export builds it */
+    REQUIRE(fs_sim_build(&sim, sc, &opts, &err) == FS_OK);
     for (int i = 0; i < sim.geom->nbodies; i++) {
         int b = body_named(m, sim.geom->body[i].name);
         REQUIRE(b >= 0);

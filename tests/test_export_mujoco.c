@@ -55,7 +55,7 @@ static void check_model(const mjModel *m, const fs_scenario *sc, int with_scenar
 {
     static fs_sim sim;
     fs_error err;
-    fs_sim_options opts = {.with_ground = with_scenario};
+    fs_sim_options opts = {.with_ground = with_scenario, .keep_robot_body = 1}; /* as the export builds it */
     REQUIRE(fs_sim_build(&sim, sc, &opts, &err) == FS_OK);
     for (int i = 0; i < sim.geom->nbodies + (sim.robot != NULL); i++) {
         dBodyID b = i < sim.geom->nbodies ? sim.body[i] : sim.robot;

@@ -52,6 +52,9 @@ typedef struct timing {
     int joint_rows;             /* constraint rows of joints and springs */
     double mean_rows;           /* all rows, contacts too, averaged over the steps */
     int max_rows;
+    double found_per_shape;     /* contacts a touching foot shape found a step (before merging, capping) */
+    double kept_per_shape;      /* and kept */
+    int most_found;             /* the most one shape found in a step */
 } timing;
 
 /* A skip measured: the scene with it (the cheap way) and without (the costly way). */
@@ -268,6 +271,8 @@ typedef struct row_count {
     double sum;                 /* of the total, over the steps seen */
     long seen;
     int max;
+    long found, kept, touching; /* contacts found and kept, shapes touching, summed over the steps */
+    int most_found;
 } row_count;
 
 static fs_status count_rows(void *user, const fs_sim *sim, fs_error *err)
@@ -280,6 +285,10 @@ static fs_status count_rows(void *user, const fs_sim *sim, fs_error *err)
     c->sum += r.total;
     c->seen++;
     c->max = r.total > c->max ? r.total : c->max;
+    c->found += sim->contacts_found_now;
+    c->kept += sim->contacts_now;
+    c->touching += sim->shapes_touching_now;
+    c->most_found = sim->most_found_now > c->most_found ? sim->most_found_now : c->most_found;
     return FS_OK;
 }
 
@@ -326,7 +335,9 @@ static fs_status time_scene(const scene *sc, int runs, int profiled, fs_provenan
     unload(loaded);
     if (s == FS_OK)
         *t = (timing){sc, runs, median_run(o, runs), prof, wall_s, read_s, rows.joints,
-                      rows.seen ? rows.sum / rows.seen : 0, rows.max};
+                      rows.seen ? rows.sum / rows.seen : 0, rows.max,
+                      rows.touching ? (double)rows.found / rows.touching : 0,
+                      rows.touching ? (double)rows.kept / rows.touching : 0, rows.most_found};
     return s;
 }
 
@@ -425,18 +436,18 @@ static void speed_csv(FILE *f, const context *c, const timing *t, int n)
     speed_header(f, c);
     fprintf(f, "scene,runner,runs,steps,sim_s,step_s,wall_s,steps_per_s,rtf,us_per_step,profiled_wall_s,collision_pct,"
                "ode_pct,own_pct,own_loads_pct,own_springs_pct,own_contacts_pct,own_check_pct,own_caller_pct,clock_read_ns,"
-               "joint_rows,mean_rows,max_rows\n");
+               "joint_rows,mean_rows,max_rows,found_per_shape,kept_per_shape,most_found\n");
     for (int i = 0; i < n; i++) {
         const outcome *m = &t[i].median;
         figures g = figures_of(&t[i]);
         fprintf(f, "%s,%s,%d,%ld,%.4f,%.3g,%.4f,%.0f,%.3f,%.2f,%.4f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%d,%.1f,"
-                   "%d\n",
+                   "%d,%.2f,%.2f,%d\n",
                 t[i].sc->name, runner_name(t[i].sc->how), t[i].runs, m->steps, m->sim_s, m->sim_s / m->steps,
                 m->wall_s, g.steps_per_s, g.rtf, g.us_per_step, t[i].prof_wall_s, g.collision_pct, g.ode_pct,
                 g.own_pct, stage_pct(&t[i].prof, FS_STAGE_LOADS), stage_pct(&t[i].prof, FS_STAGE_SPRINGS),
                 stage_pct(&t[i].prof, FS_STAGE_CONTACTS), stage_pct(&t[i].prof, FS_STAGE_CHECK),
                 stage_pct(&t[i].prof, FS_STAGE_CALLER), 1e9 * t[i].clock_read_s, t[i].joint_rows, t[i].mean_rows,
-                t[i].max_rows);
+                t[i].max_rows, t[i].found_per_shape, t[i].kept_per_shape, t[i].most_found);
     }
 }
 

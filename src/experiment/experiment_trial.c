@@ -64,7 +64,7 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     /* the impact: the vertical impulse until the robot (or the foot) stops going down */
     if (!w->arrested) {
         double v[3];
-        fs_sim_body_velocity(sim, sim->robot ? sim->geom->nbodies : sim->geom->ankle_body, v, NULL);
+        fs_sim_robot_com(sim, NULL, v);
         out->impact_impulse_Ns += f[2] * h;
         w->arrested = v[2] >= 0;
     }

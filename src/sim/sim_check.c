@@ -2,6 +2,7 @@
 #include "footsim/sim/fs_check.h"
 
 #include "footsim/sim/fs_sim.h"
+#include "sim_internal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -38,10 +39,8 @@ static dBodyID body_of(const fs_sim *sim, int i, const char **name)
 {
     int robot = i == sim->geom->nbodies;
     *name = robot ? "robot" : sim->geom->body[i].name;
-    return robot ? sim->robot : sim->body[i];
+    return robot ? fs_sim_robot_body(sim) : sim->body[i];
 }
-
-static int nbodies(const fs_sim *sim) { return sim->geom->nbodies + (sim->robot != NULL); }
 
 static int finite3(const dReal *v) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
 
@@ -49,7 +48,7 @@ static int finite3(const dReal *v) { return isfinite(v[0]) && isfinite(v[1]) && 
 static int check_bodies(fs_sim *sim, finding *f)
 {
     double bound = sim->sc->def.check_max_speed_m_per_s;
-    for (int i = 0; i < nbodies(sim); i++) {
+    for (int i = 0; i < fs_sim_nbodies(sim); i++) {
         const char *name;
         dBodyID b = body_of(sim, i, &name);
         if (!finite3(dBodyGetPosition(b)) || !finite3(dBodyGetLinearVel(b)) || !finite3(dBodyGetAngularVel(b))) {
@@ -158,7 +157,7 @@ static int check_energy(fs_sim *sim, finding *f)
     if (!(excess <= bound)) {
         /* name the fastest body: where the energy went */
         int fastest = 0;
-        for (int i = 1; i < nbodies(sim); i++)
+        for (int i = 1; i < fs_sim_nbodies(sim); i++)
             if (fs_sim_body_speed(sim, i) > fs_sim_body_speed(sim, fastest))
                 fastest = i;
         const char *name;

@@ -30,20 +30,39 @@ static int within(const dContactGeom *a, const dContactGeom *b, double r2)
     return dx * dx <= r2 && distance2(a, b) <= r2;
 }
 
+/* A sphere's contacts whose normals lie within SPHERE_MERGE_DEG of each other are one contact: each
+ * pushes along its normal through the sphere's centre, so the two push the same way to within that
+ * angle, which the kept one's friction covers for mu >= tan(10 deg) = 0.18 (a force along one
+ * normal is, on the other, a normal part and a tangential part at most tan(angle) of it). ODE
+ * returns such near-twins from neighbouring triangles of a heightfield under one sphere. */
+static const double SPHERE_MERGE_DEG = 10.0;
+static int alike_normals(const dContactGeom *a, const dContactGeom *b)
+{
+    double d = a->normal[0] * b->normal[0] + a->normal[1] * b->normal[1] + a->normal[2] * b->normal[2];
+    return d >= cos(SPHERE_MERGE_DEG * M_PI / 180.0);
+}
+
 /* Keeps at most max contacts: the same point found by two heightfield tiles (they share their
  * edges) counts once, then the deepest, then each next the farthest from those kept, so the
  * support the contacts give is spread like the real one. Contacts from index lattice_from on are
  * distinct lattice vertices (box_vertex_contacts), a lattice cell apart: none is another's twin,
- * so they are compared with the others only. */
-static int select_contacts(gathered *g, int max, double merge_m, int lattice_from)
+ * so they are compared with the others only. A sphere's contacts with alike normals merge into the
+ * deepest (sphere: 1). */
+static int select_contacts(gathered *g, int max, double merge_m, int lattice_from, int sphere)
 {
     int n = 0, others = 0;
     for (int i = 0; i < g->n; i++) {
         int twin = 0;
         if (i == lattice_from)
             others = n;
-        for (int k = 0; k < (i < lattice_from ? n : others) && !twin; k++)
+        for (int k = 0; k < (i < lattice_from ? n : others) && !twin; k++) {
             twin = within(&g->c[i], &g->c[k], merge_m * merge_m);
+            if (!twin && sphere && alike_normals(&g->c[i], &g->c[k])) {
+                twin = 1;
+                if (g->c[i].depth > g->c[k].depth)
+                    g->c[k] = g->c[i]; /* the deeper of the two stands for both */
+            }
+        }
         if (!twin)
             g->c[n++] = g->c[i];
     }
@@ -235,6 +254,7 @@ void fs_sim_collide(fs_sim *sim)
     const fs_terrain *t = &sim->sc->terrain;
     double merge_m = fs_terrain_is_heightfield(t) ? 1e-3 * t->dx : 1e-9;
     gathered *g = sim->scratch;
+    sim->contacts_found_now = sim->shapes_touching_now = sim->most_found_now = 0;
     for (int s = 0; s < sim->nshapes; s++) {
         g->sim = sim;
         g->n = 0;
@@ -244,7 +264,11 @@ void fs_sim_collide(fs_sim *sim)
         int from_ode = g->n;
         if (t->z && dGeomGetClass(sim->shape[s]) == dBoxClass)
             box_vertex_contacts(t, sim->shape[s], g);
-        int n = select_contacts(g, sim->sc->def.max_contacts, merge_m, from_ode);
+        sim->contacts_found_now += g->n;
+        sim->shapes_touching_now += g->n > 0;
+        sim->most_found_now = g->n > sim->most_found_now ? g->n : sim->most_found_now;
+        int n = select_contacts(g, sim->sc->def.max_contacts, merge_m, from_ode,
+                                dGeomGetClass(sim->shape[s]) == dSphereClass);
         dBodyID body = dGeomGetBody(sim->shape[s]);
         match_contacts(g, s, n, sim->match_m[s]);
         for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {

@@ -142,6 +142,8 @@ cJSON *fs_model_json(const fs_scenario *sc, fs_error *err)
     ok &= cJSON_AddNumberToObject(root, "total_mass_kg", sc->geom.total_mass_kg) != NULL;
     double ankle[3] = {sc->geom.ankle.x, sc->geom.ankle.y, sc->geom.ankle.z};
     ok &= fs_json_put(root, "ankle_m", vec(ankle, 3));
+    if (sim.robot_merged) /* a rigid, free robot is part of that body: its mass and inertia are in it */
+        ok &= cJSON_AddStringToObject(root, "robot_merged_into", sim.geom->body[sim.geom->ankle_body].name) != NULL;
     ok &= fs_json_put(root, "bodies", bodies_json(&sim));
     ok &= fs_json_put(root, "joints", joints_json(&sim));
     ok &= fs_json_put(root, "springs", springs_json(&sim));

@@ -669,7 +669,9 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
 {
     memset(out, 0, sizeof *out);
     fs_sim sim;
-    fs_sim_options opts = {.with_ground = with_scenario};
+    /* the robot as its own body, welded to the ankle body as footsim's fixed joint welds it: a reader
+       sees the robot apart (footsim's merge of the two is a speed cut, docs/bench.md) */
+    fs_sim_options opts = {.with_ground = with_scenario, .keep_robot_body = 1};
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;

@@ -7,39 +7,36 @@
 #define DEG (M_PI / 180.0)
 
 
-/* One tile: the samples [i0, i0 + nx) x [j0, j0 + ny) of the terrain's lattice. */
+/* One tile: the samples [i0, i0 + nx) x [j0, j0 + ny) of the terrain's lattice, copied in ODE's
+ * order into z (ODE reads them as doubles: no callback a sample). */
 typedef struct tile {
-    const fs_terrain *t;
     int i0, j0, nx, ny;
+    double *z;
     dHeightfieldDataID data;
 } tile;
 
 struct fs_ground {
     int ntiles;
+    double *samples; /* every tile's z, one block */
     tile tiles[];
 };
 
-static dReal tile_sample(void *user, int x, int z)
+static void build_tile(dSpaceID space, const fs_terrain *t, tile *k)
 {
-    const tile *k = user;
-    /* ODE's local z runs toward world -y: its row z is our row ny - 1 - z */
-    return k->t->z[(size_t)(k->j0 + k->ny - 1 - z) * k->t->nx + k->i0 + x];
-}
-
-static void build_tile(dSpaceID space, tile *k)
-{
-    const fs_terrain *t = k->t;
     double w = (k->nx - 1) * t->dx, d = (k->ny - 1) * t->dx, lo = INFINITY, hi = -INFINITY;
     for (int j = 0; j < k->ny; j++)
         for (int i = 0; i < k->nx; i++) {
             double z = t->z[(size_t)(k->j0 + j) * t->nx + k->i0 + i];
             lo = fmin(lo, z);
             hi = fmax(hi, z);
+            /* ODE's local z runs toward world -y: its row ny - 1 - j is our row j */
+            k->z[(size_t)(k->ny - 1 - j) * k->nx + i] = z;
         }
     k->data = dGeomHeightfieldDataCreate();
     /* a thick base below the lowest sample, so nothing passes under the surface */
     double thickness = 0.05 + (t->zmax - t->zmin);
-    dGeomHeightfieldDataBuildCallback(k->data, k, tile_sample, w, d, k->nx, k->ny, 1.0, 0.0, thickness, 0);
+    /* scale 1 and offset 0: ODE's height h * 1 + 0 is the sample itself, as the callback gave it */
+    dGeomHeightfieldDataBuildDouble(k->data, k->z, 0, w, d, k->nx, k->ny, 1.0, 0.0, thickness, 0);
     dGeomHeightfieldDataSetBounds(k->data, lo, hi);
     dGeomID hf = dCreateHeightfield(space, k->data, 1);
     /* ODE's heightfield is y-up: turn its y to world z (and its z to world -y) */
@@ -48,24 +45,37 @@ static void build_tile(dSpaceID space, tile *k)
     dGeomSetPosition(hf, t->x0 + (k->i0 + 0.5 * (k->nx - 1)) * t->dx, t->y0 + (k->j0 + 0.5 * (k->ny - 1)) * t->dx, 0);
 }
 
+/* Samples along one side of the tile that starts at sample first, of a lattice of n samples. */
+static int tile_side(int first, int cells, int n) { return (first + cells < n - 1 ? cells : n - 1 - first) + 1; }
+
 static fs_ground *build_heightfield(dSpaceID space, const fs_terrain *t, int cells, int *ok)
 {
     int tx = (t->nx - 1 + cells - 1) / cells, ty = (t->ny - 1 + cells - 1) / cells;
     fs_ground *g = malloc(sizeof *g + (size_t)tx * ty * sizeof g->tiles[0]);
-    if (!g) {
+    /* tiles share their edge samples: at most (cells + 1)^2 each */
+    size_t nsamples = 0;
+    for (int b = 0; b < ty; b++)
+        for (int a = 0; a < tx; a++)
+            nsamples += (size_t)tile_side(a * cells, cells, t->nx) * tile_side(b * cells, cells, t->ny);
+    double *samples = malloc(nsamples * sizeof *samples);
+    if (!g || !samples) {
+        free(g);
+        free(samples);
         *ok = 0;
         return NULL;
     }
     g->ntiles = 0;
+    g->samples = samples;
     for (int b = 0; b < ty; b++)
         for (int a = 0; a < tx; a++) {
             tile *k = &g->tiles[g->ntiles++];
-            k->t = t;
             k->i0 = a * cells;
             k->j0 = b * cells;
-            k->nx = (k->i0 + cells < t->nx - 1 ? cells : t->nx - 1 - k->i0) + 1;
-            k->ny = (k->j0 + cells < t->ny - 1 ? cells : t->ny - 1 - k->j0) + 1;
-            build_tile(space, k);
+            k->nx = tile_side(k->i0, cells, t->nx);
+            k->ny = tile_side(k->j0, cells, t->ny);
+            k->z = samples;
+            samples += (size_t)k->nx * k->ny;
+            build_tile(space, t, k);
         }
     return g;
 }
@@ -76,6 +86,7 @@ void fs_ground_destroy(fs_ground *g)
         return;
     for (int i = 0; i < g->ntiles; i++)
         dGeomHeightfieldDataDestroy(g->tiles[i].data);
+    free(g->samples);
     free(g);
 }
 

@@ -7,8 +7,9 @@
  * A heightfield comes as square tiles of tile_cells cells that share their edge samples: ODE
  * sorts every triangle plane under a box's bounding box against every other one (quadratic), so a
  * flat sole over one large heightfield costs milliseconds a step; over tiles, a fraction of that.
- * The terrain must outlive the space: the tiles read its samples. fs_ground_destroy (after the
- * space) frees the tiles' data. */
+ * Each tile holds a copy of its samples as doubles in ODE's row order (dGeomHeightfieldDataBuildDouble,
+ * not a callback a sample: the same heights, bit for bit). fs_ground_destroy (after the space)
+ * frees the tiles' data and samples. */
 #ifndef FS_GROUND_H
 #define FS_GROUND_H
 

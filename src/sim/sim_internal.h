@@ -26,6 +26,23 @@ typedef struct fs_contact_scratch {
     int match[FS_MAX_CONTACTS];        /* this shape's contacts: the last step's contact each continues, or -1 */
 } gathered;
 
+/* A plane's or steps' heights for fs_sim_scene: memory taken at build, sampled when a scene is
+ * first asked for (sim_scene.c), so a run that draws nothing never samples them. */
+typedef struct fs_ground_grid {
+    int sampled;
+    double z[];
+} fs_ground_grid;
+
+/* The foot's bodies and the robot (its own body or merged into the ankle body): what the checks
+ * and speeds go over, the robot last. */
+static inline int fs_sim_nbodies(const fs_sim *sim) { return sim->geom->nbodies + (sim->robot || sim->robot_merged); }
+
+/* The body the robot moves with: its own, or the ankle body it is merged into; NULL without one. */
+static inline dBodyID fs_sim_robot_body(const fs_sim *sim)
+{
+    return sim->robot_merged ? sim->body[sim->geom->ankle_body] : sim->robot;
+}
+
 /* Keeps the last step's contacts and the normal force ODE gave each (its feedback), for the next
  * step's friction bounds; call before the contacts of a step are made (sim_contacts.c). */
 void fs_sim_remember_contacts(fs_sim *sim);

@@ -60,7 +60,8 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
 
 _Static_assert(sizeof(dReal) == sizeof(double), "footsim copies ODE's dReal as double: ODE must be built in double precision");
 
-dBodyID fs_sim_body_id(const fs_sim *sim, int i) { return i == sim->geom->nbodies ? sim->robot : sim->body[i]; }
+/* Body i, or for i = nbodies the body the robot moves with (its own, or the ankle body it is merged into). */
+dBodyID fs_sim_body_id(const fs_sim *sim, int i) { return i == sim->geom->nbodies ? fs_sim_robot_body(sim) : sim->body[i]; }
 
 void fs_sim_body_pose(const fs_sim *sim, int i, double p[3], double R[9])
 {
@@ -84,11 +85,40 @@ void fs_sim_body_velocity(const fs_sim *sim, int i, double v[3], double w[3])
         memcpy(w, dBodyGetAngularVel(b), 3 * sizeof(double));
 }
 
+void fs_sim_robot_com(const fs_sim *sim, double p[3], double v[3])
+{
+    dBodyID b = fs_sim_robot_body(sim);
+    if (!b)
+        b = sim->body[sim->geom->ankle_body];
+    const double *l = sim->robot_merged ? sim->robot_local : (const double[3]){0, 0, 0};
+    dVector3 w;
+    if (p) {
+        dBodyGetRelPointPos(b, l[0], l[1], l[2], w);
+        memcpy(p, w, 3 * sizeof(double));
+    }
+    if (v) {
+        dBodyGetRelPointVel(b, l[0], l[1], l[2], w);
+        memcpy(v, w, 3 * sizeof(double));
+    }
+}
+
 double fs_sim_body_speed(const fs_sim *sim, int i)
 {
     int robot = i == sim->geom->nbodies;
     dBodyID b = fs_sim_body_id(sim, i);
-    const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b);
+    const dReal *w = dBodyGetAngularVel(b);
+    double v[3];
+    if (robot) {
+        fs_sim_robot_com(sim, NULL, v);
+    } else if (sim->robot_merged && i == sim->geom->ankle_body) {
+        /* the foot's part of the merged body: at its own COM, with its own reach */
+        fs_vec3 l = fs_sub(sim->geom->body[i].com, sim->com[i]);
+        dVector3 pv;
+        dBodyGetRelPointVel(b, l.x, l.y, l.z, pv);
+        memcpy(v, pv, sizeof v);
+    } else {
+        memcpy(v, dBodyGetLinearVel(b), sizeof v);
+    }
     double reach = robot ? sim->sc->def.robot.com_height_m : sim->reach[i];
     return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + reach * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
 }
@@ -96,16 +126,17 @@ double fs_sim_body_speed(const fs_sim *sim, int i)
 double fs_sim_max_speed(const fs_sim *sim)
 {
     double vmax = 0;
-    for (int i = 0; i < sim->geom->nbodies + (sim->robot != NULL); i++)
+    for (int i = 0; i < fs_sim_nbodies(sim); i++)
         vmax = fmax(vmax, fs_sim_body_speed(sim, i));
     return vmax;
 }
 
 double fs_sim_robot_tilt(const fs_sim *sim)
 {
-    if (!sim->robot)
+    dBodyID b = fs_sim_robot_body(sim);
+    if (!b)
         return 0;
-    const dReal *R = dBodyGetRotation(sim->robot);
+    const dReal *R = dBodyGetRotation(b);
     return acos(fmax(-1.0, fmin(1.0, R[10])));
 }
 

@@ -38,11 +38,28 @@ static void robot_box(const fs_sim *sim, fs_scene_shape *box)
     for (int i = 0; i < 3; i++)
         e[i] = sqrt(fmax(6 * (I[(i + 1) % 3] + I[(i + 2) % 3] - I[i]) / rd->mass_kg, 0));
     double lo = fmax(-0.5 * e[2], -rd->com_height_m), hi = 0.5 * e[2];
-    const dReal *q = dBodyGetQuaternion(sim->robot);
+    /* its own body, or the ankle body it is merged into (the frames are alike), at its centre */
+    dBodyID b = fs_sim_robot_body(sim);
+    const double *l = sim->robot_merged ? sim->robot_local : (const double[3]){0, 0, 0};
+    const dReal *q = dBodyGetQuaternion(b);
     dVector3 centre;
-    dBodyGetRelPointPos(sim->robot, 0, 0, 0.5 * (lo + hi), centre);
+    dBodyGetRelPointPos(b, l[0], l[1], l[2] + 0.5 * (lo + hi), centre);
     *box = (fs_scene_shape){FS_SHAPE_BOX, {e[0], e[1], hi - lo}, {centre[0], centre[1], centre[2]},
                             {q[0], q[1], q[2], q[3]}, -1};
+}
+
+/* The plane or steps sampled on the grid scene_ground (sim_build.c) set out, once: the first
+ * scene asks for it. A heightfield's grid is its own samples. */
+static void sample_ground(const fs_sim *sim)
+{
+    fs_ground_grid *grid = sim->ground_grid;
+    if (!grid || grid->sampled)
+        return;
+    const fs_scene_ground *g = &sim->scene_ground;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++)
+            grid->z[j * g->nx + i] = fs_terrain_height(&sim->sc->terrain, g->x0 + i * g->dx, g->y0 + j * g->dy);
+    grid->sampled = 1;
 }
 
 void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
@@ -53,6 +70,7 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
     scene->scenario = sim->sc->name;
     scene->foot = g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
     scene->terrain = sim->sc->terrain.name;
+    sample_ground(sim);
     scene->ground = sim->scene_ground;
     for (int i = 0; i < sim->nshapes && scene->nshapes < FS_SCENE_MAX_SHAPES; i++) {
         dGeomID geom = sim->shape[i];
@@ -117,7 +135,7 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
             scene->body[b].quat[k] = q[k];
         scene->nbodies = b + 1;
     }
-    if (sim->robot)
+    if (sim->robot || sim->robot_merged)
         robot_box(sim, &scene->robot), scene->has_robot = 1;
     for (int k = 0; k < 3; k++)
         scene->load_N[k] = fs_sim_load_now_N(sim) * sim->down[k];

@@ -36,6 +36,8 @@ typedef struct fs_sim_options {
                                load and no ground (fs_design_pinned_chain); 0: the whole foot */
     int record_drift;       /* 1: a drifting state is recorded, not stopped at (fs_check.h) */
     struct fs_profile *profile; /* where this sim's step time goes (added to), or NULL: not timed */
+    int keep_robot_body;    /* 1: a rigid, free robot stays a body of its own on a fixed joint instead
+                               of being merged into the ankle body (the export shows it apart) */
 } fs_sim_options;
 
 typedef struct fs_sim {
@@ -54,8 +56,12 @@ typedef struct fs_sim {
     dGeomID shape[FS_MAX_SPHERES + 1];
     int nshapes;
     fs_spring spring[FS_MAX_SPRINGS];
-    dBodyID robot;         /* the passive body on the ankle, or NULL */
+    dBodyID robot;         /* the passive body on the ankle, or NULL (none, or merged) */
     dJointID robot_joint;  /* fixed, or the ankle hinge */
+    int robot_merged;      /* 1: a rigid, free robot is part of the ankle body (no body, no joint) */
+    dVector3 robot_local;  /* a merged robot's centre of mass on the ankle body */
+    fs_vec3 com[FS_MAX_BODIES]; /* each ODE body's centre in the design frame: the geometry's, or
+                                   the ankle body's and a merged robot's together */
     fs_spring achilles;    /* with robot.joint = achilles */
     int has_achilles;
     double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
@@ -69,9 +75,13 @@ typedef struct fs_sim {
     int contacts_now;      /* contact points in the last step */
     dJointFeedback *feedback; /* FS_MAX_STEP_CONTACTS, filled by the last step */
     double contact_pos[FS_MAX_STEP_CONTACTS][3];
-    double *ground_grid;   /* planes and steps sampled for fs_sim_scene (heightfields use theirs) */
+    struct fs_ground_grid *ground_grid; /* planes and steps sampled for fs_sim_scene on its first
+                                           call (heightfields use theirs), or NULL */
     fs_scene_ground scene_ground;
     long contacts_total, collision_tests;
+    /* the last step's contacts before merging and capping (ODE's and the box's lattice vertices),
+       how many foot shapes touched, and the most one shape found: what each shape really needs */
+    int contacts_found_now, shapes_touching_now, most_found_now;
     fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
     struct fs_contact_scratch *scratch; /* one shape's contacts while a step gathers them */
     unsigned long rand_seed; /* this sim's state of ODE's random generator, which QuickStep draws on */
@@ -129,7 +139,8 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
 /* A bound on the fastest point of any body: COM speed plus angular speed times its reach, m/s. */
 double fs_sim_max_speed(const fs_sim *sim);
 
-/* The same for body i (0 .. nbodies - 1; nbodies: the robot, its reach com_height_m), m/s. */
+/* The same for body i (0 .. nbodies - 1; nbodies: the robot, its own body or merged, its reach
+ * com_height_m), m/s. */
 double fs_sim_body_speed(const fs_sim *sim, int i);
 
 /* The ground's total force on the foot during the last step, N. */
@@ -150,7 +161,7 @@ typedef struct fs_rows {
 } fs_rows;
 void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows);
 
-/* Body i (0 .. nbodies - 1; nbodies: the robot) now: its position, m, and rotation R (row-major,
+/* Body i (0 .. nbodies - 1; nbodies: the robot's body, or the ankle body a merged robot is part of) now: its position, m, and rotation R (row-major,
  * R[3 * r + c]: its axes are the columns, world = R * body), either of them NULL if not wanted. */
 void fs_sim_body_pose(const fs_sim *sim, int i, double p[3], double R[9]);
 /* Body i's linear velocity, m/s, and angular velocity, rad/s (world frame), either NULL if not wanted. */
@@ -158,8 +169,13 @@ void fs_sim_body_velocity(const fs_sim *sim, int i, double v[3], double w[3]);
 /* Adds a torque (world frame, N m) to body i for the coming step only (a driver's before_step). */
 void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3]);
 
-/* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. */
+/* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. A
+ * merged robot (fs_sim.robot_merged) leans with the ankle body it is part of. */
 double fs_sim_robot_tilt(const fs_sim *sim);
+
+/* The robot's centre of mass and its velocity now (a merged robot's from the ankle body's
+ * motion); without a robot, the ankle body's. Either may be NULL. */
+void fs_sim_robot_com(const fs_sim *sim, double p[3], double v[3]);
 
 /* How far the foot's contact shapes reach below the terrain surface now, m (negative: above). */
 double fs_sim_penetration(const fs_sim *sim);
