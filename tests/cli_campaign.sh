@@ -3,16 +3,7 @@
 # -j 1 and -j 4 write identical files; a worker that dies is reported as failed_numerics and the
 # campaign goes on; expectations set the exit status; compare exits 0 on identical summaries and
 # 1 on a planted change. Usage: cli_campaign.sh path/to/footsim (run from the source folder).
-fs=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-
-check() { # check DESCRIPTION COMMAND...: the command must succeed
-    what=$1
-    shift
-    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $what" >&2; fi
-}
+. "$(dirname "$0")/cli_check.sh"
 
 cat >"$tmp/small.ini" <<EOF
 [campaign]
@@ -37,29 +28,29 @@ EOF
 
 # the same campaign on 1 and on 4 workers: the same files, byte for byte
 "$fs" campaign "$tmp/small.ini" -j 1 --out "$tmp/j1" >"$tmp/j1.out" 2>"$tmp/j1.err"
-check "campaign -j 1 exits 0 (its expectation holds)" [ $? -eq 0 ]
+check_that "campaign -j 1 exits 0 (its expectation holds)" [ $? -eq 0 ]
 "$fs" campaign "$tmp/small.ini" -j 4 --out "$tmp/j4" >"$tmp/j4.out" 2>"$tmp/j4.err"
-check "campaign -j 4 exits 0" [ $? -eq 0 ]
+check_that "campaign -j 4 exits 0" [ $? -eq 0 ]
 for f in summary.json summary.csv summary.md trials.csv chart.dat chart.gp; do
-    check "$f written" [ -s "$tmp/j1/$f" ]
-    check "$f the same with -j 1 and -j 4" cmp -s "$tmp/j1/$f" "$tmp/j4/$f"
+    check_that "$f written" [ -s "$tmp/j1/$f" ]
+    check_that "$f the same with -j 1 and -j 4" cmp -s "$tmp/j1/$f" "$tmp/j4/$f"
 done
 if command -v gnuplot >/dev/null 2>&1; then
-    check "success.png the same with -j 1 and -j 4" cmp -s "$tmp/j1/success.png" "$tmp/j4/success.png"
+    check_that "success.png the same with -j 1 and -j 4" cmp -s "$tmp/j1/success.png" "$tmp/j4/success.png"
 fi
-check "rows in order of foot, terrain, seed" [ "$(grep -v '^#' "$tmp/j1/trials.csv" | cut -d, -f1,2,4 | tr '\n' ' ')" = \
+check_that "rows in order of foot, terrain, seed" [ "$(grep -v '^#' "$tmp/j1/trials.csv" | cut -d, -f1,2,4 | tr '\n' ' ')" = \
     "foot,terrain,seed bio,bumpy,1 bio,bumpy,2 bio,bumpy,3 flat,bumpy,1 flat,bumpy,2 flat,bumpy,3 " ]
 # without a terminal: no bar redrawn with carriage returns, but plain progress lines (at each tenth
 # of the trials and at the end); stderr holds nothing else but, gnuplot being optional, the line
 # that says the chart was skipped
 grep -v 'gnuplot is not installed' "$tmp/j1.err" | grep -v '^footsim campaign: [0-9]*/6 trials done, 0 failed, ' >"$tmp/j1.rest"
-check "no progress bar when stderr is not a terminal" [ ! -s "$tmp/j1.rest" ]
-check "no carriage return without a terminal" [ -z "$(tr -dc '\r' <"$tmp/j1.err")" ]
-check "a plain progress line at the end" grep -q '^footsim campaign: 6/6 trials done, 0 failed, ' "$tmp/j1.err"
-check "at most a line per tenth and the end" [ "$(grep -c 'trials done' "$tmp/j1.err")" -le 11 ]
-check "summary.json has the row fields" grep -q '"median_peak_force_N"' "$tmp/j1/summary.json"
-check "summary.csv names its columns with units" grep -q '^foot,terrain,robot,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
-check "trials.csv names the rule that decided each trial" grep -q "^foot,terrain,robot,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule," "$tmp/j1/trials.csv"
+check_that "no progress bar when stderr is not a terminal" [ ! -s "$tmp/j1.rest" ]
+check_that "no carriage return without a terminal" [ -z "$(tr -dc '\r' <"$tmp/j1.err")" ]
+check_that "a plain progress line at the end" grep -q '^footsim campaign: 6/6 trials done, 0 failed, ' "$tmp/j1.err"
+check_that "at most a line per tenth and the end" [ "$(grep -c 'trials done' "$tmp/j1.err")" -le 11 ]
+check_that "summary.json has the row fields" grep -q '"median_peak_force_N"' "$tmp/j1/summary.json"
+check_that "summary.csv names its columns with units" grep -q '^foot,terrain,robot,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
+check_that "trials.csv names the rule that decided each trial" grep -q "^foot,terrain,robot,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule," "$tmp/j1/trials.csv"
 
 # a worker that dies on seed 2 (as an ODE error makes it, exit 3): failed_numerics, the campaign
 # goes on; an expectation that cannot hold then fails with exit 1, after the results are written;
@@ -68,32 +59,32 @@ mkdir "$tmp/nopath"
 FOOTSIM_TEST_CRASH_SEED=2 PATH="$tmp/nopath" "$fs" campaign "$tmp/small.ini" -j 2 --out "$tmp/crash" \
     --set expect.all.foot=flat --set expect.all.terrain=bumpy --set expect.all.min_success=1 \
     >"$tmp/crash.out" 2>"$tmp/crash.err"
-check "a failed expectation exits 1" [ $? -eq 1 ]
-check "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy under drop_weight landed . of 3' "$tmp/crash.out"
-check "the dead worker's trials are failed_numerics" [ "$(grep -c ',2,.*failed_numerics,.*seed 2, exited with status 3' "$tmp/crash/trials.csv")" -eq 2 ]
-check "the other trials ran" [ "$(grep -v '^#' "$tmp/crash/trials.csv" | grep -c -v failed_numerics)" -eq 5 ]
-check "the summary counts them" grep -q '"failed_numerics":	1' "$tmp/crash/summary.json"
-check "the death is reported on stderr" grep -q 'foot bio on terrain bumpy under robot drop_weight, seed 2, exited with status 3' "$tmp/crash.err"
-check "no gnuplot: said so" grep -q 'gnuplot is not installed' "$tmp/crash.err"
-check "no gnuplot: no chart" [ ! -e "$tmp/crash/success.png" ]
+check_that "a failed expectation exits 1" [ $? -eq 1 ]
+check_that "the failed expectation is named with its numbers" grep -q 'FAILED all: flat on bumpy under drop_weight landed . of 3' "$tmp/crash.out"
+check_that "the dead worker's trials are failed_numerics" [ "$(grep -c ',2,.*failed_numerics,.*seed 2, exited with status 3' "$tmp/crash/trials.csv")" -eq 2 ]
+check_that "the other trials ran" [ "$(grep -v '^#' "$tmp/crash/trials.csv" | grep -c -v failed_numerics)" -eq 5 ]
+check_that "the summary counts them" grep -q '"failed_numerics":	1' "$tmp/crash/summary.json"
+check_that "the death is reported on stderr" grep -q 'foot bio on terrain bumpy under robot drop_weight, seed 2, exited with status 3' "$tmp/crash.err"
+check_that "no gnuplot: said so" grep -q 'gnuplot is not installed' "$tmp/crash.err"
+check_that "no gnuplot: no chart" [ ! -e "$tmp/crash/success.png" ]
 
 # provenance: every result file says what made it; compare refuses other overrides unless --force
-check "trials.csv starts with its provenance" sh -c "head -1 '$tmp/j1/trials.csv' | grep -q '^# provenance: footsim .*; seeds 1 to 3; step_s .*; inputs small.ini=[0-9a-f]\{16\} '"
-check "summary.json records the version and the inputs' hashes" grep -q '"hash":' "$tmp/j1/summary.json"
+check_that "trials.csv starts with its provenance" sh -c "head -1 '$tmp/j1/trials.csv' | grep -q '^# provenance: footsim .*; seeds 1 to 3; step_s .*; inputs small.ini=[0-9a-f]\{16\} '"
+check_that "summary.json records the version and the inputs' hashes" grep -q '"hash":' "$tmp/j1/summary.json"
 "$fs" campaign "$tmp/small.ini" -j 2 --out "$tmp/other" --set run.step_s=2e-4 >/dev/null 2>&1
 "$fs" compare "$tmp/other/summary.json" "$tmp/j1/summary.json" >"$tmp/prov.out" 2>"$tmp/prov.err"
-check "compare refuses results of other overrides (exit 2)" [ $? -eq 2 ]
-check "and names the difference" grep -q 'provenance: overrides differs' "$tmp/prov.out"
+check_that "compare refuses results of other overrides (exit 2)" [ $? -eq 2 ]
+check_that "and names the difference" grep -q 'provenance: overrides differs' "$tmp/prov.out"
 "$fs" compare "$tmp/other/summary.json" "$tmp/j1/summary.json" --force >"$tmp/prov.out" 2>&1
-check "compare --force compares them anyway (exit 0 or 1)" [ $? -le 1 ]
+check_that "compare --force compares them anyway (exit 0 or 1)" [ $? -le 1 ]
 
 # a run's metrics.json and a trial's trial.json record what made them the same way
 "$fs" run scenarios/static_load.ini --set run.duration_s=0.02 --out "$tmp/run" >/dev/null 2>&1
-check "metrics.json records the version, the overrides and the inputs' hashes" sh -c "tr -d ' \t\n' <'$tmp/run/metrics.json' |
+check_that "metrics.json records the version, the overrides and the inputs' hashes" sh -c "tr -d ' \t\n' <'$tmp/run/metrics.json' |
     grep -q '\"provenance\":{\"footsim\":\"[^\"]*\",\"overrides\":\[\"run.duration_s=0.02\"\],\"inputs\":\[{\"path\":\"static_load.ini\",\"hash\":\"[0-9a-f]\{16\}\"}'"
-check "and the settings" grep -q '"settings":.*"step_s 0.0001, stepper step' "$tmp/run/metrics.json"
+check_that "and the settings" grep -q '"settings":.*"step_s 0.0001, stepper step' "$tmp/run/metrics.json"
 "$fs" trial scenarios/campaign_test_trial.ini --seed 2 --set run.duration_s=0.05 --out "$tmp/trial" >/dev/null 2>&1
-check "trial.json records its seed and its inputs" sh -c "grep -q '\"first_seed\":[[:space:]]*2' '$tmp/trial/trial.json' &&
+check_that "trial.json records its seed and its inputs" sh -c "grep -q '\"first_seed\":[[:space:]]*2' '$tmp/trial/trial.json' &&
     grep -q '\"path\":[[:space:]]*\"robots/drop_weight.ini\"' '$tmp/trial/trial.json'"
 
 # optimize: its progress counts evaluations and their trials, as plain lines in a log
@@ -110,26 +101,25 @@ max = 24000
 start = 12000
 EOF
 "$fs" optimize "$tmp/opt.ini" -j 2 --set run.duration_s=0.3 --set campaign.seeds=1 --out "$tmp/opt" >/dev/null 2>"$tmp/opt.err"
-check "a tiny optimize runs (exit 0: its target holds)" [ $? -eq 0 ]
-check "optimize: no carriage return in a log" [ -z "$(tr -dc '\r' <"$tmp/opt.err")" ]
-check "optimize: evaluations.csv says what made it (the optimize file, the campaign's files, every --set)" sh -c \
+check_that "a tiny optimize runs (exit 0: its target holds)" [ $? -eq 0 ]
+check_that "optimize: no carriage return in a log" [ -z "$(tr -dc '\r' <"$tmp/opt.err")" ]
+check_that "optimize: evaluations.csv says what made it (the optimize file, the campaign's files, every --set)" sh -c \
     "head -1 '$tmp/opt/evaluations.csv' | grep -q \"^# provenance: footsim .*; seeds 1 to 1; .*; inputs opt.ini=[0-9a-f]\{16\} small.ini=.*; overrides 'run.duration_s=0.3' 'campaign.seeds=1'\$\""
-check "optimize: evaluations done of at most, then trials" grep -q '^footsim optimize: evaluation 4/4, 2/2 trials done, 0 failed, ' "$tmp/opt.err"
+check_that "optimize: evaluations done of at most, then trials" grep -q '^footsim optimize: evaluation 4/4, 2/2 trials done, 0 failed, ' "$tmp/opt.err"
 
 # compare: identical summaries exit 0; a planted change in a rate or a median exits 1
 "$fs" compare "$tmp/j4/summary.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
-check "compare of identical summaries exits 0" [ $? -eq 0 ]
-check "compare says identical" grep -q 'identical' "$tmp/cmp.out"
+check_that "compare of identical summaries exits 0" [ $? -eq 0 ]
+check_that "compare says identical" grep -q 'identical' "$tmp/cmp.out"
 sed '0,/"success_rate":/s/"success_rate":[^,]*/"success_rate":	-1/' "$tmp/j1/summary.json" >"$tmp/rate.json"
 "$fs" compare "$tmp/rate.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
-check "compare exits 1 when a rate leaves the baseline interval" [ $? -eq 1 ]
-check "compare names the rate" grep -q '| bio | bumpy | drop_weight | success_rate | .* | -1 |.*outside' "$tmp/cmp.out"
+check_that "compare exits 1 when a rate leaves the baseline interval" [ $? -eq 1 ]
+check_that "compare names the rate" grep -q '| bio | bumpy | drop_weight | success_rate | .* | -1 |.*outside' "$tmp/cmp.out"
 sed '0,/"median_steps":/s/"median_steps":[^,]*/"median_steps":	1e12/' "$tmp/j1/summary.json" >"$tmp/steps.json"
 "$fs" compare "$tmp/steps.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
-check "compare exits 1 when a median moves too far" [ $? -eq 1 ]
-check "compare names the median" grep -q 'median_steps .* 1e+12 .*outside' "$tmp/cmp.out"
+check_that "compare exits 1 when a median moves too far" [ $? -eq 1 ]
+check_that "compare names the median" grep -q 'median_steps .* 1e+12 .*outside' "$tmp/cmp.out"
 "$fs" compare "$tmp/j1/summary.json" "$tmp/missing.json" 2>"$tmp/cmp.err"
-check "compare of a missing file exits 2" [ $? -eq 2 ]
+check_that "compare of a missing file exits 2" [ $? -eq 2 ]
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -1,5 +1,5 @@
 # Sourced by the cli_*.sh tests: $fs the footsim command (the test's first argument), $tmp a folder
-# removed at exit, check 'CONDITION' to count a check, expect STATUS PATTERN -- ARGS to run footsim
+# removed at exit, check 'CONDITION' (or check_that DESCRIPTION COMMAND...) to count a check, expect STATUS PATTERN -- ARGS to run footsim
 # and check its exit status and stderr, and finish to report "N passed, N failed" and
 # set the exit status.
 fs=$1
@@ -7,6 +7,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0 failed=0
 check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1" >&2; fi; }
+# check_that DESCRIPTION COMMAND...: COMMAND (run as given, not evaluated) must succeed
+check_that() {
+    what=$1
+    shift
+    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $what" >&2; fi
+}
 # expect STATUS PATTERN -- ARGS...: footsim ARGS exits STATUS with PATTERN on stderr
 expect() {
     want=$1 pattern=$2
@@ -23,6 +29,6 @@ expect() {
     fi
 }
 finish() {
-  echo "$passed passed, $failed failed"
+  echo "${1:+$1: }$passed passed, $failed failed"
   [ "$failed" -eq 0 ]
 }
