@@ -40,7 +40,7 @@ static const command commands[] = {
      "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
      "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
      "  Exit 1 when analytic and measured differ by more than 1 %."},
-    {"terrain", cli_terrain, "TERRAIN", "--height --png --scenario --set --data",
+    {"terrain", cli_terrain, "TERRAIN", "--height --png --replace --scenario --set --data",
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
      "  --scenario S gives one); with neither, a summary."},
@@ -99,7 +99,7 @@ static void usage(FILE *out)
 static void command_help(const command *c)
 {
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
-    if (strstr(c->options, "--replace"))
+    if (strstr(c->options, "--replace") && strstr(c->options, "--out"))
         printf(" [--out DIR [--replace]]");
     else if (strstr(c->options, "--out"))
         printf(" [--out DIR]");
@@ -114,7 +114,7 @@ static void command_help(const command *c)
     if (strstr(c->options, "--force"))
         printf(" [--force]");
     if (strstr(c->options, "--height"))
-        printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
+        printf(" [--height X Y] [--png FILE [--replace] [--scenario SCENARIO]]");
     if (strstr(c->options, "--frames"))
         printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--video]]");
     if (strstr(c->options, "--set"))
@@ -125,6 +125,9 @@ static void command_help(const command *c)
     if (strstr(c->options, "--replace") && !strcmp(c->name, "bench"))
         printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
                "  without footsim's %s marker or only bench files in it is refused unless --replace.\n", FS_MARKER);
+    else if (strstr(c->options, "--replace") && !strstr(c->options, "--out"))
+        printf("\n  An existing FILE is replaced only when it is a PNG already; anything else there (a user's\n"
+               "  notes, data) is refused unless --replace is given.\n");
     else if (strstr(c->options, "--replace"))
         printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
                "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",

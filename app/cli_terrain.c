@@ -104,7 +104,10 @@ int cli_terrain(const cli_args *a)
 {
     static fs_terrain t;
     fs_error err;
-    if (a->png && fs_check_file_target(a->png, "--png", &err) != FS_OK)
+    /* an existing file there is replaced only when it is a PNG already (its signature), or --replace */
+    static const unsigned char png_signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (a->png && fs_check_file_target(a->png, "--png", png_signature, sizeof png_signature, "a PNG", a->replace,
+                                       &err) != FS_OK)
         return cli_report(err.status, err.message);
     if (fs_terrain_load(a->input, a->set, a->nset, &t, &err) != FS_OK)
         return cli_report(err.status, err.message);

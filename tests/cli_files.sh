@@ -83,7 +83,8 @@ else
     echo "skipped: running as root, a folder cannot be made unsearchable (the permission case of finding 11)"
 fi
 expect 2 "l1_m = '1e-308' is below the smallest normal double (2.2e-308)" -- model scenarios/feet/biomimetic.ini --set links.l1_m=1e-308
-expect 2 "from --set links.l3_m" -- model scenarios/feet/biomimetic.ini --set links.l3_m=1e-300
+expect 2 "footsim: --set links.l3_m: chain 1's toe cannot rest .* from --set links.l3_m)" -- model scenarios/feet/biomimetic.ini --set links.l3_m=1e-300
+check '! grep -q "biomimetic.ini:[0-9]" "$tmp/err"'
 check '! grep -q "[0-9]\{30\}" "$tmp/err"' # no 300-digit number for tiny geometry
 
 # ---- finding 12: nonsense refused ----------------------------------------------------------------
