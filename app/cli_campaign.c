@@ -2,9 +2,9 @@
  * the expectations) and `footsim compare` (a summary against its baseline).
  *
  * The trials run in footsim's pool of worker processes (fs_pool.h). A worker that dies (an ODE
- * error exits with status 3) or that the watchdog kills (no answer for FS_POOL_WATCHDOG_S) marks
- * its trial failed_numerics, saying which trial, which seed and how it ended; a fresh worker takes
- * its place and the campaign goes on. Tests: FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with
+ * error exits with status 3) marks its trial failed_numerics, one that the watchdog kills (no
+ * answer for FS_POOL_WATCHDOG_S) marks it hung, never a numerical failure; each is said with its
+ * trial, seed and how it ended; a fresh worker takes its place and the campaign goes on. Tests: FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with
  * status 3 on seed N, FOOTSIM_TEST_STOP_SEED=N stops it (SIGSTOP) on seed N;
  * FOOTSIM_TEST_KILL_IN_WRITE kills the campaign with SIGKILL half way through writing its files. */
 #include "cli.h"
@@ -84,17 +84,17 @@ static void record_death(int index, const fs_pool_death *d, void *user)
     r->end_time_s = r->touchdown_s = r->peak_tilt_deg = r->final_tilt_deg = r->peak_force_N = nan;
     r->impact_impulse_Ns = r->settle_time_s = r->mean_contacts = r->final_contacts = nan;
     r->ankle_drop_m = r->slip_m = nan;
-    r->outcome = FS_FAILED_NUMERICS;
+    r->outcome = d->timed_out ? FS_HUNG : FS_FAILED_NUMERICS; /* a hang says nothing of the physics */
     fs_trial_draw_pose(fs_campaign_pair(c, cell), seed, &r->draw);
     int foot, terrain, robot;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
-    r->rule = FS_RULE_NUMERICS;
+    r->rule = d->timed_out ? FS_RULE_WATCHDOG : FS_RULE_NUMERICS;
     snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s under robot %s, seed %d, %s",
              c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed, d->how);
     p->failed++;
     if (p->progress.tty)
         fputc('\n', stderr);
-    fprintf(stderr, "footsim campaign: %s; counted as failed_numerics\n", r->failure);
+    fprintf(stderr, "footsim campaign: %s; counted as %s\n", r->failure, fs_outcome_name(r->outcome));
 }
 
 static void draw_progress(int done, int ntrials, void *user)
@@ -117,8 +117,8 @@ int cli_campaign_trials(const fs_campaign *c, fs_trial_result *results, int jobs
     fs_status s = fs_pool_run(&spec, &stats, err);
     if (s == FS_OK && stats.timed_out)
         fprintf(stderr, "%s: %d worker%s made no progress for the watchdog's time and %s killed; their trials are "
-                        "counted as failed_numerics\n", who, stats.timed_out, stats.timed_out > 1 ? "s" : "",
-                stats.timed_out > 1 ? "were" : "was");
+                        "counted as hung, not as numerical failures\n",
+                who, stats.timed_out, stats.timed_out > 1 ? "s" : "", stats.timed_out > 1 ? "were" : "was");
     return s;
 }
 
@@ -145,7 +145,11 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
         printf("  %-12s on %-18s under %-14s landed %3d of %3d (%.2f, 95 %% CI [%.2f, %.2f])", c->foot[r->foot].name,
                c->terrain[r->terrain].name, c->robot[r->robot].name, r->landed, r->trials, r->success_rate, r->ci_low, r->ci_high);
         printf(", fell %3d, undecided %d; law: %s", r->fell, r->undecided, fs_law_name(r->law));
-        printf(r->failed_numerics ? ", failed_numerics %d\n" : "\n", r->failed_numerics);
+        if (r->failed_numerics)
+            printf(", failed_numerics %d", r->failed_numerics);
+        if (r->hung)
+            printf(", hung %d", r->hung);
+        putchar('\n');
     }
 }
 
