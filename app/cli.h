@@ -128,4 +128,10 @@ const char *cli_data_installed(void);
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);
 
+/* A zeroed block for a command's large working state (a scenario, a campaign, a results folder's
+ * paths): on the heap, owned and freed by the command, never a function-static, so that nothing
+ * lives from one call to the next. NULL after "footsim: out of memory" on stderr (the caller
+ * returns FS_NO_MEMORY). */
+void *cli_zalloc(size_t size);
+
 #endif

@@ -26,8 +26,17 @@ static int fail(const fs_error *err) { return cli_report(err->status, err->messa
 
 /* ---- run -------------------------------------------------------------------------------------- */
 
-static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
+/* What a run works on, too large for the stack (a scenario, a results folder's paths): on the heap,
+ * one per command (no state outlives it), freed on every path by its owner. */
+typedef struct run_work {
+    fs_scenario sc;
+    fs_outdir out;
+} run_work;
+
+static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
 {
+    fs_scenario *sc = &w->sc;
+    fs_outdir *out = &w->out;
     fs_error err;
     if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "run", &err) != FS_OK)
         return fail(&err);
@@ -43,15 +52,14 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
         snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
     /* the folder must be one footsim may replace, and the frame options right, before anything is
      * simulated; everything goes to a partial folder beside it, swapped in whole at the end */
-    static fs_outdir out;
-    if (fs_outdir_open(&out, dir, cli_run_files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_open(out, dir, cli_run_files, a->replace, "--out", &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     if (a->frames) {
-        int fs = cli_frames_open(a, sc, out.partial, &frames, &observer);
+        int fs = cli_frames_open(a, sc, out->partial, &frames, &observer);
         if (fs) {
-            fs_outdir_abort(&out);
+            fs_outdir_abort(out);
             return fs;
         }
         obs = &observer;
@@ -59,11 +67,11 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     if (getenv("FOOTSIM_TEST_ODE_ERROR"))
         dDebug(1, "FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
     fs_status rs = fs_run(sc, obs, res, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
-    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, out.partial, &err)) == FS_OK)
-        rs = fs_outdir_commit(&out, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, out->partial, &err)) == FS_OK)
+        rs = fs_outdir_commit(out, &err);
     if (rs != FS_OK || fstatus) {
-        fs_outdir_abort(&out);
+        fs_outdir_abort(out);
         fs_run_free(res);
         return fstatus ? fstatus : fail(&err);
     }
@@ -76,21 +84,28 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     printf("%s: %s foot, %.1f kg at %.0f deg%s: ankle drop %.3f mm, %s\n  results: %s/metrics.json, "
            "%s/trajectory.csv\n",
            sc->name, sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", sc->def.load_kg, sc->def.tilt_deg,
-           sc->def.robot.mass_kg > 0 ? ", robot on the ankle" : "", res->ankle_drop_m * 1e3, settled, out.path,
-           out.path);
+           sc->def.robot.mass_kg > 0 ? ", robot on the ankle" : "", res->ankle_drop_m * 1e3, settled, out->path,
+           out->path);
     return 0;
 }
 
-int cli_run(const cli_args *a)
+/* One run of a (a scenario file, or footsim's own for demo), its work on the heap. */
+static int run_once(const cli_args *a)
 {
-    static fs_scenario sc;
+    run_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
     fs_run_result res;
-    int s = run_scenario(a, &res, &sc);
+    int s = run_scenario(a, &res, w);
     if (s == 0)
         fs_run_free(&res);
-    fs_scenario_free(&sc);
+    fs_outdir_abort(&w->out); /* a no-op where run_scenario committed or gave it up */
+    fs_scenario_free(&w->sc);
+    free(w);
     return s;
 }
+
+int cli_run(const cli_args *a) { return run_once(a); }
 
 /* ---- model ------------------------------------------------------------------------------------ */
 
@@ -104,20 +119,31 @@ static int print_json(cJSON *root)
     return 0;
 }
 
-int cli_model(const cli_args *a)
+/* Runs a command that reads a design (model, stiffness) on its scenario (fs_scenario_for_design),
+ * which lives on the heap for the command and is freed on every path. */
+static int with_design(const cli_args *a, int (*command)(const cli_args *a, const fs_scenario *sc))
 {
-    static fs_scenario sc;
+    fs_scenario *sc = cli_zalloc(sizeof *sc);
+    if (!sc)
+        return FS_NO_MEMORY;
     fs_error err;
-    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
-        return fail(&err);
-    cJSON *root = fs_model_json(&sc, &err);
+    int s = fs_scenario_for_design(a->input, a->set, a->nset, sc, &err) != FS_OK ? fail(&err) : command(a, sc);
+    fs_scenario_free(sc);
+    free(sc);
+    return s;
+}
+
+static int model_of(const cli_args *a, const fs_scenario *sc)
+{
+    fs_error err;
+    cJSON *root = fs_model_json(sc, &err);
     if (!root)
         return fail(&err);
     int s = 0;
     if (a->json) {
         s = print_json(root);
     } else {
-        const fs_foot_geom *g = &sc.geom;
+        const fs_foot_geom *g = &sc->geom;
         printf("%s: %s foot, %d bodies, %d hinges, %d springs, %d contact shapes, %.3f kg\n", a->input,
                g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic", g->nbodies, g->nhinges, g->nsprings,
                g->nspheres + g->has_box, g->total_mass_kg);
@@ -130,6 +156,8 @@ int cli_model(const cli_args *a)
     cJSON_Delete(root);
     return s;
 }
+
+int cli_model(const cli_args *a) { return with_design(a, model_of); }
 
 /* ---- stiffness -------------------------------------------------------------------------------- */
 
@@ -258,17 +286,14 @@ static void pitch_json(cJSON *root, const pitch_report *p)
     }
 }
 
-int cli_stiffness(const cli_args *a)
+static int stiffness_of(const cli_args *a, const fs_scenario *sc)
 {
-    static fs_scenario sc;
     fs_error err;
-    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
-        return fail(&err);
-    if (sc.geom.kind != FS_FOOT_BIOMIMETIC)
+    if (sc->geom.kind != FS_FOOT_BIOMIMETIC)
         return cli_report(FS_BAD_INPUT, "stiffness: the flat foot has no joints; give a biomimetic design");
     fs_chain_stiffness k[FS_CHAINS];
-    fs_stiffness_analytic(&sc.geom, k);
-    if (fs_stiffness_measure(&sc, k, &err) != FS_OK)
+    fs_stiffness_analytic(&sc->geom, k);
+    if (fs_stiffness_measure(sc, k, &err) != FS_OK)
         return fail(&err);
     double worst = 0;
     for (int i = 0; i < FS_CHAINS; i++)
@@ -276,14 +301,14 @@ int cli_stiffness(const cli_args *a)
     /* the arch under the design load, on ground that grips (rolling) and on ground that does not */
     fs_planar_result eq[2];
     for (int f = 0; f < 2; f++) {
-        fs_planar_load load = {sc.design.design_load_kg * sc.def.gravity_m_per_s2, sc.def.gravity_m_per_s2, 0, f};
-        if (fs_planar_equilibrium(&sc.design, &sc.geom, 2, &load, &eq[f], &err) != FS_OK)
+        fs_planar_load load = {sc->design.design_load_kg * sc->def.gravity_m_per_s2, sc->def.gravity_m_per_s2, 0, f};
+        if (fs_planar_equilibrium(&sc->design, &sc->geom, 2, &load, &eq[f], &err) != FS_OK)
             return fail(&err);
     }
     /* the whole foot against pitching its ankle body, under the design load: the model, and ODE on
        the default ground's friction and on gripping ground */
     pitch_report pitch;
-    if (pitch_stiffness(&sc, a->input, &pitch, &err) != FS_OK)
+    if (pitch_stiffness(sc, a->input, &pitch, &err) != FS_OK)
         return fail(&err);
     if (a->json) {
         cJSON *root = cJSON_CreateObject();
@@ -303,7 +328,7 @@ int cli_stiffness(const cli_args *a)
         pitch_json(root, &pitch);
         cJSON_AddNumberToObject(root, "tolerance", STIFFNESS_TOLERANCE);
         cJSON *st = cJSON_AddObjectToObject(root, "static_check");
-        cJSON_AddNumberToObject(st, "load_kg", sc.design.design_load_kg);
+        cJSON_AddNumberToObject(st, "load_kg", sc->design.design_load_kg);
         cJSON_AddNumberToObject(st, "chain", 3);
         for (int f = 0; f < 2; f++) {
             cJSON *o = cJSON_AddObjectToObject(st, f ? "frictionless" : "gripping");
@@ -328,7 +353,7 @@ int cli_stiffness(const cli_args *a)
         }
         printf("largest relative difference %.2e (must be below %.0e): %s\n", worst, STIFFNESS_TOLERANCE,
                worst <= STIFFNESS_TOLERANCE ? "agree" : "DISAGREE");
-        printf("static check of chain 3 under %.1f kg (planar model, all chains alike):\n", sc.design.design_load_kg);
+        printf("static check of chain 3 under %.1f kg (planar model, all chains alike):\n", sc->design.design_load_kg);
         for (int f = 0; f < 2; f++)
             printf("  %-12s %s, %s; ankle drop %.3f mm, midfoot %+.2f deg, MTP %+.2f deg, ball %.2f mm above the "
                    "ground\n",
@@ -339,6 +364,8 @@ int cli_stiffness(const cli_args *a)
     }
     return worst <= STIFFNESS_TOLERANCE ? 0 : FS_EXPECTATION_FAILED;
 }
+
+int cli_stiffness(const cli_args *a) { return with_design(a, stiffness_of); }
 
 /* ---- trial ------------------------------------------------------------------------------------ */
 
@@ -379,47 +406,66 @@ static int fill_json(FILE *f, const void *user)
 /* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
  * trial.json and the frames, swapped in whole at the end. The frames are framed on the pose the
  * seed draws. */
-static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
+/* What a trial with a folder works on, too large for the stack: on the heap, one per command. */
+typedef struct trial_files {
+    fs_scenario base, placed;
+    fs_outdir out;
+} trial_files;
+
+static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, trial_files *w)
 {
-    static fs_scenario base, placed;
+    fs_scenario *base = &w->base, *placed = &w->placed;
+    fs_outdir *out = &w->out;
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, &base, &err) != FS_OK || fs_scenario_require(&base, "trial", &err) != FS_OK)
+    if (fs_scenario_load(a->input, a->set, a->nset, base, &err) != FS_OK || fs_scenario_require(base, "trial", &err) != FS_OK)
         return fail(&err);
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);
     else
-        snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base.name, seed);
-    static fs_outdir out;
+        snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base->name, seed);
     int s = 0;
-    if (fs_outdir_open(&out, dir, cli_trial_files, a->replace, "--out", &err) != FS_OK) {
-        fs_scenario_free(&base);
+    if (fs_outdir_open(out, dir, cli_trial_files, a->replace, "--out", &err) != FS_OK) {
+        fs_scenario_free(base);
         return fail(&err);
     }
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     if (a->frames) {
-        if (fs_scenario_copy(&placed, &base, &err) != FS_OK || fs_trial_place(&placed, seed, NULL, &err) != FS_OK)
+        if (fs_scenario_copy(placed, base, &err) != FS_OK || fs_trial_place(placed, seed, NULL, &err) != FS_OK)
             s = fail(&err);
-        if (!s && !(s = cli_frames_open(a, &placed, out.partial, &frames, &observer)))
+        if (!s && !(s = cli_frames_open(a, placed, out->partial, &frames, &observer)))
             obs = &observer;
-        fs_scenario_free(&placed);
+        fs_scenario_free(placed);
     }
-    fs_status rs = s ? FS_OK : fs_trial_run_scenario(&base, seed, obs, r, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
+    fs_status rs = s ? FS_OK : fs_trial_run_scenario(base, seed, obs, r, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
     if (!s && rs == FS_OK && !fstatus) {
         cJSON *o = trial_json(r);
-        rs = fs_write_in(out.partial, "trial.json", fill_json, o, &err);
+        rs = fs_write_in(out->partial, "trial.json", fill_json, o, &err);
         cJSON_Delete(o);
         if (rs == FS_OK)
-            rs = fs_outdir_commit(&out, &err);
+            rs = fs_outdir_commit(out, &err);
     }
-    fs_outdir_abort(&out);
-    fs_scenario_free(&base);
+    fs_outdir_abort(out);
+    fs_scenario_free(base);
     if (!s && rs != FS_OK)
         s = fail(&err);
-    snprintf(dir_out, size, "%s", out.path);
+    snprintf(dir_out, size, "%s", out->path);
     return s ? s : fstatus;
+}
+
+static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
+{
+    trial_files *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    int s = trial_work(a, seed, r, dir_out, size, w);
+    fs_outdir_abort(&w->out); /* each is a no-op where trial_work did it already */
+    fs_scenario_free(&w->base);
+    fs_scenario_free(&w->placed);
+    free(w);
+    return s;
 }
 
 int cli_trial(const cli_args *a)
@@ -466,14 +512,19 @@ int cli_trial(const cli_args *a)
 
 int cli_walk(const cli_args *a)
 {
-    static fs_scenario sc;
+    fs_scenario *sc = cli_zalloc(sizeof *sc);
+    if (!sc)
+        return FS_NO_MEMORY;
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK || fs_scenario_require(&sc, "walk", &err) != FS_OK)
-        return fail(&err);
     fs_walk_result r;
-    fs_status s = fs_walk_run(&sc, NULL, &r, &err);
-    const char *foot = sc.geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
-    fs_scenario_free(&sc);
+    fs_status s = fs_scenario_load(a->input, a->set, a->nset, sc, &err);
+    if (s == FS_OK)
+        s = fs_scenario_require(sc, "walk", &err);
+    if (s == FS_OK)
+        s = fs_walk_run(sc, NULL, &r, &err);
+    const char *foot = sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
+    fs_scenario_free(sc);
+    free(sc);
     if (s != FS_OK)
         return fail(&err);
     if (a->json) {
@@ -524,16 +575,12 @@ int cli_keys(const cli_args *a)
 int cli_demo(const cli_args *a)
 {
     (void)a;
-    static const char *scenarios[] = {"scenarios/static_load.ini", "scenarios/tilt10.ini"};
-    static fs_scenario sc;
+    static const char *const scenarios[] = {"scenarios/static_load.ini", "scenarios/tilt10.ini"};
     for (int i = 0; i < 2; i++) {
-        fs_run_result res;
         cli_args run = {.command = "run", .input = cli_data_path(scenarios[i])};
-        int s = run_scenario(&run, &res, &sc);
-        fs_scenario_free(&sc);
+        int s = run_once(&run);
         if (s)
             return s;
-        fs_run_free(&res);
     }
     cli_args st = {.command = "stiffness", .input = cli_data_path("scenarios/feet/biomimetic.ini")};
     int s = cli_stiffness(&st);
@@ -548,16 +595,21 @@ int cli_demo(const cli_args *a)
     /* the finding, in one line: the law for the trial scenario's robot (single_tall) on Table I */
     fs_error err;
     double K;
-    if (!s && fs_scenario_load(cli_data_path("scenarios/landing_trial.ini"), NULL, 0, &sc, &err) == FS_OK) {
+    fs_scenario *sc = s ? NULL : cli_zalloc(sizeof *sc);
+    if (!s && !sc)
+        return FS_NO_MEMORY;
+    if (sc && fs_scenario_load(cli_data_path("scenarios/landing_trial.ini"), NULL, 0, sc, &err) == FS_OK) {
         fs_pitch_law law;
-        double g = sc.def.gravity_m_per_s2;
-        if (fs_pitch_stiffness_model(&sc.design, &sc.geom, sc.def.robot.mass_kg * g, g, &K, &err) == FS_OK) {
-            fs_pitch_law_apply(K, &sc.def.robot, g, sc.def.landed_tilt_deg * M_PI / 180, &law);
+        double g = sc->def.gravity_m_per_s2;
+        if (fs_pitch_stiffness_model(&sc->design, &sc->geom, sc->def.robot.mass_kg * g, g, &K, &err) == FS_OK) {
+            fs_pitch_law_apply(K, &sc->def.robot, g, sc->def.landed_tilt_deg * M_PI / 180, &law);
             printf("note: the Table I biomimetic foot toppling under single_tall is the documented finding, not a "
                    "fault: that robot needs %.1f N m/rad of pitch stiffness and the foot has %.1f (docs/landing.md, "
                    "the pitch-stiffness law); under drop_weight it lands\n", law.demand, law.K);
         }
-        fs_scenario_free(&sc);
     }
+    if (sc)
+        fs_scenario_free(sc);
+    free(sc);
     return s;
 }

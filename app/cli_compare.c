@@ -209,25 +209,35 @@ static int prepare(const cli_args *a, const fs_scenario sc[2], const char *dir, 
     return s;
 }
 
+/* What render-compare works on, too large for the stack: on the heap, one per command. */
+typedef struct compare_work {
+    fs_scenario sc[2];
+    char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
+    fs_outdir out;
+} compare_work;
+
 int cli_render_compare(const cli_args *a)
 {
     if (!a->input2)
         return cli_report(FS_BAD_INPUT, "render-compare: give two scenario files, SCENARIO_A SCENARIO_B "
                                         "(the same file twice with --set b:foot.kind=flat compares the feet)");
-    static fs_scenario sc[2];
-    static char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
-    static fs_outdir out;
+    compare_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    fs_scenario *sc = w->sc;
+    char *dir = w->dir, *frames_dir = w->frames_dir;
+    fs_outdir *out = &w->out;
     fs_error err;
     cli_frame_opts o;
     fs_render *r[2] = {NULL, NULL};
     scene_store run[2] = {{0}, {0}};
-    int s = load_pair(a, sc, dir, sizeof dir);
+    int s = load_pair(a, sc, dir, sizeof w->dir);
     /* the folder must be one footsim may replace before anything is simulated; everything goes to
      * a partial folder beside it, swapped in whole at the end: a failure leaves the old one */
-    if (!s && fs_outdir_open(&out, dir, cli_compare_files, a->replace, "--out", &err) != FS_OK)
+    if (!s && fs_outdir_open(out, dir, cli_compare_files, a->replace, "--out", &err) != FS_OK)
         s = cli_report(err.status, err.message);
     if (!s)
-        s = prepare(a, sc, out.partial, &o, frames_dir, r);
+        s = prepare(a, sc, out->partial, &o, frames_dir, r);
     if (!s)
         s = reserve(sc, o.fps, run);
     for (int k = 0; k < 2 && !s; k++)
@@ -235,22 +245,24 @@ int cli_render_compare(const cli_args *a)
     if (!s)
         s = write_frames(r[0], &o, run, frames_dir);
     if (!s)
-        s = write_filmstrip(r[1], &o, run, out.partial);
+        s = write_filmstrip(r[1], &o, run, out->partial);
     if (!s && o.video)
-        s = cli_frames_video(out.partial, frames_dir, o.fps, run[0].n > run[1].n ? run[0].n : run[1].n, dir);
-    if (!s && fs_outdir_commit(&out, &err) != FS_OK)
+        s = cli_frames_video(out->partial, frames_dir, o.fps, run[0].n > run[1].n ? run[0].n : run[1].n, dir);
+    if (!s && fs_outdir_commit(out, &err) != FS_OK)
         s = cli_report(err.status, err.message);
     if (!s) {
         int n = run[0].n > run[1].n ? run[0].n : run[1].n;
         printf("render-compare: %s (%s foot, left) beside %s (%s foot, right)\n  frames: %s/frames/000000.png ... %06d.png "
                "(%d at %g per simulated second, %dx%d, camera %s)\n  filmstrip: %s/filmstrip.png\n",
-               sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), out.path, n - 1, n, o.fps, o.width,
-               o.height, fs_render_camera_names[o.camera], out.path);
+               sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), out->path, n - 1, n, o.fps, o.width,
+               o.height, fs_render_camera_names[o.camera], out->path);
     }
-    fs_outdir_abort(&out); /* when it was not committed */
+    fs_outdir_abort(out); /* when it was not committed */
     for (int k = 0; k < 2; k++) {
         fs_render_close(r[k]);
         store_free(&run[k]);
+        fs_scenario_free(&sc[k]);
     }
+    free(w);
     return s;
 }

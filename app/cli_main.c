@@ -7,6 +7,7 @@
 #include "footsim/io/fs_output.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 typedef struct command {
@@ -252,6 +253,14 @@ int cli_report(int status, const char *message)
     return status;
 }
 
+void *cli_zalloc(size_t size)
+{
+    void *p = calloc(1, size);
+    if (!p)
+        cli_report(FS_NO_MEMORY, "out of memory");
+    return p;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -273,7 +282,7 @@ int main(int argc, char **argv)
             return s;
         /* relative data files not found as given: --data, here, the installed data */
         cli_data_kind kind = data_kind(a.command);
-        static char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX];
+        char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX]; /* live until the command ends */
         a.input = cli_data_find(a.input, kind, input, sizeof input);
         a.input2 = cli_data_find(a.input2, kind, input2, sizeof input2);
         a.scenario = cli_data_find(a.scenario, CLI_DATA_SCENARIO, scenario, sizeof scenario);

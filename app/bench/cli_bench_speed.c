@@ -185,18 +185,21 @@ static fs_status run_once(const scene *sc, const char *const *extra, const fs_ru
 {
     const char *set[2 * MAX_SET];
     int n = join_set(sc, extra, set);
+    fs_scenario *loaded = sc->how == BY_TRIAL ? NULL : calloc(1, sizeof *loaded); /* taken before the clock */
+    if (sc->how != BY_TRIAL && !loaded)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory (bench speed, scene '%s')", sc->name);
     double t0 = fs_clock_s();
     fs_status s;
     if (sc->how == BY_TRIAL) {
         s = run_trial(cli_data_path(sc->path), set, n, obs, o, err);
     } else {
-        static fs_scenario loaded;
-        s = fs_scenario_load(cli_data_path(sc->path), set, n, &loaded, err);
+        s = fs_scenario_load(cli_data_path(sc->path), set, n, loaded, err);
         if (s == FS_OK)
-            s = run_engine(&loaded, sc->how, obs, o, err);
-        fs_scenario_free(&loaded);
+            s = run_engine(loaded, sc->how, obs, o, err);
+        fs_scenario_free(loaded);
     }
     o->wall_s = fs_clock_s() - t0;
+    free(loaded);
     if (s != FS_OK) {
         char what[FS_ERROR_MAX];
         snprintf(what, sizeof what, "%s", err->message);
@@ -320,18 +323,21 @@ static fs_status frames_run(const scene *sc, outcome *o, fs_error *err)
     if (!mkdtemp(tmp))
         return fs_fail(err, FS_IO, "%s: cannot make a temporary folder for the frames", tmp);
     cli_args a = {.command = "bench", .frames = 1, .size = "320x240"};
-    static fs_scenario loaded;
+    fs_scenario *loaded = calloc(1, sizeof *loaded); /* taken before the clock */
     cli_frames *frames = NULL;
     fs_run_observer obs;
     double t0 = fs_clock_s();
-    fs_status s = fs_scenario_load(cli_data_path(sc->path), sc->set, count_set(sc->set), &loaded, err);
-    if (s == FS_OK && cli_frames_open(&a, &loaded, tmp, &frames, &obs) != 0)
+    fs_status s = loaded ? fs_scenario_load(cli_data_path(sc->path), sc->set, count_set(sc->set), loaded, err)
+                         : fs_fail(err, FS_NO_MEMORY, "out of memory (bench speed, scene '%s')", sc->name);
+    if (s == FS_OK && cli_frames_open(&a, loaded, tmp, &frames, &obs) != 0)
         s = fs_fail(err, FS_BAD_INPUT, "no renderer");
     if (s == FS_OK)
-        s = run_engine(&loaded, sc->how, &obs, o, err);
+        s = run_engine(loaded, sc->how, &obs, o, err);
     cli_frames_close(frames, 0, tmp);
     o->wall_s = fs_clock_s() - t0;
-    fs_scenario_free(&loaded);
+    if (loaded)
+        fs_scenario_free(loaded);
+    free(loaded);
     fs_remove_tree(tmp);
     return s;
 }
@@ -589,8 +595,10 @@ static fs_status time_skips(int quick, skip_timing *t, int *n, fs_error *err)
 
 int cli_bench_speed(const cli_args *a, const char *dir)
 {
-    static timing t[NSCENES];
-    static skip_timing k[NSKIPS];
+    timing t[NSCENES];
+    skip_timing k[NSKIPS];
+    memset(t, 0, sizeof t);
+    memset(k, 0, sizeof k);
     int n = 0, nk = 0;
     context c;
     start_context(&c, a->quick);

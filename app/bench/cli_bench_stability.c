@@ -45,7 +45,7 @@ static const slice SLICES[NSLICES] = {
 /* finer around the explicit springs' limit (4e-5 to 8e-5 s for the default foot) */
 static const double STEPS_FULL[] = {1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 6e-5, 8e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
 static const double STEPS_QUICK[] = {2e-5, 1e-4, 5e-4, 2e-3, 1e-2};
-static const char *STEPPERS[2] = {"step", "quickstep"}, *SPRINGS[2] = {"implicit", "explicit"};
+static const char *const STEPPERS[2] = {"step", "quickstep"}, *const SPRINGS[2] = {"implicit", "explicit"};
 
 /* Simulated time of each run, s: the static load rises over 20 ms and settles by 0.2 s; the robot
  * dropped 5 cm lands at 0.1 s. */
@@ -104,17 +104,21 @@ static fs_status configure(const config *c, const fs_design_def *base, double du
 /* Steps the configuration for the duration, the checks recording drifts, until it blows up. */
 static void run_config(const config *c, const fs_design_def *base, double duration, outcome *o)
 {
-    static fs_scenario sc;
+    fs_scenario *sc = calloc(1, sizeof *sc); /* large: on the heap, freed on every path */
     fs_error err = {FS_OK, ""};
     memset(o, 0, sizeof *o);
-    o->status = fs_scenario_load(cli_data_path(SLICES[c->slice].scenario), NULL, 0, &sc, &err);
+    o->status = sc ? fs_scenario_load(cli_data_path(SLICES[c->slice].scenario), NULL, 0, sc, &err)
+                   : fs_fail(&err, FS_NO_MEMORY, "out of memory");
     if (o->status == FS_OK)
-        o->status = configure(c, base, duration, &sc, &err);
+        o->status = configure(c, base, duration, sc, &err);
     fs_sim sim;
     if (o->status == FS_OK)
-        o->status = fs_sim_build(&sim, &sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
+        o->status = fs_sim_build(&sim, sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
     if (o->status != FS_OK) {
         snprintf(o->error, sizeof o->error, "%.500s", err.message);
+        if (sc)
+            fs_scenario_free(sc);
+        free(sc);
         return;
     }
     fs_drive_spec spec = {.max_steps = (long)ceil(duration / c->step_s - 1e-9)};
@@ -136,9 +140,10 @@ static void run_config(const config *c, const fs_design_def *base, double durati
     o->bound_J = k->energy_bound_J;
     o->speed_m_per_s = k->max_speed_m_per_s;
     o->limit_s = fs_check_explicit_step_limit(&sim);
-    o->iterations = sc.def.iterations;
+    o->iterations = sc->def.iterations;
     fs_sim_destroy(&sim);
-    fs_scenario_free(&sc);
+    fs_scenario_free(sc);
+    free(sc);
 }
 
 /* ---- the runs, in footsim's pool of worker processes -------------------------------------------- */
@@ -436,20 +441,29 @@ int cli_bench_stability(const cli_args *a, const char *dir)
         return st;
     jobs = jobs < MAX_WORKERS ? jobs : MAX_WORKERS;
     fs_error err;
-    static fs_scenario base;
-    if (fs_scenario_load(cli_data_path(SLICES[0].scenario), NULL, 0, &base, &err) != FS_OK)
-        return fail(&err);
-    fs_scenario_free(&base);
-    if (fs_make_dirs(dir, &err) != FS_OK)
-        return fail(&err);
-    static config cfg[NSLICES * NCOMBOS * MAX_VALUES * 16];
-    int n = grid(a->quick, cfg);
-    outcome *out = calloc((size_t)n, sizeof *out);
-    if (!out)
+    /* the design the slices scale (its definition only: the terrain is let go at once), and the
+     * grid of configurations: large, so on the heap for this command */
+    fs_scenario *base = calloc(1, sizeof *base);
+    config *cfg = calloc(NSLICES * NCOMBOS * MAX_VALUES * 16, sizeof *cfg);
+    if (!base || !cfg) {
+        free(base);
+        free(cfg);
         return cli_report(FS_NO_MEMORY, "out of memory");
+    }
+    fs_status ls = fs_scenario_load(cli_data_path(SLICES[0].scenario), NULL, 0, base, &err);
+    fs_scenario_free(base);
+    if (ls == FS_OK)
+        ls = fs_make_dirs(dir, &err);
+    int n = ls == FS_OK ? grid(a->quick, cfg) : 0;
+    outcome *out = ls == FS_OK ? calloc((size_t)n, sizeof *out) : NULL;
+    if (ls != FS_OK || !out) {
+        free(base);
+        free(cfg);
+        return ls != FS_OK ? fail(&err) : cli_report(FS_NO_MEMORY, "out of memory");
+    }
     double duration = a->quick ? DURATION_QUICK_S : DURATION_FULL_S, t0 = fs_clock_s();
     fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
-    fs_status s = run_all(cfg, out, n, jobs, &base.design, duration, &err);
+    fs_status s = run_all(cfg, out, n, jobs, &base->design, duration, &err);
     report x = {cfg, out, n, a->quick, jobs, 0};
     if (s == FS_OK)
         s = fs_write_in(dir, "stability.csv", fill_csv, &x, &err);
@@ -464,6 +478,8 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     if (s == FS_OK)
         s = fs_write_in(dir, "stability.md", fill_summary, &x, &err);
     free(out);
+    free(base);
+    free(cfg);
     if (s != FS_OK)
         return fail(&err);
     printf("bench stability: %d runs; results: %s/stability.md, stability.csv, stability_*.png\n", n, dir);

@@ -28,6 +28,8 @@ typedef struct pending {
     int tree;
     pid_t owner;
 } pending;
+/* Static on purpose: the atexit and signal handlers that remove these take no argument, so the list
+ * they read must be the process's own (filled and read with no allocation: safe in a handler). */
 static pending pend[PENDING_MAX];
 static int npend, atexit_set;
 
@@ -163,7 +165,7 @@ fs_status fs_make_dirs(const char *dir, fs_error *err)
 }
 
 static int fsync_path(const char *path);
-static int sync_failed;
+static int sync_failed; /* static on purpose: nftw's callback takes no user pointer to report through */
 
 static int sync_folder(const char *path, const struct stat *st, int flag, struct FTW *ftw)
 {
