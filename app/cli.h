@@ -3,6 +3,7 @@
 #define FS_CLI_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 enum { CLI_MAX_SET = 256 };
 
@@ -18,6 +19,8 @@ typedef struct cli_args {
     int frames;                     /* --frames: write DIR/frames/NNNNNN.png */
     const char *fps, *size, *camera;/* --fps N, --size WxH, --camera NAME (as given; checked by the renderer) */
     int video;                      /* --video: also DIR/video.mp4 */
+    const char *exaggerate;         /* --exaggerate F: displacements from the neutral pose times F */
+    const char *frames_of;          /* --frames-of SELECTORS: frames of chosen campaign trials */
     const char *height_x, *height_y;/* --height X Y */
     const char *png;                /* --png FILE */
     const char *scenario;           /* --scenario FILE */
@@ -27,6 +30,12 @@ typedef struct cli_args {
     int quick;                      /* --quick: a smaller sweep (bench) */
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
     int force;                      /* --force: compare results of different provenance */
+    int equivalence;                /* --equivalence: compare judges equivalence to a reference */
+    int mjcf;                       /* --mjcf: export as MuJoCo MJCF */
+    const char *shard;              /* --shard I/N (campaign) */
+    int fresh;                      /* --fresh: start a campaign over, its journal removed */
+    const char *more[CLI_MAX_SET];  /* merge: the folders after the first */
+    int nmore;
 } cli_args;
 
 /* Frames of a run (app/cli_frames.c; app/cli_render.c without the renderer). cli_frames_open
@@ -39,6 +48,24 @@ typedef struct cli_frames cli_frames;
 int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
                     fs_run_observer *obs);
 int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir);
+/* The same with the frames straight in frames_dir (made already); no video. */
+int cli_frames_open_at(const cli_args *a, const fs_scenario *sc, const char *frames_dir, cli_frames **frames,
+                       fs_run_observer *obs);
+/* Checks the frame options for sc and that frames can be drawn, before anything is simulated. */
+int cli_frames_check(const cli_args *a, const fs_scenario *sc);
+
+/* campaign --frames-of (app/cli_frames_of.c): cli_frames_of_open checks the selectors against the
+ * campaign and the frame options before any trial runs (NULL and 0 without --frames-of);
+ * cli_frames_of_write draws each chosen trial (run again, alone, as the campaign ran it) into
+ * dir/frames/<foot>-<terrain>-<robot>-seed<N>/ (shown_dir: what the folder will be called) and
+ * frees (f may be NULL). Neither changes any result. */
+typedef struct fs_campaign fs_campaign;
+typedef struct fs_trial_result fs_trial_result;
+typedef struct cli_frames_of cli_frames_of;
+int cli_frames_of_open(const cli_args *a, const fs_campaign *c, cli_frames_of **f);
+void cli_frames_of_free(cli_frames_of *f); /* when not handed to cli_frames_of_write */
+int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_result *results, const char *dir,
+                        const char *shown_dir);
 
 /* render-compare A B: both runs side by side in DIR/frames/, and DIR/filmstrip.png
  * (app/cli_compare.c; app/cli_render.c without the renderer: exit 2). */
@@ -48,7 +75,7 @@ int cli_render_compare(const cli_args *a);
  * without the marker, is recognised by these (fs_outdir_open). */
 extern const char *const cli_run_files[], *const cli_campaign_files[], *const cli_compare_files[];
 extern const char *const cli_optimize_files[]; /* app/cli_optimize.c */
-extern const char *const cli_trial_files[];
+extern const char *const cli_trial_files[], *const cli_walk_files[];
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);
@@ -70,6 +97,11 @@ struct fs_error;
 int cli_campaign_trials(const struct fs_campaign *c, struct fs_trial_result *results, int jobs, const char *who,
                         struct fs_error *err);
 int cli_compare(const cli_args *a);
+/* plot RUN_DIR|CAMPAIGN_DIR [--out DIR]: a run's time series as DIR/plot.png, or a campaign's chart
+ * drawn again from its summary.json as DIR/success.png (app/cli_plot.c). */
+int cli_plot(const cli_args *a);
+int cli_export(const cli_args *a);    /* app/cli_export.c */
+int cli_merge(const cli_args *a);     /* app/cli_campaign.c: shard folders into one campaign's results */
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
  * table to --out DIR (default results/bench/), whole or not at all. */
@@ -87,18 +119,37 @@ void cli_machine(char *out, size_t size);
 /* The 1-minute load average from /proc/loadavg, or -1 when it cannot be read. */
 double cli_load_average(void);
 
+/* What made a bench's results (fs_provenance.h): the files of the n scenarios it loaded, relative
+ * to the shipped scenarios/ folder, with their hashes; settings as text (which columns vary); no
+ * overrides (benches take none) and no seeds (set them when the runs draw from one). An fs_status;
+ * fs_provenance_free releases p, also after a failure. */
+typedef struct fs_provenance fs_provenance;
+int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings,
+                         struct fs_error *err);
+
 /* Progress of a long command on stderr (cli_progress.c): on a terminal one line redrawn in place
  * (done/total, failures, elapsed, ETA); without one, a plain line at every tenth of the work, at
- * least once a minute, and at the end. `who` names the command ("footsim campaign"), `unit` what
- * is counted ("trials"). */
+ * least once a minute, and at the end, never a carriage return. `who` names the command ("footsim
+ * campaign"), `unit` what is counted ("trials"). cli_progress_update gives the state after a task;
+ * cli_progress_tick repeats it (a terminal's clock moves; a log gets its line once a minute passed
+ * since the last): call it every few seconds while tasks run (the worker pool's progress callback
+ * is called so, fs_pool.h). cli_progress_say prints a message line (a result, a dead worker) above
+ * the progress line. cli_progress_round: a command of several rounds of tasks (optimize: one round
+ * of trials per candidate) says which round it starts (1-based; unit "candidate"); every reporter
+ * then shows the round and counts elapsed time, ETA and tenths over the whole command; NULL ends
+ * the rounds. */
 typedef struct cli_progress {
     const char *who, *unit;
     int tty;
     double t0, last_line_s;
     int last_tenth;
+    int done, total, failed, started; /* the last state given */
 } cli_progress;
 void cli_progress_start(cli_progress *p, const char *who, const char *unit);
 void cli_progress_update(cli_progress *p, int done, int total, int failed);
+void cli_progress_tick(cli_progress *p);
+void cli_progress_say(cli_progress *p, const char *format, ...);
+void cli_progress_round(const char *unit, int round, int nrounds);
 
 /* Whether an executable is on PATH. */
 int cli_have_program(const char *name);
@@ -107,6 +158,11 @@ int cli_have_program(const char *name);
  * PNG (fs_png_check): the chart whole or not at all. Without gnuplot, or when it fails, says so
  * (naming `who`) and returns 0; a damaged chart (a full disk) is FS_IO, said. */
 int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who);
+/* The same, the chart going to png (any path; whole or not at all): 0 drawn, -1 not drawn (no
+ * gnuplot, or it failed: said), else the exit status of a damaged chart (FS_IO). */
+int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who);
+/* Writes s to f as a gnuplot single-quoted string. */
+void cli_gp_string(FILE *f, const char *s);
 
 /* Data files (app/cli_data.c). A design, scenario, terrain or campaign path given on the command
  * line that exists as given (or is absolute, or starts with ./ or ../) is used as is; a relative one

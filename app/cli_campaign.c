@@ -4,15 +4,26 @@
  * The trials run in footsim's pool of worker processes (fs_pool.h). A worker that dies (an ODE
  * error exits with status 3) marks its trial failed_numerics, one that the watchdog kills (no
  * answer for FS_POOL_WATCHDOG_S) marks it hung, never a numerical failure; each is said with its
- * trial, seed and how it ended; a fresh worker takes its place and the campaign goes on. Tests: FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with
- * status 3 on seed N, FOOTSIM_TEST_STOP_SEED=N stops it (SIGSTOP) on seed N;
- * FOOTSIM_TEST_KILL_IN_WRITE kills the campaign with SIGKILL half way through writing its files. */
+ * trial, seed and how it ended; a fresh worker takes its place and the campaign goes on. Tests:
+ * FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with status 3 on seed N, FOOTSIM_TEST_STOP_SEED=N
+ * stops it (SIGSTOP) on seed N;
+ * FOOTSIM_TEST_KILL_IN_WRITE kills the campaign with SIGKILL half way through writing its files;
+ * FOOTSIM_TEST_SIGNAL_AFTER="N SIG" makes the campaign raise signal SIG on itself once N trials
+ * are in its journal (a kill at a chosen point, for the resume tests).
+ *
+ * Resume: every finished trial is appended to the journal DIR.journal/journal as it ends
+ * (fs_campaign.h); a run whose journal exists runs only the trials it lacks, after checking that
+ * the journal was made by the same campaign (provenance), and removes it once DIR holds the
+ * results. SIGINT and SIGTERM stop the pool (fs_pool_spec.stop), keep the journal and say how to
+ * continue. --shard I/N runs one share of the trials and writes it as DIR/trials.journal;
+ * `footsim merge` makes the campaign's files of the shards. */
 #include "cli.h"
 
 #include "footsim/campaign/fs_campaign.h"
 #include "footsim/exec/fs_pool.h"
 #include "footsim/io/fs_output.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -33,19 +44,45 @@ typedef struct message {
 typedef struct campaign_run {
     const fs_campaign *c;
     fs_trial_result *results;
+    const int *index;       /* the trial index of each pool task, or NULL: the task number */
+    int already;            /* trials done before this run (the journal's) */
+    int total;              /* trials of this run's share, the journal's included */
+    fs_journal *journal;    /* where each finished trial goes, or NULL */
+    fs_status journal_status; /* a journal write that failed in record_death, for the next take_one */
+    fs_error journal_err;
+    int signal_after, signal_sig, journaled; /* FOOTSIM_TEST_SIGNAL_AFTER */
     int crash_seed, stop_seed;
     cli_progress progress;
     int failed;             /* trials so far that failed numerically or whose worker died */
 } campaign_run;
+
+/* SIGINT or SIGTERM received while trials run (0: none). */
+static volatile sig_atomic_t interrupted;
+
+static void on_signal(int sig) { interrupted = sig; }
+
+static int trial_index(const campaign_run *p, int task) { return p->index ? p->index[task] : task; }
+
+/* Appends a finished trial to the journal (when there is one). */
+static fs_status journal_trial(campaign_run *p, int index, fs_error *err)
+{
+    if (!p->journal)
+        return FS_OK;
+    fs_status s = fs_journal_append(p->journal, index, &p->results[index], err);
+    if (s == FS_OK && ++p->journaled == p->signal_after)
+        raise(p->signal_sig);
+    return s;
+}
 
 static int fail(const fs_error *err) { return cli_report(err->status, err->message); }
 
 /* ---- the pool's callbacks ----------------------------------------------------------------- */
 
 /* In a worker: one trial. */
-static void run_one(int index, void *result, void *user)
+static void run_one(int task, void *result, void *user)
 {
     const campaign_run *p = user;
+    int index = trial_index(p, task);
     message *m = result;
     const fs_campaign *c = p->c;
     int cell, seed;
@@ -60,21 +97,29 @@ static void run_one(int index, void *result, void *user)
 }
 
 /* In the parent: a trial's answer, or the refusal that stops the campaign. */
-static fs_status take_one(int index, const void *result, void *user, fs_error *err)
+static fs_status take_one(int task, const void *result, void *user, fs_error *err)
 {
     campaign_run *p = user;
     const message *m = result;
+    int index = trial_index(p, task);
+    if (p->journal_status != FS_OK) {
+        *err = p->journal_err;
+        return p->journal_status;
+    }
     if (m->status != FS_OK)
         return fs_fail(err, (fs_status)m->status, "%s", m->error);
     p->results[index] = m->result;
     p->failed += m->result.outcome == FS_FAILED_NUMERICS;
-    return FS_OK;
+    return journal_trial(p, index, err);
 }
 
 /* In the parent: the record of a trial whose worker died: the pose it drew, and how it ended. */
-static void record_death(int index, const fs_pool_death *d, void *user)
+static void record_death(int task, const fs_pool_death *d, void *user)
 {
     campaign_run *p = user;
+    if (interrupted)
+        return; /* stopped by the user: the trial was not finished, and runs again on resume */
+    int index = trial_index(p, task);
     const fs_campaign *c = p->c;
     int cell, seed;
     fs_campaign_trial_of(c, index, &cell, &seed);
@@ -95,31 +140,55 @@ static void record_death(int index, const fs_pool_death *d, void *user)
     if (p->progress.tty)
         fputc('\n', stderr);
     fprintf(stderr, "footsim campaign: %s; counted as %s\n", r->failure, fs_outcome_name(r->outcome));
+    if (p->journal_status == FS_OK)
+        p->journal_status = journal_trial(p, index, &p->journal_err);
 }
 
 static void draw_progress(int done, int ntrials, void *user)
 {
     campaign_run *p = user;
-    cli_progress_update(&p->progress, done, ntrials, p->failed);
+    (void)ntrials;
+    cli_progress_update(&p->progress, p->already + done, p->total, p->failed);
 }
 
 /* ---- campaign ----------------------------------------------------------------------------- */
 
-int cli_campaign_trials(const fs_campaign *c, fs_trial_result *results, int jobs, const char *who, fs_error *err)
+/* Runs the trials index[0 .. n - 1] (every trial when index is NULL) into results, each appended
+ * to journal when one is given (*finished: how many went there); `already` trials of `total` were
+ * done before. Stops early, FS_OK, when `interrupted` is set. */
+static fs_status run_trials(const fs_campaign *c, fs_trial_result *results, const int *index, int n, int already,
+                            int total, fs_journal *journal, int *finished, int jobs, const char *who, fs_error *err)
 {
     const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED"), *stop = getenv("FOOTSIM_TEST_STOP_SEED");
-    campaign_run run = {.c = c, .results = results, .crash_seed = crash ? atoi(crash) : -1,
+    const char *after = getenv("FOOTSIM_TEST_SIGNAL_AFTER");
+    campaign_run run = {.c = c, .results = results, .index = index, .already = already, .total = total,
+                        .journal = journal, .crash_seed = crash ? atoi(crash) : -1,
                         .stop_seed = stop ? atoi(stop) : -1};
+    if (!after || sscanf(after, "%d %d", &run.signal_after, &run.signal_sig) != 2)
+        run.signal_after = -1;
     cli_progress_start(&run.progress, who, "trials");
-    fs_pool_spec spec = {.ntasks = fs_campaign_ntrials(c), .jobs = jobs, .result_size = sizeof(message), .user = &run,
-                         .run = run_one, .done = take_one, .died = record_death, .progress = draw_progress};
+    fs_pool_spec spec = {.ntasks = n, .jobs = jobs, .result_size = sizeof(message), .user = &run,
+                         .run = run_one, .done = take_one, .died = record_death, .progress = draw_progress,
+                         .stop = journal ? &interrupted : NULL};
     fs_pool_stats stats;
     fs_status s = fs_pool_run(&spec, &stats, err);
+    if (finished)
+        *finished = run.journaled;
+    if (s == FS_OK && run.journal_status != FS_OK) {
+        *err = run.journal_err;
+        s = run.journal_status;
+    }
     if (s == FS_OK && stats.timed_out)
         fprintf(stderr, "%s: %d worker%s made no progress for the watchdog's time and %s killed; their trials are "
                         "counted as hung, not as numerical failures\n",
                 who, stats.timed_out, stats.timed_out > 1 ? "s" : "", stats.timed_out > 1 ? "were" : "was");
     return s;
+}
+
+int cli_campaign_trials(const fs_campaign *c, fs_trial_result *results, int jobs, const char *who, fs_error *err)
+{
+    int n = fs_campaign_ntrials(c);
+    return run_trials(c, results, NULL, n, 0, n, NULL, NULL, jobs, who, err);
 }
 
 int cli_parse_jobs(const cli_args *a, int *jobs)
@@ -192,37 +261,494 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdi
     return failed ? FS_EXPECTATION_FAILED : 0;
 }
 
-int cli_campaign(const cli_args *a)
+/* ---- resume, shards ----------------------------------------------------------------------- */
+
+/* --shard I/N into shard and nshards (1/1 without it); 0 or exit 2. */
+static int parse_shard(const cli_args *a, int *shard, int *nshards)
 {
-    int jobs;
-    int s = cli_parse_jobs(a, &jobs);
-    if (s)
-        return s;
-    static fs_campaign c;
-    fs_error err;
-    if (fs_campaign_load(a->input, a->set, a->nset, &c, &err) != FS_OK)
-        return fail(&err);
-    char dir[FS_PATH_MAX + 64];
-    snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c.name);
-    static fs_outdir out;
-    if (fs_outdir_open(&out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK) {
-        fs_campaign_free(&c);
-        return fail(&err);
+    *shard = *nshards = 1;
+    if (!a->shard)
+        return 0;
+    int used = 0;
+    if (sscanf(a->shard, "%d/%d%n", shard, nshards, &used) != 2 || a->shard[used] || *nshards < 1 ||
+        *nshards > FS_CAMPAIGN_MAX_TRIALS || *shard < 1 || *shard > *nshards) {
+        fprintf(stderr, "footsim campaign: --shard %s: give I/N, the I-th of N shares (1 <= I <= N), e.g. --shard 2/8\n",
+                a->shard);
+        return FS_BAD_INPUT;
     }
-    int ntrials = fs_campaign_ntrials(&c);
+    return 0;
+}
+
+/* Appends s to buf, quoted for a POSIX shell when it needs it. */
+static void shell_word(char *buf, size_t size, const char *s)
+{
+    size_t n = strlen(buf);
+    int plain = *s && strspn(s, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./=:,@%+-") == strlen(s);
+    if (plain) {
+        snprintf(buf + n, size - n, " %s", s);
+        return;
+    }
+    snprintf(buf + n, size - n, " '");
+    for (; *s; s++) {
+        n = strlen(buf);
+        snprintf(buf + n, size - n, *s == '\'' ? "'\\''" : "%c", *s);
+    }
+    n = strlen(buf);
+    snprintf(buf + n, size - n, "'");
+}
+
+/* The command that runs this campaign again into the same folder. */
+static void command_of(const cli_args *a, const char *dir, char *buf, size_t size)
+{
+    snprintf(buf, size, "footsim campaign");
+    shell_word(buf, size, a->input);
+    shell_word(buf, size, "--out");
+    shell_word(buf, size, dir);
+    if (a->jobs) {
+        shell_word(buf, size, "-j");
+        shell_word(buf, size, a->jobs);
+    }
+    if (a->shard) {
+        shell_word(buf, size, "--shard");
+        shell_word(buf, size, a->shard);
+    }
+    for (int i = 0; i < a->nset; i++) {
+        shell_word(buf, size, "--set");
+        shell_word(buf, size, a->set[i]);
+    }
+    if (a->data) {
+        shell_word(buf, size, "--data");
+        shell_word(buf, size, a->data);
+    }
+}
+
+/* Whether the folder `journal` is absent (0), footsim's journal folder (1: only "journal" and its
+ * temporary files in it), or something else (-1). */
+static int journal_folder(const char *journal)
+{
+    struct stat st;
+    if (lstat(journal, &st) != 0)
+        return 0;
+    if (!S_ISDIR(st.st_mode))
+        return -1;
+    DIR *d = opendir(journal);
+    if (!d)
+        return -1;
+    int ours = 1;
+    for (struct dirent *e; ours && (e = readdir(d)) != NULL;)
+        ours = !strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") || !strcmp(e->d_name, "journal") ||
+               !strncmp(e->d_name, "journal.tmp.", 12);
+    closedir(d);
+    return ours ? 1 : -1;
+}
+
+/* Whether dir already holds this campaign's finished results: summary.json, and a trials.csv
+ * whose provenance line is h's (the whole campaign), or a trials.journal with h's head (a shard). */
+static int finished_already(const char *dir, const fs_journal_head *h)
+{
+    char path[FS_OUT_PATH + 32];
+    if (h->nshards > 1) {
+        snprintf(path, sizeof path, "%s/trials.journal", dir);
+        fs_journal_head old;
+        fs_trial_result *results;
+        unsigned char *done;
+        int ndone;
+        fs_error err;
+        if (access(path, R_OK) != 0 || fs_journal_read(path, &old, &results, &done, &ndone, &err) != FS_OK)
+            return 0;
+        char why[8];
+        int same = !fs_journal_differs(h, &old, "", "", why, sizeof why) && old.shard == h->shard && old.nshards == h->nshards;
+        fs_journal_head_free(&old);
+        free(results), free(done);
+        return same;
+    }
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    if (access(path, R_OK) != 0)
+        return 0;
+    snprintf(path, sizeof path, "%s/trials.csv", dir);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return 0;
+    char *line = NULL;
+    size_t cap = 0;
+    ssize_t n = getline(&line, &cap, f);
+    fclose(f);
+    int same = n > 0 && line[n - 1] == '\n' && (line[n - 1] = 0, !strcmp(line, h->provenance));
+    free(line);
+    return same;
+}
+
+typedef struct shard_file {
+    const fs_journal_head *h;
+    const fs_trial_result *results;
+} shard_file;
+
+static int fill_shard(FILE *f, const void *user)
+{
+    const shard_file *x = user;
+    fs_journal_print_head(f, x->h);
+    for (int i = 0; i < x->h->ntrials; i++)
+        if (fs_campaign_in_shard(i, x->h->shard, x->h->nshards))
+            fs_journal_print_record(f, i, &x->results[i]);
+    return 1;
+}
+
+/* A shard's results: DIR/trials.journal, its trials sorted by index. */
+static int finish_shard(const fs_campaign *c, const fs_journal_head *h, const fs_trial_result *results, fs_outdir *out)
+{
+    const shard_file x = {h, results};
+    fs_error err;
+    fs_status s = fs_write_in(out->partial, "trials.journal", fill_shard, &x, &err);
+    if (s == FS_OK)
+        s = fs_outdir_commit(out, &err);
+    if (s != FS_OK)
+        return fail(&err);
+    int n = 0;
+    for (int i = 0; i < h->ntrials; i++)
+        n += fs_campaign_in_shard(i, h->shard, h->nshards);
+    printf("campaign %s, shard %d/%d: %d of %d trials\nresults: %s/trials.journal (merge the %d shards with "
+           "'footsim merge DIR... --out DIR')\n", c->name, h->shard, h->nshards, n, h->ntrials, out->path, h->nshards);
+    return 0;
+}
+
+/* The journal's records checked against the campaign: each in the share, with its trial's seed. */
+static int check_records(const fs_campaign *c, const fs_journal_head *h, const fs_trial_result *results,
+                         const unsigned char *done, const char *path)
+{
+    for (int i = 0; i < h->ntrials; i++) {
+        int cell, seed;
+        fs_campaign_trial_of(c, i, &cell, &seed);
+        if (done[i] && (!fs_campaign_in_shard(i, h->shard, h->nshards) || results[i].draw.seed != seed)) {
+            fprintf(stderr, "footsim: %s: trial %d does not belong to this campaign%s (seed %d, expected %d); the "
+                    "journal is damaged: move it away, or start over with --fresh\n", path, i,
+                    h->nshards > 1 ? "'s shard" : "", results[i].draw.seed, seed);
+            return FS_BAD_INPUT;
+        }
+    }
+    return 0;
+}
+
+/* Reads the journal of an interrupted run into results and done, refusing one that another
+ * campaign, other inputs, overrides, version or shard made. */
+static int resume(const fs_campaign *c, const fs_journal_head *h, const char *path, fs_trial_result *results,
+                  unsigned char *done, int *ndone)
+{
+    fs_journal_head old;
+    fs_trial_result *r;
+    unsigned char *d;
+    fs_error err;
+    if (fs_journal_read(path, &old, &r, &d, ndone, &err) != FS_OK)
+        return fail(&err);
+    char why[512];
+    int s = 0;
+    if (fs_journal_differs(h, &old, "this run", "the journal", why, sizeof why) ||
+        (old.shard != h->shard || old.nshards != h->nshards
+             ? snprintf(why, sizeof why, "shard: %d/%d in this run, %d/%d in the journal", h->shard, h->nshards,
+                        old.shard, old.nshards)
+             : 0)) {
+        fprintf(stderr, "footsim campaign: %s holds the trials of another run of this campaign (%s); they are not "
+                "mixed with this run's: run it as it was run to finish it, or add --fresh to start over (the journal "
+                "is removed)\n", path, why);
+        s = FS_BAD_INPUT;
+    }
+    if (!s && !(s = check_records(c, h, r, d, path)))
+        for (int i = 0; i < h->ntrials; i++)
+            if (d[i]) {
+                results[i] = r[i];
+                done[i] = 1;
+            }
+    fs_journal_head_free(&old);
+    free(r), free(d);
+    return s;
+}
+
+/* Runs the trials of c's share that the journal lacks, then draws the --frames-of trials (handing
+ * *frames_of on, NULL after) and writes the results. */
+static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs_journal_head *h,
+                               const char *given_dir, fs_outdir *out, fs_journal *journal, int jobs,
+                               cli_frames_of **frames_of)
+{
+    char jdir[FS_OUT_PATH + 16], jpath[FS_OUT_PATH + 32], again[4 * FS_OUT_PATH];
+    snprintf(jdir, sizeof jdir, "%s.journal", out->path);
+    snprintf(jpath, sizeof jpath, "%s/journal", jdir);
+    command_of(a, given_dir, again, sizeof again);
+    int kind = journal_folder(jdir);
+    if (kind < 0) {
+        fprintf(stderr, "footsim campaign: %s: is not footsim's journal folder (it holds other files); move it away, "
+                "or choose another --out\n", jdir);
+        return FS_BAD_INPUT;
+    }
+    if (a->fresh && kind > 0) {
+        fs_remove_tree(jdir);
+        kind = 0;
+    }
+    if (!a->fresh && kind == 0 && finished_already(out->path, h)) {
+        printf("footsim campaign: %s already holds this campaign's finished results (the same inputs, overrides and "
+               "version); nothing to do (--fresh runs it again)\n", out->path);
+        return 0;
+    }
+    int ntrials = h->ntrials, ndone = 0, npending = 0, total = 0;
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
-    if (!results) {
-        fs_outdir_abort(&out);
-        fs_campaign_free(&c);
+    unsigned char *done = calloc((size_t)ntrials, 1);
+    int *pending = malloc((size_t)ntrials * sizeof *pending);
+    if (!results || !done || !pending) {
+        free(results), free(done), free(pending);
         return cli_report(FS_NO_MEMORY, "out of memory");
     }
-    if (cli_campaign_trials(&c, results, jobs, "footsim campaign", &err) != FS_OK)
+    int s = 0;
+    if (kind > 0 && access(jpath, F_OK) == 0)
+        s = resume(c, h, jpath, results, done, &ndone);
+    fs_error err;
+    if (!s && kind == 0 && mkdir(jdir, 0777) != 0)
+        s = cli_report(FS_IO, "cannot make the journal folder");
+    if (!s && fs_journal_open(journal, jpath, h, &err) != FS_OK)
         s = fail(&err);
-    else
-        s = finish(&c, results, &out);
-    fs_outdir_abort(&out); /* when it was not committed */
-    free(results);
-    fs_campaign_free(&c);
+    for (int i = 0; !s && i < ntrials; i++)
+        if (fs_campaign_in_shard(i, h->shard, h->nshards)) {
+            total++;
+            if (!done[i])
+                pending[npending++] = i;
+        }
+    if (!s && ndone)
+        fprintf(stderr, "footsim campaign: resuming from %s: %d of %d trials done, %d to run\n", jpath, ndone, total,
+                npending);
+    if (!s) {
+        int finished = 0;
+        fs_status r = run_trials(c, results, pending, npending, ndone, total, journal, &finished, jobs,
+                                 "footsim campaign", &err);
+        fs_journal_close(journal);
+        int kept = ndone + finished;
+        if (kept == 0 && (interrupted || r != FS_OK)) { /* nothing to keep */
+            fs_remove_tree(jdir);
+        }
+        if (interrupted) {
+            fprintf(stderr, "footsim campaign: stopped by %s: %d of %d trials done%s%s%s; to continue: %s\n",
+                    interrupted == SIGINT ? "SIGINT" : "SIGTERM", kept, total, kept ? ", kept in " : "",
+                    kept ? jdir : "", kept ? "/" : "", again);
+            s = 128 + interrupted;
+        } else if (r != FS_OK) {
+            s = fail(&err);
+            if (kept)
+                fprintf(stderr, "footsim campaign: the %d finished trials are kept in %s/; to run the rest: %s\n", kept,
+                        jdir, again);
+        } else {
+            cli_frames_of *f = *frames_of;
+            *frames_of = NULL; /* cli_frames_of_write releases it */
+            s = cli_frames_of_write(f, c, results, out->partial, out->path);
+            if (!s)
+                s = h->nshards > 1 ? finish_shard(c, h, results, out) : finish(c, results, out);
+            if (!out->open) /* the results are in place: the journal has served */
+                fs_remove_tree(jdir);
+            else
+                fprintf(stderr, "footsim campaign: the trials are kept in %s/; once the problem is solved, run again: "
+                        "%s\n", jdir, again);
+        }
+    }
+    free(results), free(done), free(pending);
+    return s;
+}
+
+/* What a campaign works on, too large for the stack (the campaign, its journal's head and file, the
+ * results folder's paths): on the heap, one per command, freed on every path. */
+typedef struct campaign_work {
+    fs_campaign c;
+    fs_journal_head head;
+    fs_journal journal;
+    fs_outdir out;
+} campaign_work;
+
+static int run_campaign(const cli_args *a, campaign_work *w, const char *given_dir, int jobs,
+                        cli_frames_of *frames_of)
+{
+    int s = run_campaign_trials(a, &w->c, &w->head, given_dir, &w->out, &w->journal, jobs, &frames_of);
+    cli_frames_of_free(frames_of); /* still here when the trials did not all run */
+    return s;
+}
+
+/* The campaign a->input with its journal's head, loaded into w, then run (w's parts freed here). */
+static int campaign_work_run(const cli_args *a, int jobs, int shard, int nshards, campaign_work *w)
+{
+    fs_error err;
+    if (fs_campaign_load(a->input, a->set, a->nset, &w->c, &err) != FS_OK)
+        return fail(&err);
+    int s = 0;
+    if (fs_journal_head_of(&w->c, a->input, a->set, a->nset, shard, nshards, &w->head, &err) != FS_OK) {
+        fs_campaign_free(&w->c);
+        return fail(&err);
+    }
+    cli_frames_of *frames_of = NULL; /* --frames-of (app/cli_frames_of.c): checked before any trial */
+    if (a->frames_of && nshards > 1)
+        s = cli_report(FS_BAD_INPUT, "--frames-of with --shard: a shard holds only some trials; draw them from "
+                                     "the merged campaign, or run without --shard");
+    if (!s)
+        s = cli_frames_of_open(a, &w->c, &frames_of);
+    if (!s) {
+        char dir[FS_PATH_MAX + 64];
+        snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : w->c.name);
+        /* SIGINT and SIGTERM stop the trials and keep the journal (a signal ignored stays ignored) */
+        fs_catch_signal(SIGINT, on_signal);
+        fs_catch_signal(SIGTERM, on_signal);
+        if (fs_outdir_open(&w->out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK) {
+            cli_frames_of_free(frames_of);
+            s = fail(&err);
+        } else {
+            s = run_campaign(a, w, dir, jobs, frames_of);
+        }
+        fs_outdir_abort(&w->out); /* when it was not committed */
+    }
+    fs_journal_head_free(&w->head);
+    fs_campaign_free(&w->c);
+    return s;
+}
+
+int cli_campaign(const cli_args *a)
+{
+    int jobs, shard, nshards;
+    int s = cli_parse_jobs(a, &jobs);
+    if (s || (s = parse_shard(a, &shard, &nshards)))
+        return s;
+    campaign_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    s = campaign_work_run(a, jobs, shard, nshards, w);
+    free(w);
+    return s;
+}
+
+/* ---- merge -------------------------------------------------------------------------------- */
+
+/* The journal file of a shard folder (DIR/trials.journal) or of a journal folder (DIR/journal). */
+static int journal_in(const char *dir, char *path, size_t size)
+{
+    snprintf(path, size, "%s/trials.journal", dir);
+    if (access(path, F_OK) == 0)
+        return 1;
+    snprintf(path, size, "%s/journal", dir);
+    if (access(path, F_OK) == 0)
+        return 1;
+    fprintf(stderr, "footsim merge: %s: holds no trials.journal; give the folders 'footsim campaign --shard I/N "
+            "--out DIR' wrote\n", dir);
+    return 0;
+}
+
+/* What merge works on, too large for the stack: on the heap, one per command. */
+typedef struct merge_work {
+    fs_campaign c;
+    fs_outdir out;
+} merge_work;
+
+int cli_merge(const cli_args *a)
+{
+    int n = 1 + a->nmore, s = 0;
+    const char **dirs = malloc((size_t)n * sizeof *dirs);
+    fs_journal_head *heads = calloc((size_t)n, sizeof *heads);
+    merge_work *w = calloc(1, sizeof *w);
+    if (!dirs || !heads || !w) {
+        free(dirs), free(heads), free(w);
+        return cli_report(FS_NO_MEMORY, "out of memory");
+    }
+    fs_campaign *const c = &w->c;
+    dirs[0] = a->input;
+    for (int i = 1; i < n; i++)
+        dirs[i] = a->more[i - 1];
+    fs_trial_result *results = NULL;
+    int *from = NULL; /* the shard each trial came from, -1 for none */
+    fs_error err;
+    int loaded = 0;
+    for (int k = 0; k < n && !s; k++) {
+        char path[FS_OUT_PATH + 32];
+        fs_trial_result *r;
+        unsigned char *d;
+        int nd;
+        if (!journal_in(dirs[k], path, sizeof path)) {
+            s = FS_BAD_INPUT;
+            break;
+        }
+        if (fs_journal_read(path, &heads[k], &r, &d, &nd, &err) != FS_OK) {
+            s = fail(&err);
+            break;
+        }
+        char why[512];
+        if (k == 0) {
+            /* the campaign the shards ran, loaded as they loaded it: its files must not have changed */
+            fs_journal_head now;
+            if (fs_campaign_load(heads[0].campaign, (const char *const *)heads[0].set, heads[0].nset, c, &err) != FS_OK)
+                s = fail(&err);
+            else if ((loaded = 1, fs_journal_head_of(c, heads[0].campaign, (const char *const *)heads[0].set,
+                                                     heads[0].nset, 1, 1, &now, &err)) != FS_OK)
+                s = fail(&err);
+            else {
+                if (fs_journal_differs(&now, &heads[0], "the campaign now", dirs[0], why, sizeof why)) {
+                    fprintf(stderr, "footsim merge: the campaign %s has changed since its shards ran (%s); run the "
+                            "shards again\n", heads[0].campaign, why);
+                    s = FS_BAD_INPUT;
+                }
+                fs_journal_head_free(&now);
+            }
+            results = calloc((size_t)heads[0].ntrials, sizeof *results);
+            from = malloc((size_t)heads[0].ntrials * sizeof *from);
+            if (!s && (!results || !from))
+                s = cli_report(FS_NO_MEMORY, "out of memory");
+            for (int i = 0; !s && i < heads[0].ntrials; i++)
+                from[i] = -1;
+        } else if (fs_journal_differs(&heads[k], &heads[0], dirs[k], dirs[0], why, sizeof why)) {
+            fprintf(stderr, "footsim merge: %s and %s are shards of different campaigns or inputs (%s); merge only "
+                    "the shards of one campaign run with the same inputs, overrides and version\n", dirs[k], dirs[0],
+                    why);
+            s = FS_BAD_INPUT;
+        }
+        if (!s)
+            s = check_records(c, &heads[k], r, d, path);
+        for (int i = 0; !s && i < heads[0].ntrials; i++) {
+            if (!d[i])
+                continue;
+            if (from[i] >= 0) {
+                int cell, seed, foot, terrain, robot;
+                fs_campaign_trial_of(c, i, &cell, &seed);
+                fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+                fprintf(stderr, "footsim merge: trial %d (foot %s on terrain %s under robot %s, seed %d) is in both "
+                        "%s and %s; give each shard once, all of one --shard I/N split\n", i, c->foot[foot].name,
+                        c->terrain[terrain].name, c->robot[robot].name, seed, dirs[from[i]], dirs[k]);
+                s = FS_BAD_INPUT;
+            } else {
+                results[i] = r[i];
+                from[i] = k;
+            }
+        }
+        free(r), free(d);
+    }
+    int missing = 0;
+    for (int i = 0; !s && i < heads[0].ntrials; i++)
+        missing += from[i] < 0;
+    if (!s && missing) {
+        int first = 0;
+        while (from[first] >= 0)
+            first++;
+        int nshards = heads[0].nshards;
+        char run[4 * FS_OUT_PATH], shard[32];
+        snprintf(shard, sizeof shard, "%d/%d", first % nshards + 1, nshards);
+        cli_args again = {.input = heads[0].campaign, .shard = shard, .nset = heads[0].nset};
+        for (int i = 0; i < heads[0].nset; i++)
+            again.set[i] = heads[0].set[i];
+        command_of(&again, "DIR", run, sizeof run);
+        fprintf(stderr, "footsim merge: %d of %d trials missing (the first: trial %d, of shard %s); give every "
+                "shard's folder, or run the missing shard: %s\n", missing, heads[0].ntrials, first, shard, run);
+        s = FS_BAD_INPUT;
+    }
+    if (!s) {
+        char dir[FS_PATH_MAX + 64];
+        snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c->name);
+        if (fs_outdir_open(&w->out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK)
+            s = fail(&err);
+        else
+            s = finish(c, results, &w->out);
+        fs_outdir_abort(&w->out);
+    }
+    for (int k = 0; k < n; k++)
+        fs_journal_head_free(&heads[k]);
+    if (loaded)
+        fs_campaign_free(c);
+    free(dirs), free(heads), free(results), free(from), free(w);
     return s;
 }
 
@@ -233,6 +759,7 @@ int cli_compare(const cli_args *a)
     if (!a->input2)
         return cli_report(FS_BAD_INPUT, "compare: give two summary.json files: RESULT BASELINE");
     fs_error err;
-    fs_status s = fs_campaign_compare(a->input, a->input2, a->force, stdout, &err);
+    fs_status s = a->equivalence ? fs_campaign_equivalence(a->input, a->input2, a->force, stdout, &err)
+                                 : fs_campaign_compare(a->input, a->input2, a->force, stdout, &err);
     return s == FS_BAD_INPUT ? fail(&err) : (int)s;
 }

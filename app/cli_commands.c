@@ -40,9 +40,9 @@ static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
     fs_error err;
     if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "run", &err) != FS_OK)
         return fail(&err);
-    if (!a->frames && (a->fps || a->size || a->camera))
+    if (!a->frames && (a->fps || a->size || a->camera || a->exaggerate))
         fprintf(stderr, "footsim run: warning: %s is unused without --frames; add --frames to draw frames\n",
-                a->fps ? "--fps" : a->size ? "--size" : "--camera");
+                a->fps ? "--fps" : a->size ? "--size" : a->camera ? "--camera" : "--exaggerate");
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);
@@ -66,10 +66,14 @@ static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
     }
     if (getenv("FOOTSIM_TEST_ODE_ERROR"))
         dDebug(1, "FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
-    fs_status rs = fs_run(sc, obs, res, &err);
+    fs_provenance prov; /* what made the results: the files, the --set, the settings */
+    fs_status rs = fs_scenario_provenance(sc, a->set, a->nset, &prov, &err);
+    if (rs == FS_OK)
+        rs = fs_run(sc, obs, res, &err);
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
-    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, out->partial, &err)) == FS_OK)
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, &prov, out->partial, &err)) == FS_OK)
         rs = fs_outdir_commit(out, &err);
+    fs_provenance_free(&prov);
     if (rs != FS_OK || fstatus) {
         fs_outdir_abort(out);
         fs_run_free(res);
@@ -81,10 +85,15 @@ static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
                  res->end_time_s);
     else
         snprintf(settled, sizeof settled, "not at rest when the run stopped at t = %.3f s", res->end_time_s);
-    printf("%s: %s foot, %.1f kg at %.0f deg%s: ankle drop %.3f mm, %s\n  results: %s/metrics.json, "
-           "%s/trajectory.csv\n",
-           sc->name, sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", sc->def.load_kg, sc->def.tilt_deg,
-           sc->def.robot.mass_kg > 0 ? ", robot on the ankle" : "", res->ankle_drop_m * 1e3, settled, out->path,
+    /* the load: the scenario's, or for a landing trial run as a plain run its robot on the ankle */
+    char load[160];
+    if (sc->def.robot.mass_kg > 0)
+        snprintf(load, sizeof load, "a %.1f kg robot on the ankle from the nominal pose (no drawn pose or landing "
+                 "rules: `footsim trial` judges a landing)", sc->def.robot.mass_kg);
+    else
+        snprintf(load, sizeof load, "%.1f kg at %.0f deg", sc->def.load_kg, sc->def.tilt_deg);
+    printf("%s: %s foot, %s: ankle drop %.3f mm, %s\n  results: %s/metrics.json, %s/trajectory.csv\n", sc->name,
+           sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", load, res->ankle_drop_m * 1e3, settled, out->path,
            out->path);
     return 0;
 }
@@ -183,6 +192,7 @@ static const double LAW_LEAN_DEG = 15;
 /* The whole foot's pitch stiffness and, for each shipped robot, what the law says. */
 typedef struct pitch_report {
     double load_kg, K_model, K_ode_mu1, K_ode_grip;
+    int flat;                     /* a flat sole: the model is its contacts' springs */
     int nrobots;
     char robot[MAX_ROBOTS][FS_NAME_MAX];
     fs_robot_def def[MAX_ROBOTS];
@@ -226,7 +236,8 @@ static fs_status pitch_stiffness(const fs_scenario *sc, const char *design, pitc
     memset(p, 0, sizeof *p);
     double g = sc->def.gravity_m_per_s2, load_N = sc->design.design_load_kg * g;
     p->load_kg = sc->design.design_load_kg;
-    fs_status s = fs_pitch_stiffness_model(&sc->design, &sc->geom, load_N, g, &p->K_model, err);
+    p->flat = sc->geom.kind == FS_FOOT_FLAT;
+    fs_status s = fs_pitch_stiffness_foot(sc, load_N, &p->K_model, err);
     if (s == FS_OK)
         s = fs_pitch_stiffness_measure(sc, load_N, 1, p->K_model, &p->K_ode_mu1, err);
     if (s == FS_OK)
@@ -241,10 +252,12 @@ static fs_status pitch_stiffness(const fs_scenario *sc, const char *design, pitc
 static void pitch_print(const pitch_report *p)
 {
     printf("whole foot against pitching its ankle body under %.1f kg at the ankle (docs/landing.md), N m/rad:\n"
-           "  model: each chain rolls in its plane, free across it  %8.2f\n"
+           "  model: %-46s %8.2f\n"
            "  measured in ODE, friction 1 (the landing trials')     %8.2f (%+.1f %%)\n"
            "  measured in ODE, friction 10 (toes held across too)   %8.2f\n",
-           p->load_kg, p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1), p->K_ode_grip);
+           p->load_kg,
+           p->flat ? "the sole's corners on the contacts' springs" : "each chain rolls in its plane, free across it",
+           p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1), p->K_ode_grip);
     if (p->nrobots)
         printf("the law, K (the model's, an Achilles tendon in series) against m g h of each robot:\n");
     for (int i = 0; i < p->nrobots; i++) {
@@ -267,6 +280,7 @@ static void pitch_json(cJSON *root, const pitch_report *p)
 {
     cJSON *o = cJSON_AddObjectToObject(root, "pitch_stiffness");
     cJSON_AddNumberToObject(o, "load_kg", p->load_kg);
+    cJSON_AddStringToObject(o, "model", p->flat ? "flat sole on its contacts" : "chains rolling in their planes");
     cJSON_AddNumberToObject(o, "model_N_m_per_rad", p->K_model);
     cJSON_AddNumberToObject(o, "ode_mu1_N_m_per_rad", p->K_ode_mu1);
     cJSON_AddNumberToObject(o, "ode_mu10_N_m_per_rad", p->K_ode_grip);
@@ -286,11 +300,34 @@ static void pitch_json(cJSON *root, const pitch_report *p)
     }
 }
 
+/* A flat sole has no joints or arch: only its pitch stiffness, which its contacts give. */
+static int flat_stiffness(const cli_args *a, const fs_scenario *sc)
+{
+    pitch_report pitch;
+    fs_error err;
+    if (pitch_stiffness(sc, a->input, &pitch, &err) != FS_OK)
+        return fail(&err);
+    if (a->json) {
+        cJSON *root = cJSON_CreateObject();
+        cJSON_AddStringToObject(root, "design", a->input);
+        pitch_json(root, &pitch);
+        print_json(root);
+        cJSON_Delete(root);
+    } else {
+        printf("%s: a flat sole: no joints or springs; its pitch stiffness is its contacts' (sole and ground in "
+               "series)\n", a->input);
+        pitch_print(&pitch);
+        printf("for a rigid sole the law's height is not the limit: a centre of mass that passes over the "
+               "footprint's edge tips it first (docs/landing.md)\n");
+    }
+    return 0;
+}
+
 static int stiffness_of(const cli_args *a, const fs_scenario *sc)
 {
     fs_error err;
-    if (sc->geom.kind != FS_FOOT_BIOMIMETIC)
-        return cli_report(FS_BAD_INPUT, "stiffness: the flat foot has no joints; give a biomimetic design");
+    if (sc->geom.kind == FS_FOOT_FLAT)
+        return flat_stiffness(a, sc);
     fs_chain_stiffness k[FS_CHAINS];
     fs_stiffness_analytic(&sc->geom, k);
     if (fs_stiffness_measure(sc, k, &err) != FS_OK)
@@ -403,6 +440,65 @@ static int fill_json(FILE *f, const void *user)
     return text != NULL;
 }
 
+/* A command's results in a folder of its own: run(user, observer) with frames of framed (when
+ * --frames), then name (the result as JSON, to_json(result)) beside them, swapped in whole at the
+ * end; dir_out gets the folder as shown. */
+typedef struct folder_job {
+    const char *dir;                 /* the folder asked for */
+    const char *const *files;        /* what the command writes there (fs_outdir_open) */
+    const fs_scenario *framed;       /* the scenario the frames are framed on */
+    fs_status (*run)(void *user, const fs_run_observer *obs, fs_error *err);
+    void *user;
+    const char *name;                /* the JSON file */
+    cJSON *(*to_json)(const void *result);
+    const void *result;
+    const fs_provenance *provenance; /* what made the result, put into the JSON (NULL: none) */
+} folder_job;
+
+/* out: the caller's results folder (on the heap with the rest of its work), aborted here when it
+ * was not committed. */
+static int in_folder(const cli_args *a, const folder_job *j, fs_outdir *out, char *dir_out, size_t size)
+{
+    fs_error err;
+    if (fs_outdir_open(out, j->dir, j->files, a->replace, "--out", &err) != FS_OK)
+        return fail(&err);
+    cli_frames *frames = NULL;
+    fs_run_observer observer, *obs = NULL;
+    int s = 0;
+    if (a->frames && !(s = cli_frames_open(a, j->framed, out->partial, &frames, &observer)))
+        obs = &observer;
+    fs_status rs = s ? FS_OK : j->run(j->user, obs, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
+    if (!s && rs == FS_OK && !fstatus) {
+        cJSON *o = j->to_json(j->result);
+        if (j->provenance)
+            cJSON_AddItemToObject(o, "provenance", fs_provenance_json(j->provenance));
+        rs = fs_write_in(out->partial, j->name, fill_json, o, &err);
+        cJSON_Delete(o);
+        if (rs == FS_OK)
+            rs = fs_outdir_commit(out, &err);
+    }
+    fs_outdir_abort(out);
+    if (!s && rs != FS_OK)
+        s = fail(&err);
+    snprintf(dir_out, size, "%s", out->path);
+    return s ? s : fstatus;
+}
+
+typedef struct trial_job {
+    const fs_scenario *sc;
+    int seed;
+    fs_trial_result *r;
+} trial_job;
+
+static fs_status run_trial_job(void *user, const fs_run_observer *obs, fs_error *err)
+{
+    trial_job *t = user;
+    return fs_trial_run_scenario(t->sc, t->seed, obs, t->r, err);
+}
+
+static cJSON *trial_json_of(const void *r) { return trial_json(r); }
+
 /* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
  * trial.json and the frames, swapped in whole at the end. The frames are framed on the pose the
  * seed draws. */
@@ -415,7 +511,6 @@ typedef struct trial_files {
 static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, trial_files *w)
 {
     fs_scenario *base = &w->base, *placed = &w->placed;
-    fs_outdir *out = &w->out;
     fs_error err;
     if (fs_scenario_load(a->input, a->set, a->nset, base, &err) != FS_OK || fs_scenario_require(base, "trial", &err) != FS_OK)
         return fail(&err);
@@ -425,34 +520,18 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     else
         snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base->name, seed);
     int s = 0;
-    if (fs_outdir_open(out, dir, cli_trial_files, a->replace, "--out", &err) != FS_OK) {
-        fs_scenario_free(base);
-        return fail(&err);
-    }
-    cli_frames *frames = NULL;
-    fs_run_observer observer, *obs = NULL;
-    if (a->frames) {
-        if (fs_scenario_copy(placed, base, &err) != FS_OK || fs_trial_place(placed, seed, NULL, &err) != FS_OK)
-            s = fail(&err);
-        if (!s && !(s = cli_frames_open(a, placed, out->partial, &frames, &observer)))
-            obs = &observer;
-        fs_scenario_free(placed);
-    }
-    fs_status rs = s ? FS_OK : fs_trial_run_scenario(base, seed, obs, r, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
-    if (!s && rs == FS_OK && !fstatus) {
-        cJSON *o = trial_json(r);
-        rs = fs_write_in(out->partial, "trial.json", fill_json, o, &err);
-        cJSON_Delete(o);
-        if (rs == FS_OK)
-            rs = fs_outdir_commit(out, &err);
-    }
-    fs_outdir_abort(out);
-    fs_scenario_free(base);
-    if (!s && rs != FS_OK)
+    if (a->frames && (fs_scenario_copy(placed, base, &err) != FS_OK || fs_trial_place(placed, seed, NULL, &err) != FS_OK))
         s = fail(&err);
-    snprintf(dir_out, size, "%s", out->path);
-    return s ? s : fstatus;
+    fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings, the seed */
+    if (!s && fs_scenario_provenance(base, a->set, a->nset, &prov, &err) != FS_OK)
+        s = fail(&err);
+    prov.first_seed = seed, prov.nseeds = 1;
+    trial_job t = {base, seed, r};
+    folder_job j = {dir, cli_trial_files, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov};
+    if (!s)
+        s = in_folder(a, &j, &w->out, dir_out, size);
+    fs_provenance_free(&prov);
+    return s; /* the scenarios and the folder are the caller's to free */
 }
 
 static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
@@ -510,33 +589,75 @@ int cli_trial(const cli_args *a)
 
 /* ---- walk ------------------------------------------------------------------------------------- */
 
+static cJSON *walk_json(const void *result)
+{
+    const fs_walk_result *r = result;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "steps_completed", r->steps_completed);
+    cJSON_AddNumberToObject(o, "falls", r->falls);
+    cJSON_AddNumberToObject(o, "rough_steps", r->rough_steps);
+    cJSON_AddNumberToObject(o, "rough_contacts_mean", r->rough_contacts_mean);
+    cJSON_AddNumberToObject(o, "flat_contacts_mean", r->flat_contacts_mean);
+    cJSON_AddNumberToObject(o, "peak_force_N", r->peak_force_N);
+    cJSON_AddNumberToObject(o, "peak_tilt_deg", r->peak_tilt_deg);
+    return o;
+}
+
+typedef struct walk_job {
+    const fs_scenario *sc;
+    fs_walk_result *r;
+} walk_job;
+
+static fs_status run_walk_job(void *user, const fs_run_observer *obs, fs_error *err)
+{
+    walk_job *w = user;
+    return fs_walk_run(w->sc, obs, w->r, err);
+}
+
+/* What a walk works on, too large for the stack: on the heap, one per command. */
+typedef struct walk_work {
+    fs_scenario sc;
+    fs_outdir out;
+} walk_work;
+
 int cli_walk(const cli_args *a)
 {
-    fs_scenario *sc = cli_zalloc(sizeof *sc);
-    if (!sc)
+    walk_work *w = cli_zalloc(sizeof *w);
+    if (!w)
         return FS_NO_MEMORY;
+    fs_scenario *sc = &w->sc;
     fs_error err;
     fs_walk_result r;
-    fs_status s = fs_scenario_load(a->input, a->set, a->nset, sc, &err);
-    if (s == FS_OK)
-        s = fs_scenario_require(sc, "walk", &err);
-    if (s == FS_OK)
-        s = fs_walk_run(sc, NULL, &r, &err);
+    char dir[FS_PATH_MAX + 64], shown[4 * FS_PATH_MAX + 64] = "";
+    int s = 0;
+    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "walk", &err) != FS_OK)
+        s = fail(&err);
     const char *foot = sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
+    if (!s && (a->frames || a->out)) {
+        /* a folder of its own (default results/walks/NAME/): walk.json and the frames, whole */
+        if (a->out)
+            snprintf(dir, sizeof dir, "%s", a->out);
+        else
+            snprintf(dir, sizeof dir, "results/walks/%s", sc->name);
+        walk_job job = {sc, &r};
+        fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
+        if (fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
+            s = fail(&err);
+        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov};
+        if (!s)
+            s = in_folder(a, &j, &w->out, shown, sizeof shown);
+        fs_provenance_free(&prov);
+    } else if (!s && fs_walk_run(sc, NULL, &r, &err) != FS_OK) {
+        s = fail(&err);
+    }
+    fs_outdir_abort(&w->out); /* a no-op where in_folder did it already */
     fs_scenario_free(sc);
-    free(sc);
-    if (s != FS_OK)
-        return fail(&err);
+    free(w);
+    if (s)
+        return s;
     if (a->json) {
-        cJSON *o = cJSON_CreateObject();
+        cJSON *o = walk_json(&r);
         cJSON_AddStringToObject(o, "foot", foot);
-        cJSON_AddNumberToObject(o, "steps_completed", r.steps_completed);
-        cJSON_AddNumberToObject(o, "falls", r.falls);
-        cJSON_AddNumberToObject(o, "rough_steps", r.rough_steps);
-        cJSON_AddNumberToObject(o, "rough_contacts_mean", r.rough_contacts_mean);
-        cJSON_AddNumberToObject(o, "flat_contacts_mean", r.flat_contacts_mean);
-        cJSON_AddNumberToObject(o, "peak_force_N", r.peak_force_N);
-        cJSON_AddNumberToObject(o, "peak_tilt_deg", r.peak_tilt_deg);
         print_json(o);
         cJSON_Delete(o);
     } else {
@@ -544,6 +665,8 @@ int cli_walk(const cli_args *a)
                "section (%d steps), %.1f off it; peak ground force %.0f N; ankle tilt up to %.1f deg\n",
                a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
                r.peak_force_N, r.peak_tilt_deg);
+        if (shown[0])
+            printf("  results: %s/walk.json%s\n", shown, a->frames ? ", frames/" : "");
     }
     return 0;
 }
@@ -590,7 +713,7 @@ int cli_demo(const cli_args *a)
     printf("\nlanding comparison (2 seeds each, two robots; 'footsim campaign scenarios/landing.ini' runs 50):\n");
     fflush(stdout);
     cli_args camp = {.command = "campaign", .input = cli_data_path("scenarios/landing_ci.ini"), .nset = 1,
-                     .set = {"campaign.seeds=2"}, .out = "results/campaigns/demo"};
+                     .set = {"campaign.seeds=2"}, .out = "results/campaigns/demo", .fresh = 1}; /* always shown */
     s = cli_campaign(&camp);
     /* the finding, in one line: the law for the trial scenario's robot (single_tall) on Table I */
     fs_error err;

@@ -3,7 +3,9 @@
  *
  * Both scenarios run first, each keeping a snapshot per frame (taken once, before the first
  * step); the frames are drawn after, so the two sides show the same simulated time. A run that
- * ends first keeps showing its last state. */
+ * ends first keeps showing its last state. Both rows of the filmstrip are taken at the same
+ * simulated times (from the earlier touch-down to the later end), under a band with the colour
+ * legend. */
 #include "cli_frames.h"
 
 #include "footsim/io/fs_output.h"
@@ -90,14 +92,14 @@ static void store_free(scene_store *st)
 /* The i-th snapshot, or the last when the run ended before. */
 static const fs_scene *scene_at(const scene_store *st, int i) { return &st->scene[i < st->n ? i : st->n - 1]; }
 
-/* Both sides at frame i, each its own view (which follows its own foot for the follow camera). */
-static void draw_pair(fs_render *r, fs_render_view view[2], const scene_store run[2], int i, int x0, int y0, int cw,
-                      int ch)
+/* Side k at snapshot i as drawn (--exaggerate), at (x0, y0), w x h, its view following its foot
+ * for the cameras that follow; drawn: the caller's room for the scene (large: on the heap). */
+static void draw_one(fs_render *r, const cli_frame_opts *o, fs_render_view *view, const scene_store *run, int i,
+                     int x0, int y0, int w, int h, fs_scene *drawn)
 {
-    for (int k = 0; k < 2; k++) {
-        fs_render_view_follow(&view[k], scene_at(&run[k], i));
-        fs_render_draw(r, &view[k], scene_at(&run[k], i), x0 + k * cw, y0, cw, ch);
-    }
+    cli_frame_scene(o, &run->scene[0], scene_at(run, i), drawn);
+    fs_render_view_follow(view, drawn);
+    fs_render_draw(r, view, drawn, x0, y0, w, h);
 }
 
 /* The same camera for both sides, framed on both first states. */
@@ -108,14 +110,17 @@ static void fit_pair(fs_render_view view[2], fs_render_camera camera, const scen
     view[1] = view[0];
 }
 
-static int write_frames(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *frames_dir)
+static int write_frames(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *frames_dir,
+                        fs_scene *drawn)
 {
     int cw = o->width / 2, n = run[0].n > run[1].n ? run[0].n : run[1].n;
     fs_render_view view[2];
     fit_pair(view, o->camera, run, cw, o->height);
     fs_render_clear(r);
     for (int i = 0; i < n; i++) {
-        draw_pair(r, view, run, i, 0, 0, cw, o->height);
+        for (int k = 0; k < 2; k++)
+            draw_one(r, o, &view[k], &run[k], i, k * cw, 0, cw, o->height, drawn);
+        cli_frame_legend(r, 0, 0, o->width, o->height);
         fs_error err;
         if (cli_frames_write(r, frames_dir, i, &err) != FS_OK)
             return cli_report(err.status, err.message);
@@ -132,21 +137,28 @@ static int touch_down(const scene_store *st)
     return 0;
 }
 
-/* FILMSTRIP_FRAMES columns from touch-down to rest; A above, B below. */
-static int write_filmstrip(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *dir)
+/* The filmstrip's legend band under the two rows, pixels. */
+static int legend_band(int ch) { return ch >= 96 ? 16 * (int)fmax(1, ch / 480) : 0; }
+
+/* FILMSTRIP_FRAMES columns at the same simulated times in both rows, from the earlier touch-down
+ * to the later end; A above, B below, the legend under them. */
+static int write_filmstrip(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *dir, int ch,
+                           fs_scene *drawn)
 {
-    int cw = fs_render_width(r) / FILMSTRIP_FRAMES, ch = fs_render_height(r) / 2;
+    int cw = fs_render_width(r) / FILMSTRIP_FRAMES;
     fs_render_view view[2];
     fit_pair(view, o->camera, run, cw, ch);
     fs_render_clear(r);
-    for (int k = 0; k < 2; k++) {
-        int t0 = touch_down(&run[k]), t1 = run[k].n - 1;
-        for (int c = 0; c < FILMSTRIP_FRAMES; c++) {
-            int i = t0 + (int)lround((double)c * (t1 - t0) / (FILMSTRIP_FRAMES - 1));
-            fs_render_view_follow(&view[k], scene_at(&run[k], i));
-            fs_render_draw(r, &view[k], scene_at(&run[k], i), c * cw, k * ch, cw, ch);
-        }
+    int d0 = touch_down(&run[0]), d1 = touch_down(&run[1]);
+    int t0 = d0 < d1 ? d0 : d1, t1 = (run[0].n > run[1].n ? run[0].n : run[1].n) - 1;
+    for (int c = 0; c < FILMSTRIP_FRAMES; c++) {
+        int i = t0 + (int)lround((double)c * (t1 - t0) / (FILMSTRIP_FRAMES - 1));
+        for (int k = 0; k < 2; k++)
+            draw_one(r, o, &view[k], &run[k], i, c * cw, k * ch, cw, ch, drawn);
     }
+    int band = fs_render_height(r) - 2 * ch;
+    if (band > 0)
+        fs_render_legend(r, 0, 2 * ch, fs_render_width(r), band);
     char path[CLI_FRAMES_PATH + 16];
     snprintf(path, sizeof path, "%s/filmstrip.png", dir);
     fs_error err;
@@ -175,7 +187,7 @@ static const char *foot_name(const fs_scenario *sc) { return sc->geom.kind == FS
 /* Loads both scenarios and works out DIR (default results/compare/A-foot_vs_B-foot). */
 static int load_pair(const cli_args *a, fs_scenario sc[2], char *dir, size_t size)
 {
-    static const char *sets[2][CLI_MAX_SET];
+    const char *sets[2][CLI_MAX_SET]; /* 4 KiB of pointers into a->set */
     int nsets[2];
     split_sets(a, sets, nsets);
     const char *input[2] = {a->input, a->input2};
@@ -201,11 +213,11 @@ static int prepare(const cli_args *a, const fs_scenario sc[2], const char *dir, 
     if (!s)
         s = cli_frames_folder(dir, frames_dir, CLI_FRAMES_PATH);
     if (!s)
-        s = cli_render_open(&r[0], o->width, o->height);
+        s = cli_render_open(&r[0], o->width, o->height, o->exaggerate);
     /* the filmstrip's cells are a quarter of a frame's width and half its height: a side's shape */
     int cw = o->width / 4 > 0 ? o->width / 4 : 1, ch = o->height / 2 > 0 ? o->height / 2 : 1;
     if (!s)
-        s = cli_render_open(&r[1], FILMSTRIP_FRAMES * cw, 2 * ch);
+        s = cli_render_open(&r[1], FILMSTRIP_FRAMES * cw, 2 * ch + legend_band(ch), o->exaggerate);
     return s;
 }
 
@@ -214,6 +226,7 @@ typedef struct compare_work {
     fs_scenario sc[2];
     char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
     fs_outdir out;
+    fs_scene drawn; /* the frame being drawn */
 } compare_work;
 
 int cli_render_compare(const cli_args *a)
@@ -243,9 +256,9 @@ int cli_render_compare(const cli_args *a)
     for (int k = 0; k < 2 && !s; k++)
         s = run_stored(&sc[k], o.fps, &run[k]);
     if (!s)
-        s = write_frames(r[0], &o, run, frames_dir);
+        s = write_frames(r[0], &o, run, frames_dir, &w->drawn);
     if (!s)
-        s = write_filmstrip(r[1], &o, run, out->partial);
+        s = write_filmstrip(r[1], &o, run, out->partial, o.height / 2 > 0 ? o.height / 2 : 1, &w->drawn);
     if (!s && o.video)
         s = cli_frames_video(out->partial, frames_dir, o.fps, run[0].n > run[1].n ? run[0].n : run[1].n, dir);
     if (!s && fs_outdir_commit(out, &err) != FS_OK)

@@ -51,9 +51,23 @@ static int parse_fps(const char *text, double step_s, double *fps)
     return 0;
 }
 
+static int parse_exaggerate(const char *text, double *factor)
+{
+    double v = 0;
+    if (fs_parse_number(text, &v) != FS_NUMBER_OK || !(v >= 1) || v > 10000) {
+        fprintf(stderr, "footsim: --exaggerate %s: not a factor; allowed: a number from 1 (true size) to 10000\n",
+                text);
+        return FS_BAD_INPUT;
+    }
+    *factor = v;
+    return 0;
+}
+
 int cli_frame_opts_parse(const cli_args *a, double step_s, int min_w, cli_frame_opts *o)
 {
-    *o = (cli_frame_opts){1280, 720, 60, FS_RENDER_SIDE, a->video};
+    *o = (cli_frame_opts){1280, 720, 60, FS_RENDER_FOOT, a->video, 1};
+    if (a->exaggerate && parse_exaggerate(a->exaggerate, &o->exaggerate))
+        return FS_BAD_INPUT;
     if (a->size && parse_size(a->size, min_w, &o->width, &o->height))
         return FS_BAD_INPUT;
     if (a->fps && parse_fps(a->fps, step_s, &o->fps))
@@ -61,8 +75,8 @@ int cli_frame_opts_parse(const cli_args *a, double step_s, int min_w, cli_frame_
     if (a->camera) {
         int c = fs_render_camera_find(a->camera);
         if (c < 0) {
-            fprintf(stderr, "footsim: --camera %s: unknown camera; allowed: side, front, three-quarter, follow\n",
-                    a->camera);
+            fprintf(stderr, "footsim: --camera %s: unknown camera; allowed: foot, side, front, three-quarter, "
+                            "follow\n", a->camera);
             return FS_BAD_INPUT;
         }
         o->camera = (fs_render_camera)c;
@@ -90,12 +104,31 @@ fs_status cli_frames_write(const fs_render *r, const char *frames_dir, int index
     return fs_render_write_png(r, path, CLI_PNG_LEVEL, err);
 }
 
-int cli_render_open(fs_render **r, int w, int h)
+int cli_render_open(fs_render **r, int w, int h, double exaggerate)
 {
     fs_error err;
     if (fs_render_open(r, w, h, &err) != FS_OK)
         return cli_report(err.status, err.message);
+    if (exaggerate != 1) {
+        char note[64];
+        snprintf(note, sizeof note, "DISPLACEMENTS X%g", exaggerate);
+        fs_render_set_note(*r, note);
+    }
     return 0;
+}
+
+void cli_frame_legend(fs_render *r, int x0, int y0, int w, int h)
+{
+    /* the legend in the bottom-right corner, when the frame is wide enough to keep it off the
+     * scale bar (bottom-left) */
+    int lh = 12 * (int)fmax(1, fmin(h / 360, w / 640)), lw = 340 * lh / 12;
+    if (w >= lw + w / 3)
+        fs_render_legend(r, x0 + w - lw, y0 + h - lh - 2, lw, lh);
+}
+
+void cli_frame_scene(const cli_frame_opts *o, const fs_scene *neutral, const fs_scene *now, fs_scene *out)
+{
+    fs_render_exaggerate(neutral, now, o->exaggerate, out);
 }
 
 /* ---- video ---------------------------------------------------------------------------------- */
@@ -163,7 +196,10 @@ struct cli_frames {
     fs_render_view view;
     char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
     int n;           /* frames written */
+    int flat;        /* 1: the frames straight in dir (cli_frames_open_at) */
     fs_scene scene;  /* the snapshot, reused for each frame */
+    fs_scene neutral;/* the first snapshot: the pose --exaggerate measures displacements from */
+    fs_scene drawn;  /* the snapshot as drawn (exaggerated) */
 };
 
 /* The observer: one frame of the state now, framed on the first. */
@@ -171,39 +207,80 @@ static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
 {
     cli_frames *f = user;
     fs_sim_scene(sim, &f->scene);
-    const fs_scene *first = &f->scene;
+    if (f->n == 0)
+        f->neutral = f->scene;
+    cli_frame_scene(&f->o, &f->neutral, &f->scene, &f->drawn);
+    const fs_scene *first = &f->drawn;
     if (f->n == 0)
         fs_render_view_fit(&f->view, f->o.camera, &first, 1, (double)f->o.width / f->o.height);
     else
-        fs_render_view_follow(&f->view, &f->scene);
-    fs_render_draw(f->r, &f->view, &f->scene, 0, 0, f->o.width, f->o.height);
+        fs_render_view_follow(&f->view, &f->drawn);
+    fs_render_draw(f->r, &f->view, &f->drawn, 0, 0, f->o.width, f->o.height);
+    cli_frame_legend(f->r, 0, 0, f->o.width, f->o.height);
     return cli_frames_write(f->r, f->frames_dir, f->n++, err);
+}
+
+/* The frame options for sc, checked (frames it would draw included). */
+static int frames_opts(const cli_args *a, const fs_scenario *sc, cli_frame_opts *o)
+{
+    int s = cli_frame_opts_parse(a, sc->def.step_s, 1, o);
+    double duration_s = sc->def.kind == FS_SCENARIO_WALK ? sc->def.walk_steps * sc->def.walk_period_s : sc->def.duration_s;
+    if (!s && floor(duration_s * o->fps) + 2 > CLI_MAX_FRAMES)
+        s = cli_report(FS_BAD_INPUT, "--fps: the run's duration x fps asks for more than 999999 frames (six-digit "
+                                     "names); lower --fps or shorten the run");
+    return s;
+}
+
+int cli_frames_check(const cli_args *a, const fs_scenario *sc)
+{
+    cli_frame_opts o;
+    fs_render *r = NULL;
+    int s = frames_opts(a, sc, &o);
+    if (!s)
+        s = cli_render_open(&r, 1, 1, 1); /* OSMesa is there */
+    fs_render_close(r);
+    return s;
+}
+
+int cli_frames_open_at(const cli_args *a, const fs_scenario *sc, const char *frames_dir, cli_frames **frames,
+                       fs_run_observer *obs)
+{
+    *frames = NULL;
+    cli_frames *f = calloc(1, sizeof *f);
+    if (!f)
+        return cli_report(FS_NO_MEMORY, "out of memory");
+    int s = frames_opts(a, sc, &f->o);
+    if (!s && (snprintf(f->dir, sizeof f->dir, "%s", frames_dir) >= (int)sizeof f->dir ||
+               snprintf(f->frames_dir, sizeof f->frames_dir, "%s", frames_dir) >= (int)sizeof f->frames_dir))
+        s = cli_report(FS_BAD_INPUT, "--out: path too long");
+    if (!s)
+        s = cli_render_open(&f->r, f->o.width, f->o.height, f->o.exaggerate);
+    if (s) {
+        free(f);
+        return s;
+    }
+    f->flat = 1;
+    *obs = (fs_run_observer){.interval_s = 1 / f->o.fps, .fn = draw_frame, .user = f};
+    *frames = f;
+    return 0;
 }
 
 int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
                     fs_run_observer *obs)
 {
     *frames = NULL;
-    cli_frames *f = calloc(1, sizeof *f);
-    if (!f)
-        return cli_report(FS_NO_MEMORY, "out of memory");
-    int s = cli_frame_opts_parse(a, sc->def.step_s, 1, &f->o);
-    if (!s && floor(sc->def.duration_s * f->o.fps) + 2 > CLI_MAX_FRAMES)
-        s = cli_report(FS_BAD_INPUT, "--fps: duration_s x fps asks for more than 999999 frames (six-digit names); "
-                                     "lower --fps or shorten run.duration_s");
-    if (!s && snprintf(f->dir, sizeof f->dir, "%s", dir) >= (int)sizeof f->dir)
-        s = cli_report(FS_BAD_INPUT, "--out: path too long");
+    cli_frame_opts o;
+    char frames_dir[CLI_FRAMES_PATH];
+    int s = frames_opts(a, sc, &o); /* before the folder is made */
     if (!s)
-        s = cli_frames_folder(dir, f->frames_dir, sizeof f->frames_dir);
+        s = cli_frames_folder(dir, frames_dir, sizeof frames_dir);
     if (!s)
-        s = cli_render_open(&f->r, f->o.width, f->o.height);
-    if (s) {
-        free(f);
-        return s;
+        s = cli_frames_open_at(a, sc, frames_dir, frames, obs);
+    if (!s) {
+        (*frames)->flat = 0;
+        snprintf((*frames)->dir, sizeof (*frames)->dir, "%s", dir); /* shorter than frames_dir */
     }
-    *obs = (fs_run_observer){.interval_s = 1 / f->o.fps, .fn = draw_frame, .user = f};
-    *frames = f;
-    return 0;
+    return s;
 }
 
 int cli_frames_close(cli_frames *f, int ok, const char *shown_dir)
@@ -212,8 +289,11 @@ int cli_frames_close(cli_frames *f, int ok, const char *shown_dir)
         return 0;
     int s = 0;
     if (ok) {
-        printf("  frames: %s/frames/000000.png ... %06d.png (%d at %g per simulated second, %dx%d, camera %s)\n",
-               shown_dir, f->n - 1, f->n, f->o.fps, f->o.width, f->o.height, fs_render_camera_names[f->o.camera]);
+        printf("  frames: %s%s/000000.png ... %06d.png (%d at %g per simulated second, %dx%d, camera %s",
+               shown_dir, f->flat ? "" : "/frames", f->n - 1, f->n, f->o.fps, f->o.width, f->o.height, fs_render_camera_names[f->o.camera]);
+        if (f->o.exaggerate != 1)
+            printf(", displacements x%g from the first frame's pose, said on each frame", f->o.exaggerate);
+        printf(")\n");
         if (f->o.video)
             s = cli_frames_video(f->dir, f->frames_dir, f->o.fps, f->n, shown_dir);
     }

@@ -17,10 +17,11 @@ typedef struct cli_frame_opts {
     double fps;
     fs_render_camera camera;
     int video;
+    double exaggerate;  /* 1: true size */
 } cli_frame_opts;
 
 /* Checks --fps (1 to 10000 and no faster than one frame per step_s), --size (each from min_w x 1
- * to 8192) and --camera; fills the defaults (60, 1280x720, side). */
+ * to 8192), --camera and --exaggerate (1 to 10000); fills the defaults (60, 1280x720, foot, 1). */
 int cli_frame_opts_parse(const cli_args *a, double step_s, int min_w, cli_frame_opts *o);
 
 /* Makes DIR/frames (DIR a fresh partial results folder); frames_dir gets the folder's path. */
@@ -33,7 +34,13 @@ fs_status cli_frames_write(const fs_render *r, const char *frames_dir, int index
  * says so and returns 0); 4 when ffmpeg fails. */
 int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nframes, const char *shown_dir);
 
-/* Opens a renderer, printing why not. */
-int cli_render_open(fs_render **r, int w, int h);
+/* Opens a renderer, printing why not; with exaggerate other than 1 its frames say so. */
+int cli_render_open(fs_render **r, int w, int h, double exaggerate);
+
+/* The colour legend in the bottom-right corner of the viewport, when it is wide enough. */
+void cli_frame_legend(fs_render *r, int x0, int y0, int w, int h);
+
+/* The scene as o draws it: now with displacements from neutral exaggerated (o->exaggerate). */
+void cli_frame_scene(const cli_frame_opts *o, const fs_scene *neutral, const fs_scene *now, fs_scene *out);
 
 #endif

@@ -5,6 +5,7 @@
 #include "footsim/base/fs_version.h"
 #include "footsim/io/fs_config.h"
 #include "footsim/io/fs_output.h"
+#include "footsim/sim/fs_ode.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,18 +21,20 @@ typedef struct command {
 
 const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames", "video.mp4", NULL};
 const char *const cli_trial_files[] = {"trial.json", "frames", "video.mp4", NULL};
+const char *const cli_walk_files[] = {"walk.json", "frames", "video.mp4", NULL};
 const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
-                                          "chart.dat", "chart.gp", NULL};
+                                          "chart.dat", "chart.gp", "trials.journal", NULL};
 const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
 
 static const command commands[] = {
-    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --video --data",
+    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --exaggerate --video --data",
      "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
      "  (default DIR: results/runs/<scenario name>/).\n"
      "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
-     "  (1280x720), seen by --camera side|front|three-quarter|follow (side); --video also encodes\n"
-     "  DIR/video.mp4 with ffmpeg."},
-    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --video --data",
+     "  (1280x720), seen by --camera foot|side|front|three-quarter|follow (foot: the foot filling the\n"
+     "  frame); --exaggerate F multiplies each body's displacement from its first pose, in the ankle\n"
+     "  body's frame, by F (said on every frame); --video also encodes DIR/video.mp4 with ffmpeg."},
+    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --exaggerate --video --data",
      "Runs both scenarios and writes their frames side by side (A left, B right) to DIR/frames/ and key\n"
      "  frames from touch-down to rest to DIR/filmstrip.png (default DIR: results/compare/A-foot_vs_B-foot/).\n"
      "  --set a:KEY=V changes A only, b:KEY=V B only, KEY=V both. Frame options as for run."},
@@ -45,31 +48,55 @@ static const command commands[] = {
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
      "  --scenario S gives one); with neither, a summary."},
-    {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --video --set --data",
+    {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
      "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json and the frames of exactly\n"
      "  that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
-    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --data",
+    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data --shard --fresh",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
      "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
      "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
-     "  sections go to every trial."},
+     "  sections go to every trial. --frames-of foot=F,terrain=T,robot=R,seed=N (any of them; repeat\n"
+     "  a key with / for several values: seed=1/3) also draws the chosen trials into\n"
+     "  DIR/frames/<foot>-<terrain>-<robot>-seed<N>/ (frame options as for run); results unchanged.\n"
+     "  Each finished trial is kept in the journal DIR.journal/ as it ends: run the same command again\n"
+     "  after a crash or Ctrl-C and it runs only the trials left (the files are the same as an\n"
+     "  uninterrupted run's); a journal of other inputs, overrides or version is refused (exit 2);\n"
+     "  a finished DIR of the same campaign is left as it is; --fresh starts over. Ctrl-C or SIGTERM\n"
+     "  stops the workers, keeps the journal, prints the command that continues; exit 130 or 143.\n"
+     "  --shard I/N runs only the trials whose index is I-1 modulo N and writes DIR/trials.journal;\n"
+     "  'footsim merge' makes the campaign's files of the N shard folders."},
+    {"merge", cli_merge, "DIR...", "--out --replace",
+     "Merges the shard folders of one campaign (footsim campaign --shard I/N) into its result files,\n"
+     "  the same bytes as the campaign run on one machine (default DIR: results/campaigns/<name>/).\n"
+     "  Refused (exit 2, saying which) when the shards come from other campaigns, inputs, overrides or\n"
+     "  versions, or when trials are missing or repeated. Exit 1 when an expectation fails."},
     {"optimize", cli_optimize, "FILE", "-j --out --replace --set --data",
      "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
      "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"
      "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
      "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
      "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
-    {"compare", cli_compare, "RESULT BASELINE", "--force",
+    {"compare", cli_compare, "RESULT BASELINE", "--force --equivalence",
      "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
      "  baseline's 95 % interval or a median moves further than the baseline's tolerance; exit 2 when\n"
      "  they were made with other seeds, overrides or input files, unless --force (a version that\n"
-     "  differs is only reported)."},
-    {"walk", cli_walk, "SCENARIO", "--json --set --data",
+     "  differs is only reported). --equivalence judges RESULT, run at another setting (--set\n"
+     "  run.step_s=...), against BASELINE as a reference campaign of the same seeds and inputs: exit 1\n"
+     "  unless every cell's success intervals overlap and its medians of impulse, final lean, ankle\n"
+     "  drop, settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
+    {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out --replace",
+     "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
+     "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
+     "  against time (script DIR/plot.gp). A campaign's folder: its chart drawn again from summary.json\n"
+     "  as DIR/success.png (chart.dat, chart.gp). DIR is the folder itself unless --out DIR."},
+    {"walk", cli_walk, "SCENARIO", "--json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
-     "  toe contact points on the rough section and off it, peak ground force."},
+     "  toe contact points on the rough section and off it, peak ground force. With --frames (or\n"
+     "  --out DIR) it also writes DIR/walk.json and the frames of the walk (default DIR:\n"
+     "  results/walks/<scenario>/), whole."},
     {"bench", cli_bench, "precision|stability|speed", "-j --quick --out --replace --data",
      "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
      "  refreshed only with --out results/bench):\n"
@@ -79,6 +106,11 @@ static const command commands[] = {
      "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves.\n"
      "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
      "  worker processes (default: the CPUs it may use; the results do not depend on N)."},
+    {"export", cli_export, "DESIGN", "--mjcf --scenario --out --set --data",
+     "Writes the foot as MuJoCo MJCF (docs/export.md) to --out FILE (default results/export/<design>.xml):\n"
+     "  bodies with their masses and inertias, the hinges as a tree, the springs as spatial tendons, the\n"
+     "  contact spheres and box; with --scenario S, in S's start pose with its ground (a heightfield's\n"
+     "  samples in FILE's name with .hfield.bin), gravity, step, robot and load."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "--data",
@@ -102,6 +134,8 @@ static void command_help(const command *c)
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
     if (strstr(c->options, "--replace") && strstr(c->options, "--out"))
         printf(" [--out DIR [--replace]]");
+    else if (strstr(c->options, "--mjcf"))
+        printf(" --mjcf [--scenario SCENARIO] [--out FILE]");
     else if (strstr(c->options, "--out"))
         printf(" [--out DIR]");
     if (strstr(c->options, "-j "))
@@ -114,18 +148,25 @@ static void command_help(const command *c)
         printf(" [--quick]");
     if (strstr(c->options, "--force"))
         printf(" [--force]");
+    if (strstr(c->options, "--equivalence"))
+        printf(" [--equivalence]");
+    if (strstr(c->options, "--shard"))
+        printf(" [--shard I/N] [--fresh]");
     if (strstr(c->options, "--height"))
         printf(" [--height X Y] [--png FILE [--replace] [--scenario SCENARIO]]");
-    if (strstr(c->options, "--frames"))
-        printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--video]]");
+    if (strstr(c->options, "--frames "))
+        printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--exaggerate F] [--video]]");
+    if (strstr(c->options, "--frames-of"))
+        printf(" [--frames-of SELECTORS [--fps N] [--size WxH] [--camera NAME] [--exaggerate F]]");
     if (strstr(c->options, "--set"))
         printf(" [--set section.key=value]...");
     if (strstr(c->options, "--data"))
         printf(" [--data DIR]");
     printf("\n\n  %s\n", c->help);
-    if (strstr(c->options, "--replace") && !strcmp(c->name, "bench"))
+    if (strstr(c->options, "--replace") && (!strcmp(c->name, "bench") || !strcmp(c->name, "plot")))
         printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
-               "  without footsim's %s marker or only bench files in it is refused unless --replace.\n", FS_MARKER);
+               "  without footsim's %s marker or only %s files in it is refused unless --replace.\n", FS_MARKER,
+               c->name);
     else if (strstr(c->options, "--replace") && !strstr(c->options, "--out"))
         printf("\n  An existing FILE is replaced only when it is a PNG already; anything else there (a user's\n"
                "  notes, data) is refused unless --replace is given.\n");
@@ -144,6 +185,17 @@ static void command_help(const command *c)
                "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
 }
 
+/* Whether the space-separated options list names option as a whole word (--frames is not
+ * --frames-of). */
+static int takes_option(const char *options, const char *option)
+{
+    size_t n = strlen(option);
+    for (const char *p = strstr(options, option); p; p = strstr(p + 1, option))
+        if ((p == options || p[-1] == ' ') && (p[n] == ' ' || p[n] == 0))
+            return 1;
+    return 0;
+}
+
 /* Parses argv after the command name into a, refusing what c does not take. */
 static int parse_args(const command *c, int argc, char **argv, cli_args *a)
 {
@@ -156,12 +208,13 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
         int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--data") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
                           !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
                           !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
-                          !strcmp(arg, "--seed");
+                          !strcmp(arg, "--seed") || !strcmp(arg, "--exaggerate") || !strcmp(arg, "--frames-of") ||
+                          !strcmp(arg, "--shard");
         if (!strcmp(arg, "-j") && !strstr(c->options, "-j ")) {
             fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
             return 2;
         }
-        if (arg[0] == '-' && arg[1] == '-' && !strstr(c->options, arg)) {
+        if (arg[0] == '-' && arg[1] == '-' && !takes_option(c->options, arg)) {
             fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
                     *c->options ? c->options : "no options");
             return 2;
@@ -195,14 +248,22 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->jobs = argv[++i];
         else if (!strncmp(arg, "-j", 2) && strstr(c->options, "-j "))
             a->jobs = arg + 2;
+        else if (!strcmp(arg, "--shard"))
+            a->shard = argv[++i];
+        else if (!strcmp(arg, "--fresh"))
+            a->fresh = 1;
         else if (!strcmp(arg, "--replace"))
             a->replace = 1;
         else if (!strcmp(arg, "--quick"))
             a->quick = 1;
         else if (!strcmp(arg, "--force") && strstr(c->options, "--force"))
             a->force = 1;
+        else if (!strcmp(arg, "--equivalence") && strstr(c->options, "--equivalence"))
+            a->equivalence = 1;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
+        else if (!strcmp(arg, "--mjcf"))
+            a->mjcf = 1;
         else if (!strcmp(arg, "--frames"))
             a->frames = 1;
         else if (!strcmp(arg, "--video"))
@@ -213,6 +274,10 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->size = argv[++i];
         else if (!strcmp(arg, "--camera"))
             a->camera = argv[++i];
+        else if (!strcmp(arg, "--exaggerate"))
+            a->exaggerate = argv[++i];
+        else if (!strcmp(arg, "--frames-of"))
+            a->frames_of = argv[++i];
         else if (!strcmp(arg, "--set")) {
             if (a->nset == CLI_MAX_SET) {
                 fprintf(stderr, "footsim %s: at most %d --set options\n", c->name, CLI_MAX_SET);
@@ -223,6 +288,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->input = arg;
         else if (c->input && strchr(c->input, ' ') && !a->input2)
             a->input2 = arg;
+        else if (c->input && strstr(c->input, "...") && a->nmore < CLI_MAX_SET)
+            a->more[a->nmore++] = arg;
         else {
             fprintf(stderr, "footsim %s: unexpected argument '%s'; see 'footsim %s --help'\n", c->name, arg, c->name);
             return 2;
@@ -242,7 +309,7 @@ static cli_data_kind data_kind(const char *command)
     for (size_t i = 0; i < sizeof scenarios / sizeof *scenarios; i++)
         if (!strcmp(command, scenarios[i]))
             return CLI_DATA_SCENARIO;
-    if (!strcmp(command, "model") || !strcmp(command, "stiffness"))
+    if (!strcmp(command, "model") || !strcmp(command, "stiffness") || !strcmp(command, "export"))
         return CLI_DATA_DESIGN;
     return !strcmp(command, "terrain") ? CLI_DATA_TERRAIN : CLI_DATA_NONE;
 }

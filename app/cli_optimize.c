@@ -26,11 +26,14 @@ typedef struct optimize_run {
     int jobs;
     evaluation *log;
     int nlog;
+    int round, nrounds;     /* evaluations so far, and at most: the search's and the three reruns */
 } optimize_run;
 
+/* One candidate's trials, in the worker pool; progress counts evaluations and their trials. */
 static fs_status run_trials(void *user, const fs_optimize *o, fs_trial_result *results, fs_error *err)
 {
-    const optimize_run *r = user;
+    optimize_run *r = user;
+    cli_progress_round("evaluation", ++r->round, r->nrounds);
     return (fs_status)cli_campaign_trials(&o->campaign, results, r->jobs, "footsim optimize", err);
 }
 
@@ -72,6 +75,7 @@ typedef struct optimize_out {
     const double *start, *best;
     const fs_campaign_row *rows_best, *rows_start, *rows_fresh;
     int first_fresh;
+    const fs_provenance *prov;
 } optimize_out;
 
 static int fill_evaluations(FILE *f, const void *user)
@@ -79,6 +83,7 @@ static int fill_evaluations(FILE *f, const void *user)
     const optimize_out *x = user;
     const fs_optimize *o = x->o;
     const fs_campaign *c = &o->campaign;
+    fs_provenance_csv(x->prov, f);
     fputs("evaluation", f);
     for (int p = 0; p < o->nparams; p++)
         fprintf(f, ",%s", o->param[p].key);
@@ -141,7 +146,9 @@ static int fill_result(FILE *f, const void *user)
     fputs("\nTo run the best design: `--set", f);
     for (int p = 0; p < o->nparams; p++)
         fprintf(f, "%s%s=%.6g", p ? " --set " : " ", o->param[p].key, x->best[p]);
-    fputs("`\n", f);
+    fputs("`\n\nProvenance: ", f);
+    fs_provenance_print(x->prov, f);
+    fputs(".\n", f);
     return 1;
 }
 
@@ -183,7 +190,8 @@ int cli_optimize(const cli_args *a)
         return cli_report(err.status, err.message);
     }
     int ntrials = fs_campaign_ntrials(&o->campaign), ncells = fs_campaign_ncells(&o->campaign);
-    optimize_run run = {.jobs = jobs, .log = calloc(MAX_EVALUATIONS_KEPT, sizeof(evaluation))};
+    optimize_run run = {.jobs = jobs, .log = calloc(MAX_EVALUATIONS_KEPT, sizeof(evaluation)),
+                        .nrounds = o->max_evaluations + 3};
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
     fs_campaign_row *rows = calloc(3 * (size_t)ncells, sizeof *rows);
     double start[FS_OPTIMIZE_MAX_PARAMS], best[FS_OPTIMIZE_MAX_PARAMS], value;
@@ -196,6 +204,7 @@ int cli_optimize(const cli_args *a)
         st = fs_optimize_run(o, run_trials, report, &run, results, rows, best, &value, &err);
     /* the start and the best again, on the search's seeds and on fresh ones */
     int first = o->campaign.first_seed;
+    run.round = o->max_evaluations; /* the reruns are the last three rounds, however soon the search ended */
     if (st == FS_OK)
         st = fs_optimize_apply(o, start, &err);
     if (st == FS_OK)
@@ -208,7 +217,14 @@ int cli_optimize(const cli_args *a)
     if (st == FS_OK)
         st = evaluate(o, &run, results, rows + 2 * ncells, &err);
     o->campaign.first_seed = first;
-    optimize_out x = {o, &run, start, best, rows, rows + ncells, rows + 2 * ncells, o->validation_first_seed};
+    cli_progress_round(NULL, 0, 0);
+    /* what made the results: the optimize file, every --set, and its campaign's inputs and settings */
+    fs_provenance prov = {.ninputs = 0};
+    if (st == FS_OK && (st = fs_provenance_init(&prov, o->path, &err)) == FS_OK &&
+        (st = fs_provenance_overrides(&prov, a->set, a->nset, &err)) == FS_OK &&
+        (st = fs_provenance_add_ini(&prov, o->path, &err)) == FS_OK)
+        st = fs_provenance_include(&prov, &o->campaign.provenance, &err);
+    optimize_out x = {o, &run, start, best, rows, rows + ncells, rows + 2 * ncells, o->validation_first_seed, &prov};
     if (st == FS_OK)
         st = fs_write_in(out->partial, "evaluations.csv", fill_evaluations, &x, &err);
     if (st == FS_OK)
@@ -228,6 +244,7 @@ int cli_optimize(const cli_args *a)
                o->validation_first_seed + o->campaign.seeds - 1, out->path);
     }
     fs_outdir_abort(out);
+    fs_provenance_free(&prov);
     free(run.log);
     free(results);
     free(rows);

@@ -1,13 +1,22 @@
-/* cli_plot.c: charts drawn by gnuplot from a script footsim writes beside its data. */
+/* cli_plot.c: charts drawn by gnuplot from a script footsim writes beside its data, and the plot
+ * command: a run's time series (trajectory.csv) or a campaign's chart again (summary.json). */
 #include "cli.h"
 
+#include "footsim/campaign/fs_campaign.h"
 #include "footsim/io/fs_config.h"
+#include "footsim/io/fs_input.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/io/fs_png.h"
 
+#include <cjson/cJSON.h>
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,20 +35,38 @@ int cli_have_program(const char *name)
     return 0;
 }
 
-int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who)
+/* A gnuplot single-quoted string: a quote doubled. */
+void cli_gp_string(FILE *f, const char *s)
 {
-    char png[2 * FS_PATH_MAX], temp[2 * FS_PATH_MAX + 64], var[2 * FS_PATH_MAX + 96];
-    snprintf(png, sizeof png, "%s/%s", dir, png_name);
+    fputc('\'', f);
+    for (; *s; s++)
+        fputs(*s == '\'' ? "''" : (char[2]){*s, 0}, f);
+    fputc('\'', f);
+}
+
+int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who)
+{
+    char temp[2 * FS_PATH_MAX + 64], abs_temp[PATH_MAX + 2 * FS_PATH_MAX + 64], cwd[PATH_MAX];
+    char var[2 * sizeof abs_temp + 16];
     if (!cli_have_program("gnuplot")) {
         fprintf(stderr, "footsim %s: gnuplot is not installed: no chart %s (apt-get install gnuplot-nox "
                         "draws it; or run 'gnuplot %s' in %s later)\n", who, png, script, dir);
-        return 0;
+        return -1;
     }
     fs_error err;
     if (fs_temp_name(png, temp, sizeof temp, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    /* gnuplot runs in dir: it is given the temporary file's name there */
-    snprintf(var, sizeof var, "out='%s.tmp.%ld'", png_name, (long)getpid());
+    /* gnuplot runs in dir: it is given the temporary file's absolute name */
+    if (temp[0] == '/' || !getcwd(cwd, sizeof cwd))
+        snprintf(abs_temp, sizeof abs_temp, "%s", temp);
+    else
+        snprintf(abs_temp, sizeof abs_temp, "%s/%s", cwd, temp);
+    FILE *v = fmemopen(var, sizeof var, "w");
+    if (!v)
+        return cli_report(FS_NO_MEMORY, "out of memory");
+    fputs("out=", v);
+    cli_gp_string(v, abs_temp);
+    fclose(v);
     fflush(stdout);
     fflush(stderr);
     pid_t pid = fork();
@@ -55,7 +82,7 @@ int cli_gnuplot(const char *dir, const char *script, const char *png_name, const
         remove(temp);
         fprintf(stderr, "footsim %s: gnuplot failed: no chart %s (the data and script %s are in %s)\n", who, png,
                 script, dir);
-        return 0;
+        return -1;
     }
     /* gnuplot says nothing when it could not write all of it (a full disk): the file must be a
      * whole PNG before it joins the results */
@@ -64,4 +91,292 @@ int cli_gnuplot(const char *dir, const char *script, const char *png_name, const
         return cli_report(err.status, err.message);
     }
     return 0;
+}
+
+int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who)
+{
+    char png[2 * FS_PATH_MAX];
+    snprintf(png, sizeof png, "%s/%s", dir, png_name);
+    int s = cli_gnuplot_to(dir, script, png, who);
+    return s < 0 ? 0 : s;
+}
+
+/* ---- footsim plot ----------------------------------------------------------------------------- */
+
+/* What plot writes in --out DIR (and may find there from an earlier plot). */
+static const char *const plot_files[] = {"plot.png", "plot.gp", "success.png", "chart.dat", "chart.gp", NULL};
+
+static int is_file(const char *dir, const char *name)
+{
+    char path[2 * FS_PATH_MAX];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* A run's trajectory: its columns (by kind) and the ankle's first height. */
+enum { PLOT_MAX_COLS = 256 };
+typedef struct trajectory {
+    char path[PATH_MAX + 32];     /* as gnuplot in the output folder reads it */
+    char names[16384];            /* the header line, cut into names */
+    const char *col[PLOT_MAX_COLS];
+    int ncols, ankle_z, contacts, lean;
+    double z0_m;
+    char title[512];
+} trajectory;
+
+static int column_of(const trajectory *t, const char *name)
+{
+    for (int c = 0; c < t->ncols; c++)
+        if (!strcmp(t->col[c], name))
+            return c + 1;
+    return 0;
+}
+
+static int ends_with(const char *s, const char *end)
+{
+    size_t n = strlen(s), m = strlen(end);
+    return n > m && !strcmp(s + n - m, end);
+}
+
+/* The number a column's name ends with before its unit ("mtp3_rad": 3, "d2_chain4_N": 4), 0 when none. */
+static int trailing_number(const char *name)
+{
+    const char *u = strrchr(name, '_');
+    const char *p = u ? u : name + strlen(name);
+    while (p > name && isdigit((unsigned char)p[-1]))
+        p--;
+    return atoi(p);
+}
+
+/* Reads the header and the first row of dir/trajectory.csv. Exit status (2: not a trajectory). */
+static int read_trajectory(const char *dir, trajectory *t)
+{
+    char path[2 * FS_PATH_MAX], row[16384];
+    snprintf(path, sizeof path, "%s/trajectory.csv", dir);
+    fs_error err;
+    FILE *f = fs_open_regular(path, 1L << 40, "a trajectory.csv written by footsim run", &err);
+    if (!f)
+        return cli_report(err.status, err.message);
+    int ok = fgets(t->names, sizeof t->names, f) && strchr(t->names, '\n') && fgets(row, sizeof row, f);
+    fclose(f);
+    t->ncols = 0;
+    for (char *p = ok ? strtok(t->names, ",\r\n") : NULL; p && t->ncols < PLOT_MAX_COLS; p = strtok(NULL, ",\r\n"))
+        t->col[t->ncols++] = p;
+    t->ankle_z = column_of(t, "ankle_z_m");
+    t->contacts = column_of(t, "contacts");
+    t->lean = column_of(t, "lean_deg");
+    char *p = row;
+    for (int c = 1; ok && c < t->ankle_z; c++)
+        p = strchr(p, ',') ? strchr(p, ',') + 1 : p;
+    char *end = NULL;
+    t->z0_m = ok && t->ankle_z ? strtod(p, &end) : NAN;
+    if (!ok || t->ncols < 1 || strcmp(t->col[0], "t_s") || !t->ankle_z || !t->contacts || end == p || !isfinite(t->z0_m))
+        return cli_report(FS_BAD_INPUT, "plot: not a trajectory written by footsim run (a header t_s,ankle_x_m,"
+                                        "ankle_y_m,ankle_z_m,contacts,... and rows of numbers): give the folder a "
+                                        "run wrote, e.g. footsim run scenarios/static_load.ini, then footsim plot "
+                                        "results/runs/static_load");
+    return 0;
+}
+
+/* The title: what metrics.json says of the run, else the folder. */
+static void run_title(const char *dir, trajectory *t)
+{
+    char path[2 * FS_PATH_MAX], *text = NULL;
+    size_t len;
+    fs_error err;
+    snprintf(path, sizeof path, "%s/metrics.json", dir);
+    cJSON *m = fs_read_regular(path, 1 << 20, "metrics.json", &text, &len, &err) == FS_OK ? cJSON_Parse(text) : NULL;
+    free(text);
+    const char *sc = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(m, "scenario"));
+    const char *foot = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(m, "foot"));
+    const cJSON *load = cJSON_GetObjectItemCaseSensitive(m, "load_kg"), *tilt = cJSON_GetObjectItemCaseSensitive(m, "tilt_deg");
+    if (sc && foot && cJSON_IsNumber(load) && cJSON_IsNumber(tilt))
+        snprintf(t->title, sizeof t->title, "Run %s: %s foot, %g kg load at the ankle, tilted %g deg", sc, foot,
+                 load->valuedouble, tilt->valuedouble);
+    else
+        snprintf(t->title, sizeof t->title, "Run %s", dir);
+    cJSON_Delete(m);
+}
+
+/* One panel: the columns whose names pass `pick`, coloured by their number (chain), dashed by kind. */
+static void plot_columns(FILE *f, const trajectory *t, const char *title, const char *ylabel, const char *scale,
+                         int (*pick)(const char *name, int *dash, int *keyed))
+{
+    fprintf(f, "set title '%s'\nset ylabel '%s'\nplot ", title, ylabel);
+    int n = 0;
+    for (int c = 0; c < t->ncols; c++) {
+        int dash = 1, keyed = 1;
+        if (!pick(t->col[c], &dash, &keyed))
+            continue;
+        int chain = trailing_number(t->col[c]);
+        char colour[32], key[80];
+        snprintf(colour, sizeof colour, chain ? "%d" : "rgb 'black'", chain);
+        if (!keyed)
+            snprintf(key, sizeof key, "notitle");
+        else if (dash > 1 || ends_with(t->col[c], "_N")) /* one entry per chain for the springs */
+            snprintf(key, sizeof key, "title 'chain %d'", chain);
+        else
+            snprintf(key, sizeof key, "title '%.*s'", (int)(strrchr(t->col[c], '_') - t->col[c]), t->col[c]);
+        fprintf(f, "%sdata using 1:(column(%d)%s) with lines lw 1.5 dt %d lc %s %s", n++ ? ", \\\n     " : "", c + 1,
+                scale, dash, colour, key);
+    }
+    fputs(n ? "\n" : "NaN notitle\n", f);
+}
+
+static int pick_midfoot(const char *name, int *dash, int *keyed)
+{
+    (void)dash, (void)keyed;
+    return ends_with(name, "_rad") && (strncmp(name, "mtp", 3) != 0);
+}
+
+static int pick_mtp(const char *name, int *dash, int *keyed)
+{
+    (void)dash, (void)keyed;
+    return ends_with(name, "_rad") && !strncmp(name, "mtp", 3);
+}
+
+/* Spring-dampers "dK_chainN_N": colour the chain, dash type K; the key names the chains once. */
+static int pick_spring(const char *name, int *dash, int *keyed)
+{
+    int k = 0, chain = 0;
+    if (!ends_with(name, "_N") || sscanf(name, "d%d_chain%d", &k, &chain) != 2)
+        return 0;
+    *dash = k;
+    *keyed = k == 1;
+    return 1;
+}
+
+static int fill_run_script(FILE *f, const void *user)
+{
+    const trajectory *t = user;
+    int hinges = 0, springs = 0;
+    for (int c = 0; c < t->ncols; c++)
+        hinges += ends_with(t->col[c], "_rad"), springs += ends_with(t->col[c], "_N");
+    int panels = 2 + (hinges > 0) * 2 + (springs > 0) + (t->lean > 0), rows = (panels + 1) / 2;
+    fputs("# A run's time series: 'gnuplot plot.gp' in this folder draws plot.png.\n"
+          "if (!exists(\"out\")) out = 'plot.png'\ndata = ",
+          f);
+    cli_gp_string(f, t->path);
+    fprintf(f, "\nset terminal pngcairo size 1200,%d noenhanced font 'sans,10'\nset output out\n"
+               "set datafile separator ','\nset datafile columnheaders\n"
+               "set multiplot layout %d,2 title ",
+            60 + 330 * rows, rows);
+    cli_gp_string(f, t->title);
+    fprintf(f, "\nset grid\nset autoscale xfix\nset xlabel 'time (s)'\nset key outside right top samplen 2\n"
+               "set title 'ankle drop: first height minus height (mm)'\nset ylabel 'ankle drop (mm)'\n"
+               "plot data using 1:((%.17g - column(%d)) * 1000) with lines lw 2 lc rgb '#1f5fa0' notitle\n"
+               "set title 'contact points with the ground'\nset ylabel 'contact points'\nset yrange [0:*]\n"
+               "set offsets 0, 0, 1, 0\nplot data using 1:%d with steps lw 2 lc rgb '#2a7a2a' notitle\n"
+               "set autoscale y\nset offsets 0, 0, 0, 0\n",
+            t->z0_m, t->ankle_z, t->contacts);
+    if (hinges) {
+        plot_columns(f, t, "joint angles from the neutral pose: ankle and midfoot (deg)", "angle (deg)", " * 180 / pi",
+                     pick_midfoot);
+        plot_columns(f, t, "joint angles from the neutral pose: MTP, the toes (deg)", "angle (deg)", " * 180 / pi",
+                     pick_mtp);
+    }
+    if (springs)
+        plot_columns(f, t, "spring-damper forces, tension positive (N): d1 solid, d2 dashed, d3 dotted",
+                     "force (N)", "", pick_spring);
+    if (t->lean)
+        fprintf(f, "set title 'robot lean from upright (deg)'\nset ylabel 'lean (deg)'\n"
+                   "plot data using 1:%d with lines lw 2 lc rgb '#a02020' notitle\n", t->lean);
+    fputs("unset multiplot\n", f);
+    return 1;
+}
+
+/* A run's folder: dir/trajectory.csv drawn into out/plot.png, read into t (zeroed). */
+static int plot_run_into(const char *dir, const char *out, trajectory *t)
+{
+    int s = read_trajectory(dir, t);
+    if (s)
+        return s;
+    run_title(dir, t);
+    /* gnuplot runs in out: the data by its absolute path unless it is there */
+    char here[PATH_MAX], there[PATH_MAX];
+    if (!realpath(dir, here) || !realpath(out, there))
+        return cli_report(FS_BAD_INPUT, "plot: cannot resolve the folders' paths");
+    if (!strcmp(here, there))
+        snprintf(t->path, sizeof t->path, "trajectory.csv");
+    else
+        snprintf(t->path, sizeof t->path, "%s/trajectory.csv", here);
+    fs_error err;
+    if (fs_write_in(out, "plot.gp", fill_run_script, t, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    char png[FS_PATH_MAX + 16];
+    snprintf(png, sizeof png, "%s/plot.png", out);
+    s = cli_gnuplot_to(out, "plot.gp", png, "plot");
+    if (!s)
+        printf("%s: %s (script %s/plot.gp)\n", png, t->title, out);
+    return s < 0 ? 0 : s;
+}
+
+/* plot_run_into with its trajectory on the heap (large), for this command only. */
+static int plot_run(const char *dir, const char *out)
+{
+    trajectory *t = cli_zalloc(sizeof *t);
+    if (!t)
+        return FS_NO_MEMORY;
+    int s = plot_run_into(dir, out, t);
+    free(t);
+    return s;
+}
+
+/* A campaign's folder: its chart drawn again from dir/summary.json into out/success.png. */
+static int plot_campaign_into(const char *dir, const char *out, fs_campaign *c, fs_campaign_row *rows)
+{
+    char path[2 * FS_PATH_MAX];
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    fs_error err;
+    if (fs_campaign_reload(path, c, rows, &err) != FS_OK || fs_campaign_write_chart(c, rows, out, &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    snprintf(path, sizeof path, "%s/success.png", out);
+    int s = cli_gnuplot_to(out, "chart.gp", path, "plot");
+    if (!s)
+        printf("%s/success.png: campaign %s, %d cells (feet x terrains x robots: %d x %d x %d; data %s/chart.dat)\n",
+               out, c->name, fs_campaign_ncells(c), c->nfeet, c->nterrains, c->nrobots, out);
+    return s < 0 ? 0 : s;
+}
+
+/* plot_campaign_into with the campaign and its rows on the heap (large), for this command only. */
+static int plot_campaign(const char *dir, const char *out)
+{
+    struct {
+        fs_campaign c;
+        fs_campaign_row rows[FS_CAMPAIGN_MAX_FEET * FS_CAMPAIGN_MAX_TERRAINS * FS_CAMPAIGN_MAX_ROBOTS];
+    } *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    int s = plot_campaign_into(dir, out, &w->c, w->rows);
+    free(w);
+    return s;
+}
+
+int cli_plot(const cli_args *a)
+{
+    const char *dir = a->input;
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "footsim plot: %s: %s; give the folder a run or a campaign wrote (footsim plot "
+                        "results/runs/static_load)\n", dir, stat(dir, &st) ? strerror(errno) : "not a folder");
+        return FS_BAD_INPUT;
+    }
+    int campaign = is_file(dir, "summary.json"), run = is_file(dir, "trajectory.csv");
+    if (!campaign && !run) {
+        if (is_file(dir, "trial.json"))
+            fprintf(stderr, "footsim plot: %s is a landing trial's folder: trial.json holds its outcome, not a time "
+                            "series; plot a run's folder (footsim run SCENARIO writes trajectory.csv) or a "
+                            "campaign's (summary.json)\n", dir);
+        else
+            fprintf(stderr, "footsim plot: %s is not a run's or a campaign's results (no trajectory.csv, no "
+                            "summary.json); give the folder footsim run or footsim campaign wrote, e.g. "
+                            "results/runs/static_load or results/landing\n", dir);
+        return FS_BAD_INPUT;
+    }
+    const char *out = a->out ? a->out : dir;
+    fs_error err;
+    if (a->out && fs_outdir_shared(a->out, plot_files, a->replace, "--out", &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    return campaign ? plot_campaign(dir, out) : plot_run(dir, out);
 }

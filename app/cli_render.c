@@ -30,3 +30,15 @@ int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir)
     (void)frames, (void)ok, (void)shown_dir;
     return 0;
 }
+
+int cli_frames_open_at(const cli_args *a, const fs_scenario *sc, const char *frames_dir, cli_frames **frames,
+                       fs_run_observer *obs)
+{
+    return cli_frames_open(a, sc, frames_dir, frames, obs);
+}
+
+int cli_frames_check(const cli_args *a, const fs_scenario *sc)
+{
+    cli_frames *f;
+    return cli_frames_open(a, sc, NULL, &f, NULL);
+}

@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* The region a picture shows when no scenario gives one, m: around a foot at the origin. */
 static const double DEFAULT_REGION[4] = {-0.06, 0.16, -0.08, 0.08};
@@ -45,6 +46,87 @@ static int print_height(fs_terrain *t, const cli_args *a)
     return 0;
 }
 
+/* The figure around a map: margins in pixels, so that the map is drawn at its own size. */
+enum { FIG_LEFT_PX = 80, FIG_RIGHT_PX = 130, FIG_BOTTOM_PX = 60, FIG_TOP_PX = 50, COLOURBAR_PX = 22 };
+
+typedef struct figure {
+    const char *name, *map;     /* the terrain's name; the bare map's file name in the script's folder */
+    const double *region, *zrange;
+    int w, h, outline;
+} figure;
+
+/* The gnuplot script of the figure: the map at one pixel per pixel, axes in mm, a colour bar of
+ * the map's colours on level ground in mm. */
+static int fill_figure_script(FILE *f, const void *user)
+{
+    const figure *g = user;
+    double W = g->w + FIG_LEFT_PX + FIG_RIGHT_PX, H = g->h + FIG_BOTTOM_PX + FIG_TOP_PX;
+    const double *r = g->region;
+    double sx = (r[1] - r[0]) / (g->w - 1) * 1e3, sy = (r[3] - r[2]) / (g->h - 1) * 1e3;
+    fprintf(f, "# footsim terrain --png: the map with axes and a colour bar ('gnuplot terrain.gp' draws it).\n"
+               "if (!exists(\"out\")) out = 'terrain.png'\n"
+               "set terminal pngcairo size %.0f,%.0f noenhanced font 'sans,10'\nset output out\n"
+               "set lmargin at screen %.6f\nset rmargin at screen %.6f\nset bmargin at screen %.6f\n"
+               "set tmargin at screen %.6f\n",
+            W, H, FIG_LEFT_PX / W, (FIG_LEFT_PX + g->w) / W, FIG_BOTTOM_PX / H, (FIG_BOTTOM_PX + g->h) / H);
+    /* pixel centres at the sampled points: the axes reach half a pixel further */
+    fprintf(f, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\nset tics out\nset xlabel 'x (mm)'\n"
+               "set ylabel 'y (mm)'\nset cblabel 'height (mm)' offset 1.5,0\nset cbrange [%.9g:%.9g]\nset palette defined (",
+            r[0] * 1e3 - sx / 2, r[1] * 1e3 + sx / 2, r[2] * 1e3 - sy / 2, r[3] * 1e3 + sy / 2, g->zrange[0] * 1e3,
+            /* level ground is drawn in the lowest colour: the bar then spans 1 mm up from it */
+            g->zrange[1] - g->zrange[0] > 1e-9 ? g->zrange[1] * 1e3 : g->zrange[0] * 1e3 + 1);
+    /* the map's colour ramp is linear between these four */
+    for (int k = 0; k <= 3; k++) {
+        double c[3];
+        fs_terrain_map_colour(k / 3.0, c);
+        fprintf(f, "%s%d '#%02x%02x%02x'", k ? ", " : "", k, (int)lround(c[0]), (int)lround(c[1]), (int)lround(c[2]));
+    }
+    fprintf(f, ")\nset colorbox user origin screen %.6f, screen %.6f size screen %.6f, screen %.6f\nset title ",
+            (FIG_LEFT_PX + g->w + 20) / W, FIG_BOTTOM_PX / H, COLOURBAR_PX / W, g->h / H);
+    char title[256];
+    snprintf(title, sizeof title, "terrain %s from above: height as colour, shaded with light from the north-west%s",
+             g->name, g->outline ? "; white: the foot's footprint" : "");
+    cli_gp_string(f, title);
+    fprintf(f, "\nplot '%s' binary filetype=png dx=%.9g dy=%.9g origin=(%.9g,%.9g) with rgbimage notitle, \\\n"
+               "     '+' using (NaN):(NaN):(0) with points lc palette notitle\n",
+            g->map, sx, sy, r[0] * 1e3, r[2] * 1e3);
+    return 1;
+}
+
+/* The map drawn into a figure by gnuplot: 0 drawn, -1 not (said: the caller writes the bare map),
+ * else an exit status. */
+static int write_figure(const figure *g, const unsigned char *rgb, const char *png)
+{
+    const char *tmp = getenv("TMPDIR");
+    char dir[FS_PATH_MAX];
+    snprintf(dir, sizeof dir, "%s/footsim-terrain-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    if (!cli_have_program("gnuplot")) {
+        fprintf(stderr, "footsim terrain: gnuplot is not installed: %s is the bare map, without axes or colour "
+                        "bar (apt-get install gnuplot-nox draws them)\n", png);
+        return -1;
+    }
+    if (!mkdtemp(dir)) {
+        fprintf(stderr, "footsim terrain: no scratch folder for the figure (%s: %s): %s is the bare map\n", dir,
+                strerror(errno), png);
+        return -1;
+    }
+    fs_error err;
+    char map[FS_PATH_MAX + 16];
+    snprintf(map, sizeof map, "%s/map.png", dir);
+    if (fs_png_write_rgb(map, g->w, g->h, rgb, &err) != FS_OK ||
+        fs_write_in(dir, "terrain.gp", fill_figure_script, g, &err) != FS_OK) {
+        fprintf(stderr, "footsim terrain: %s: %s is the bare map\n", err.message, png);
+        fs_remove_tree(dir);
+        return -1;
+    }
+    int s = cli_gnuplot_to(dir, "terrain.gp", png, "terrain");
+    if (s < 0) /* gnuplot failed: its message names the folder, left for a look */
+        fprintf(stderr, "footsim terrain: %s is the bare map\n", png);
+    else
+        fs_remove_tree(dir);
+    return s;
+}
+
 static int write_map(fs_terrain *t, const cli_args *a)
 {
     fs_error err;
@@ -74,13 +156,21 @@ static int write_map(fs_terrain *t, const cli_args *a)
     if (!rgb)
         return cli_report(FS_NO_MEMORY, "out of memory");
     double z[2];
-    fs_terrain_map(t, region, outline, w, h, rgb, z);
-    fs_status s = fs_png_write_rgb(a->png, w, h, rgb, &err);
-    free(rgb);
-    if (s != FS_OK)
+    if (fs_terrain_map(t, region, outline, w, h, rgb, z, &err) != FS_OK) {
+        free(rgb);
         return cli_report(err.status, err.message);
-    printf("%s: %s terrain over x %.3f..%.3f m, y %.3f..%.3f m, heights %.4f..%.4f m%s\n", a->png, t->name,
-           region[0], region[1], region[2], region[3], z[0], z[1], outline ? "; white: the foot's footprint" : "");
+    }
+    const figure g = {t->name, "map.png", region, z, w, h, outline != NULL};
+    int s = write_figure(&g, rgb, a->png);
+    fs_status ws = s < 0 ? fs_png_write_rgb(a->png, w, h, rgb, &err) : FS_OK;
+    free(rgb);
+    if (ws != FS_OK)
+        return cli_report(err.status, err.message);
+    if (s > 0)
+        return s;
+    printf("%s: %s terrain over x %.3f..%.3f m, y %.3f..%.3f m, heights %.4f..%.4f m%s%s\n", a->png, t->name,
+           region[0], region[1], region[2], region[3], z[0], z[1], outline ? "; white: the foot's footprint" : "",
+           s < 0 ? " (the bare map: no axes)" : "; axes and colour bar in mm");
     return 0;
 }
 

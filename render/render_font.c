@@ -101,3 +101,10 @@ void render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep)
     gl.Recti(x0, y0, x0 + w, y0 + h);
     gl.Disable(GL_BLEND);
 }
+
+void render_fill_box(fs_render *r, int x0, int y0, int w, int h, const float rgb[3])
+{
+    begin_pixels(r);
+    gl.Color3fv(rgb);
+    gl.Recti(x0, y0, x0 + w, y0 + h);
+}

@@ -10,11 +10,15 @@
 /* Checker squares on the ground, m: a scale the eye can read off. */
 static const double CHECKER_M = 0.01;
 static const float BACKGROUND[3] = {0.86f, 0.88f, 0.91f};
-static const float LINK_RGB[3] = {0.12f, 0.12f, 0.14f};
+static const float LINK_RGB[3] = {0.30f, 0.32f, 0.38f};
 static const float JOINT_RGB[3] = {0.95f, 0.95f, 0.95f};
 static const float ANKLE_RGB[3] = {0.85f, 0.10f, 0.75f};
 static const float CONTACT_RGB[3] = {1.0f, 0.78f, 0.0f};
 static const float FORCE_RGB[3] = {0.05f, 0.62f, 0.18f};
+static const float ROBOT_RGBA[4] = {0.30f, 0.42f, 0.62f, 0.16f};
+static const float TENSION_RGB[3] = {0.90f, 0.10f, 0.08f}, COMPRESSION_RGB[3] = {0.10f, 0.30f, 0.95f};
+/* Links are drawn as round bars of this radius, m (the foot's links are a few mm wide). */
+static const double LINK_RADIUS_M = 0.0009;
 /* The bodies' colours, by body index. */
 static const float BODY_RGB[][3] = {{0.80f, 0.62f, 0.45f}, {0.72f, 0.52f, 0.38f}, {0.86f, 0.70f, 0.52f},
                                     {0.76f, 0.58f, 0.42f}, {0.90f, 0.76f, 0.58f}};
@@ -37,6 +41,19 @@ static void emit_sphere(int slices, int stacks)
         }
         gl.End();
     }
+}
+
+/* A unit cylinder about z (radius 1, z from 0 to 1), its side only. */
+static void emit_cylinder(int slices)
+{
+    gl.Begin(GL_QUAD_STRIP);
+    for (int j = 0; j <= slices; j++) {
+        double b = 2 * M_PI * j / slices, c = cos(b), s = sin(b);
+        gl.Normal3d(c, s, 0);
+        gl.Vertex3d(c, s, 1);
+        gl.Vertex3d(c, s, 0);
+    }
+    gl.End();
 }
 
 /* A unit cube centred on the origin, one normal per face. */
@@ -68,7 +85,7 @@ fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
         r->rgba = malloc((size_t)width * (size_t)height * 4);
     if (!r || !r->rgba) {
         free(r);
-        return fs_fail(err, FS_BAD_INPUT, "frame size %dx%d: not enough memory for the frame", width, height);
+        return fs_fail(err, FS_NO_MEMORY, "frame size %dx%d: out of memory for the frame", width, height);
     }
     r->w = width, r->h = height;
     /* RGBA, 24-bit depth, 8-bit stencil (for shadows), no accumulation buffer */
@@ -78,13 +95,17 @@ fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
         return fs_fail(err, FS_BAD_INPUT, "OSMesa could not make a %dx%d drawing context; install libosmesa6 "
                        "(apt-get install libosmesa6) or run without --frames", width, height);
     }
-    r->sphere = gl.GenLists(2);
+    r->sphere = gl.GenLists(3);
     r->cube = r->sphere + 1;
+    r->cylinder = r->sphere + 2;
     gl.NewList(r->sphere, GL_COMPILE);
     emit_sphere(24, 14);
     gl.EndList();
     gl.NewList(r->cube, GL_COMPILE);
     emit_cube();
+    gl.EndList();
+    gl.NewList(r->cylinder, GL_COMPILE);
+    emit_cylinder(12);
     gl.EndList();
     *out = r;
     return FS_OK;
@@ -247,6 +268,8 @@ static void draw_shadows(const fs_render *r, const fs_scene *scene)
 
 /* ---- lines: links, springs, forces ---------------------------------------------------------- */
 
+static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
 static void line(const double a[3], const double b[3])
 {
     gl.Vertex3dv(a);
@@ -280,26 +303,64 @@ static void arrow(const fs_render_view *v, const double tail[3], const double ti
 /* Spring colour: grey when slack, toward red in tension and blue in compression. */
 static void spring_colour(double force_N, double ref_N)
 {
-    static const float slack[3] = {0.55f, 0.55f, 0.55f}, tension[3] = {0.90f, 0.10f, 0.08f},
-                       compression[3] = {0.10f, 0.30f, 0.95f};
+    static const float slack[3] = {0.55f, 0.55f, 0.55f};
+    const float *tension = TENSION_RGB, *compression = COMPRESSION_RGB;
     float t = (float)fmin(fabs(force_N) / (ref_N > 0 ? ref_N : 1), 1);
     const float *to = force_N >= 0 ? tension : compression;
     gl.Color3f(slack[0] + t * (to[0] - slack[0]), slack[1] + t * (to[1] - slack[1]), slack[2] + t * (to[2] - slack[2]));
 }
 
-static double norm3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+/* A round bar of radius rad from a to b (lit). */
+static void draw_bar(const fs_render *r, const double a[3], const double b[3], double rad)
+{
+    double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, len = norm3(d);
+    if (!(len > 0))
+        return;
+    double z[3] = {d[0] / len, d[1] / len, d[2] / len}, x[3], y[3];
+    /* any unit x across z, y = z x x */
+    double pick[3] = {fabs(z[0]) < 0.9 ? 1 : 0, fabs(z[0]) < 0.9 ? 0 : 1, 0};
+    x[0] = pick[1] * z[2] - pick[2] * z[1], x[1] = pick[2] * z[0] - pick[0] * z[2], x[2] = pick[0] * z[1] - pick[1] * z[0];
+    double xn = norm3(x);
+    for (int k = 0; k < 3; k++)
+        x[k] /= xn;
+    y[0] = z[1] * x[2] - z[2] * x[1], y[1] = z[2] * x[0] - z[0] * x[2], y[2] = z[0] * x[1] - z[1] * x[0];
+    double m[16] = {rad * x[0], rad * x[1], rad * x[2], 0, rad * y[0], rad * y[1], rad * y[2], 0,
+                    d[0], d[1], d[2], 0, a[0], a[1], a[2], 1};
+    gl.PushMatrix();
+    gl.MultMatrixd(m);
+    gl.CallList(r->cylinder);
+    gl.PopMatrix();
+}
 
-/* Links and joints, springs, contacts with their ground-force arrows, and the load at the ankle. */
+/* The links as solid bars, lit. */
+static void draw_links(const fs_render *r, const fs_scene *scene)
+{
+    gl.Enable(GL_LIGHTING);
+    gl.Color3fv(LINK_RGB);
+    for (int i = 0; i < scene->nlinks; i++)
+        draw_bar(r, scene->link[i].p1, scene->link[i].p2, LINK_RADIUS_M);
+}
+
+/* The robot's box, translucent, over everything else: the foot shows through. */
+static void draw_robot(const fs_render *r, const fs_scene *scene)
+{
+    if (!scene->has_robot)
+        return;
+    gl.Enable(GL_LIGHTING);
+    gl.Enable(GL_BLEND);
+    gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.DepthMask(GL_FALSE);
+    gl.Color4f(ROBOT_RGBA[0], ROBOT_RGBA[1], ROBOT_RGBA[2], ROBOT_RGBA[3]);
+    draw_shape_mesh(r, &scene->robot);
+    gl.DepthMask(GL_TRUE);
+    gl.Disable(GL_BLEND);
+}
+
+/* Joints, springs, contacts with their ground-force arrows, and the load at the ankle. */
 static void draw_lines(fs_render *r, const fs_render_view *v, const fs_scene *scene, double view_h_m, float lw)
 {
     gl.Disable(GL_LIGHTING);
-    gl.LineWidth(lw);
-    gl.Color3fv(LINK_RGB);
-    gl.Begin(GL_LINES);
-    for (int i = 0; i < scene->nlinks; i++)
-        line(scene->link[i].p1, scene->link[i].p2);
-    gl.End();
-    gl.LineWidth(1.5f * lw);
+    gl.LineWidth(2.5f * lw);
     for (int i = 0; i < scene->nsprings; i++)
         r->spring_ref_N = fmax(r->spring_ref_N, fabs(scene->spring[i].force_N));
     gl.Begin(GL_LINES);
@@ -370,24 +431,72 @@ static void set_lighting(void)
     gl.ShadeModel(GL_SMOOTH);
 }
 
-/* Time, scenario, foot and terrain in the viewport's top-left corner, on a darkened panel. */
+/* Text scale for a viewport: 1 up to 720 px tall (or 1280 wide), then a step per 360 px. */
+static int text_scale(int w, int h) { return (int)fmax(1, fmin(h / 360, w / 640)); }
+
+/* Time, the note, scenario, foot and terrain, one line along the viewport's top on a thin strip. */
 static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, int w, int h)
 {
     static const unsigned char white[3] = {255, 255, 255};
-    int scale = (int)fmax(1, fmin(h / 240, w / 320));
-    char text[4][96];
-    snprintf(text[0], sizeof text[0], "T = %.3f S", scene->time_s);
-    snprintf(text[1], sizeof text[1], "SCENARIO %s", scene->scenario ? scene->scenario : "-");
-    snprintf(text[2], sizeof text[2], "FOOT %s", scene->foot ? scene->foot : "-");
-    snprintf(text[3], sizeof text[3], "TERRAIN %s", scene->terrain ? scene->terrain : "-");
-    size_t longest = 0;
-    for (int i = 0; i < 4; i++)
-        longest = strlen(text[i]) > longest ? strlen(text[i]) : longest;
-    int pad = 3 * scale, line_h = 9 * scale;
-    int bw = (int)longest * 6 * scale + 2 * pad, bh = 4 * line_h + 2 * pad - 2 * scale;
+    int scale = text_scale(w, h);
+    char text[256];
+    /* the note (an exaggeration) before the names: cut off last on a narrow tile */
+    snprintf(text, sizeof text, "T %.3f S  %s%s%s  %s  %s", scene->time_s, r->note, r->note[0] ? "  " : "",
+             scene->scenario ? scene->scenario : "-", scene->foot ? scene->foot : "-",
+             scene->terrain ? scene->terrain : "-");
+    int pad = 2 * scale, fit = (w - 2 * pad) / (6 * scale);
+    if (fit >= 0 && (size_t)fit < strlen(text))
+        text[fit] = 0; /* cut at the tile's edge, not into its neighbour */
+    int bw = (int)strlen(text) * 6 * scale + 2 * pad - scale, bh = 7 * scale + 2 * pad;
     render_shade_box(r, x0, y0, bw < w ? bw : w, bh < h ? bh : h, 0.45);
-    for (int i = 0; i < 4; i++)
-        render_text_gl(r, x0 + pad, y0 + pad + i * line_h, scale, text[i], white);
+    render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
+}
+
+/* A bar of a round length (1, 2 or 5 times a power of ten, mm) about a fifth of the viewport wide
+ * at the camera's target, labelled, in the bottom-left corner. */
+static void draw_scale_bar(fs_render *r, int x0, int y0, int w, int h, double view_h_m)
+{
+    static const unsigned char ink[3] = {20, 20, 24};
+    static const float bar[3] = {0.08f, 0.08f, 0.10f};
+    if (!(view_h_m > 0))
+        return;
+    double px_per_m = h / view_h_m, want_m = 0.2 * w / px_per_m, p = pow(10, floor(log10(want_m))), len_m = p;
+    for (int k = 0; k < 3; k++) {
+        double m[3] = {1, 2, 5};
+        if (m[k] * p <= want_m)
+            len_m = m[k] * p;
+    }
+    int scale = text_scale(w, h), len = (int)lround(len_m * px_per_m), th = 2 * scale;
+    int bx = x0 + 4 * scale, by = y0 + h - 6 * scale - th;
+    if (len < 2 || len > w)
+        return;
+    char label[32];
+    snprintf(label, sizeof label, "%g MM", len_m * 1e3);
+    render_fill_box(r, bx, by, len, th, bar);
+    render_fill_box(r, bx, by - 3 * scale, scale, 3 * scale, bar);
+    render_fill_box(r, bx + len - scale, by - 3 * scale, scale, 3 * scale, bar);
+    render_text_gl(r, bx + len + 3 * scale, by - 5 * scale, scale, label, ink);
+}
+
+int fs_render_legend(fs_render *r, int x0, int y0, int w, int h)
+{
+    static const unsigned char ink[3] = {20, 20, 24};
+    static const char *const words[4] = {"SPRING TENSION", "COMPRESSION", "CONTACT FORCE", "LOAD"};
+    const float *colour[4] = {TENSION_RGB, COMPRESSION_RGB, FORCE_RGB, ANKLE_RGB};
+    int scale = (int)fmax(1, fmin(h / 12, w / 340)), x = x0 + 3 * scale, cy = y0 + h / 2;
+    for (int i = 0; i < 4; i++) {
+        int sw = 8 * scale;
+        render_fill_box(r, x, cy - 2 * scale, sw, 4 * scale, colour[i]);
+        x += sw + 3 * scale;
+        x += render_text_gl(r, x, cy - 3 * scale - scale / 2, scale, words[i], ink) + 5 * scale;
+    }
+    gl.Finish();
+    return x - x0;
+}
+
+void fs_render_set_note(fs_render *r, const char *note)
+{
+    snprintf(r->note, sizeof r->note, "%s", note ? note : "");
 }
 
 void fs_render_draw(fs_render *r, const fs_render_view *v, const fs_scene *scene, int x0, int y0, int w, int h)
@@ -412,11 +521,14 @@ void fs_render_draw(fs_render *r, const fs_render_view *v, const fs_scene *scene
     draw_shadows(r, scene);
     gl.Enable(GL_LIGHTING);
     draw_shapes(r, scene);
+    draw_links(r, scene);
     /* the viewport's height in metres at the target, for sizes given as a part of the picture */
     double dx = v->eye[0] - v->target[0], dy = v->eye[1] - v->target[1], dz = v->eye[2] - v->target[2];
     double view_h_m = 2 * sqrt(dx * dx + dy * dy + dz * dz) * tan(v->fovy_deg * M_PI / 360);
     draw_lines(r, v, scene, view_h_m, (float)fmax(1, h / 360.0));
+    draw_robot(r, scene);
     gl.Disable(GL_SCISSOR_TEST);
     draw_overlay(r, scene, x0, y0, w, h);
+    draw_scale_bar(r, x0, y0, w, h, view_h_m);
     gl.Finish();
 }

@@ -25,7 +25,11 @@ fs_status fs_render_png_read(const char *path, unsigned char **rgba, int *w, int
         return fs_fail(err, FS_BAD_INPUT, "%s: cannot read as PNG (%s)", path, img.message);
     img.format = PNG_FORMAT_RGBA;
     *rgba = malloc(PNG_IMAGE_SIZE(img));
-    if (!*rgba || !png_image_finish_read(&img, NULL, *rgba, 0, NULL)) {
+    if (!*rgba) {
+        png_image_free(&img);
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for a %ux%u image", path, img.width, img.height);
+    }
+    if (!png_image_finish_read(&img, NULL, *rgba, 0, NULL)) {
         free(*rgba);
         *rgba = NULL;
         png_image_free(&img);

@@ -5,7 +5,8 @@
 #include <math.h>
 #include <string.h>
 
-const char *const fs_render_camera_names[FS_RENDER_NCAMERAS] = {"side", "front", "three-quarter", "follow"};
+const char *const fs_render_camera_names[FS_RENDER_NCAMERAS] = {"side", "front", "three-quarter", "follow",
+                                                                  "foot"};
 
 /* Where each camera looks from (azimuth from +x toward +y, elevation, degrees) and how much room
  * it leaves around the extent (1 = touching the edges). */
@@ -16,6 +17,7 @@ static const struct {
     {0, 12, 1.25},
     {-45, 28, 1.2},
     {-135, 20, 1.05},
+    {-60, 24, 1.08},
 };
 
 static const double FOVY_DEG = 20; /* narrow: little perspective distortion across the foot */
@@ -100,6 +102,19 @@ static void scene_extent(const fs_scene *s, box3 *b)
         grow(b, s->spring[i].p1, 0), grow(b, s->spring[i].p2, 0);
 }
 
+/* The robot's box, for the cameras that show it. */
+static void robot_extent(const fs_scene *s, box3 *b)
+{
+    if (!s->has_robot)
+        return;
+    double h[3], lo[3], hi[3];
+    box_half_extent(s->robot.quat, s->robot.size, h);
+    for (int k = 0; k < 3; k++)
+        lo[k] = s->robot.pos[k] - h[k], hi[k] = s->robot.pos[k] + h[k];
+    grow(b, lo, 0);
+    grow(b, hi, 0);
+}
+
 static box3 empty_box(void) { return (box3){{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}}; }
 
 /* ---- framing -------------------------------------------------------------------------------- */
@@ -117,8 +132,11 @@ void fs_render_view_fit(fs_render_view *v, fs_render_camera camera, const fs_sce
                         double aspect)
 {
     box3 b = empty_box();
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n; i++) {
         scene_extent(scenes[i], &b);
+        if (camera != FS_RENDER_FOOT)
+            robot_extent(scenes[i], &b);
+    }
     /* nothing (or a single point) to frame: a 10 cm box around it */
     if (!(b.lo[0] <= b.hi[0]))
         b = (box3){{-0.05, -0.05, 0}, {0.05, 0.05, 0.05}};
@@ -154,7 +172,7 @@ void fs_render_view_fit(fs_render_view *v, fs_render_camera camera, const fs_sce
 
 void fs_render_view_follow(fs_render_view *v, const fs_scene *scene)
 {
-    if (v->camera != FS_RENDER_FOLLOW)
+    if (v->camera != FS_RENDER_FOLLOW && v->camera != FS_RENDER_FOOT)
         return;
     box3 b = empty_box();
     scene_extent(scene, &b);

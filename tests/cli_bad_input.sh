@@ -68,7 +68,7 @@ if [ "$renderer" = render ]; then
     expect 2 "--size 0x10: not a frame size; allowed: WxH" -- run $sl --frames --size 0x10 --out "$tmp/f1"
     expect 2 "--size 9000x10: not a frame size; allowed: WxH with W from 1 and H from 1, each to 8192" -- run $sl --frames --size 9000x10 --out "$tmp/f1"
     expect 2 "--size 640: not a frame size" -- run $sl --frames --size 640 --out "$tmp/f1"
-    expect 2 "--camera top: unknown camera; allowed: side, front, three-quarter, follow" -- run $sl --frames --camera top --out "$tmp/f2"
+    expect 2 "--camera top: unknown camera; allowed: foot, side, front, three-quarter, follow" -- run $sl --frames --camera top --out "$tmp/f2"
     expect 2 "--fps 0: not a frame rate; allowed: frames per simulated second from 1 to 10000" -- run $sl --frames --fps 0 --out "$tmp/f3"
     expect 2 "--fps abc: not a frame rate" -- run $sl --frames --fps abc --out "$tmp/f3"
     expect 2 "--fps 20000: not a frame rate" -- run $sl --frames --fps 20000 --out "$tmp/f3"

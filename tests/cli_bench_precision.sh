@@ -7,10 +7,17 @@
 status=$?
 check '[ "$status" -eq 0 ]'
 csv="$tmp/bench/precision.csv"
-check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default$"'
-# 3 steps x 2 steppers: x 2 spring implementations for the chain and the biomimetic foot, x 1 for the flat foot
-check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 30 ]'
-for scene in chain landing_flat landing_biomimetic; do
+# what made it first (the scenarios' files with their hashes, relative to scenarios/), then the header
+check 'head -1 "$csv" | grep -q "^# provenance: footsim .*; inputs static_load.ini=[0-9a-f]\{16\} .*landing_trial.ini=.*../terrains/rough.ini=.*; overrides none$"'
+check 'sed -n 2p "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default$"'
+# 3 steps x 2 steppers: x 2 spring implementations for the chain and the two biomimetic landings, x 1 for the flat foot
+check '[ "$(tail -n +3 "$csv" | wc -l)" -eq 42 ]'
+check 'grep -q "^Provenance: footsim " "$tmp/bench/precision.md"'
+# progress without a terminal: plain lines with done/total, never a carriage return
+check '[ -z "$(tr -dc "\r" <"$tmp/err.txt")" ]'
+check 'grep -q "^footsim bench precision: 42/42 configurations done, [0-9]* failed, .* s elapsed" "$tmp/err.txt"'
+check '[ "$(grep -c "configurations done" "$tmp/err.txt")" -le 12 ]'
+for scene in chain landing_flat landing_biomimetic landing_biomimetic_rough; do
   check '[ "$(awk -F, -v s=$scene "\$1 == s && \$15 == 1" "$csv" | wc -l)" -eq 1 ]'
   check '[ "$(awk -F, -v s=$scene "\$1 == s && \$14 == 1" "$csv" | wc -l)" -ge 1 ]'
 done

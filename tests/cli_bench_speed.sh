@@ -1,11 +1,22 @@
 #!/bin/sh
-# footsim bench speed --quick writes its files, whole, with a row per scene and per skip; a folder
-# it cannot make is refused (exit 2) before anything is measured. No timing is checked.
-# Usage: cli_bench_speed.sh path/to/footsim (run from the source folder).
+# footsim bench speed --quick writes its files, whole, with a row per scene and per skip, into
+# build/bench/ when no --out is given (never into the committed results/bench/); a folder it cannot
+# make is refused (exit 2) before anything is measured; its progress goes to a log as plain lines.
+# No timing is checked. Usage: cli_bench_speed.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
-"$fs" bench speed --quick --out "$tmp/bench" >/dev/null 2>"$tmp/err"
+src=$PWD
+case $fs in /*) ;; *) fs=$PWD/$fs ;; esac
+# a checkout of its own: the shipped data through --data, the committed results folder beside it
+mkdir -p "$tmp/co/results/bench" && cp "$src/results/bench/.footsim-results" "$tmp/co/results/bench/"
+(cd "$tmp/co" && "$fs" bench speed --quick --data "$src" >/dev/null 2>"$tmp/err")
 status=$?
 check '[ "$status" -eq 0 ]'
+check '[ -s "$tmp/co/build/bench/speed.csv" ] && [ -z "$(ls -A "$tmp/co/results/bench" | grep -v footsim-results)" ]'
+mv "$tmp/co/build/bench" "$tmp/bench"
+check '[ -z "$(tr -dc "\r" <"$tmp/err")" ]'
+check 'grep -q "^footsim bench speed: [0-9]*/[0-9]* measurements done, 0 failed, " "$tmp/err"'
+check 'grep -q "^bench speed: static_load: [0-9]* steps/s" "$tmp/err"'
+check 'sed -n 3p "$tmp/bench/speed.csv" | grep -q "^# provenance: footsim .*; seeds 1 to 1; .*; inputs static_load.ini=[0-9a-f]\{16\} .*landing_trial.ini="'
 for f in speed.csv skips.csv speed.md speed.gp; do
     check '[ -s "$tmp/bench/$f" ]'
 done

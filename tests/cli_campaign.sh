@@ -87,6 +87,35 @@ check "and names the difference" grep -q 'provenance: overrides differs' "$tmp/p
 "$fs" compare "$tmp/other/summary.json" "$tmp/j1/summary.json" --force >"$tmp/prov.out" 2>&1
 check "compare --force compares them anyway (exit 0 or 1)" [ $? -le 1 ]
 
+# a run's metrics.json and a trial's trial.json record what made them the same way
+"$fs" run scenarios/static_load.ini --set run.duration_s=0.02 --out "$tmp/run" >/dev/null 2>&1
+check "metrics.json records the version, the overrides and the inputs' hashes" sh -c "tr -d ' \t\n' <'$tmp/run/metrics.json' |
+    grep -q '\"provenance\":{\"footsim\":\"[^\"]*\",\"overrides\":\[\"run.duration_s=0.02\"\],\"inputs\":\[{\"path\":\"static_load.ini\",\"hash\":\"[0-9a-f]\{16\}\"}'"
+check "and the settings" grep -q '"settings":.*"step_s 0.0001, stepper step' "$tmp/run/metrics.json"
+"$fs" trial scenarios/campaign_test_trial.ini --seed 2 --set run.duration_s=0.05 --out "$tmp/trial" >/dev/null 2>&1
+check "trial.json records its seed and its inputs" sh -c "grep -q '\"first_seed\":[[:space:]]*2' '$tmp/trial/trial.json' &&
+    grep -q '\"path\":[[:space:]]*\"robots/drop_weight.ini\"' '$tmp/trial/trial.json'"
+
+# optimize: its progress counts evaluations and their trials, as plain lines in a log
+cat >"$tmp/opt.ini" <<EOF
+[optimize]
+campaign = small.ini
+objective = least_stiff
+max_evaluations = 1
+validation_first_seed = 101
+[param.k]
+key = springs.k_d1_N_per_m
+min = 12000
+max = 24000
+start = 12000
+EOF
+"$fs" optimize "$tmp/opt.ini" -j 2 --set run.duration_s=0.3 --set campaign.seeds=1 --out "$tmp/opt" >/dev/null 2>"$tmp/opt.err"
+check "a tiny optimize runs (exit 0: its target holds)" [ $? -eq 0 ]
+check "optimize: no carriage return in a log" [ -z "$(tr -dc '\r' <"$tmp/opt.err")" ]
+check "optimize: evaluations.csv says what made it (the optimize file, the campaign's files, every --set)" sh -c \
+    "head -1 '$tmp/opt/evaluations.csv' | grep -q \"^# provenance: footsim .*; seeds 1 to 1; .*; inputs opt.ini=[0-9a-f]\{16\} small.ini=.*; overrides 'run.duration_s=0.3' 'campaign.seeds=1'\$\""
+check "optimize: evaluations done of at most, then trials" grep -q '^footsim optimize: evaluation 4/4, 2/2 trials done, 0 failed, ' "$tmp/opt.err"
+
 # compare: identical summaries exit 0; a planted change in a rate or a median exits 1
 "$fs" compare "$tmp/j4/summary.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"
 check "compare of identical summaries exits 0" [ $? -eq 0 ]

@@ -43,7 +43,7 @@ expect 2 "run.duration_s: duration_s / step_s = 4.295e+09 steps; a run may take 
     --set run.step_s=1e-5 --set run.log_interval_s=1e-5 --set run.duration_s=42949.67794 --out "$tmp/o"
 expect 2 "trajectory rows .* at most 1.07 GB" -- run $sl --set run.step_s=1e-5 --set run.log_interval_s=1e-5 \
     --set run.duration_s=1000 --out "$tmp/o"
-expect 2 "2200000 trials; a campaign may run at most 1000000" -- campaign scenarios/roughness.ini \
+expect 2 "x 100000 seeds = 4400000 trials; a campaign may run at most 1000000" -- campaign scenarios/roughness.ini \
     --set campaign.seeds=100000 --out "$tmp/c"
 expect 2 "at most 1e+09" -- walk scenarios/walking.ini --set walk.steps=1000 --set walk.period_s=100 --set run.step_s=1e-7
 if [ "$renderer" = render ]; then

@@ -7,6 +7,8 @@
 #ifndef FS_TEST_H
 #define FS_TEST_H
 
+#include "footsim/sim/fs_ode.h"
+
 #include <math.h>
 #include <setjmp.h>
 #include <stdio.h>

@@ -19,7 +19,7 @@ static inline void fixture_sphere(fs_scene *s, double x, double y, double z, dou
 static inline void fixture_segment(fs_scene_segment *seg, double x1, double y1, double z1, double x2, double y2, double z2,
                             double force_N)
 {
-    *seg = (fs_scene_segment){{x1, y1, z1}, {x2, y2, z2}, force_N};
+    *seg = (fs_scene_segment){{x1, y1, z1}, {x2, y2, z2}, force_N, 0, 0};
 }
 
 /* A foot-like scene of every kind of thing a frame shows: a heel sphere, a tilted talus box, three

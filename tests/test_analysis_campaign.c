@@ -72,6 +72,7 @@ static void small_results(fs_trial_result r[8])
         r[i].outcome = i < 4 ? FS_LANDED : FS_FELL;
         r[i].peak_force_N = 100.0 * (i + 1);
         r[i].steps = 10 * (i + 1);
+        r[i].impact_impulse_Ns = 10.0 + i; /* bio's medians: 11 N s */
     }
     r[3].outcome = FS_FAILED_NUMERICS;
     r[3].peak_force_N = NAN; /* left out of the medians */
@@ -206,6 +207,55 @@ static void test_compare(void)
     CHECK(system(cmd) == 0);
 }
 
+/* Equivalence (issue 12): intervals that overlap, medians within 5 % or the metric's floor. */
+static void apart(fs_campaign_row *rows) { rows[1].ci_low = 0.71, rows[1].ci_high = 1; } /* reference's ends at 0.70 */
+static void touching(fs_campaign_row *rows) { rows[1].ci_low = 0.69, rows[1].ci_high = 1; }
+static void lean_in_floor(fs_campaign_row *rows) { rows[0].median[3] += 0.49; } /* final_tilt_deg: floor 0.5 */
+static void lean_past_floor(fs_campaign_row *rows) { rows[0].median[3] += 0.51; }
+static void impulse_in(fs_campaign_row *rows) { rows[0].median[5] = 11 * 1.049; } /* 5 % of 11 N s */
+static void impulse_out(fs_campaign_row *rows) { rows[0].median[5] = 11 * 1.051; }
+static void drop_in_floor(fs_campaign_row *rows) { rows[0].median[9] += 0.99e-4; } /* ankle_drop_m: 0.1 mm */
+static void drop_past_floor(fs_campaign_row *rows) { rows[0].median[9] += 1.01e-4; }
+static void force_doubled(fs_campaign_row *rows) { rows[0].median[4] *= 2; } /* reported, not judged */
+static void no_contacts(fs_campaign_row *rows) { rows[0].median[7] = NAN; }
+
+static fs_status equivalent_to(const char *tmp, const char *name, void (*change)(fs_campaign_row *))
+{
+    char dir[512], result[600], reference[600];
+    snprintf(dir, sizeof dir, "%s/%s", tmp, name);
+    write_summary(dir, change);
+    snprintf(result, sizeof result, "%s/summary.json", dir);
+    snprintf(reference, sizeof reference, "%s/base/summary.json", tmp);
+    FILE *null = fopen("/dev/null", "w");
+    fs_error err;
+    fs_status s = fs_campaign_equivalence(result, reference, 0, null, &err);
+    fclose(null);
+    return s;
+}
+
+static void test_equivalence(void)
+{
+    char tmp[] = "/tmp/fs_campaign_XXXXXX";
+    CHECK(mkdtemp(tmp) != NULL);
+    char dir[512];
+    snprintf(dir, sizeof dir, "%s/base", tmp);
+    write_summary(dir, NULL);
+    CHECK(equivalent_to(tmp, "same", NULL) == FS_OK);
+    CHECK(equivalent_to(tmp, "apart", apart) == FS_EXPECTATION_FAILED);
+    CHECK(equivalent_to(tmp, "touching", touching) == FS_OK);
+    CHECK(equivalent_to(tmp, "lean_in", lean_in_floor) == FS_OK);
+    CHECK(equivalent_to(tmp, "lean_out", lean_past_floor) == FS_EXPECTATION_FAILED);
+    CHECK(equivalent_to(tmp, "impulse_in", impulse_in) == FS_OK);
+    CHECK(equivalent_to(tmp, "impulse_out", impulse_out) == FS_EXPECTATION_FAILED);
+    CHECK(equivalent_to(tmp, "drop_in", drop_in_floor) == FS_OK);
+    CHECK(equivalent_to(tmp, "drop_out", drop_past_floor) == FS_EXPECTATION_FAILED);
+    CHECK(equivalent_to(tmp, "force", force_doubled) == FS_OK);
+    CHECK(equivalent_to(tmp, "no_contacts", no_contacts) == FS_EXPECTATION_FAILED);
+    char cmd[600];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
+    CHECK(system(cmd) == 0);
+}
+
 static void test_load(void)
 {
     static fs_campaign c;
@@ -263,10 +313,25 @@ static void test_sweep(void)
     CHECK(!strcmp(c.sweep[0], "rough.rms_m") && c.nsweep == 1 && c.nterrains == 11 && c.nbase == 1);
     CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set[0], "rough.rms_m=0.003"));
     CHECK(c.terrain[10].sweep_value[0] == 0.02 && !c.terrain[10].set[1][0]);
-    CHECK(fs_campaign_pair(&c, 3)->terrain.def.rms_m == 0.003); /* the swept value in its cell */
-    /* no [robot.NAME]: the trial scenario's own robot, named after its file */
-    CHECK(c.nrobots == 1 && !strcmp(c.robot[0].name, "single_tall") && fs_campaign_pair(&c, 3)->def.robot.mass_kg == 26);
+    CHECK(c.nrobots == 2 && !strcmp(c.robot[1].name, "drop_weight"));
+    /* the swept value in its cells: foot 0, terrain 3, each robot (cell = (foot * 11 + 3) * 2 + robot) */
+    CHECK(fs_campaign_pair(&c, 6)->terrain.def.rms_m == 0.003 && fs_campaign_pair(&c, 7)->terrain.def.rms_m == 0.003);
+    CHECK(fs_campaign_pair(&c, 7)->def.robot.com_height_m < fs_campaign_pair(&c, 6)->def.robot.com_height_m);
     fs_campaign_free(&c);
+    /* no [robot.NAME]: the trial scenario's own robot, named after its file */
+    char tmp[] = "/tmp/fs_campaign_XXXXXX", cwd[512], path[600];
+    REQUIRE(mkdtemp(tmp) != NULL && getcwd(cwd, sizeof cwd) != NULL);
+    snprintf(path, sizeof path, "%s/own_robot.ini", tmp);
+    FILE *f = fopen(path, "w");
+    REQUIRE(f != NULL);
+    fprintf(f, "[campaign]\ntrial = %s/scenarios/landing_trial.ini\nseeds = 1\n\n[foot.flat]\nfile = "
+               "%s/scenarios/feet/flat.ini\n\n[terrain.flat]\nfile = %s/terrains/flat.ini\n", cwd, cwd, cwd);
+    fclose(f);
+    REQUIRE(fs_campaign_load(path, NULL, 0, &c, &err) == FS_OK);
+    CHECK(c.nrobots == 1 && !strcmp(c.robot[0].name, "single_tall") && fs_campaign_pair(&c, 0)->def.robot.mass_kg == 26);
+    fs_campaign_free(&c);
+    remove(path);
+    rmdir(tmp);
     const char *bad[] = {"campaign.sweep_values=0, -0.001"};
     CHECK(fs_campaign_load("scenarios/roughness.ini", bad, 1, &c, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "rms_m = '-0.001' is out of range") && strstr(err.message, "rough@-0.001"));
@@ -302,5 +367,5 @@ static void test_sweep_two_keys(void)
     CHECK(fs_campaign_load("scenarios/envelope.ini", alone, 3, &c, &err) == FS_BAD_INPUT);
 }
 
-FS_TEST_MAIN(TEST(test_wilson), TEST(test_median), TEST(test_summarize), TEST(test_expectations), TEST(test_compare),
+FS_TEST_MAIN(TEST(test_wilson), TEST(test_median), TEST(test_summarize), TEST(test_expectations), TEST(test_compare), TEST(test_equivalence),
              TEST(test_load), TEST(test_sweep), TEST(test_sweep_two_keys))

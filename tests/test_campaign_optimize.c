@@ -44,17 +44,41 @@ static void refuses_bad_parameters(void)
     int fd = mkstemp(path);
     REQUIRE(fd >= 0);
     FILE *f = fdopen(fd, "w");
-    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\n[param.a]\nkey = springs.k_d1_N_per_m\n"
+    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\nobjective = least_stiff\n[param.a]\nkey = springs.k_d1_N_per_m\n"
                "min = 2e5\nmax = 1e5\nstart = 1e5\n", FS_SOURCE_DIR);
     fclose(f);
     CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
-    fs_check_refusal(err.message, path, 7, "give min < max and the start between them");
+    fs_check_refusal(err.message, path, 8, "give min < max and the start between them");
     f = fopen(path, "w");
-    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\n[param.a]\nkey = springs.k_d1_N_per_m\n"
+    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\nobjective = least_stiff\n[param.a]\nkey = springs.k_d1_N_per_m\n"
                "min = 0\nmax = 1e5\nstart = 1e4\nlog = yes\n", FS_SOURCE_DIR);
     fclose(f);
     CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
-    fs_check_refusal(err.message, path, 8, "log = yes needs min > 0");
+    fs_check_refusal(err.message, path, 9, "log = yes needs min > 0");
+    /* the objective must be named */
+    f = fopen(path, "w");
+    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\n[param.a]\nkey = springs.k_d1_N_per_m\n"
+               "min = 1e4\nmax = 1e5\nstart = 2e4\n", FS_SOURCE_DIR);
+    fclose(f);
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "objective is missing") && strstr(err.message, "objective = least_stiff"));
+    /* lightest: the foot's mass as the candidate compiles it, moving with a mass parameter alone */
+    f = fopen(path, "w");
+    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\nobjective = lightest\n[param.m]\n"
+               "key = mass.phalanx_kg\nmin = 0.004\nmax = 0.016\nstart = 0.008\n", FS_SOURCE_DIR);
+    fclose(f);
+    REQUIRE(fs_optimize_load(path, small, 1, &o, &err) == FS_OK);
+    double light[1] = {0.004}, heavy[1] = {0.016};
+    REQUIRE(fs_optimize_apply(&o, light, &err) == FS_OK);
+    double m_light = fs_optimize_objective(&o, light);
+    REQUIRE(fs_optimize_apply(&o, heavy, &err) == FS_OK);
+    double m_heavy = fs_optimize_objective(&o, heavy);
+    /* five phalanges, each scaled by its chain's scale (Table I: the big toe larger) */
+    double scales = 0;
+    for (int i = 0; i < FS_CHAINS; i++)
+        scales += fs_campaign_pair(&o.campaign, 0)->design.scale[i];
+    CHECK_NEAR(m_heavy - m_light, 0.012 * scales, 1e-12);
+    fs_optimize_free(&o);
     remove(path);
 }
 

@@ -106,6 +106,53 @@ static void the_watchdog_kills_a_stopped_worker(void)
     CHECK(st.timed_out == 1 && st.died == 1 && s.timed_out[5] == 1 && st.answered == NTASKS - 1);
 }
 
+/* Progress is told again while no task ends (the tick), not only after each task: a log's
+ * once-a-minute line needs it. A stopped worker holds its task until the watchdog (1 s); the pool
+ * wakes every 0.1 s meanwhile, so progress comes with the count unchanged before the task is
+ * reported dead (without the tick it would come only after each task). */
+typedef struct ticks {
+    state s;
+    int last, repeats, died_at_repeats;
+} ticks;
+
+static void count_progress(int done, int ntasks, void *user)
+{
+    (void)ntasks;
+    ticks *t = user;
+    t->repeats += done == t->last && done > 0;
+    t->last = done;
+}
+
+static void died_counting(int task, const fs_pool_death *d, void *user)
+{
+    ticks *t = user;
+    died(task, d, &t->s);
+    t->died_at_repeats = t->repeats;
+}
+
+static void run_task_ticks(int task, void *result, void *user) { run_task(task, result, &((ticks *)user)->s); }
+
+static fs_status take_ticks(int task, const void *result, void *user, fs_error *err)
+{
+    return take(task, result, &((ticks *)user)->s, err);
+}
+
+static void progress_ticks_while_no_task_ends(void)
+{
+    static ticks t;
+    fresh(&t.s);
+    t.s.stop_on = NTASKS - 1; /* the last: every other is answered before the wait */
+    t.last = -1;
+    fs_error err;
+    fs_pool_stats st;
+    fs_pool_spec spec = {.ntasks = NTASKS, .jobs = 2, .result_size = sizeof(answer), .watchdog_s = 1,
+                         .tick_s = 0.1, .user = &t, .run = run_task_ticks, .done = take_ticks,
+                         .died = died_counting, .progress = count_progress};
+    CHECK(fs_pool_run(&spec, &st, &err) == FS_OK);
+    CHECK(st.timed_out == 1 && t.s.timed_out[NTASKS - 1] == 1);
+    CHECK(t.died_at_repeats >= 1);
+}
+
 /* A refusal in done stops the pool: no task is handed out after it. With one worker the tasks go
  * strictly in order, so exactly tasks 0..3 are answered (with more workers a slow one may answer
  * its task after every other, so the count would say nothing). */
@@ -135,5 +182,5 @@ static void default_jobs_follow_the_cpus_given(void)
 }
 
 FS_TEST_MAIN(TEST(answers_do_not_depend_on_jobs), TEST(dead_workers_are_reported_and_replaced),
-             TEST(the_watchdog_kills_a_stopped_worker), TEST(done_can_stop_the_pool),
+             TEST(the_watchdog_kills_a_stopped_worker), TEST(progress_ticks_while_no_task_ends), TEST(done_can_stop_the_pool),
              TEST(default_jobs_follow_the_cpus_given))

@@ -3,6 +3,9 @@
 #include "fs_test.h"
 
 #include "footsim/model/fs_scenario.h"
+#include "footsim/io/fs_input.h"
+
+#include <cJSON.h>
 
 #include <stdlib.h>
 #include <string.h>
@@ -171,6 +174,78 @@ static void overrides_are_checked_like_files(void)
     }
 }
 
+/* Provenance hashes what a file says, not how it is written: a comment, a blank line or other
+ * spacing leaves a design's hash as it was, a changed value changes it; a heightmap's image is
+ * hashed by its bytes; inputs are recorded relative to the scenario's folder. */
+static void provenance_hashes_content(void)
+{
+    char *text = NULL;
+    size_t n = 0;
+    fs_error err = {0};
+    REQUIRE(fs_read_regular("scenarios/feet/biomimetic.ini", 1 << 20, "a design", &text, &n, &err) == FS_OK);
+    unsigned long long h0, h1, h2;
+    REQUIRE(fs_ini_hash(write_file("design.ini", text), &h0, &err) == FS_OK);
+    /* comments, blank lines and spacing around '=' */
+    char *edited = malloc(n + 256);
+    REQUIRE(edited);
+    char *at = strstr(text, "k_d1_N_per_m = 12000");
+    REQUIRE(at);
+    snprintf(edited, n + 256, "; a comment added\n\n%.*sk_d1_N_per_m=12000   ; the same value\n%s\n; the end\n",
+             (int)(at - text), text, strchr(at, '\n') + 1);
+    REQUIRE(fs_ini_hash(write_file("design.ini", edited), &h1, &err) == FS_OK);
+    CHECK(h1 == h0);
+    snprintf(edited, n + 256, "%.*sk_d1_N_per_m = 12001\n%s", (int)(at - text), text, strchr(at, '\n') + 1);
+    REQUIRE(fs_ini_hash(write_file("design.ini", edited), &h2, &err) == FS_OK);
+    CHECK(h2 != h0);
+    write_file("design.ini", text);
+    free(edited);
+    free(text);
+
+    /* a scenario on a heightmap: every file, relative to the scenario, the image by its bytes */
+    char png[128], cmd[512];
+    snprintf(png, sizeof png, "%s/maps", dir);
+    snprintf(cmd, sizeof cmd, "mkdir -p %s && cp terrains/heightmaps/dunes.png %s/dunes.png", png, png);
+    REQUIRE(system(cmd) == 0);
+    write_file("hm.ini", "[terrain]\nkind = heightmap\n[heightmap]\nfile = maps/dunes.png\n");
+    const char *scenario = write_file("sc.ini", "[scenario]\ndesign = design.ini\nterrain = hm.ini\n");
+    static fs_scenario sc;
+    REQUIRE(fs_scenario_load(scenario, NULL, 0, &sc, &err) == FS_OK);
+    const char *set[] = {"run.step_s=5e-5"};
+    fs_provenance a, b;
+    REQUIRE(fs_scenario_provenance(&sc, set, 1, &a, &err) == FS_OK);
+    REQUIRE(fs_scenario_provenance(&sc, set, 1, &b, &err) == FS_OK);
+    fs_scenario_free(&sc);
+    REQUIRE(a.ninputs == 4);
+    CHECK(!strcmp(a.inputs[0].path, "sc.ini") && !strcmp(a.inputs[1].path, "design.ini"));
+    CHECK(!strcmp(a.inputs[2].path, "hm.ini") && !strcmp(a.inputs[3].path, "maps/dunes.png"));
+    CHECK(a.inputs[1].hash == h0);
+    CHECK(a.noverrides == 1 && !strcmp(a.overrides[0], "run.step_s=5e-5"));
+    CHECK(fs_provenance_equal(&a, &b));
+    /* one byte more in the image: another hash, another record */
+    snprintf(cmd, sizeof cmd, "printf x >>%s/dunes.png", png);
+    REQUIRE(system(cmd) == 0);
+    fs_provenance c;
+    REQUIRE(fs_provenance_init(&c, scenario, &err) == FS_OK);
+    REQUIRE(fs_provenance_add_data(&c, "terrains/heightmaps/dunes.png", &err) == FS_OK);
+    snprintf(cmd, sizeof cmd, "%s/dunes.png", png);
+    REQUIRE(fs_provenance_add_data(&c, cmd, &err) == FS_OK);
+    CHECK(c.ninputs == 2 && c.inputs[0].hash == a.inputs[3].hash && c.inputs[1].hash != a.inputs[3].hash);
+    /* read back from its JSON, a record is the same record; with another seed it is not */
+    cJSON *json = fs_provenance_json(&a);
+    fs_provenance back;
+    CHECK(fs_provenance_from_json(json, &back, &err) == FS_OK && fs_provenance_equal(&a, &back));
+    fs_provenance_free(&back);
+    cJSON_DeleteItemFromObject(json, "inputs");
+    CHECK(fs_provenance_from_json(json, &back, &err) == FS_BAD_INPUT);
+    fs_provenance_free(&back);
+    cJSON_Delete(json);
+    b.first_seed = 1, b.nseeds = 1;
+    CHECK(!fs_provenance_equal(&a, &b));
+    fs_provenance_free(&a);
+    fs_provenance_free(&b);
+    fs_provenance_free(&c);
+}
+
 static void setup(void)
 {
     snprintf(dir, sizeof dir, "/tmp/footsim-test-XXXXXX");
@@ -186,4 +261,4 @@ static void teardown(void)
 
 FS_TEST_MAIN(TEST(setup), TEST(good_files_load), TEST(unknown_names_are_refused), TEST(malformed_values_are_refused), TEST(misread_files_are_refused), TEST(caps_are_refused),
              TEST(out_of_range_values_are_refused), TEST(missing_files_are_refused),
-             TEST(overrides_are_checked_like_files), TEST(teardown))
+             TEST(overrides_are_checked_like_files), TEST(provenance_hashes_content), TEST(teardown))

@@ -181,5 +181,160 @@ static void test_terrain_band(void)
     fs_render_close(r);
 }
 
+/* The foot's own extent (shapes, links, springs, the ankle), as the frame commands see it. */
+static void foot_box(const fs_scene *s, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++)
+        lo[k] = hi[k] = s->ankle[k];
+    for (int i = 0; i < s->nshapes; i++)
+        for (int k = 0; k < 3; k++) {
+            double r = s->shape[i].type == FS_SHAPE_SPHERE ? s->shape[i].size[0] : 0.5 * s->shape[i].size[k];
+            lo[k] = fmin(lo[k], s->shape[i].pos[k] - r), hi[k] = fmax(hi[k], s->shape[i].pos[k] + r);
+        }
+    const fs_scene_segment *seg[2] = {s->link, s->spring};
+    int n[2] = {s->nlinks, s->nsprings};
+    for (int j = 0; j < 2; j++)
+        for (int i = 0; i < n[j]; i++)
+            for (int k = 0; k < 3; k++) {
+                lo[k] = fmin(lo[k], fmin(seg[j][i].p1[k], seg[j][i].p2[k]));
+                hi[k] = fmax(hi[k], fmax(seg[j][i].p1[k], seg[j][i].p2[k]));
+            }
+}
+
+/* The fraction of the picture's width and height the box's projected corners span; 0 when a
+ * corner falls outside the picture. */
+static double box_span(const fs_render_view *v, int w, int h, const double lo[3], const double hi[3])
+{
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int c = 0; c < 8; c++) {
+        double p[3] = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]}, px[2];
+        if (!fs_render_project(v, w, h, p, px) || px[0] < 0 || px[0] > w || px[1] < 0 || px[1] > h)
+            return 0;
+        x0 = fmin(x0, px[0]), x1 = fmax(x1, px[0]), y0 = fmin(y0, px[1]), y1 = fmax(y1, px[1]);
+    }
+    return fmax((x1 - x0) / w, (y1 - y0) / h);
+}
+
+/* The foot camera frames the real foot of a landing trial (a 26 kg robot 0.3 m up on it): every
+ * corner of the foot's bounding box inside the picture and the box filling most of its width or
+ * height (the camera leaves 8 % room, and perspective a little more: over 70 %), where the side
+ * camera, which shows the robot too, leaves the foot under a third of that. */
+static void test_foot_camera(void)
+{
+    static fs_scenario sc;
+    static fs_sim sim;
+    static fs_scene s;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", NULL, 0, &sc, &err) == FS_OK);
+    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+    fs_sim_scene(&sim, &s);
+    CHECK(s.has_robot);
+    double lo[3], hi[3];
+    foot_box(&s, lo, hi);
+    const fs_scene *one = &s;
+    fs_render_view foot, side;
+    fs_render_view_fit(&foot, FS_RENDER_FOOT, &one, 1, 16.0 / 9);
+    fs_render_view_fit(&side, FS_RENDER_SIDE, &one, 1, 16.0 / 9);
+    double fspan = box_span(&foot, 640, 360, lo, hi), sspan = box_span(&side, 640, 360, lo, hi);
+    printf("  the foot spans %.0f %% of the foot camera's frame, %.0f %% of the side camera's\n", 100 * fspan,
+           100 * sspan);
+    CHECK(fspan > 0.7 && fspan <= 1);
+    CHECK(sspan > 0 && sspan < fspan / 3);
+    /* it follows the foot: moved 5 cm, the foot is framed the same */
+    fs_scene moved = s;
+    for (int i = 0; i < moved.nshapes; i++)
+        moved.shape[i].pos[0] += 0.05;
+    for (int i = 0; i < moved.nlinks; i++)
+        moved.link[i].p1[0] += 0.05, moved.link[i].p2[0] += 0.05;
+    for (int i = 0; i < moved.nsprings; i++)
+        moved.spring[i].p1[0] += 0.05, moved.spring[i].p2[0] += 0.05;
+    moved.ankle[0] += 0.05;
+    fs_render_view follow = foot;
+    fs_render_view_follow(&follow, &moved);
+    CHECK_NEAR(follow.target[0] - foot.target[0], 0.05, 1e-12);
+    CHECK_NEAR(follow.eye[0] - foot.eye[0], 0.05, 1e-12);
+    fs_sim_destroy(&sim);
+}
+
+/* v rotated by the inverse of unit quaternion q (w, x, y, z): into the frame q turns into the world. */
+static void unrotate(const double q[4], const double v[3], double r[3])
+{
+    double w = q[0], x = -q[1], y = -q[2], z = -q[3];
+    double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                      {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                      {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+    for (int i = 0; i < 3; i++)
+        r[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
+}
+
+/* Body b's centre in the ankle body's frame. */
+static void in_ankle_frame(const fs_scene *s, int b, double d[3])
+{
+    const fs_scene_pose *a = &s->body[s->ankle_body];
+    double v[3] = {s->body[b].pos[0] - a->pos[0], s->body[b].pos[1] - a->pos[1], s->body[b].pos[2] - a->pos[2]};
+    unrotate(a->quat, v, d);
+}
+
+/* The deformation view on the static load: the neutral pose maps to itself whatever the factor, a
+ * factor of 1 changes nothing, and with F = 20 every body's centre is displaced in the ankle
+ * body's frame by 20 times its true displacement (to rounding: 1e-12 m), the ankle body stays (to 1e-12 m),
+ * and each shape keeps its distance from its body's centre (bodies move rigidly). */
+static void test_exaggerate(void)
+{
+    static fs_scenario sc;
+    static fs_sim sim;
+    static fs_scene neutral, now, out;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
+    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+    fs_sim_scene(&sim, &neutral);
+    REQUIRE(neutral.nbodies > 2);
+    fs_render_exaggerate(&neutral, &neutral, 20, &out);
+    double worst = 0;
+    for (int i = 0; i < out.nshapes; i++)
+        for (int k = 0; k < 3; k++)
+            worst = fmax(worst, fabs(out.shape[i].pos[k] - neutral.shape[i].pos[k]));
+    for (int i = 0; i < out.nsprings; i++)
+        for (int k = 0; k < 3; k++)
+            worst = fmax(worst, fmax(fabs(out.spring[i].p1[k] - neutral.spring[i].p1[k]),
+                                     fabs(out.spring[i].p2[k] - neutral.spring[i].p2[k])));
+    CHECK(worst < 1e-12);
+    for (int i = 0; i < 1500; i++) /* 0.15 s: the load ramped in, the arch folding */
+        REQUIRE(fs_sim_step(&sim, &err) == FS_OK);
+    fs_sim_scene(&sim, &now);
+    fs_render_exaggerate(&neutral, &now, 1, &out);
+    CHECK(!memcmp(&out, &now, sizeof out));
+    const double F = 20;
+    fs_render_exaggerate(&neutral, &now, F, &out);
+    double largest = 0, err_m = 0;
+    for (int b = 0; b < now.nbodies; b++) {
+        double d0[3], dn[3], de[3];
+        in_ankle_frame(&neutral, b, d0);
+        in_ankle_frame(&now, b, dn);
+        in_ankle_frame(&out, b, de);
+        for (int k = 0; k < 3; k++) {
+            largest = fmax(largest, fabs(dn[k] - d0[k]));
+            err_m = fmax(err_m, fabs((de[k] - d0[k]) - F * (dn[k] - d0[k])));
+        }
+    }
+    printf("  largest true displacement %.3g m, exaggerated x%g to within %.2g m\n", largest, F, err_m);
+    CHECK(largest > 1e-5); /* there is something to exaggerate */
+    CHECK(err_m < 1e-12);
+    for (int k = 0; k < 3; k++)
+        CHECK_NEAR(out.body[now.ankle_body].pos[k], now.body[now.ankle_body].pos[k], 1e-12);
+    double rigid = 0;
+    for (int i = 0; i < now.nshapes; i++) {
+        int b = now.shape[i].body;
+        double dn = 0, de = 0;
+        for (int k = 0; k < 3; k++) {
+            dn += pow(now.shape[i].pos[k] - now.body[b].pos[k], 2);
+            de += pow(out.shape[i].pos[k] - out.body[b].pos[k], 2);
+        }
+        rigid = fmax(rigid, fabs(sqrt(dn) - sqrt(de)));
+    }
+    CHECK(rigid < 1e-12);
+    fs_sim_destroy(&sim);
+}
+
 FS_TEST_MAIN(TEST(test_size_and_not_blank), TEST(test_size_refused), TEST(test_projection),
-             TEST(test_projection_geometry), TEST(test_terrain_band))
+             TEST(test_projection_geometry), TEST(test_terrain_band), TEST(test_foot_camera), TEST(test_exaggerate))

@@ -5,7 +5,7 @@
  * Tolerance: a pixel differs when a channel is off by more than 24 of 255 (rounding of lighting and
  * edge coverage moves a pixel by a few units; a missing or moved body changes it by far more);
  * the picture matches when at most 0.1 % of its pixels differ (77 pixels: a Mesa version may move a
- * few edge pixels; taking away any one body of the scene changes over 0.25 % in every view). */
+ * few edge pixels; taking away any one body of the scene changes over 0.24 % in every view). */
 #include "fs_test.h"
 #include "render_fixture.h"
 

@@ -1,9 +1,17 @@
 #!/bin/sh
-# Checks that no file includes a header from a layer above its own (docs/architecture.md).
-# Layers, lowest first: base exec io model sim analysis experiment campaign; render sits on sim beside
-# analysis and above; app/ (the command) and tests/ may include anything. A file's layer is its
-# folder (src/LAYER/, include/footsim/LAYER/, render/); a footsim header's layer is its folder under
-# include/footsim/. Exit 1 with every offending line listed, 0 when the layering holds.
+# Checks the layering of docs/architecture.md, as CI runs it (ctest `layers`). Exit 1 with every
+# offending line listed, 0 when it holds. Three rules:
+# 1. No file includes a header from a layer above its own. Layers, lowest first: base exec io
+#    model sim analysis experiment campaign; render sits on sim beside analysis and above; app/
+#    (the command) and tests/ may include anything. A file's layer is its folder (src/LAYER/,
+#    include/footsim/LAYER/, render/); a footsim header's layer is its folder under include/footsim/.
+# 2. Only the sim layer (src/sim/, include/footsim/sim/) calls ODE or includes its headers: no
+#    call of a d[A-Z]... function and no #include <ode/...> elsewhere in src/, include/ or render/
+#    (comments and string literals aside). app/ is the command, a leaf: it may ask ODE for its
+#    build configuration (bench machine) and, for the tests, for ODE's error path.
+# 3. A header beside its sources is private to its folder: src/LAYER/*.h to src/LAYER/,
+#    render/*.h to render/, app/*.h to app/ (and app/bench/). No file elsewhere includes one;
+#    tests/ may.
 set -eu
 cd "$(dirname "$0")/.."
 rank() {
@@ -32,5 +40,65 @@ for f in $(find src include/footsim render -name '*.c' -o -name '*.h' | sort); d
     fi
   done || bad=1
 done
-[ "$bad" -eq 0 ] && echo "layers: every include points down or sideways within its own layer"
+
+# C with its comments and string and character literals blanked, line numbers kept.
+code_only() {
+  awk '
+    BEGIN { inc = 0 }
+    {
+      out = ""; n = length($0); i = 1
+      while (i <= n) {
+        c = substr($0, i, 1); d = substr($0, i, 2)
+        if (inc) { if (d == "*/") { inc = 0; i += 2 } else i++; continue }
+        if (d == "/*") { inc = 1; i += 2; continue }
+        if (d == "//") break
+        if (c == "\"" || c == "\047") {
+          q = c; i++
+          while (i <= n && substr($0, i, 1) != q) i += (substr($0, i, 1) == "\\") ? 2 : 1
+          i++; out = out q q; continue
+        }
+        out = out c; i++
+      }
+      print out
+    }' "$1"
+}
+
+# 2. ODE only in the sim layer
+for f in $(find src include/footsim render -name '*.c' -o -name '*.h' | sort); do
+  case "$f" in src/sim/* | include/footsim/sim/*) continue ;; esac
+  hits=$(code_only "$f" | grep -nE '(^|[^A-Za-z0-9_])d[A-Z][A-Za-z0-9_]*[[:space:]]*\(|#[[:space:]]*include[[:space:]]*<ode/' || true)
+  if [ -n "$hits" ]; then
+    echo "$hits" | while IFS= read -r line; do
+      echo "$f:${line%%:*}: calls ODE or includes its header outside the sim layer; only src/sim/ may (add a function to include/footsim/sim/)"
+    done
+    bad=1
+  fi
+done
+
+# 3. private headers stay in their folder
+owner() {
+  case "$1" in
+    src/*) echo "$1" | cut -d/ -f1-2 ;;
+    render/*) echo render ;;
+    app/*) echo app ;;
+    *) echo public ;;
+  esac
+}
+private=$(find src render app -name '*.h' | sort)
+for f in $(find src include/footsim render app -name '*.c' -o -name '*.h' | sort); do
+  mine=$(owner "$f")
+  for inc in $(sed -n 's|^[[:space:]]*#[[:space:]]*include[[:space:]]*["<]\([^">]*\)[">].*|\1|p' "$f"); do
+    base=${inc##*/}
+    for h in $private; do
+      [ "${h##*/}" = "$base" ] || continue
+      theirs=$(owner "$h")
+      if [ "$theirs" != "$mine" ]; then
+        echo "$f: includes $inc, a header private to $theirs/; use a public header of include/footsim/ instead"
+        bad=1
+      fi
+    done
+  done
+done
+
+[ "$bad" -eq 0 ] && echo "layers: every include points down or sideways within its own layer; only the sim layer calls ODE; private headers stay in their folders"
 exit "$bad"

@@ -2,10 +2,21 @@
 # Installs footsim's Debian build dependencies when any is missing.
 # Run as root on Debian 12; otherwise it prints the apt-get line to run.
 set -eu
-pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev libosmesa6-dev libpng-dev libgsl-dev libnlopt-dev gnuplot-nox"
+pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev libosmesa6-dev libpng-dev libgsl-dev libnlopt-dev libxml2-dev gnuplot-nox"
+# optional: MuJoCo, for the test that loads the MJCF export (export_mujoco skips without it)
+optional="libmujoco-dev"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+for p in $optional; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" && continue
+  if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q "$p" >/dev/null 2>&1 ||
+      echo "footsim: optional package $p not installed (its test will be skipped)" >&2
+  else
+    echo "footsim: optional package $p is not installed (its test will be skipped)" >&2
+  fi
 done
 [ -z "$missing" ] && exit 0
 echo "footsim: installing missing packages:$missing" >&2

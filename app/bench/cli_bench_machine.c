@@ -1,6 +1,8 @@
 /* cli_bench_machine.c: what every benchmark records of where it ran: the machine (CPU, cores,
- * compiler, ODE's precision) and the load average. Below the benchmarks; calls none of them. */
+ * compiler, ODE's precision) and the load average; and of what made its results (provenance). Below the benchmarks; calls none of them. */
 #include "cli.h"
+
+#include "footsim/model/fs_scenario.h"
 
 #include <ode/ode.h>
 #include <stdio.h>
@@ -38,4 +40,13 @@ double cli_load_average(void)
     if (f)
         fclose(f);
     return l;
+}
+
+int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings, fs_error *err)
+{
+    fs_status s = fs_provenance_init(p, cli_data_path("scenarios/static_load.ini"), err);
+    for (int i = 0; s == FS_OK && i < n; i++)
+        s = fs_scenario_inputs(sc[i], p, err);
+    snprintf(p->settings, sizeof p->settings, "%s", settings);
+    return s;
 }

@@ -2,9 +2,9 @@
  * scenario on one core, where a step's time goes (ODE's collision, ODE's step, footsim's own code:
  * fs_observer.h), and what each thing a run skips saves, each measured with and without.
  *
- * Every time is the wall time of loading the scenario, building the world, stepping and measuring
- * (what 'footsim run', 'trial' or 'walk' spends before writing files), the median of repeated
- * runs. A pair (with and without a skip) takes turns run by run, so that other load on the machine
+ * Every time is the wall time of building the world, stepping and measuring (what 'footsim run',
+ * 'trial' or 'walk' spends between reading its files and writing its results), the median of
+ * repeated runs; each scene's files are read once, before it is timed. A pair (with and without a skip) takes turns run by run, so that other load on the machine
  * hits both alike. Writes DIR/speed.csv, skips.csv, speed.md, speed.gp and speed.png. */
 #include "cli.h"
 
@@ -168,44 +168,57 @@ static fs_status run_engine(const fs_scenario *sc, runner how, const fs_run_obse
     return FS_OK;
 }
 
-static fs_status run_trial(const char *path, const char **set, int n, const fs_run_observer *obs, outcome *o,
-                           fs_error *err)
+static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, outcome *o, fs_error *err)
 {
     fs_trial_result t;
-    fs_status s = fs_trial_run(path, set, n, 1, obs, &t, err);
+    fs_status s = fs_trial_run_scenario(sc, 1, obs, &t, err);
     if (s == FS_OK && t.outcome == FS_FAILED_NUMERICS)
         s = fs_fail(err, FS_NUMERICAL, "%s", t.failure);
     *o = (outcome){t.steps, t.end_time_s, 0, {t.ankle_drop_m, t.slip_m, t.peak_force_N, t.final_tilt_deg, t.outcome}};
     return s;
 }
 
-/* One timed run of sc with extra overrides (the trial of seed 1 for a trial scene). */
-static fs_status run_once(const scene *sc, const char *const *extra, const fs_run_observer *obs, outcome *o,
-                          fs_error *err)
+/* A failure of scene sc, named. */
+static fs_status scene_failed(const scene *sc, fs_status s, fs_error *err)
+{
+    char what[FS_ERROR_MAX];
+    snprintf(what, sizeof what, "%s", err->message);
+    return fs_fail(err, s, "%s (bench speed, scene '%s')", what, sc->name);
+}
+
+/* A scene's scenario read with extra overrides, untimed, its files noted in prov (may be NULL).
+ * The caller frees *out (fs_scenario_free, free) also after a failure. */
+static fs_status load_scene(const scene *sc, const char *const *extra, fs_provenance *prov, fs_scenario **out,
+                            fs_error *err)
 {
     const char *set[2 * MAX_SET];
     int n = join_set(sc, extra, set);
-    fs_scenario *loaded = sc->how == BY_TRIAL ? NULL : calloc(1, sizeof *loaded); /* taken before the clock */
-    if (sc->how != BY_TRIAL && !loaded)
-        return fs_fail(err, FS_NO_MEMORY, "out of memory (bench speed, scene '%s')", sc->name);
+    *out = calloc(1, sizeof **out);
+    if (!*out)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory");
+    fs_status s = fs_scenario_load(cli_data_path(sc->path), set, n, *out, err);
+    if (s == FS_OK && sc->how == BY_TRIAL)
+        s = fs_scenario_require(*out, "trial", err);
+    if (s == FS_OK && prov)
+        s = fs_scenario_inputs(*out, prov, err);
+    return s == FS_OK ? FS_OK : scene_failed(sc, s, err);
+}
+
+static void unload(fs_scenario *sc)
+{
+    if (sc)
+        fs_scenario_free(sc);
+    free(sc);
+}
+
+/* One timed run of a loaded scene (the trial of seed 1 for a trial scene). */
+static fs_status run_once(const scene *sc, const fs_scenario *loaded, const fs_run_observer *obs, outcome *o,
+                          fs_error *err)
+{
     double t0 = fs_clock_s();
-    fs_status s;
-    if (sc->how == BY_TRIAL) {
-        s = run_trial(cli_data_path(sc->path), set, n, obs, o, err);
-    } else {
-        s = fs_scenario_load(cli_data_path(sc->path), set, n, loaded, err);
-        if (s == FS_OK)
-            s = run_engine(loaded, sc->how, obs, o, err);
-        fs_scenario_free(loaded);
-    }
+    fs_status s = sc->how == BY_TRIAL ? run_trial(loaded, obs, o, err) : run_engine(loaded, sc->how, obs, o, err);
     o->wall_s = fs_clock_s() - t0;
-    free(loaded);
-    if (s != FS_OK) {
-        char what[FS_ERROR_MAX];
-        snprintf(what, sizeof what, "%s", err->message);
-        return fs_fail(err, s, "%s (bench speed, scene '%s')", what, sc->name);
-    }
-    return FS_OK;
+    return s == FS_OK ? FS_OK : scene_failed(sc, s, err);
 }
 
 static int by_wall(const void *a, const void *b)
@@ -272,8 +285,8 @@ static fs_status count_rows(void *user, const fs_sim *sim, fs_error *err)
 
 /* n profiled runs: each stage's median time (clock reads taken off), and the median wall time; the
  * first also counts the constraint rows after every step (outside the stages it times). */
-static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double *wall_s, double *read_s,
-                               row_count *rows, fs_error *err)
+static fs_status profile_scene(const scene *sc, const fs_scenario *loaded, int n, fs_profile *prof, double *wall_s,
+                               double *read_s, row_count *rows, fs_error *err)
 {
     *read_s = clock_read_s();
     double stage[FS_NSTAGES][MAX_RUNS], wall[MAX_RUNS];
@@ -284,7 +297,7 @@ static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double 
         fs_run_observer obs = {.profile = &p};
         if (i == 0)
             obs.fn = count_rows, obs.user = rows, obs.interval_s = 1e-12; /* every step */
-        s = run_once(sc, NULL, &obs, &o, err);
+        s = run_once(sc, loaded, &obs, &o, err);
         take_clock_off(&p, *read_s);
         for (int k = 0; k < FS_NSTAGES; k++)
             stage[k][i] = p.stage_s[k];
@@ -298,62 +311,66 @@ static fs_status profile_scene(const scene *sc, int n, fs_profile *prof, double 
 }
 
 /* `runs` runs (their median), then `profiled` runs with a profile (fs_observer.h). */
-static fs_status time_scene(const scene *sc, int runs, int profiled, timing *t, fs_error *err)
+static fs_status time_scene(const scene *sc, int runs, int profiled, fs_provenance *prov, timing *t, fs_error *err)
 {
     outcome o[MAX_RUNS];
-    fs_status s = FS_OK;
+    fs_scenario *loaded;
+    fs_status s = load_scene(sc, NULL, prov, &loaded, err);
     for (int i = 0; i < runs && s == FS_OK; i++)
-        s = run_once(sc, NULL, NULL, &o[i], err);
+        s = run_once(sc, loaded, NULL, &o[i], err);
     fs_profile prof;
-    double wall_s, read_s;
+    double wall_s = 0, read_s = 0;
     row_count rows = {0};
     if (s == FS_OK)
-        s = profile_scene(sc, profiled, &prof, &wall_s, &read_s, &rows, err);
+        s = profile_scene(sc, loaded, profiled, &prof, &wall_s, &read_s, &rows, err);
+    unload(loaded);
     if (s == FS_OK)
         *t = (timing){sc, runs, median_run(o, runs), prof, wall_s, read_s, rows.joints,
                       rows.seen ? rows.sum / rows.seen : 0, rows.max};
     return s;
 }
 
-/* One run of sc with the renderer drawing frames (as --frames) into a temporary folder, removed
- * after. FS_BAD_INPUT when this footsim has no renderer. */
-static fs_status frames_run(const scene *sc, outcome *o, fs_error *err)
+/* One run of a loaded scene with the renderer drawing frames (as --frames) into a temporary
+ * folder, removed after. FS_BAD_INPUT when this footsim has no renderer. */
+static fs_status frames_run(const scene *sc, const fs_scenario *loaded, outcome *o, fs_error *err)
 {
     char tmp[] = "/tmp/footsim-bench-XXXXXX";
     if (!mkdtemp(tmp))
         return fs_fail(err, FS_IO, "%s: cannot make a temporary folder for the frames", tmp);
     cli_args a = {.command = "bench", .frames = 1, .size = "320x240"};
-    fs_scenario *loaded = calloc(1, sizeof *loaded); /* taken before the clock */
     cli_frames *frames = NULL;
     fs_run_observer obs;
     double t0 = fs_clock_s();
-    fs_status s = loaded ? fs_scenario_load(cli_data_path(sc->path), sc->set, count_set(sc->set), loaded, err)
-                         : fs_fail(err, FS_NO_MEMORY, "out of memory (bench speed, scene '%s')", sc->name);
-    if (s == FS_OK && cli_frames_open(&a, loaded, tmp, &frames, &obs) != 0)
+    fs_status s = FS_OK;
+    if (cli_frames_open(&a, loaded, tmp, &frames, &obs) != 0)
         s = fs_fail(err, FS_BAD_INPUT, "no renderer");
     if (s == FS_OK)
         s = run_engine(loaded, sc->how, &obs, o, err);
     cli_frames_close(frames, 0, tmp);
     o->wall_s = fs_clock_s() - t0;
-    if (loaded)
-        fs_scenario_free(loaded);
-    free(loaded);
     fs_remove_tree(tmp);
     return s;
 }
 
-/* The two ways of a skip, taking turns; same: the fingerprints agree bit for bit. */
-static fs_status time_skip(const skip *k, int runs, skip_timing *t, fs_error *err)
+/* The two ways of a skip, each read once, then taking turns; same: the fingerprints agree bit for
+ * bit. */
+static fs_status time_skip(const skip *k, int runs, fs_provenance *prov, skip_timing *t, fs_error *err)
 {
     outcome w[MAX_RUNS], wo[MAX_RUNS];
-    fs_status s = FS_OK;
     *t = (skip_timing){k, runs, 1, 0, {0}, {0}};
+    fs_scenario *with = NULL, *without = NULL;
+    fs_status s = load_scene(&k->base, k->with_set, prov, &with, err);
+    if (s == FS_OK)
+        s = load_scene(&k->base, k->without_set, prov, &without, err);
     for (int i = 0; i < runs && s == FS_OK; i++) {
-        s = run_once(&k->base, k->with_set, NULL, &w[i], err);
+        s = run_once(&k->base, with, NULL, &w[i], err);
         if (s == FS_OK)
-            s = k->frames ? frames_run(&k->base, &wo[i], err) : run_once(&k->base, k->without_set, NULL, &wo[i], err);
+            s = k->frames ? frames_run(&k->base, without, &wo[i], err)
+                          : run_once(&k->base, without, NULL, &wo[i], err);
         t->same = t->same && (s != FS_OK || !memcmp(w[i].print, wo[i].print, sizeof w[i].print));
     }
+    unload(with);
+    unload(without);
     if (s == FS_OK) {
         t->with = median_run(w, runs);
         t->without = median_run(wo, runs);
@@ -367,6 +384,7 @@ static fs_status time_skip(const skip *k, int runs, skip_timing *t, fs_error *er
 typedef struct context {
     char machine[512], date[32], command[64];
     double load_start, load_end;
+    const fs_provenance *prov; /* what made the results */
 } context;
 
 static double stage_total(const fs_profile *p)
@@ -399,6 +417,7 @@ static void speed_header(FILE *f, const context *c)
     fprintf(f, "# footsim bench speed%s, %s, load average %.2f at the start and %.2f at the end\n",
             strstr(c->command, "quick") ? " --quick" : "", c->date, c->load_start, c->load_end);
     fprintf(f, "# machine: %s\n", c->machine);
+    fs_provenance_csv(c->prov, f);
 }
 
 static void speed_csv(FILE *f, const context *c, const timing *t, int n)
@@ -487,13 +506,16 @@ static void speed_md(FILE *f, const context *c, const timing *t, int n, const sk
     fprintf(f, "# footsim bench speed\n\n`%s`, %s UTC.\n\nMachine: %s. One core, one run at a time; "
                "1-minute load average %.2f at the start, %.2f at the end.\n\n",
             c->command, c->date, c->machine, c->load_start, c->load_end);
-    fprintf(f, "Each time is the median wall time of repeated runs (speed.csv says how many) of loading, building, "
-               "stepping and measuring; the shares of the step loop come from further runs with a profile (fs_observer.h) (each stage's median, less the cost of the clock reads that timed it, calibrated per scene: speed.csv's clock_read_ns; profiled_wall_s is their median wall time). Rows: the constraint rows ODE's step solves (fs_sim_constraint_rows): those of the joints and implicit springs, and all rows with the contacts', mean and most over the first profiled run's steps.\n\n");
+    fprintf(f, "Each time is the median wall time of repeated runs (speed.csv says how many) of building, stepping "
+               "and measuring (each scene's files read once, before it is timed); the shares of the step loop come from further runs with a profile (fs_observer.h) (each stage's median, less the cost of the clock reads that timed it, calibrated per scene: speed.csv's clock_read_ns; profiled_wall_s is their median wall time). Rows: the constraint rows ODE's step solves (fs_sim_constraint_rows): those of the joints and implicit springs, and all rows with the contacts', mean and most over the first profiled run's steps.\n\n");
     speed_md_table(f, t, n);
     fprintf(f, "\nfootsim's own code takes at most %.1f %% of a step (%s): %s the 10 %% bound.\n\n", own,
             t[w].sc->name, own < 10 ? "under" : "OVER");
     fprintf(f, "What each skip saves (with: the cheap way; the two ways took turns run by run):\n\n");
     skips_md_table(f, k, nk);
+    fputs("\nProvenance: ", f);
+    fs_provenance_print(c->prov, f);
+    fputs(".\n", f);
 }
 
 static void speed_gp(FILE *f)
@@ -504,12 +526,12 @@ static void speed_gp(FILE *f)
                "set style data histograms\nset style fill solid 0.8 border -1\nset boxwidth 0.75\n"
                "set xtics rotate by -30 left noenhanced\nset grid ytics\nset key noenhanced\n"
                "set title 'steps per second on one core (median)'\nset logscale y\nset ylabel 'steps/s'\n"
-               "plot 'speed.csv' using 8:xtic(1) skip 3 title 'steps/s' lc rgb '#4477aa'\n"
+               "plot 'speed.csv' using 8:xtic(1) skip 4 title 'steps/s' lc rgb '#4477aa'\n"
                "unset logscale y\nset title 'share of a step'\nset ylabel '%%'\nset yrange [0:100]\n"
                "set style histogram rowstacked\nset key outside right\n"
-               "plot 'speed.csv' using 12:xtic(1) skip 3 title 'collision (ODE)' lc rgb '#ddaa33', "
-               "'' using 13 skip 3 title 'ODE step' lc rgb '#4477aa', "
-               "'' using 14 skip 3 title 'footsim own code' lc rgb '#bb5566'\n"
+               "plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision (ODE)' lc rgb '#ddaa33', "
+               "'' using 13 skip 4 title 'ODE step' lc rgb '#4477aa', "
+               "'' using 14 skip 4 title 'footsim own code' lc rgb '#bb5566'\n"
                "unset multiplot\n");
 }
 
@@ -552,43 +574,65 @@ static void start_context(context *c, int quick)
     c->load_start = cli_load_average();
 }
 
+/* What the measuring shares: the record of the files read, and the progress over every scene and
+ * skip this run takes. */
+typedef struct measuring {
+    int quick;
+    fs_provenance *prov;
+    cli_progress progress;
+    int done, total;
+} measuring;
+
+/* How many scenes and skips a run takes. */
+static int measurements(int quick)
+{
+    int n = 0;
+    for (int i = 0; i < NSCENES; i++)
+        n += taken(&SCENES[i], quick) != 0;
+    for (int i = 0; i < NSKIPS; i++)
+        n += taken(&SKIPS[i].base, quick) != 0;
+    return n;
+}
+
 /* The scenes this run takes, timed into t; *n: how many. */
-static fs_status time_scenes(int quick, timing *t, int *n, fs_error *err)
+static fs_status time_scenes(measuring *m, timing *t, int *n, fs_error *err)
 {
     fs_status s = FS_OK;
     *n = 0;
     for (int i = 0; i < NSCENES && s == FS_OK; i++) {
         const scene *sc = &SCENES[i];
-        if (!taken(sc, quick))
+        if (!taken(sc, m->quick))
             continue;
-        fprintf(stderr, "bench speed: %s ...", sc->name);
-        s = time_scene(sc, repeats(sc, quick), quick || sc->flags & SLOW ? 1 : 3, &t[*n], err);
+        s = time_scene(sc, repeats(sc, m->quick), m->quick || sc->flags & SLOW ? 1 : 3, m->prov, &t[*n], err);
         if (s == FS_OK)
-            fprintf(stderr, " %.0f steps/s\n", t[*n].median.steps / t[*n].median.wall_s);
+            cli_progress_say(&m->progress, "bench speed: %s: %.0f steps/s", sc->name,
+                             t[*n].median.steps / t[*n].median.wall_s);
         ++*n;
+        cli_progress_update(&m->progress, ++m->done, m->total, 0);
     }
     return s;
 }
 
 /* The skips this run takes, timed into t; *n: how many. */
-static fs_status time_skips(int quick, skip_timing *t, int *n, fs_error *err)
+static fs_status time_skips(measuring *m, skip_timing *t, int *n, fs_error *err)
 {
     fs_status s = FS_OK;
     *n = 0;
     for (int i = 0; i < NSKIPS && s == FS_OK; i++) {
         const skip *k = &SKIPS[i];
-        if (!taken(&k->base, quick))
+        if (!taken(&k->base, m->quick))
             continue;
-        fprintf(stderr, "bench speed: %s on %s ...", k->name, k->base.name);
-        s = time_skip(k, repeats(&k->base, quick), &t[*n], err);
+        s = time_skip(k, repeats(&k->base, m->quick), m->prov, &t[*n], err);
         if (s == FS_BAD_INPUT && k->frames) {
             t[*n].skipped = 1; /* no renderer in this build: said on stderr */
             s = FS_OK;
-            fprintf(stderr, " left out\n");
+            cli_progress_say(&m->progress, "bench speed: %s on %s: left out (no renderer)", k->name, k->base.name);
         } else if (s == FS_OK) {
-            fprintf(stderr, " saves %.1f %%\n", saving_pct(&t[*n]));
+            cli_progress_say(&m->progress, "bench speed: %s on %s: saves %.1f %%", k->name, k->base.name,
+                             saving_pct(&t[*n]));
         }
         ++*n;
+        cli_progress_update(&m->progress, ++m->done, m->total, 0);
     }
     return s;
 }
@@ -604,20 +648,32 @@ int cli_bench_speed(const cli_args *a, const char *dir)
     start_context(&c, a->quick);
     fs_error err;
     outcome warm;
+    fs_provenance prov = {.ninputs = 0};
+    fs_scenario *first = NULL;
     fs_status s = fs_make_dirs(dir, &err); /* a folder it cannot write is refused before measuring */
     if (s == FS_OK)
-        s = run_once(&SCENES[0], NULL, NULL, &warm, &err); /* untimed: caches and pages */
+        s = cli_bench_provenance(&prov, NULL, 0, "each row's scene as its files and the overrides in its name give "
+                                 "it (step_s column); trials from seed 1's pose", &err);
+    prov.first_seed = 1, prov.nseeds = 1;
     if (s == FS_OK)
-        s = time_scenes(a->quick, t, &n, &err);
+        s = load_scene(&SCENES[0], NULL, NULL, &first, &err);
     if (s == FS_OK)
-        s = time_skips(a->quick, k, &nk, &err);
-    if (s != FS_OK) {
-        fputc('\n', stderr);
-        return cli_report(s, err.message);
-    }
+        s = run_once(&SCENES[0], first, NULL, &warm, &err); /* untimed: caches and pages */
+    unload(first);
+    measuring m = {a->quick, &prov, {0}, 0, measurements(a->quick)};
+    cli_progress_start(&m.progress, "footsim bench speed", "measurements");
+    cli_progress_update(&m.progress, 0, m.total, 0);
+    if (s == FS_OK)
+        s = time_scenes(&m, t, &n, &err);
+    if (s == FS_OK)
+        s = time_skips(&m, k, &nk, &err);
     c.load_end = cli_load_average();
+    c.prov = &prov;
     report r = {&c, t, n, k, nk};
-    if ((s = write_report(dir, &r, &err)) != FS_OK)
+    if (s == FS_OK)
+        s = write_report(dir, &r, &err);
+    fs_provenance_free(&prov);
+    if (s != FS_OK)
         return cli_report(s, err.message);
     printf("bench speed: %s/speed.md, speed.csv, skips.csv, speed.png\n", dir);
     return 0;

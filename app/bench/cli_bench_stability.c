@@ -101,16 +101,16 @@ static fs_status configure(const config *c, const fs_design_def *base, double du
     return fs_scenario_compile(sc, err);
 }
 
-/* Steps the configuration for the duration, the checks recording drifts, until it blows up. */
-static void run_config(const config *c, const fs_design_def *base, double duration, outcome *o)
+/* Steps the configuration for the duration, the checks recording drifts, until it blows up: on a
+ * copy of its slice's scenario, loaded once (loaded), its definitions edited. */
+static void run_config(const config *c, const fs_scenario *loaded, double duration, outcome *o)
 {
     fs_scenario *sc = calloc(1, sizeof *sc); /* large: on the heap, freed on every path */
     fs_error err = {FS_OK, ""};
     memset(o, 0, sizeof *o);
-    o->status = sc ? fs_scenario_load(cli_data_path(SLICES[c->slice].scenario), NULL, 0, sc, &err)
-                   : fs_fail(&err, FS_NO_MEMORY, "out of memory");
+    o->status = sc ? fs_scenario_copy(sc, loaded, &err) : fs_fail(&err, FS_NO_MEMORY, "out of memory");
     if (o->status == FS_OK)
-        o->status = configure(c, base, duration, sc, &err);
+        o->status = configure(c, &loaded->design, duration, sc, &err);
     fs_sim sim;
     if (o->status == FS_OK)
         o->status = fs_sim_build(&sim, sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
@@ -151,7 +151,7 @@ static void run_config(const config *c, const fs_design_def *base, double durati
 typedef struct sweep {
     const config *cfg;
     outcome *out;
-    const fs_design_def *base;
+    fs_scenario *const *loaded; /* each slice's scenario, read once */
     double duration;
     cli_progress progress;
     int died;             /* runs whose worker died (counted as blown up) */
@@ -161,7 +161,7 @@ typedef struct sweep {
 static void run_task(int index, void *result, void *user)
 {
     const sweep *w = user;
-    run_config(&w->cfg[index], w->base, w->duration, result);
+    run_config(&w->cfg[index], w->loaded[w->cfg[index].slice], w->duration, result);
 }
 
 /* In the parent: a run's outcome, or the refused scenario that stops the sweep (a bug here). */
@@ -204,10 +204,10 @@ static void progress(int done, int n, void *user)
 }
 
 /* Runs every configuration in up to jobs workers. */
-static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, const fs_design_def *base,
+static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, fs_scenario *const *loaded,
                          double duration, fs_error *err)
 {
-    sweep w = {cfg, out, base, duration, {0}, 0};
+    sweep w = {cfg, out, loaded, duration, {0}, 0};
     cli_progress_start(&w.progress, "footsim bench stability", "runs");
     fs_pool_spec spec = {.ntasks = n, .jobs = jobs, .result_size = sizeof(outcome), .user = &w, .run = run_task,
                          .done = take_task, .died = task_died, .progress = progress};
@@ -239,6 +239,7 @@ typedef struct report {
     const outcome *out;
     int n, quick, jobs;
     double wall_s;
+    const fs_provenance *prov;
 } report;
 
 static int fill_csv(FILE *f, const void *user)
@@ -247,6 +248,7 @@ static int fill_csv(FILE *f, const void *user)
     const config *cfg = x->cfg;
     const outcome *out = x->out;
     int n = x->n;
+    fs_provenance_csv(x->prov, f);
     fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,class,class_code,reason,"
                "where,time_s,drift_reason,drift_time_s,steps,max_loop_err_m,max_energy_excess_J,energy_bound_J,"
                "max_speed_m_per_s,explicit_limit_s\n");
@@ -428,6 +430,9 @@ static int fill_summary(FILE *f, const void *user)
         slice_table(f, cfg, out, n, s, quick);
     fprintf(f, "\n`stability.csv` has every run (class, the check that failed, where and when, the worst loop "
                "error, energy excess and speed); `stability_<slice>.gp` draws each chart.\n");
+    fputs("\nProvenance: ", f);
+    fs_provenance_print(x->prov, f);
+    fputs(".\n", f);
     return 1;
 }
 
@@ -441,30 +446,40 @@ int cli_bench_stability(const cli_args *a, const char *dir)
         return st;
     jobs = jobs < MAX_WORKERS ? jobs : MAX_WORKERS;
     fs_error err;
-    /* the design the slices scale (its definition only: the terrain is let go at once), and the
-     * grid of configurations: large, so on the heap for this command */
-    fs_scenario *base = calloc(1, sizeof *base);
+    /* each slice's scenario read once (the workers copy it), before anything runs */
+    fs_scenario *loaded[NSLICES] = {NULL};
+    fs_provenance prov = {.ninputs = 0};
+    fs_status s = FS_OK;
+    for (int i = 0; i < NSLICES && s == FS_OK; i++) {
+        for (int j = 0; j < i && !loaded[i]; j++)
+            if (!strcmp(SLICES[j].scenario, SLICES[i].scenario))
+                loaded[i] = loaded[j];
+        if (loaded[i])
+            continue;
+        if (!(loaded[i] = calloc(1, sizeof *loaded[i])))
+            s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
+        else
+            s = fs_scenario_load(cli_data_path(SLICES[i].scenario), NULL, 0, loaded[i], &err);
+    }
+    if (s == FS_OK)
+        s = cli_bench_provenance(&prov, (const fs_scenario *const *)loaded, NSLICES, "each row's stepper, springs "
+                                 "and step_s, and its slice's quantity; the rest as the inputs give them", &err);
+    if (s == FS_OK)
+        s = fs_make_dirs(dir, &err);
+    /* the grid of configurations: large, so on the heap for this command */
     config *cfg = calloc(NSLICES * NCOMBOS * MAX_VALUES * 16, sizeof *cfg);
-    if (!base || !cfg) {
-        free(base);
-        free(cfg);
-        return cli_report(FS_NO_MEMORY, "out of memory");
-    }
-    fs_status ls = fs_scenario_load(cli_data_path(SLICES[0].scenario), NULL, 0, base, &err);
-    fs_scenario_free(base);
-    if (ls == FS_OK)
-        ls = fs_make_dirs(dir, &err);
-    int n = ls == FS_OK ? grid(a->quick, cfg) : 0;
-    outcome *out = ls == FS_OK ? calloc((size_t)n, sizeof *out) : NULL;
-    if (ls != FS_OK || !out) {
-        free(base);
-        free(cfg);
-        return ls != FS_OK ? fail(&err) : cli_report(FS_NO_MEMORY, "out of memory");
-    }
+    if (s == FS_OK && !cfg)
+        s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
+    int n = cfg ? grid(a->quick, cfg) : 0;
+    outcome *out = s == FS_OK ? calloc((size_t)n, sizeof *out) : NULL;
+    if (s == FS_OK && !out)
+        s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
     double duration = a->quick ? DURATION_QUICK_S : DURATION_FULL_S, t0 = fs_clock_s();
-    fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
-    fs_status s = run_all(cfg, out, n, jobs, &base->design, duration, &err);
-    report x = {cfg, out, n, a->quick, jobs, 0};
+    if (s == FS_OK) {
+        fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
+        s = run_all(cfg, out, n, jobs, loaded, duration, &err);
+    }
+    report x = {cfg, out, n, a->quick, jobs, 0, &prov};
     if (s == FS_OK)
         s = fs_write_in(dir, "stability.csv", fill_csv, &x, &err);
     for (int i = 0; s == FS_OK && i < NSLICES; i++) {
@@ -478,8 +493,17 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     if (s == FS_OK)
         s = fs_write_in(dir, "stability.md", fill_summary, &x, &err);
     free(out);
-    free(base);
     free(cfg);
+    fs_provenance_free(&prov);
+    for (int i = 0; i < NSLICES; i++) {
+        int shared = 0;
+        for (int j = 0; j < i; j++)
+            shared |= loaded[j] == loaded[i];
+        if (loaded[i] && !shared) {
+            fs_scenario_free(loaded[i]);
+            free(loaded[i]);
+        }
+    }
     if (s != FS_OK)
         return fail(&err);
     printf("bench stability: %d runs; results: %s/stability.md, stability.csv, stability_*.png\n", n, dir);

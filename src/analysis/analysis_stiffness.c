@@ -88,8 +88,10 @@ static void apply_torques(void *user, fs_sim *sim)
     double tau = p->tau;
     for (int i = 0; i < FS_CHAINS; i++) {
         const fs_hinge_geom *h = &g->hinge[p->j == 0 ? g->chain[i].midfoot_hinge : g->chain[i].mtp_hinge];
-        dBodyAddTorque(sim->body[h->body2], tau * h->axis.x, tau * h->axis.y, tau * h->axis.z);
-        dBodyAddTorque(sim->body[h->body1], -tau * h->axis.x, -tau * h->axis.y, -tau * h->axis.z);
+        const double on2[3] = {tau * h->axis.x, tau * h->axis.y, tau * h->axis.z};
+        const double on1[3] = {-tau * h->axis.x, -tau * h->axis.y, -tau * h->axis.z};
+        fs_sim_body_add_torque(sim, h->body2, on2);
+        fs_sim_body_add_torque(sim, h->body1, on1);
     }
 }
 
@@ -183,7 +185,8 @@ static void apply_pitch(void *user, fs_sim *sim)
 {
     const pitch_load *p = user;
     double rise = p->ramp_s > 0 ? fmin(1, sim->time_s / p->ramp_s) : 1;
-    dBodyAddTorque(sim->body[sim->geom->ankle_body], 0, p->tau * rise, 0);
+    const double torque[3] = {0, p->tau * rise, 0};
+    fs_sim_body_add_torque(sim, sim->geom->ankle_body, torque);
 }
 
 /* Still, once the load and torque have risen: every body slower than 1e-7 m/s. */
@@ -210,11 +213,40 @@ static fs_status pitch_probe(const fs_scenario *sc, double tau, double *pitch, f
         s = fs_fail(err, FS_NUMERICAL, "%s: the foot did not come to rest within %g s under a pitch torque of %.3g N m",
                     sc->path, SETTLE_S, tau);
     if (s == FS_OK) {
-        const dReal *R = dBodyGetRotation(sim.body[sim.geom->ankle_body]);
-        *pitch = atan2(-R[8], R[0]);
+        double R[9];
+        fs_sim_body_pose(&sim, sim.geom->ankle_body, NULL, R);
+        *pitch = atan2(-R[6], R[0]);
     }
     fs_sim_destroy(&sim);
     return s;
+}
+
+/* The footprint's length along the foot (x): the flat sole's box, or the spheres' extent. */
+static double footprint_length_m(const fs_foot_geom *g)
+{
+    if (g->has_box)
+        return g->box_size.x;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < g->nspheres; i++) {
+        lo = fmin(lo, g->sphere[i].centre.x - g->sphere[i].radius_m);
+        hi = fmax(hi, g->sphere[i].centre.x + g->sphere[i].radius_m);
+    }
+    return hi > lo ? hi - lo : 0;
+}
+
+/* Two materials in contact: stiffness in series, as the sim's contacts take it. */
+static double in_series(double a, double b) { return a > 0 && b > 0 ? a * b / (a + b) : 0; }
+
+fs_status fs_pitch_stiffness_foot(const fs_scenario *sc, double load_N, double *K, fs_error *err)
+{
+    double g = sc->def.gravity_m_per_s2;
+    if (sc->geom.kind == FS_FOOT_BIOMIMETIC)
+        return fs_pitch_stiffness_model(&sc->design, &sc->geom, load_N, g, K, err);
+    (void)err;
+    double k = in_series(sc->design.sole_stiffness_N_per_m, sc->terrain.def.stiffness_N_per_m);
+    double L = sc->geom.box_size.x;
+    *K = k * L * L;
+    return FS_OK;
 }
 
 fs_status fs_pitch_stiffness_measure(const fs_scenario *sc_in, double load_N, double mu, double K_guess, double *K,
@@ -224,8 +256,9 @@ fs_status fs_pitch_stiffness_measure(const fs_scenario *sc_in, double load_N, do
     sc.def.load_kg = load_N / sc.def.gravity_m_per_s2;
     sc.def.robot.mass_kg = 0;
     sc.design.sole_mu = sc.terrain.def.mu = mu;
-    /* a probe about 1e-3 rad deep: linear, yet far above the solver's residuals */
-    double tau = 1e-3 * K_guess, plus, minus;
+    /* a probe about 1e-3 rad deep: linear, yet far above the solver's residuals; and far from
+       lifting the footprint's heel or toe (a flat sole is linear only while all four corners bear) */
+    double tau = fmin(1e-3 * K_guess, 0.05 * load_N * 0.5 * footprint_length_m(&sc.geom)), plus, minus;
     fs_status s = pitch_probe(&sc, tau, &plus, err);
     if (s == FS_OK)
         s = pitch_probe(&sc, -tau, &minus, err);

@@ -1,10 +1,8 @@
-/* base_error.c: error messages and ODE's handlers routed through footsim. */
+/* base_error.c: error messages (fs_fail). ODE's handlers are the sim layer's (fs_ode.h). */
 #include "footsim/base/fs_error.h"
 
-#include <ode/ode.h>
 #include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 fs_status fs_fail(fs_error *err, fs_status status, const char *fmt, ...)
 {
@@ -17,47 +15,3 @@ fs_status fs_fail(fs_error *err, fs_status status, const char *fmt, ...)
     }
     return status;
 }
-
-/* The text of the simulation stepping now on this thread (its owner keeps it alive), or NULL. */
-static _Thread_local const char *ode_context_now;
-
-void fs_ode_context(const char *context) { ode_context_now = context; }
-
-void fs_ode_context_leave(const char *context)
-{
-    if (ode_context_now == context)
-        ode_context_now = NULL;
-}
-
-static const char *ode_context(void) { return ode_context_now ? ode_context_now : "ODE"; }
-
-/* ODE calls exit() or abort() after its error and debug handlers return, so these never return. */
-static void ode_fatal(const char *kind, int errnum, const char *msg, va_list ap)
-{
-    fprintf(stderr, "footsim: %s: ODE %s %d: ", ode_context(), kind, errnum);
-    vfprintf(stderr, msg, ap);
-    fprintf(stderr, "\n  the simulation is numerically broken; try a smaller step_s or the implicit springs\n");
-    exit(FS_NUMERICAL);
-}
-
-static void ode_error_handler(int errnum, const char *msg, va_list ap) { ode_fatal("error", errnum, msg, ap); }
-
-static void ode_debug_handler(int errnum, const char *msg, va_list ap) { ode_fatal("internal check", errnum, msg, ap); }
-
-static void ode_message_handler(int errnum, const char *msg, va_list ap)
-{
-    /* Messages are warnings: keep them on stderr, tagged with what footsim was doing. */
-    fprintf(stderr, "footsim: %s: ODE message %d: ", ode_context(), errnum);
-    vfprintf(stderr, msg, ap);
-    fputc('\n', stderr);
-}
-
-void fs_ode_init(void)
-{
-    dSetErrorHandler(ode_error_handler);
-    dSetDebugHandler(ode_debug_handler);
-    dSetMessageHandler(ode_message_handler);
-    dInitODE2(0);
-}
-
-void fs_ode_close(void) { dCloseODE(); }

@@ -1,5 +1,5 @@
 /* campaign_compare.c: a campaign's summary compared with a baseline, cell by cell, within the
- * baseline's tolerances. */
+ * baseline's tolerances; or judged equivalent to a reference campaign run at another setting. */
 #include "campaign_internal.h"
 
 #include "footsim/io/fs_input.h"
@@ -12,7 +12,7 @@
 
 /* ---- comparison --------------------------------------------------------------------------- */
 
-static cJSON *read_summary(const char *path, fs_error *err)
+cJSON *campaign_read_summary(const char *path, fs_error *err)
 {
     char *text;
     size_t len;
@@ -29,19 +29,6 @@ static cJSON *read_summary(const char *path, fs_error *err)
         return NULL;
     }
     return root;
-}
-
-static const char *text_of(const cJSON *row, const char *key)
-{
-    const char *s = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(row, key));
-    return s ? s : "?";
-}
-
-/* A number of a row: NAN when it is null or missing. */
-static double number_of(const cJSON *row, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(row, key);
-    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
 /* The row of the same cell: foot, terrain and robot (a summary from before robots has none: "?"). */
@@ -126,7 +113,8 @@ static char *field_text(const cJSON *prov, const char *key)
 
 /* Compares the two summaries' provenance: prints every difference; returns the names of those that
  * make the comparison meaningless (seeds, overrides, inputs) in `refused`, "" when none. */
-static void compare_provenance(const cJSON *result, const cJSON *baseline, FILE *out, char *refused, size_t size)
+static void compare_provenance(const cJSON *result, const cJSON *baseline, int equivalence, FILE *out, char *refused,
+                               size_t size)
 {
     refused[0] = 0;
     const cJSON *r = cJSON_GetObjectItemCaseSensitive(result, "provenance");
@@ -142,8 +130,10 @@ static void compare_provenance(const cJSON *result, const cJSON *baseline, FILE 
         if (!(x && y && !strcmp(x, y))) {
             fprintf(out, "provenance: %s differs: result %s, baseline %s\n", keys[i], x ? x : "(none)", y ? y : "(none)");
             differ = 1;
-            /* another version, or other settings, is what a comparison is for; the rest is not */
-            if (strcmp(keys[i], "footsim") && strcmp(keys[i], "settings")) {
+            /* another version, or other settings, is what a comparison is for; the rest is not (an
+               equivalence compares settings, which may come as overrides: run.step_s) */
+            if (strcmp(keys[i], "footsim") && strcmp(keys[i], "settings") &&
+                !(equivalence && !strcmp(keys[i], "overrides"))) {
                 size_t n = strlen(refused);
                 snprintf(refused + n, size - n, "%s%s", n ? ", " : "", keys[i]);
             }
@@ -154,16 +144,85 @@ static void compare_provenance(const cJSON *result, const cJSON *baseline, FILE 
     fprintf(out, differ ? "\n" : "provenance: the same seeds, overrides and inputs\n\n");
 }
 
+static fs_status compare_mode(const char *result_path, const char *baseline_path, int force, int equivalence,
+                              FILE *out, fs_error *err);
+
+/* ---- equivalence ------------------------------------------------------------------------- */
+
+/* The metrics equivalence judges, each with its absolute floor (issue 12, docs/bench.md): a median
+ * may differ from the reference's by 5 % or by the floor, whichever is larger. Peak force is
+ * reported, not judged: an impact's peak depends on the step by nature. */
+static const struct {
+    const char *metric;
+    double floor;
+} equivalence_metrics[] = {
+    {"impact_impulse_Ns", 0}, {"final_tilt_deg", 0.5}, {"ankle_drop_m", 1e-4},
+    {"settle_time_s", 0.005}, {"mean_contacts", 1},    {"final_contacts", 1},
+};
+enum { N_EQUIVALENCE = sizeof equivalence_metrics / sizeof equivalence_metrics[0] };
+static const double EQUIVALENCE_RELATIVE = 0.05;
+
+/* One judged (or reported) quantity of a cell; returns 1 when it is not equivalent. */
+static int report_equivalence(FILE *out, const cJSON *row, const char *what, double ref, double now, double lo,
+                              double hi, int judged)
+{
+    int bad = judged && !(now >= lo && now <= hi) && !(isnan(ref) && isnan(now));
+    fprintf(out, "| %s | %s | %s | %s | %.6g | %.6g | ", text_of(row, "foot"), text_of(row, "terrain"),
+            text_of(row, "robot"), what, ref, now);
+    if (judged)
+        fprintf(out, "[%.6g, %.6g] | %s |\n", lo, hi, bad ? "**differs**" : "equivalent");
+    else
+        fprintf(out, "%+.1f %% | reported (step-dependent) |\n", 100 * (now / ref - 1));
+    return bad;
+}
+
+/* Judges one cell against its reference; returns how many quantities differ. */
+static int equivalence_row(FILE *out, const cJSON *ref, const cJSON *r)
+{
+    /* the success rates: their 95 % Wilson intervals overlap */
+    double lo = number_of(ref, "ci_low"), hi = number_of(ref, "ci_high");
+    double rlo = number_of(r, "ci_low"), rhi = number_of(r, "ci_high");
+    int overlap = rlo <= hi && lo <= rhi;
+    fprintf(out, "| %s | %s | %s | success_rate | %.6g [%.3g, %.3g] | %.6g [%.3g, %.3g] | intervals overlap | %s |\n",
+            text_of(r, "foot"), text_of(r, "terrain"), text_of(r, "robot"), number_of(ref, "success_rate"), lo, hi,
+            number_of(r, "success_rate"), rlo, rhi, overlap ? "equivalent" : "**differs**");
+    int bad = !overlap;
+    for (int i = 0; i < N_EQUIVALENCE; i++) {
+        char key[FS_NAME_MAX + 8];
+        snprintf(key, sizeof key, "median_%s", equivalence_metrics[i].metric);
+        double base = number_of(ref, key), now = number_of(r, key);
+        double allow = fmax(EQUIVALENCE_RELATIVE * fabs(base), equivalence_metrics[i].floor);
+        bad += report_equivalence(out, r, key, base, now, base - allow, base + allow, 1);
+    }
+    bad += report_equivalence(out, r, "median_peak_force_N", number_of(ref, "median_peak_force_N"),
+                              number_of(r, "median_peak_force_N"), 0, 0, 0);
+    return bad;
+}
+
+fs_status fs_campaign_equivalence(const char *result_path, const char *reference_path, int force, FILE *out,
+                                  fs_error *err)
+{
+    return compare_mode(result_path, reference_path, force, 1, out, err);
+}
+
 fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, int force, FILE *out, fs_error *err)
 {
-    cJSON *result = read_summary(result_path, err);
-    cJSON *baseline = result ? read_summary(baseline_path, err) : NULL;
+    return compare_mode(result_path, baseline_path, force, 0, out, err);
+}
+
+/* The two comparisons share reading, provenance and the pairing of rows; `equivalence` picks the
+ * rule a pair of rows is judged by. */
+static fs_status compare_mode(const char *result_path, const char *baseline_path, int force, int equivalence,
+                              FILE *out, fs_error *err)
+{
+    cJSON *result = campaign_read_summary(result_path, err);
+    cJSON *baseline = result ? campaign_read_summary(baseline_path, err) : NULL;
     if (!baseline) {
         cJSON_Delete(result);
-        return FS_BAD_INPUT;
+        return err ? err->status : FS_BAD_INPUT; /* as read_summary found it: bad input, unreadable, out of memory */
     }
     char refused[128];
-    compare_provenance(result, baseline, out, refused, sizeof refused);
+    compare_provenance(result, baseline, equivalence, out, refused, sizeof refused);
     if (refused[0] && !force) {
         cJSON_Delete(result);
         cJSON_Delete(baseline);
@@ -173,8 +232,9 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
     }
     const cJSON *rrows = cJSON_GetObjectItemCaseSensitive(result, "rows");
     const cJSON *brows = cJSON_GetObjectItemCaseSensitive(baseline, "rows");
-    fprintf(out, "%s against the baseline %s\n\n| foot | terrain | robot | quantity | baseline | result | allowed | "
-                 "verdict |\n|---|---|---|---|--:|--:|---|---|\n", result_path, baseline_path);
+    fprintf(out, "%s against the %s %s\n\n| foot | terrain | robot | quantity | %s | result | allowed | "
+                 "verdict |\n|---|---|---|---|--:|--:|---|---|\n", result_path,
+            equivalence ? "reference" : "baseline", baseline_path, equivalence ? "reference" : "baseline");
     int bad = 0, changed = 0;
     const cJSON *b, *r;
     cJSON_ArrayForEach(b, brows) {
@@ -183,6 +243,8 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
             fprintf(out, "| %s | %s | %s | (row) | present | **missing** | | **outside** |\n", text_of(b, "foot"),
                     text_of(b, "terrain"), text_of(b, "robot"));
             bad++, changed++;
+        } else if (equivalence) {
+            bad += equivalence_row(out, b, r);
         } else {
             bad += compare_row(out, baseline, b, r, &changed);
         }
@@ -193,8 +255,12 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
                     text_of(r, "terrain"), text_of(r, "robot"));
             bad++, changed++;
         }
-    fprintf(out, "\n%d rows in the baseline; %d quantities changed, %d outside what the baseline allows: %s\n",
-            cJSON_GetArraySize(brows), changed, bad, bad ? "CHANGED" : changed ? "within tolerance" : "identical");
+    if (equivalence)
+        fprintf(out, "\n%d rows in the reference; %d quantities differ: %s\n", cJSON_GetArraySize(brows), bad,
+                bad ? "NOT EQUIVALENT" : "equivalent");
+    else
+        fprintf(out, "\n%d rows in the baseline; %d quantities changed, %d outside what the baseline allows: %s\n",
+                cJSON_GetArraySize(brows), changed, bad, bad ? "CHANGED" : changed ? "within tolerance" : "identical");
     cJSON_Delete(result);
     cJSON_Delete(baseline);
     return bad ? FS_EXPECTATION_FAILED : FS_OK;

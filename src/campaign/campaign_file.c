@@ -483,6 +483,7 @@ void fs_campaign_free(fs_campaign *c)
         fs_scenario_free(&c->pair[i]);
     free(c->pair);
     c->pair = NULL;
+    fs_provenance_free(&c->provenance);
 }
 
 int fs_campaign_ncells(const fs_campaign *c) { return c->nfeet * c->nterrains * c->nrobots; }
@@ -538,45 +539,23 @@ static fs_status override_dotted(fs_config *cfg, const char *assignment, fs_erro
     return FS_OK;
 }
 
-/* Notes an input file (absolute path) once, with the hash of its parsed content. */
-static fs_status note_input(fs_campaign *c, const char *dir, const char *path, fs_error *err)
-{
-    char full[PATH_MAX];
-    if (!*path || !realpath(path, full))
-        return FS_OK; /* none (a flat default terrain, no robot), or reported by whoever reads it */
-    fs_campaign_input in;
-    fs_path_relative(full, dir, in.path, sizeof in.path);
-    for (int i = 0; i < c->ninputs; i++)
-        if (!strcmp(c->input[i].path, in.path))
-            return FS_OK;
-    fs_status s = fs_ini_hash(full, &in.hash, err);
-    if (s == FS_OK && c->ninputs < FS_CAMPAIGN_MAX_INPUTS)
-        c->input[c->ninputs++] = in;
-    return s;
-}
-
-/* What made the campaign's results: the sets as given, and every input file with its hash. */
+/* What made the campaign's results: the sets as given, the campaign file, the trial scenario and
+ * every cell's files with their hashes, the first cell's settings. */
 static fs_status provenance(fs_campaign *c, const char *const *sets, int nsets, fs_error *err)
 {
-    for (int i = 0; i < nsets && i < FS_CAMPAIGN_MAX_SET; i++)
-        c->given[c->ngiven++] = sets[i];
-    char dir[PATH_MAX];
-    if (!realpath(c->path, dir))
-        return fs_fail(err, FS_BAD_INPUT, "%s: %s", c->path, strerror(errno));
-    char *slash = strrchr(dir, '/');
-    if (slash)
-        *slash = 0;
-    fs_status s = note_input(c, dir, c->path, err);
+    fs_provenance *p = &c->provenance;
+    fs_status s = fs_provenance_init(p, c->path, err);
     if (s == FS_OK)
-        s = note_input(c, dir, c->trial_path, err);
-    for (int i = 0; s == FS_OK && i < fs_campaign_ncells(c); i++) {
-        const fs_scenario *sc = &c->pair[i];
-        s = note_input(c, dir, sc->def.design_path, err);
-        if (s == FS_OK)
-            s = note_input(c, dir, sc->def.terrain_path, err);
-        if (s == FS_OK)
-            s = note_input(c, dir, sc->def.robot_path, err);
-    }
+        s = fs_provenance_overrides(p, sets, nsets, err);
+    if (s == FS_OK)
+        s = fs_provenance_add_ini(p, c->path, err);
+    if (s == FS_OK)
+        s = fs_provenance_add_ini(p, c->trial_path, err);
+    for (int i = 0; s == FS_OK && i < fs_campaign_ncells(c); i++)
+        s = fs_scenario_inputs(&c->pair[i], p, err);
+    fs_scenario_settings(&c->pair[0], p->settings, sizeof p->settings);
+    p->first_seed = c->first_seed;
+    p->nseeds = c->seeds;
     return s;
 }
 

@@ -75,6 +75,10 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
     k = add_key(b, "optimize", "validation_first_seed", FS_KEY_INTEGER, T(o.validation_first_seed), "1001",
                 "the best design is rerun on as many fresh seeds, from this one");
     k->max = 1e9;
+    k = add_key(b, "optimize", "objective", FS_KEY_CHOICE, T(o.objective), "none",
+                "what the search minimises: least_stiff (the parameters' sum, each over its min) or lightest "
+                "(the foot's mass)");
+    k->choices = "none|least_stiff|lightest";
     fs_status s = collect_params(cfg, b, o, err);
     if (s != FS_OK)
         return s;
@@ -108,6 +112,9 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
     if (!o->campaign_path[0])
         return fs_fail(err, FS_BAD_INPUT, "%s: [optimize] campaign is missing; name the campaign whose trials and "
                                           "expectations the search uses", cfg->path);
+    if (o->objective == FS_OBJECTIVE_NONE)
+        return fs_fail(err, FS_BAD_INPUT, "%s: [optimize] objective is missing; name what the search minimises: "
+                                          "objective = least_stiff or objective = lightest", cfg->path);
     for (int p = 0; p < o->nparams; p++) {
         fs_opt_param *q = &o->param[p];
         snprintf(sec, sizeof sec, "param.%s", q->name);
@@ -204,6 +211,8 @@ fs_status fs_optimize_apply(fs_optimize *o, const double *x, fs_error *err)
 
 double fs_optimize_objective(const fs_optimize *o, const double *x)
 {
+    if (o->objective == FS_OBJECTIVE_LIGHTEST)
+        return o->campaign.pair[0].geom.total_mass_kg;
     double sum = 0;
     for (int p = 0; p < o->nparams; p++)
         sum += x[p] / o->param[p].min;
@@ -299,10 +308,15 @@ fs_status fs_optimize_run(fs_optimize *o, fs_optimize_trials trials, fs_optimize
     unsigned n = (unsigned)o->nparams;
     search s = {.o = o, .trials = trials, .report = report, .user = user, .results = results, .rows = rows,
                 .best_value = HUGE_VAL, .status = FS_OK};
-    /* one seed short of a target (1/seeds of shortfall) costs 100 times the objective's whole range */
-    double range = fs_optimize_objective(o, (double[FS_OPTIMIZE_MAX_PARAMS]){0});
+    /* one seed short of a target (1/seeds of shortfall) costs 100 times the objective's whole range:
+       its value with every parameter at its upper bound (a mass or a stiffness grows with them) */
+    double upper[FS_OPTIMIZE_MAX_PARAMS];
     for (int p = 0; p < o->nparams; p++)
-        range += o->param[p].max / o->param[p].min;
+        upper[p] = o->param[p].max;
+    fs_status st = fs_optimize_apply(o, upper, err);
+    if (st != FS_OK)
+        return st;
+    double range = fs_optimize_objective(o, upper);
     s.weight = 100 * range * o->campaign.seeds;
     double lo[FS_OPTIMIZE_MAX_PARAMS], hi[FS_OPTIMIZE_MAX_PARAMS], u[FS_OPTIMIZE_MAX_PARAMS], step[FS_OPTIMIZE_MAX_PARAMS];
     for (unsigned p = 0; p < n; p++) {

@@ -3,7 +3,6 @@
 #include "campaign_internal.h"
 
 #include "footsim/base/fs_path.h"
-#include "footsim/base/fs_version.h"
 #include "footsim/io/fs_output.h"
 
 #include <cjson/cJSON.h>
@@ -68,32 +67,40 @@ static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain, in
         csv_number(f, c->terrain[terrain].sweep_value[w]);
 }
 
-/* The solver settings a campaign's trials ran with (its first cell's: --set changes every cell). */
-static void settings_text(const fs_campaign *c, char *buf, size_t size)
+/* What made the results: the campaign's record with its seeds as they are now (a design search
+ * reruns its best on fresh seeds); a read-only view of c's record, not to be freed. */
+static fs_provenance provenance_of(const fs_campaign *c)
 {
-    if (!c->pair) { /* a campaign built in code, not loaded */
-        snprintf(buf, size, "settings unknown");
-        return;
-    }
-    const fs_scenario_def *d = &c->pair[0].def;
-    snprintf(buf, size, "step_s %.6g, stepper %s, iterations %d, springs %s, contact_layer_m %.6g, window %.6g s",
-             d->step_s, d->stepper ? "quickstep" : "step", d->iterations, d->springs ? "explicit" : "implicit",
-             d->contact_layer_m, d->duration_s);
+    fs_provenance p = c->provenance;
+    p.first_seed = c->first_seed;
+    p.nseeds = c->seeds;
+    if (!c->pair) /* a campaign built in code, not loaded */
+        snprintf(p.settings, sizeof p.settings, "settings unknown");
+    return p;
 }
 
 /* The CSV files' first line: what made them. */
 static void csv_provenance(FILE *f, const fs_campaign *c)
 {
-    char settings[256];
-    settings_text(c, settings, sizeof settings);
-    fprintf(f, "# provenance: footsim %s; seeds %d to %d; %s; inputs", fs_version(), c->first_seed,
-            c->first_seed + c->seeds - 1, settings);
-    for (int i = 0; i < c->ninputs; i++)
-        fprintf(f, " %s=%016llx", c->input[i].path, c->input[i].hash);
-    fputs("; overrides", f);
-    for (int i = 0; i < c->ngiven; i++)
-        fprintf(f, " '%s'", c->given[i]);
-    fputs(c->ngiven ? "\n" : " none\n", f);
+    fs_provenance p = provenance_of(c);
+    fs_provenance_csv(&p, f);
+}
+
+char *fs_campaign_provenance(const fs_campaign *c)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    if (!f)
+        return NULL;
+    csv_provenance(f, c);
+    if (fclose(f) != 0) {
+        free(text);
+        return NULL;
+    }
+    if (len && text[len - 1] == '\n')
+        text[len - 1] = 0;
+    return text;
 }
 
 /* The header's key columns: foot, terrain, robot and the swept keys. */
@@ -192,15 +199,10 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
     }
-    char settings[256];
-    settings_text(c, settings, sizeof settings);
-    fprintf(f, "\nMade by footsim %s with %s; inputs:", fs_version(), settings);
-    for (int i = 0; i < c->ninputs; i++)
-        fprintf(f, "%s `%s` (%016llx)", i ? "," : "", c->input[i].path, c->input[i].hash);
-    fputs("; overrides:", f);
-    for (int i = 0; i < c->ngiven; i++)
-        fprintf(f, " `%s`", c->given[i]);
-    fputs(c->ngiven ? ".\n" : " none.\n", f);
+    fs_provenance p = provenance_of(c);
+    fputs("\nProvenance: ", f);
+    fs_provenance_print(&p, f);
+    fputs(".\n", f);
     if (c->nexpect)
         fputs("\n## Expectations\n\n| expectation | foot | terrain | robot | success | wanted | met |\n"
               "|---|---|---|---|--:|---|---|\n", f);
@@ -218,86 +220,77 @@ static cJSON *summary_json(const out_ctx *x)
 {
     const fs_campaign *c = x->c;
     cJSON *root = cJSON_CreateObject();
+    int ok = root != NULL;
     char trial[FS_NAME_MAX];
     fs_path_stem(c->trial_path, trial, sizeof trial);
-    cJSON_AddStringToObject(root, "campaign", c->name);
-    cJSON_AddStringToObject(root, "trial", trial);
-    cJSON_AddNumberToObject(root, "seeds", c->seeds);
-    cJSON_AddNumberToObject(root, "first_seed", c->first_seed);
+    ok &= cJSON_AddStringToObject(root, "campaign", c->name) != NULL;
+    ok &= cJSON_AddStringToObject(root, "trial", trial) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "seeds", c->seeds) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "first_seed", c->first_seed) != NULL;
     for (int w = 0; w < 2; w++)
         if (w < c->nsweep)
-            cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]);
+            ok &= cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]) != NULL;
         else
-            cJSON_AddNullToObject(root, w ? "sweep2" : "sweep");
-    cJSON *prov = cJSON_AddObjectToObject(root, "provenance");
-    cJSON_AddStringToObject(prov, "footsim", fs_version());
-    cJSON *given = cJSON_AddArrayToObject(prov, "overrides");
-    for (int i = 0; i < c->ngiven; i++)
-        cJSON_AddItemToArray(given, cJSON_CreateString(c->given[i]));
-    cJSON *inputs = cJSON_AddArrayToObject(prov, "inputs");
-    for (int i = 0; i < c->ninputs; i++) {
-        char hash[24];
-        snprintf(hash, sizeof hash, "%016llx", c->input[i].hash);
-        cJSON *in = cJSON_CreateObject();
-        cJSON_AddStringToObject(in, "path", c->input[i].path);
-        cJSON_AddStringToObject(in, "hash", hash);
-        cJSON_AddItemToArray(inputs, in);
-    }
-    char settings[256];
-    settings_text(c, settings, sizeof settings);
-    cJSON_AddStringToObject(prov, "settings", settings);
-    cJSON_AddNumberToObject(prov, "seeds", c->seeds);
-    cJSON_AddNumberToObject(prov, "first_seed", c->first_seed);
+            ok &= cJSON_AddNullToObject(root, w ? "sweep2" : "sweep") != NULL;
+    fs_provenance p = provenance_of(c);
+    ok &= fs_json_put(root, "provenance", fs_provenance_json(&p));
     cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
+    ok &= tol != NULL;
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         cJSON *t = cJSON_AddObjectToObject(tol, fs_campaign_metrics[m].name);
-        cJSON_AddNumberToObject(t, "relative", c->tolerance[m][0]);
-        cJSON_AddNumberToObject(t, "absolute", c->tolerance[m][1]);
+        ok &= t != NULL;
+        ok &= cJSON_AddNumberToObject(t, "relative", c->tolerance[m][0]) != NULL;
+        ok &= cJSON_AddNumberToObject(t, "absolute", c->tolerance[m][1]) != NULL;
     }
     cJSON *rows = cJSON_AddArrayToObject(root, "rows");
+    ok &= rows != NULL;
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "foot", c->foot[r->foot].name);
-        cJSON_AddStringToObject(o, "terrain", c->terrain[r->terrain].name);
-        cJSON_AddStringToObject(o, "robot", c->robot[r->robot].name);
+        ok &= cJSON_AddStringToObject(o, "foot", c->foot[r->foot].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "terrain", c->terrain[r->terrain].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "robot", c->robot[r->robot].name) != NULL;
         for (int w = 0; w < c->nsweep; w++)
-            cJSON_AddNumberToObject(o, w ? "sweep_value2" : "sweep_value", c->terrain[r->terrain].sweep_value[w]);
-        cJSON_AddNumberToObject(o, "trials", r->trials);
-        cJSON_AddNumberToObject(o, "landed", r->landed);
-        cJSON_AddNumberToObject(o, "fell", r->fell);
-        cJSON_AddNumberToObject(o, "undecided", r->undecided);
-        cJSON_AddNumberToObject(o, "failed_numerics", r->failed_numerics);
-        cJSON_AddNumberToObject(o, "hung", r->hung);
-        cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
-        cJSON_AddNumberToObject(o, "ci_low", r->ci_low);
-        cJSON_AddNumberToObject(o, "ci_high", r->ci_high);
-        cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law));
-        cJSON_AddNumberToObject(o, "law_K_N_m_per_rad", r->law_K); /* NAN, INFINITY: null */
-        cJSON_AddNumberToObject(o, "law_critical_com_height_m", r->law_critical_m);
+            ok &= cJSON_AddNumberToObject(o, w ? "sweep_value2" : "sweep_value", c->terrain[r->terrain].sweep_value[w]) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "trials", r->trials) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "landed", r->landed) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "fell", r->fell) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "undecided", r->undecided) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "failed_numerics", r->failed_numerics) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "hung", r->hung) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "success_rate", r->success_rate) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "ci_low", r->ci_low) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "ci_high", r->ci_high) != NULL;
+        ok &= cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law)) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "law_K_N_m_per_rad", r->law_K) != NULL; /* NAN, INFINITY: null */
+        ok &= cJSON_AddNumberToObject(o, "law_critical_com_height_m", r->law_critical_m) != NULL;
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
             char key[FS_NAME_MAX + 8];
             snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);
-            cJSON_AddNumberToObject(o, key, r->median[m]); /* NAN is written as null */
+            ok &= cJSON_AddNumberToObject(o, key, r->median[m]) != NULL; /* NAN is written as null */
         }
-        cJSON_AddItemToArray(rows, o);
+        ok &= fs_json_put(rows, NULL, o);
     }
     cJSON *ex = cJSON_AddArrayToObject(root, "expectations");
+    ok &= ex != NULL;
     for (int i = 0; i < c->nexpect; i++) {
         const fs_expectation *e = &c->expect[i];
         cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "name", e->name);
-        cJSON_AddStringToObject(o, "foot", c->foot[e->foot].name);
-        cJSON_AddStringToObject(o, "terrain", c->terrain[e->terrain].name);
-        cJSON_AddStringToObject(o, "robot", c->robot[e->robot].name);
-        cJSON_AddNumberToObject(o, "min_success", e->min_success);
-        cJSON_AddNumberToObject(o, "max_success", e->max_success);
+        ok &= cJSON_AddStringToObject(o, "name", e->name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "foot", c->foot[e->foot].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "terrain", c->terrain[e->terrain].name) != NULL;
+        ok &= cJSON_AddStringToObject(o, "robot", c->robot[e->robot].name) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "min_success", e->min_success) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "max_success", e->max_success) != NULL;
         const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, e->foot, e->terrain, e->robot);
-        cJSON_AddNumberToObject(o, "success_rate", r->success_rate);
-        cJSON_AddBoolToObject(o, "met", fs_expectation_met(e, r));
-        cJSON_AddItemToArray(ex, o);
+        ok &= cJSON_AddNumberToObject(o, "success_rate", r->success_rate) != NULL;
+        ok &= cJSON_AddBoolToObject(o, "met", fs_expectation_met(e, r)) != NULL;
+        ok &= fs_json_put(ex, NULL, o);
     }
-    return root;
+    if (ok)
+        return root;
+    cJSON_Delete(root); /* a field could not be added (out of memory): no result rather than one short of it */
+    return NULL;
 }
 
 static int fill_summary_json(FILE *f, const out_ctx *x)
@@ -479,12 +472,14 @@ static void heat_map_script(FILE *f, const fs_campaign *c)
                    "     '' index %d using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \\\n"
                    "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black'",
                 title, k, k, k);
-        if (hk == 1) /* the critical height against the first key */
-            fprintf(f, ", \\\n     '' index %d using 1:($2 == %.17g ? $9 : 1/0) with lines lw 2 lc rgb 'black'", k,
-                    value_of(c, 1, 0));
+        /* the critical height against the other key: one point per value of it (a row of the block
+         * each, picked with every, so that the line is not broken by skipped rows), clipped by the
+         * axes' ranges, which the data set */
+        if (hk == 1)
+            fprintf(f, ", \\\n     '' index %d every %d using 1:9 with lines lw 2 lc rgb 'black'", k, c->nvalues[1]);
         else if (hk == 0)
-            fprintf(f, ", \\\n     '' index %d using ($1 == %.17g ? $9 : 1/0):2 with lines lw 2 lc rgb 'black'", k,
-                    value_of(c, 0, 0));
+            fprintf(f, ", \\\n     '' index %d every ::0::%d using 9:2 with lines lw 2 lc rgb 'black'", k,
+                    c->nvalues[1] - 1);
         fputc('\n', f);
     }
     fputs("unset multiplot\n", f);
@@ -501,20 +496,40 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
         heat_map_script(f, c);
         return 1;
     }
-    fprintf(f, "set terminal pngcairo size 960,540 noenhanced font 'sans,11'\n"
+    int n = nseries(c), nt = c->nterrains, longest = 1;
+    for (int t = 0; t < nt; t++)
+        if ((int)strlen(c->terrain[t].name) > longest)
+            longest = (int)strlen(c->terrain[t].name);
+    /* wide enough for every bar (a bar at least 16 px); the legend takes about 300 px */
+    int width = c->nsweep ? 960 : (int)fmax(960, 400 + 16.0 * nt * (n + 1));
+    fprintf(f, "set terminal pngcairo size %d,540 noenhanced font 'sans,11'\n"
                "set output out\n"
                "set title 'Campaign %s: success rate with 95 %% Wilson interval (%d seeds each)'\n"
                "set ylabel 'success rate (landed / trials)'\n"
-               "set yrange [0:1.05]\nset grid ytics\nset key outside right top\n",
-            c->name, c->seeds);
+               "set yrange [-0.05:1.05]\nset ytics 0,0.2,1\nset grid ytics\nset key outside right top\n"
+               "set arrow from graph 0, first 0 to graph 1, first 0 nohead lc rgb 'gray30'\n",
+            width, c->name, c->seeds);
     if (!c->nsweep) {
-        fputs("set style data histogram\nset style histogram errorbars gap 2 lw 1\n"
-              "set style fill solid 0.6 border -1\nset xlabel 'terrain'\nplot ",
-              f);
-        for (int k = 0; k < nseries(c); k++) {
+        /* bars drawn as boxes at known places (not gnuplot's histogram), so that a rate of zero gets
+         * a thin bar under the zero line in its colour, with its interval (a vector from low to high:
+         * error bars would leave a hole at the rate); terrain names turned when
+         * they are wider than their group of bars (about 7.5 px a character at 11 pt) */
+        double group_px = (width - 400.0) / nt, bar = 0.8 / n;
+        fprintf(f, "set xrange [-0.6:%d.4]\nset xtics scale 0%s\nset boxwidth %.6g absolute\n"
+                   "set style fill solid 0.6 border -1\nset xlabel 'terrain'\n"
+                   "set label \"a thin bar under the zero line:\\nno trial landed\" at graph 1.03, graph 0.05 "
+                   "font 'sans,9' tc rgb 'gray30'\nplot ",
+                nt - 1, 7.5 * longest > 0.9 * group_px ? " rotate by 30 right" : "", bar);
+        for (int k = 0; k < n; k++) {
             series_title(c, k, title, sizeof title);
-            fprintf(f, "%s'chart.dat' using %d:%d:%d%s title '%s'", k ? ", \\\n     " : "", 2 + 3 * k, 3 + 3 * k,
-                    4 + 3 * k, k ? "" : ":xtic(1)", title);
+            double off = -0.4 + (k + 0.5) * bar;
+            int rate = 2 + 3 * k;
+            fprintf(f, "%s'chart.dat' using ($0%+.6g):%d%s with boxes lc %d title '%s', \\\n"
+                       "     '' using ($0%+.6g):(column(%d) == 0 ? -0.025 : 1/0) with boxes lc %d notitle, \\\n"
+                       "     '' using ($0%+.6g):%d:(0):(column(%d) - column(%d)) with vectors heads size screen 0.004,90 "
+                       "lw 1 lc rgb 'black' notitle",
+                    k ? ", \\\n     " : "", off, rate, k ? "" : ":xtic(1)", k + 1, title, off, rate, k + 1, off,
+                    rate + 1, rate + 2, rate + 1);
         }
         fputc('\n', f);
         return 1;

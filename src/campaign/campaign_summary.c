@@ -46,8 +46,9 @@ void fs_wilson(int k, int n, double *low, double *high)
 
 const char *fs_law_name(int law) { return law == FS_LAW_STANDS ? "stands" : law == FS_LAW_TOPPLES ? "topples" : "n/a"; }
 
-/* The law for a cell's foot and robot: the model's pitch stiffness under the robot's weight. A flat
- * sole has none (its contacts govern); an arch that folds under the weight has none left. */
+/* The law for a cell's foot and robot: the foot's pitch stiffness under the robot's weight (a flat
+ * sole's from its contacts, fs_pitch_stiffness_foot); an arch that folds under the weight has none
+ * left. */
 static void law_of(const fs_scenario *sc, fs_campaign_row *row)
 {
     row->law = FS_LAW_NONE;
@@ -55,9 +56,9 @@ static void law_of(const fs_scenario *sc, fs_campaign_row *row)
     const fs_robot_def *r = &sc->def.robot;
     double g = sc->def.gravity_m_per_s2, K;
     fs_error err;
-    if (sc->geom.kind != FS_FOOT_BIOMIMETIC || r->mass_kg <= 0)
+    if (r->mass_kg <= 0)
         return;
-    fs_status s = fs_pitch_stiffness_model(&sc->design, &sc->geom, r->mass_kg * g, g, &K, &err);
+    fs_status s = fs_pitch_stiffness_foot(sc, r->mass_kg * g, &K, &err);
     fs_pitch_law law;
     fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, sc->def.landed_tilt_deg * M_PI / 180, &law);
     row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -89,8 +90,12 @@ static int spawn(pool *p, worker *w)
     }
     fflush(stdout);
     fflush(stderr);
+    pid_t parent = getpid();
     pid_t pid = fork();
     if (pid == 0) {
+        /* a worker dies with its parent (a kill -9 of the campaign leaves no worker running on) */
+        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent)
+            _exit(FS_IO);
         /* the child keeps only its own ends: a sibling's pipes must close when the parent's do */
         for (int i = 0; i < p->nworkers; i++) {
             close_fd(&p->w[i].task_fd);
@@ -236,7 +241,7 @@ fs_status fs_pool_run(const fs_pool_spec *spec, fs_pool_stats *stats, fs_error *
             assign(&p, &p.w[i]);
     }
     progress(&p);
-    while (s == FS_OK && p.finished < spec->ntasks) {
+    while (s == FS_OK && p.finished < spec->ntasks && !(spec->stop && *spec->stop)) {
         int n = 0;
         double t = now_s(), wait_s = p.watchdog_s;
         for (int i = 0; i < p.nworkers; i++)
@@ -250,12 +255,20 @@ fs_status fs_pool_run(const fs_pool_spec *spec, fs_pool_stats *stats, fs_error *
             s = fs_fail(err, FS_IO, "the worker pool has tasks left and no worker running them");
             break;
         }
-        int ms = wait_s <= 0 ? 0 : wait_s > 3600 ? 3600000 : (int)(wait_s * 1000) + 1;
-        if (poll(fds, (nfds_t)n, ms) < 0 && errno != EINTR) {
+        /* wake at least every tick: progress is told while no task ends */
+        double tick_s = spec->tick_s > 0 ? spec->tick_s : FS_POOL_TICK_S;
+        wait_s = wait_s < tick_s ? wait_s : tick_s;
+        int ms = wait_s <= 0 ? 0 : (int)(wait_s * 1000) + 1;
+        if (spec->stop && ms > 200)
+            ms = 200; /* a signal between the test of *stop and poll is seen this soon */
+        int ready = poll(fds, (nfds_t)n, ms);
+        if (ready < 0 && errno != EINTR) {
             s = fs_fail(err, FS_IO, "poll: %s", strerror(errno));
             break;
         }
-        for (int k = 0; k < n && s == FS_OK; k++)
+        if (ready == 0)
+            progress(&p);
+        for (int k = 0; k < n && s == FS_OK && !(spec->stop && *spec->stop); k++)
             if (fds[k].revents)
                 s = collect(&p, &p.w[who[k]], err);
         /* the watchdog: a worker without an answer for watchdog_s is killed, its task counted */

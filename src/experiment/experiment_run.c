@@ -21,6 +21,10 @@ static void name_columns(fs_run_result *res, const fs_foot_geom *g)
         snprintf(res->hinge_col[i], sizeof res->hinge_col[i], "%s_rad", g->hinge[i].name);
         res->col_name[res->ncols++] = res->hinge_col[i];
     }
+    for (int i = 0; i < g->nsprings; i++) {
+        snprintf(res->spring_col[i], sizeof res->spring_col[i], "%s_N", g->spring[i].name);
+        res->col_name[res->ncols++] = res->spring_col[i];
+    }
 }
 
 static void log_row(fs_run_result *res, const fs_sim *sim)
@@ -36,6 +40,8 @@ static void log_row(fs_run_result *res, const fs_sim *sim)
     row[4] = sim->contacts_now;
     for (int i = 0; i < sim->geom->nhinges; i++)
         row[5 + i] = fs_sim_hinge_angle(sim, i);
+    for (int i = 0; i < sim->geom->nsprings; i++)
+        row[5 + sim->geom->nhinges + i] = fs_spring_measure(&sim->spring[i]).force_N;
     res->nrows++;
 }
 
@@ -161,39 +167,44 @@ static cJSON *metrics_json(const fs_scenario *sc, const fs_run_result *res)
 {
     const fs_foot_geom *g = &sc->geom;
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddStringToObject(root, "scenario", sc->name);
-    cJSON_AddStringToObject(root, "design", sc->def.design_path);
-    cJSON_AddStringToObject(root, "foot", g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic");
-    cJSON_AddNumberToObject(root, "load_kg", sc->def.load_kg);
-    cJSON_AddNumberToObject(root, "tilt_deg", sc->def.tilt_deg);
-    cJSON_AddNumberToObject(root, "step_s", sc->def.step_s);
-    cJSON_AddStringToObject(root, "springs", sc->def.springs == 0 ? "implicit" : "explicit");
-    cJSON_AddNumberToObject(root, "steps", res->steps);
-    cJSON_AddNumberToObject(root, "end_time_s", res->end_time_s);
-    cJSON_AddBoolToObject(root, "at_rest", res->at_rest);
-    cJSON_AddNumberToObject(root, "ankle_drop_m", res->ankle_drop_m);
-    cJSON_AddNumberToObject(root, "settle_time_s", res->settle_time_s);
-    cJSON_AddItemToObject(root, "ankle_start_m", vec3_json(res->ankle_start_m));
-    cJSON_AddItemToObject(root, "ankle_end_m", vec3_json(res->ankle_end_m));
-    cJSON_AddNumberToObject(root, "contacts_end", res->contacts_end);
-    cJSON_AddNumberToObject(root, "contacts_total", (double)res->contacts_total);
-    cJSON_AddNumberToObject(root, "collision_tests", (double)res->collision_tests);
-    cJSON_AddNumberToObject(root, "energy_start_J", res->energy_start_J);
-    cJSON_AddNumberToObject(root, "energy_end_J", res->energy_end_J);
+    int ok = root != NULL;
+    ok &= cJSON_AddStringToObject(root, "scenario", sc->name) != NULL;
+    ok &= cJSON_AddStringToObject(root, "design", sc->def.design_path) != NULL;
+    ok &= cJSON_AddStringToObject(root, "foot", g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic") != NULL;
+    ok &= cJSON_AddNumberToObject(root, "load_kg", sc->def.load_kg) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "tilt_deg", sc->def.tilt_deg) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "step_s", sc->def.step_s) != NULL;
+    ok &= cJSON_AddStringToObject(root, "springs", sc->def.springs == 0 ? "implicit" : "explicit") != NULL;
+    ok &= cJSON_AddNumberToObject(root, "steps", res->steps) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "end_time_s", res->end_time_s) != NULL;
+    ok &= cJSON_AddBoolToObject(root, "at_rest", res->at_rest) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "ankle_drop_m", res->ankle_drop_m) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "settle_time_s", res->settle_time_s) != NULL;
+    ok &= fs_json_put(root, "ankle_start_m", vec3_json(res->ankle_start_m));
+    ok &= fs_json_put(root, "ankle_end_m", vec3_json(res->ankle_end_m));
+    ok &= cJSON_AddNumberToObject(root, "contacts_end", res->contacts_end) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "contacts_total", (double)res->contacts_total) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "collision_tests", (double)res->collision_tests) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "energy_start_J", res->energy_start_J) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "energy_end_J", res->energy_end_J) != NULL;
     if (g->nhinges > 0)
-        cJSON_AddNumberToObject(root, "ankle_joint_rad", res->hinge_angle_rad[0]);
+        ok &= cJSON_AddNumberToObject(root, "ankle_joint_rad", res->hinge_angle_rad[0]) != NULL;
     cJSON *chains = cJSON_AddArrayToObject(root, "chains");
+    ok &= chains != NULL;
     for (int i = 0; g->kind == FS_FOOT_BIOMIMETIC && i < FS_CHAINS; i++) {
         cJSON *c = cJSON_CreateObject();
-        cJSON_AddNumberToObject(c, "chain", i + 1);
-        cJSON_AddNumberToObject(c, "midfoot_rad", res->hinge_angle_rad[g->chain[i].midfoot_hinge]);
-        cJSON_AddNumberToObject(c, "mtp_rad", res->hinge_angle_rad[g->chain[i].mtp_hinge]);
+        ok &= cJSON_AddNumberToObject(c, "chain", i + 1) != NULL;
+        ok &= cJSON_AddNumberToObject(c, "midfoot_rad", res->hinge_angle_rad[g->chain[i].midfoot_hinge]) != NULL;
+        ok &= cJSON_AddNumberToObject(c, "mtp_rad", res->hinge_angle_rad[g->chain[i].mtp_hinge]) != NULL;
         static const char *names[3] = {"d1_force_N", "d2_force_N", "d3_force_N"};
         for (int k = 0; k < 3; k++)
-            cJSON_AddNumberToObject(c, names[k], res->spring_force_N[g->chain[i].spring[k]]);
-        cJSON_AddItemToArray(chains, c);
+            ok &= cJSON_AddNumberToObject(c, names[k], res->spring_force_N[g->chain[i].spring[k]]) != NULL;
+        ok &= fs_json_put(chains, NULL, c);
     }
-    return root;
+    if (ok)
+        return root;
+    cJSON_Delete(root); /* a field could not be added (out of memory): no result rather than one short of it */
+    return NULL;
 }
 
 static fs_status write_json(const char *path, cJSON *root, fs_error *err)
@@ -228,7 +239,8 @@ static fs_status write_trajectory(const fs_run_result *res, const char *path, fs
     return fs_write_file(path, fill_trajectory, res, err);
 }
 
-fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const char *dir, fs_error *err)
+fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const fs_provenance *prov, const char *dir,
+                       fs_error *err)
 {
     fs_status s = fs_make_dirs(dir, err);
     if (s != FS_OK)
@@ -240,6 +252,12 @@ fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const ch
         return s;
     snprintf(path, sizeof path, "%s/metrics.json", dir);
     cJSON *root = metrics_json(sc, res);
+    if (root && prov && !fs_json_put(root, "provenance", fs_provenance_json(prov))) {
+        cJSON_Delete(root); /* out of memory: no result rather than one without what made it */
+        root = NULL;
+    }
+    if (!root)
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", path);
     s = write_json(path, root, err);
     cJSON_Delete(root);
     return s;

@@ -62,10 +62,11 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     w->contact_sum += sim->contacts_now;
     w->contact_steps++;
     /* the impact: the vertical impulse until the robot (or the foot) stops going down */
-    dBodyID lead = sim->robot ? sim->robot : sim->body[sim->geom->ankle_body];
     if (!w->arrested) {
+        double v[3];
+        fs_sim_body_velocity(sim, sim->robot ? sim->geom->nbodies : sim->geom->ankle_body, v, NULL);
         out->impact_impulse_Ns += f[2] * h;
-        w->arrested = dBodyGetLinearVel(lead)[2] >= 0;
+        w->arrested = v[2] >= 0;
     }
 }
 

@@ -1,6 +1,7 @@
 /* experiment_walk.c: the walking machine: a carriage driven through stance and swing. */
 #include "footsim/experiment/fs_walk.h"
 
+#include "footsim/sim/fs_carriage.h"
 #include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
 
@@ -23,50 +24,12 @@ static void carriage_path(const fs_scenario_def *d, double t, double *x, double 
     *phase = f;
 }
 
-/* The suspension's force on the robot (its body 2) for the state it is measured in, N. */
-static void suspension_force(const fs_spring *s, double f[3])
-{
-    double p1[3], p2[3], len = 0;
-    fs_spring_anchors(s, p1, p2);
-    for (int k = 0; k < 3; k++)
-        len += (p2[k] - p1[k]) * (p2[k] - p1[k]);
-    len = sqrt(len);
-    double t = fs_spring_measure(s).force_N;
-    for (int k = 0; k < 3; k++)
-        f[k] = len > 0 ? -t * (p2[k] - p1[k]) / len : 0;
-}
-
-/* What the carriage's work over a step needs: the slider's feedback, the suspension, the robot's
- * position before the step and, for explicit springs, the suspension's force as applied. */
-typedef struct carriage_drive {
-    dBodyID robot;
-    const dJointFeedback *slider;
-    const fs_spring *suspension;
-    int explicit_springs;
-    double h, before[3], susp[3];
-} carriage_drive;
-
-/* The carriage's work on the robot over the step just taken, J (fs_check_work_fn): the slider's
- * force and torque and the suspension's force (explicit: from the state before the step, as
- * applied; implicit: after, as backward Euler applies it) times the robot's displacement and turn. */
-static double carriage_work(void *user, const fs_sim *sim)
-{
-    carriage_drive *c = user;
-    (void)sim;
-    if (!c->explicit_springs)
-        suspension_force(c->suspension, c->susp);
-    const dReal *p = dBodyGetPosition(c->robot), *w = dBodyGetAngularVel(c->robot);
-    double work = 0;
-    for (int k = 0; k < 3; k++)
-        work += (c->slider->f1[k] + c->susp[k]) * (p[k] - c->before[k]) + c->slider->t1[k] * w[k] * c->h;
-    return work;
-}
-
 /* The ankle body's tilt from its start orientation, rad. */
 static double ankle_tilt(const fs_sim *sim)
 {
-    const dReal *R = dBodyGetRotation(sim->body[sim->geom->ankle_body]);
-    return acos(fmax(-1.0, fmin(1.0, R[10])));
+    double R[9];
+    fs_sim_body_pose(sim, sim->geom->ankle_body, NULL, R);
+    return acos(fmax(-1.0, fmin(1.0, R[8])));
 }
 
 /* The walking machine while it runs: the carriage it drives and what it measures. */
@@ -74,11 +37,7 @@ typedef struct walk_run {
     const fs_scenario_def *d;
     const fs_terrain_def *td;
     fs_walk_result *out;
-    dBodyID carriage;
-    const dReal *body_pos;      /* the robot body's position, as ODE keeps it */
-    double start[3];            /* the carriage's start */
-    fs_spring *suspension;
-    carriage_drive *drive;
+    fs_carriage *carriage;
     int step;                   /* the step of the gait the coming (then last) sim step belongs to */
     double phase;               /* and where in it, 0..1 */
     double rough_sum, flat_sum, tilt_max;
@@ -92,13 +51,7 @@ static void drive_carriage(void *user, fs_sim *sim)
     const fs_scenario_def *d = w->d;
     double x, z, t = sim->time_s + d->step_s;
     carriage_path(d, t, &x, &z, &w->step, &w->phase);
-    const dReal *c = dBodyGetPosition(w->carriage);
-    dBodySetLinearVel(w->carriage, (w->start[0] + x - c[0]) / d->step_s, 0, (w->start[2] + z - c[2]) / d->step_s);
-    fs_spring_prepare(w->suspension, d->step_s);
-    memcpy(w->drive->before, w->body_pos, sizeof w->drive->before);
-    if (d->springs == FS_SPRING_EXPLICIT)
-        suspension_force(w->suspension, w->drive->susp);
-    /* the step's checks take the carriage's work into their energy balance (carriage_work) */
+    fs_carriage_drive(w->carriage, x, z); /* the step's checks count the carriage's work (fs_carriage.h) */
 }
 
 /* After each step: the ground force, the stance tilt, and each step judged at mid-stance. */
@@ -145,27 +98,10 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
-    /* the carriage: kinematic, above the body, joined by a vertical slider and the suspension */
-    const dReal *p = dBodyGetPosition(sim.robot);
-    double start[3] = {p[0], p[1], p[2] + 0.1};
-    dBodyID carriage = dBodyCreate(sim.world);
-    dBodySetKinematic(carriage);
-    dBodySetPosition(carriage, start[0], start[1], start[2]);
-    dJointID slider = dJointCreateSlider(sim.world, 0);
-    dJointAttach(slider, sim.robot, carriage);
-    dJointSetSliderAxis(slider, 0, 0, 1);
-    dJointFeedback feedback;
-    dJointSetFeedback(slider, &feedback);
-    fs_spring suspension;
-    double a1[3] = {start[0], start[1], start[2]}, a2[3] = {p[0], p[1], p[2]};
-    fs_spring_init(&suspension, sim.world, (fs_spring_impl)d->springs, carriage, sim.robot, a1, a2,
-                   d->suspension_k_N_per_m, d->suspension_c_Ns_per_m, 0.1);
-    carriage_drive drive = {sim.robot, &feedback, &suspension, d->springs == FS_SPRING_EXPLICIT, d->step_s,
-                            {0, 0, 0}, {0, 0, 0}};
-    fs_check_set_work(&sim, carriage_work, &drive);
-    walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = carriage, .body_pos = p,
-                  .start = {start[0], start[1], start[2]}, .suspension = &suspension, .drive = &drive,
-                  .last_step = -1};
+    /* the carriage: kinematic, 0.1 m above the body, joined by a vertical slider and the suspension */
+    fs_carriage carriage;
+    fs_carriage_attach(&carriage, &sim, 0.1, d->suspension_k_N_per_m, d->suspension_c_Ns_per_m);
+    walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = &carriage, .last_step = -1};
     const fs_step_hook hooks[] = {{"judged", judge_step, &w}};
     fs_drive_spec spec = {.max_steps = (long)ceil(d->walk_steps * d->walk_period_s / d->step_s),
                           .before_step = drive_carriage, .before_user = &w, .hooks = hooks, .nhooks = 1, .obs = obs};

@@ -2,6 +2,7 @@
 #include "footsim/io/fs_config.h"
 
 #include "footsim/io/fs_input.h"
+#include "footsim/io/fs_provenance.h"
 
 #include <ini.h>
 #include <errno.h>
@@ -643,29 +644,23 @@ static int by_key(const void *a, const void *b)
     return c ? c : strcmp(x->name, y->name);
 }
 
-static unsigned long long fnv1a(unsigned long long h, const char *s, size_t n)
+fs_status fs_config_hash(const fs_config *cfg, unsigned long long *hash, fs_error *err)
 {
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ (unsigned char)s[i]) * 0x100000001b3ULL;
-    return h;
-}
-
-unsigned long long fs_config_hash(const fs_config *cfg)
-{
-    unsigned long long h = 0xcbf29ce484222325ULL;
+    unsigned long long h = FS_HASH_START;
     const fs_entry **e = malloc((size_t)(cfg->count ? cfg->count : 1) * sizeof *e);
     if (!e)
-        return 0;
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory to hash its %d entries", cfg->path, cfg->count);
     for (int i = 0; i < cfg->count; i++)
         e[i] = &cfg->entries[i];
     qsort(e, (size_t)cfg->count, sizeof *e, by_key);
     for (int i = 0; i < cfg->count; i++) { /* each field with its terminating zero: no two texts collide */
-        h = fnv1a(h, e[i]->section, strlen(e[i]->section) + 1);
-        h = fnv1a(h, e[i]->name, strlen(e[i]->name) + 1);
-        h = fnv1a(h, e[i]->value, strlen(e[i]->value) + 1);
+        h = fs_hash_bytes(h, e[i]->section, strlen(e[i]->section) + 1);
+        h = fs_hash_bytes(h, e[i]->name, strlen(e[i]->name) + 1);
+        h = fs_hash_bytes(h, e[i]->value, strlen(e[i]->value) + 1);
     }
     free(e);
-    return h;
+    *hash = h;
+    return FS_OK;
 }
 
 fs_status fs_ini_hash(const char *path, unsigned long long *hash, fs_error *err)
@@ -673,7 +668,7 @@ fs_status fs_ini_hash(const char *path, unsigned long long *hash, fs_error *err)
     fs_config cfg;
     fs_status s = fs_config_load(&cfg, path, err);
     if (s == FS_OK)
-        *hash = fs_config_hash(&cfg);
+        s = fs_config_hash(&cfg, hash, err);
     fs_config_free(&cfg);
     return s;
 }

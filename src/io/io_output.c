@@ -3,6 +3,7 @@
 #define _GNU_SOURCE /* renameat2: swapping two folders in one step (Linux) */
 #include "footsim/io/fs_output.h"
 
+#include <cJSON.h>
 #include <dirent.h>
 #include <signal.h>
 #include <sys/syscall.h>
@@ -87,18 +88,22 @@ static void cleanup_on_signal(int sig)
     raise(sig);
 }
 
+void fs_catch_signal(int sig, void (*handler)(int))
+{
+    struct sigaction old, sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = handler;
+    sigemptyset(&sa.sa_mask);
+    /* a signal the caller ignores (or handles) stays so */
+    if (sigaction(sig, NULL, &old) == 0 && old.sa_handler == SIG_DFL)
+        sigaction(sig, &sa, NULL);
+}
+
 static void catch_signals(void)
 {
     static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
-    for (int i = 0; i < 3; i++) {
-        struct sigaction old, sa;
-        memset(&sa, 0, sizeof sa);
-        sa.sa_handler = cleanup_on_signal;
-        sigemptyset(&sa.sa_mask);
-        /* a signal the caller ignores stays ignored */
-        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_DFL)
-            sigaction(sigs[i], &sa, NULL);
-    }
+    for (int i = 0; i < 3; i++)
+        fs_catch_signal(sigs[i], cleanup_on_signal);
 }
 
 static void remember(const char *path, int tree)
@@ -571,6 +576,7 @@ static fs_status take_lock(fs_outdir *o, const char *option, fs_error *err)
     if (!lock_is_ours(o->lock))
         return fs_fail(err, FS_BAD_INPUT, "%s %s: %s exists and is not footsim's lock file; move it away, or choose "
                        "another %s", option, o->path, o->lock, option);
+    int waited = 0;
     for (int tries = 0; tries < 8; tries++) {
         int fd = open(o->lock, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
         if (fd < 0)
@@ -582,6 +588,14 @@ static fs_status take_lock(fs_outdir *o, const char *option, fs_error *err)
             pid[n > 0 ? n : 0] = 0;
             pid[strcspn(pid, "\n")] = 0;
             close(fd);
+            /* its footsim is gone, and the lock is held by its worker processes (which inherit it),
+             * dying with it (fs_pool.h) after a kill -9: wait for them, up to 5 s */
+            long holder = atol(pid);
+            if (holder > 0 && kill((pid_t)holder, 0) != 0 && errno == ESRCH && waited++ < 100) {
+                usleep(50000);
+                tries--;
+                continue;
+            }
             return fs_fail(err, FS_BAD_INPUT,
                            "%s %s: another footsim (process %s) is writing this folder; wait for it to end, or "
                            "choose another %s", option, o->path, *pid ? pid : "?", option);
@@ -775,4 +789,12 @@ fs_status fs_outdir_shared(const char *dir, const char *const *known, int replac
     if (s == FS_OK && lstat(marker, &st) != 0)
         s = fs_write_file(marker, fill_marker, NULL, err);
     return s;
+}
+
+int fs_json_put(cJSON *parent, const char *name, cJSON *item)
+{
+    if (item && parent && (name ? cJSON_AddItemToObject(parent, name, item) : cJSON_AddItemToArray(parent, item)))
+        return 1;
+    cJSON_Delete(item);
+    return 0;
 }

@@ -37,7 +37,11 @@ fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, 
     double *volatile out = NULL;
     png_bytep *volatile rows = NULL;
     unsigned char *volatile pixels = NULL; /* freed on every path, the damaged-image jump included */
-    if (!png || !info || setjmp(png_jmpbuf(png))) {
+    if (!png || !info) { /* libpng's structures: only memory refuses them */
+        status = fs_fail(err, FS_NO_MEMORY, "%s: %s: out of memory", where, path);
+        goto done;
+    }
+    if (setjmp(png_jmpbuf(png))) {
         status = fs_fail(err, FS_BAD_INPUT, "%s: %s is a damaged PNG image", where, path);
         goto done;
     }

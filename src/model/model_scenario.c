@@ -263,6 +263,40 @@ fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
     return crop_terrain(sc, 0, err);
 }
 
+fs_status fs_scenario_inputs(const fs_scenario *sc, fs_provenance *p, fs_error *err)
+{
+    fs_status s = fs_provenance_add_ini(p, sc->path, err);
+    if (s == FS_OK)
+        s = fs_provenance_add_ini(p, sc->def.design_path, err);
+    if (s == FS_OK)
+        s = fs_provenance_add_ini(p, sc->def.terrain_path, err);
+    if (s == FS_OK && sc->terrain.def.kind == FS_TERRAIN_HEIGHTMAP)
+        s = fs_provenance_add_data(p, sc->terrain.def.heightmap_path, err);
+    if (s == FS_OK)
+        s = fs_provenance_add_ini(p, sc->def.robot_path, err);
+    return s;
+}
+
+fs_status fs_scenario_provenance(const fs_scenario *sc, const char *const *overrides, int noverrides,
+                                 fs_provenance *p, fs_error *err)
+{
+    fs_status s = fs_provenance_init(p, sc->path, err);
+    if (s == FS_OK)
+        s = fs_provenance_overrides(p, overrides, noverrides, err);
+    if (s == FS_OK)
+        s = fs_scenario_inputs(sc, p, err);
+    fs_scenario_settings(sc, p->settings, sizeof p->settings);
+    return s;
+}
+
+void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
+{
+    const fs_scenario_def *d = &sc->def;
+    snprintf(buf, size, "step_s %.6g, stepper %s, iterations %d, springs %s, contact_layer_m %.6g, window %.6g s",
+             d->step_s, d->stepper ? "quickstep" : "step", d->iterations, d->springs ? "explicit" : "implicit",
+             d->contact_layer_m, d->duration_s);
+}
+
 void fs_scenario_footprint(const fs_scenario *sc, double box[4])
 {
     const fs_foot_geom *g = &sc->geom;

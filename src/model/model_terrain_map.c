@@ -22,13 +22,13 @@ static int on_outline(const double *o, double x, double y, double px)
     return fabs(x - o[0]) <= px || fabs(x - o[1]) <= px || fabs(y - o[2]) <= px || fabs(y - o[3]) <= px;
 }
 
-void fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
-                    unsigned char *rgb, double zrange[2])
+fs_status fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
+                         unsigned char *rgb, double zrange[2], fs_error *err)
 {
     double sx = (region[1] - region[0]) / (w - 1), sy = (region[3] - region[2]) / (h - 1);
     double *z = malloc((size_t)w * h * sizeof *z);
     if (!z)
-        return;
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for a %dx%d map", t->name, w, h);
     double lo = INFINITY, hi = -INFINITY;
     for (int r = 0; r < h; r++)
         for (int c = 0; c < w; c++) {
@@ -57,4 +57,7 @@ void fs_terrain_map(const fs_terrain *t, const double region[4], const double *o
     free(z);
     zrange[0] = lo;
     zrange[1] = hi;
+    return FS_OK;
 }
+
+void fs_terrain_map_colour(double u, double rgb[3]) { colour(u, rgb); }

@@ -33,6 +33,9 @@ void fs_sim_remember_contacts(fs_sim *sim);
 /* Adds the time since the last timed stage ended to stage, when sim is profiled (sim_step.c). */
 void fs_sim_lap(fs_sim *sim, fs_stage stage);
 
+/* Body i's ODE body: 0 .. nbodies - 1 the foot's, nbodies the robot (sim_measure.c). */
+dBodyID fs_sim_body_id(const fs_sim *sim, int i);
+
 /* Collision: each foot shape against the terrain (and, with run.collide = all, foot against
  * foot); every contact becomes a contact joint of this step (sim_contacts.c). */
 void fs_sim_collide(fs_sim *sim);

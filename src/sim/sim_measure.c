@@ -58,10 +58,36 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
     return ke + pe + se;
 }
 
+_Static_assert(sizeof(dReal) == sizeof(double), "footsim copies ODE's dReal as double: ODE must be built in double precision");
+
+dBodyID fs_sim_body_id(const fs_sim *sim, int i) { return i == sim->geom->nbodies ? sim->robot : sim->body[i]; }
+
+void fs_sim_body_pose(const fs_sim *sim, int i, double p[3], double R[9])
+{
+    dBodyID b = fs_sim_body_id(sim, i);
+    if (p)
+        memcpy(p, dBodyGetPosition(b), 3 * sizeof(double));
+    if (R) {
+        const dReal *m = dBodyGetRotation(b); /* ODE's rows are 4 wide */
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                R[3 * r + c] = m[4 * r + c];
+    }
+}
+
+void fs_sim_body_velocity(const fs_sim *sim, int i, double v[3], double w[3])
+{
+    dBodyID b = fs_sim_body_id(sim, i);
+    if (v)
+        memcpy(v, dBodyGetLinearVel(b), 3 * sizeof(double));
+    if (w)
+        memcpy(w, dBodyGetAngularVel(b), 3 * sizeof(double));
+}
+
 double fs_sim_body_speed(const fs_sim *sim, int i)
 {
     int robot = i == sim->geom->nbodies;
-    dBodyID b = robot ? sim->robot : sim->body[i];
+    dBodyID b = fs_sim_body_id(sim, i);
     const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b);
     double reach = robot ? sim->sc->def.robot.com_height_m : sim->reach[i];
     return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + reach * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);

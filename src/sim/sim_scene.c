@@ -1,12 +1,48 @@
 /* sim_scene.c: the simulation as plain data for anything that draws it (fs_scene.h). */
 #include "sim_internal.h"
 
+#include <math.h>
 #include <string.h>
 
 static void copy3(double dst[3], const dReal *src)
 {
     for (int k = 0; k < 3; k++)
         dst[k] = src[k];
+}
+
+/* A link of body b from hinge from's anchor to hinge to's anchor or to shape's centre. */
+static void add_link(fs_scene *scene, dJointID from, int b, dGeomID shape, dJointID to)
+{
+    if (scene->nlinks >= FS_SCENE_MAX_SEGMENTS)
+        return;
+    fs_scene_segment *seg = &scene->link[scene->nlinks++];
+    dVector3 a;
+    dJointGetHingeAnchor(from, a);
+    copy3(seg->p1, a);
+    if (to) {
+        dJointGetHingeAnchor(to, a);
+        copy3(seg->p2, a);
+    } else {
+        copy3(seg->p2, dGeomGetPosition(shape));
+    }
+    seg->body1 = seg->body2 = b;
+}
+
+/* The robot as the uniform box of its mass and principal moments (edges sqrt(6 (Ij + Ik - Ii) / m)),
+ * cut off at the ankle's height so that it stands on the foot instead of running through it. */
+static void robot_box(const fs_sim *sim, fs_scene_shape *box)
+{
+    const fs_robot_def *rd = &sim->sc->def.robot;
+    double I[3], e[3];
+    fs_robot_inertia(rd, I);
+    for (int i = 0; i < 3; i++)
+        e[i] = sqrt(fmax(6 * (I[(i + 1) % 3] + I[(i + 2) % 3] - I[i]) / rd->mass_kg, 0));
+    double lo = fmax(-0.5 * e[2], -rd->com_height_m), hi = 0.5 * e[2];
+    const dReal *q = dBodyGetQuaternion(sim->robot);
+    dVector3 centre;
+    dBodyGetRelPointPos(sim->robot, 0, 0, 0.5 * (lo + hi), centre);
+    *box = (fs_scene_shape){FS_SHAPE_BOX, {e[0], e[1], hi - lo}, {centre[0], centre[1], centre[2]},
+                            {q[0], q[1], q[2], q[3]}, -1};
 }
 
 void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
@@ -39,17 +75,31 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
             if (sim->body[b] == dGeomGetBody(geom))
                 s->body = b;
     }
-    /* links: each hinge to the next along the chain, drawn as the bodies' skeleton */
-    for (int i = 0; i < g->nhinges && scene->nlinks < FS_SCENE_MAX_SEGMENTS; i++) {
-        dVector3 a;
-        dJointGetHingeAnchor(sim->hinge[i], a);
-        const dReal *c = dBodyGetPosition(sim->body[g->hinge[i].body2]);
-        fs_scene_segment *seg = &scene->link[scene->nlinks++];
-        copy3(seg->p1, a);
-        copy3(seg->p2, c);
+    /* links: each body's bars from the hinge it hangs on (its proximal one) to every point it
+     * carries on (its distal hinges; its contact spheres when it has none), so each chain's loop
+     * reads as a linkage; a body no hinge hangs from (the root) joins its distal hinges to its
+     * spheres */
+    for (int b = 0; b < g->nbodies; b++) {
+        int proximal = -1, ndistal = 0;
+        for (int i = 0; i < g->nhinges; i++) {
+            proximal = g->hinge[i].body2 == b ? i : proximal;
+            ndistal += g->hinge[i].body1 == b;
+        }
+        for (int i = 0; i < g->nhinges; i++) {
+            if (g->hinge[i].body1 == b && proximal >= 0)
+                add_link(scene, sim->hinge[proximal], b, NULL, sim->hinge[i]);
+            for (int k = 0; k < sim->nshapes && g->hinge[i].body2 == b && ndistal == 0; k++)
+                if (dGeomGetBody(sim->shape[k]) == sim->body[b])
+                    add_link(scene, sim->hinge[i], b, sim->shape[k], NULL);
+            for (int k = 0; k < sim->nshapes && g->hinge[i].body1 == b && proximal < 0; k++)
+                if (dGeomGetBody(sim->shape[k]) == sim->body[b] && dGeomGetClass(sim->shape[k]) == dSphereClass)
+                    add_link(scene, sim->hinge[i], b, sim->shape[k], NULL);
+        }
     }
     for (int i = 0; i < g->nsprings && i < FS_SCENE_MAX_SEGMENTS; i++) {
         fs_scene_segment *seg = &scene->spring[scene->nsprings++];
+        seg->body1 = g->spring[i].body1;
+        seg->body2 = g->spring[i].body2;
         fs_spring_anchors(&sim->spring[i], seg->p1, seg->p2);
         seg->force_N = fs_spring_measure(&sim->spring[i]).force_N;
     }
@@ -59,12 +109,16 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
         copy3(c->force_N, sim->feedback[i].f1);
     }
     fs_sim_ankle(sim, scene->ankle);
-    if (sim->robot && scene->nlinks < FS_SCENE_MAX_SEGMENTS) {
-        /* the robot as a line from the ankle to its centre of mass */
-        fs_scene_segment *seg = &scene->link[scene->nlinks++];
-        memcpy(seg->p1, scene->ankle, sizeof seg->p1);
-        copy3(seg->p2, dBodyGetPosition(sim->robot));
+    scene->ankle_body = g->ankle_body;
+    for (int b = 0; b < g->nbodies && b < FS_SCENE_MAX_BODIES; b++) {
+        copy3(scene->body[b].pos, dBodyGetPosition(sim->body[b]));
+        const dReal *q = dBodyGetQuaternion(sim->body[b]);
+        for (int k = 0; k < 4; k++)
+            scene->body[b].quat[k] = q[k];
+        scene->nbodies = b + 1;
     }
+    if (sim->robot)
+        robot_box(sim, &scene->robot), scene->has_robot = 1;
     for (int k = 0; k < 3; k++)
         scene->load_N[k] = fs_sim_load_now_N(sim) * sim->down[k];
 }

@@ -40,6 +40,11 @@ static void apply_load(fs_sim *sim)
                        p[1], p[2]);
 }
 
+void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3])
+{
+    dBodyAddTorque(fs_sim_body_id(sim, i), torque_N_m[0], torque_N_m[1], torque_N_m[2]);
+}
+
 fs_status fs_sim_step(fs_sim *sim, fs_error *err)
 {
     const fs_scenario_def *s = &sim->sc->def;
@@ -62,11 +67,14 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
         fs_sim_collide(sim);
     sim->contacts_total += sim->contacts_now;
     fs_sim_lap(sim, FS_STAGE_CONTACTS);
-    /* the ODE step */
+    /* the ODE step, with this sim's own state of ODE's one random generator (QuickStep draws on
+     * it to order its constraints), so that other sims stepped between leave it alone */
+    dRandSetSeed(sim->rand_seed);
     if (s->stepper == FS_STEPPER_QUICKSTEP)
         dWorldQuickStep(sim->world, h);
     else
         dWorldStep(sim->world, h);
+    sim->rand_seed = dRandGetSeed();
     dJointGroupEmpty(sim->contact_group);
     sim->time_s += h;
     fs_sim_lap(sim, FS_STAGE_ODE);

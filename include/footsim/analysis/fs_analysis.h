@@ -62,9 +62,18 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
 fs_status fs_pitch_stiffness_model(const fs_design_def *d, const fs_foot_geom *g, double load_N,
                                    double gravity_m_per_s2, double *K, fs_error *err);
 
+/* The pitch stiffness of a scenario's foot on its ground, N m/rad: for the biomimetic foot the
+ * model above (the arch governs; the ground is taken as rigid beside it); for a flat sole its
+ * contacts govern, on level ground of the scenario's material: the sole's four bottom corners, each
+ * a spring of the sole's and the ground's contact stiffness in series (k), pitched about their
+ * middle, K = k L^2 for a sole L long (exact while no corner lifts, that is for a pitching moment
+ * below load_N L / 2). */
+fs_status fs_pitch_stiffness_foot(const fs_scenario *sc, double load_N, double *K, fs_error *err);
+
 /* The same stiffness measured in ODE: the foot on the scenario's ground with friction mu (sole and
  * ground), under load_N at the ankle (the scenario's load and robot replaced), torques +tau and
- * -tau (1e-3 rad times K_guess) about the lateral axis on the ankle body, risen with the load and
+ * -tau (1e-3 rad times K_guess, and at most a twentieth of the moment that would lift the
+ * footprint's heel or toe, load_N times half its length) about the lateral axis on the ankle body, risen with the load and
  * held until still; K = 2 tau / (pitch(+tau) - pitch(-tau)). With mu = 10 heel and toes grip
  * (the model's assumption in each chain's plane, but splayed toes are then held across their
  * planes too); docs/landing.md gives both. */

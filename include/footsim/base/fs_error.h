@@ -32,19 +32,7 @@ fs_status fs_fail(fs_error *err, fs_status status, const char *fmt, ...)
 #endif
     ;
 
-/* Routes ODE's error, debug and message handlers through footsim. ODE does not let its error
- * handlers return, so an ODE error prints "footsim: <context>: ODE error ..." and exits with
- * FS_NUMERICAL instead of aborting; results are written atomically, so nothing is left half done.
- * Call fs_ode_init once before creating any ODE object. */
-void fs_ode_init(void);
-void fs_ode_close(void);
-
-/* Names what footsim is doing, for ODE's complaints ("scenarios/static_load.ini"). ODE's handlers
- * are process-wide and take no user data, so the name of the simulation being stepped is the one
- * piece of state footsim keeps outside a simulation: a pointer per thread, to text the caller owns
- * (an fs_sim sets it to its own name before each ODE call and leaves it when destroyed).
- * fs_ode_context_leave(context) forgets context if it is the current one. */
-void fs_ode_context(const char *context);
-void fs_ode_context_leave(const char *context);
+/* ODE's handlers, which report through this (an ODE error exits with FS_NUMERICAL), are the sim
+ * layer's: footsim/sim/fs_ode.h. */
 
 #endif

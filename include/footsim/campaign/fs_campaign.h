@@ -43,14 +43,6 @@ extern const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS];
 /* The value of metric m (an index into fs_campaign_metrics) in r. */
 double fs_metric_value(const fs_trial_result *r, int m);
 
-/* An input file of a campaign, for its provenance: its path relative to the campaign file's folder
- * and the hash of its parsed content (fs_config_hash). */
-typedef struct fs_campaign_input {
-    char path[FS_PATH_MAX];
-    unsigned long long hash;
-} fs_campaign_input;
-enum { FS_CAMPAIGN_MAX_INPUTS = 2 + FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_ROBOTS };
-
 /* One foot, terrain or robot of the campaign. */
 typedef struct fs_campaign_item {
     char name[FS_NAME_MAX];  /* the section's NAME, or for a sweep "NAME@value" */
@@ -88,11 +80,10 @@ typedef struct fs_campaign {
     double tolerance[FS_CAMPAIGN_NMETRICS][2]; /* relative, absolute (metric's unit) */
     const char *set[FS_CAMPAIGN_MAX_SET];      /* the command's --set meant for the trials */
     int nset;
-    /* provenance (written into every result file): every --set as given, and the input files */
-    const char *given[FS_CAMPAIGN_MAX_SET];
-    int ngiven;
-    fs_campaign_input input[FS_CAMPAIGN_MAX_INPUTS];
-    int ninputs;
+    /* what made the results (written into every result file, fs_provenance.h): every --set as
+       given, every input file (relative to the campaign file's folder) with its hash, the first
+       cell's settings; the seeds are c's own when written */
+    fs_provenance provenance;
     fs_scenario *pair;                 /* the trial scenario of each cell, loaded once:
                                           fs_campaign_pair; fs_campaign_free releases them */
 } fs_campaign;
@@ -139,7 +130,7 @@ typedef struct fs_campaign_row {
     int nmetric;                           /* trials the medians are over (all but failed_numerics, hung) */
     double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
     /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
-    int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: a flat sole */
+    int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */
     double law_K, law_critical_m;          /* N m/rad with any tendon in series; K / (m g), m */
 } fs_campaign_row;
 enum { FS_LAW_NONE = -1, FS_LAW_TOPPLES = 0, FS_LAW_STANDS = 1 };
@@ -162,6 +153,13 @@ fs_status fs_campaign_write_summary(const fs_campaign *c, const fs_campaign_row 
  * CI whiskers, or for a sweep each foot's rate and CI band against the swept value. */
 fs_status fs_campaign_write_chart(const fs_campaign *c, const fs_campaign_row *rows, const char *dir, fs_error *err);
 
+/* Reads back from a summary.json (path) what fs_campaign_write_chart needs: c's name, seeds, swept
+ * keys, feet, terrains (with their swept values) and robots, and rows[fs_campaign_ncells(c)] (rates,
+ * intervals, the law's prediction; medians NAN). Nothing else of c is set (c->pair is NULL).
+ * rows must hold FS_CAMPAIGN_MAX_FEET x FS_CAMPAIGN_MAX_TERRAINS x FS_CAMPAIGN_MAX_ROBOTS rows.
+ * FS_BAD_INPUT (said) when the file is not a campaign's summary. */
+fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *rows, fs_error *err);
+
 /* Checks every expectation, printing each with its numbers to out; returns how many failed. */
 int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *out);
 
@@ -175,5 +173,82 @@ int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *o
  * (|result - baseline| <= relative * |baseline| + absolute); FS_EXPECTATION_FAILED when
  * not, or when a row is missing on either side; FS_BAD_INPUT when a file cannot be read as a summary. */
 fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, int force, FILE *out, fs_error *err);
+
+/* Campaign equivalence (docs/bench.md): whether a campaign run at some setting (a step, a solver)
+ * tells what a reference campaign of the same seeds and inputs tells. Provenance as in
+ * fs_campaign_compare, but overrides may differ (they carry the setting). Per cell: the two success
+ * rates' 95 % Wilson intervals overlap, and the medians of the well-posed metrics (impact impulse,
+ * final lean, ankle drop, settle time, mean and final contacts) lie within 5 % of the reference's or
+ * an absolute floor (0.5 deg, 0.1 mm, 5 ms, 1 contact), whichever is larger; peak force is reported,
+ * not judged. FS_OK when every cell is equivalent, FS_EXPECTATION_FAILED when not or a row is
+ * missing, FS_BAD_INPUT as fs_campaign_compare. */
+fs_status fs_campaign_equivalence(const char *result_path, const char *reference_path, int force, FILE *out,
+                                  fs_error *err);
+
+/* ---- provenance and the journal (campaign_journal.c) -------------------------------------- */
+
+/* The provenance line the CSV files begin with ("# provenance: footsim VERSION; seeds A to B;
+ * SETTINGS; inputs PATH=HASH ...; overrides ..."), without its newline; malloc'd (NULL: out of
+ * memory). Two runs with the same line ran the same trials. */
+char *fs_campaign_provenance(const fs_campaign *c);
+
+/* Shards: trial index belongs to shard (1-based) of nshards when index % nshards == shard - 1, so
+ * any nshards splits any campaign into disjoint shares, each spread over every cell. */
+static inline int fs_campaign_in_shard(int index, int shard, int nshards)
+{
+    return index % nshards == shard - 1;
+}
+
+/* A journal is a campaign's finished trials, one line each, behind a header that says what made
+ * them: the campaign file (absolute), its --set as given, the shard, the trial count and the
+ * provenance line. A record holds every field of a trial's result exactly (numbers in C99 hex
+ * notation), so results read back are bit for bit those written. A run appends each record as its
+ * trial ends (fs_journal_append: one write, then fdatasync); a shard's results folder holds the
+ * same format sorted by index (trials.journal). A last line without its newline (a kill in the
+ * middle of a write) is ignored. */
+enum { FS_JOURNAL_FORMAT = 1 };
+typedef struct fs_journal_head {
+    char campaign[FS_PATH_MAX];          /* the campaign file, absolute */
+    char *set[FS_CAMPAIGN_MAX_SET];      /* the --set as given (malloc'd) */
+    int nset;
+    int shard, nshards;                  /* 1/1: the whole campaign */
+    int ntrials;                         /* the whole campaign's */
+    char *provenance;                    /* fs_campaign_provenance (malloc'd) */
+} fs_journal_head;
+
+/* The head of c loaded from campaign_path with sets, run as shard/nshards. */
+fs_status fs_journal_head_of(const fs_campaign *c, const char *campaign_path, const char *const *sets, int nsets,
+                             int shard, int nshards, fs_journal_head *h, fs_error *err);
+void fs_journal_head_free(fs_journal_head *h);
+
+/* Where a and b (called name_a and name_b) differ, in words ("inputs: 'feet/bio.ini=12..' in
+ * NAME_A, 'feet/bio.ini=34..' in NAME_B"), into why (size bytes); 0 when they are the same
+ * campaign (provenance and trial count; the shard and the campaign file's path are not compared). */
+int fs_journal_differs(const fs_journal_head *a, const fs_journal_head *b, const char *name_a, const char *name_b,
+                       char *why, size_t size);
+
+/* Writes the header to f; then fs_journal_print_record for each trial. */
+void fs_journal_print_head(FILE *f, const fs_journal_head *h);
+void fs_journal_print_record(FILE *f, int index, const fs_trial_result *r);
+
+/* Reads the journal at path: its head, and its records into results[h->ntrials] and done (1 where
+ * a record was read), both malloc'd. FS_BAD_INPUT ("path:line: ...") for a file that is not a
+ * journal, a malformed record, an index out of range or repeated; FS_NO_MEMORY. */
+fs_status fs_journal_read(const char *path, fs_journal_head *h, fs_trial_result **results, unsigned char **done,
+                          int *ndone, fs_error *err);
+
+/* An open journal being appended to (one process at a time: an exclusive flock on it). */
+typedef struct fs_journal {
+    char path[FS_PATH_MAX + 32];
+    int fd;
+} fs_journal;
+
+/* Opens path for appending; creates it with h's header (written whole) when it does not exist.
+ * FS_BAD_INPUT when another process holds it. */
+fs_status fs_journal_open(fs_journal *j, const char *path, const fs_journal_head *h, fs_error *err);
+
+/* Appends index's record and syncs it to the disk. */
+fs_status fs_journal_append(fs_journal *j, int index, const fs_trial_result *r, fs_error *err);
+void fs_journal_close(fs_journal *j);
 
 #endif

@@ -41,12 +41,18 @@ typedef struct fs_opt_param {
     int log;                       /* searched in log space */
 } fs_opt_param;
 
+/* What a search minimises ([optimize] objective): the least stiff design (the sum of the parameters,
+ * each over its lower bound: for spring stiffnesses, how many times the softest allowed), or the
+ * lightest (the foot's total mass, kg, as the candidate's design compiles it). */
+typedef enum fs_objective { FS_OBJECTIVE_NONE, FS_OBJECTIVE_LEAST_STIFF, FS_OBJECTIVE_LIGHTEST } fs_objective;
+
 typedef struct fs_optimize {
     char path[FS_PATH_MAX];
     char name[FS_NAME_MAX];
     char campaign_path[FS_PATH_MAX];
     int max_evaluations;
     int validation_first_seed;     /* the fresh seeds the best design is checked on */
+    int objective;                 /* fs_objective: what the search minimises, named in the file */
     int nparams;
     fs_opt_param param[FS_OPTIMIZE_MAX_PARAMS];
     fs_campaign campaign;          /* loaded: its cells' scenarios are what a candidate edits */
@@ -61,7 +67,8 @@ void fs_optimize_free(fs_optimize *o);
 /* Puts candidate x (nparams values) into every cell's scenario and compiles them. */
 fs_status fs_optimize_apply(fs_optimize *o, const double *x, fs_error *err);
 
-/* The objective of x: the sum of x_i / min_i. */
+/* The objective of x, after fs_optimize_apply(o, x): the sum of x_i / min_i (least_stiff), or the
+ * foot's total mass in kg (lightest). */
 double fs_optimize_objective(const fs_optimize *o, const double *x);
 
 /* How far the rows miss the campaign's expectations: the sum over expectations of the distance of

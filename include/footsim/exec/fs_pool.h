@@ -10,12 +10,14 @@
  * seconds (stopped, hung, looping) is reported to `died` with its task and how it ended, and
  * counted; the watchdog kills it with SIGKILL. A fresh worker takes its place and the pool goes on.
  * `done` may stop the pool by returning a status other than FS_OK: the workers still running are
- * killed and reaped. No worker outlives fs_pool_run. */
+ * killed and reaped. No worker outlives fs_pool_run, nor its parent: a worker whose parent dies (a
+ * kill -9) is killed with it. */
 #ifndef FS_POOL_H
 #define FS_POOL_H
 
 #include "footsim/base/fs_error.h"
 
+#include <signal.h>
 #include <stddef.h>
 
 /* How a worker ended in the middle of a task. */
@@ -31,6 +33,7 @@ typedef struct fs_pool_spec {
     int jobs;            /* worker processes (at most FS_POOL_MAX_JOBS; fewer when fewer tasks) */
     size_t result_size;  /* bytes of one answer */
     double watchdog_s;   /* a worker with no answer for this long is killed; <= 0: FS_POOL_WATCHDOG_S */
+    double tick_s;       /* progress is told again after this long without an answer; <= 0: FS_POOL_TICK_S */
     void *user;
     /* in a worker: runs task, filling result (result_size bytes, zeroed before) */
     void (*run)(int task, void *result, void *user);
@@ -38,8 +41,13 @@ typedef struct fs_pool_spec {
     fs_status (*done)(int task, const void *result, void *user, fs_error *err);
     /* in the parent: the worker running task died or was killed by the watchdog */
     void (*died)(int task, const fs_pool_death *death, void *user);
-    /* in the parent, optional: after each task, answered or dead */
+    /* in the parent, optional: after each task, answered or dead, and at least every
+       tick_s while no task ends (done unchanged), so that a reporter's clock moves */
     void (*progress)(int done, int ntasks, void *user);
+    /* optional: when *stop becomes nonzero (a signal handler's flag), the pool stops within a
+     * fraction of a second: the workers still running are killed and reaped, the tasks they ran
+     * neither answered nor reported dead, and fs_pool_run returns FS_OK (the caller knows why) */
+    const volatile sig_atomic_t *stop;
 } fs_pool_spec;
 
 enum { FS_POOL_MAX_JOBS = 1024 };
@@ -47,6 +55,9 @@ enum { FS_POOL_MAX_JOBS = 1024 };
 /* The watchdog's default, s: far beyond any trial or benchmark run footsim ships (seconds each).
  * FOOTSIM_WATCHDOG_S in the environment replaces it (and any watchdog_s), e.g. for tests. */
 #define FS_POOL_WATCHDOG_S 600.0
+
+/* The longest the pool waits for an answer before telling progress again, s. */
+#define FS_POOL_TICK_S 5.0
 
 /* What a pool run saw. */
 typedef struct fs_pool_stats {

@@ -10,7 +10,9 @@
 #include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
-enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES };
+/* trajectory columns: t_s, the ankle's x, y, z (m), contacts, each hinge's angle (NAME_rad), each
+ * spring-damper's force (NAME_N, positive in tension) */
+enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES + FS_MAX_SPRINGS };
 
 /* The most memory a run's trajectory may take (docs/keys.md); a run asking for more is refused
  * (FS_BAD_INPUT) before its first step. */
@@ -32,6 +34,7 @@ typedef struct fs_run_result {
     int ncols, nrows, capacity;
     const char *col_name[FS_TRAJ_MAX_COLS]; /* point into the fixed names or hinge_col */
     char hinge_col[FS_MAX_HINGES][48];      /* the hinge columns' names, owned by the result */
+    char spring_col[FS_MAX_SPRINGS][48];    /* the spring columns' names, owned by the result */
     double *rows;
 } fs_run_result;
 
@@ -39,7 +42,9 @@ typedef struct fs_run_result {
 fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *res, fs_error *err);
 void fs_run_free(fs_run_result *res);
 
-/* Writes DIR/metrics.json and DIR/trajectory.csv (creating DIR and its parents). */
-fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const char *dir, fs_error *err);
+/* Writes DIR/metrics.json and DIR/trajectory.csv (creating DIR and its parents); metrics.json
+ * records prov (fs_provenance.h; may be NULL) as its "provenance". */
+fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const fs_provenance *prov, const char *dir,
+                       fs_error *err);
 
 #endif

@@ -102,10 +102,11 @@ void fs_config_free(fs_config *cfg);
 
 /* A hash of a file's parsed content (FNV-1a, 64 bits): its entries (section, key, value) in sorted
  * order, so that comments, blank lines, spacing and the order of keys do not change it, and any
- * changed value does. For provenance: which inputs made a result. */
-unsigned long long fs_config_hash(const fs_config *cfg);
+ * changed value does. For provenance: which inputs made a result. FS_NO_MEMORY (hash untouched)
+ * when the sort's memory is refused. */
+fs_status fs_config_hash(const fs_config *cfg, unsigned long long *hash, fs_error *err);
 
-/* fs_config_hash of the INI file at path, or FS_BAD_INPUT when it cannot be read. */
+/* fs_config_hash of the INI file at path; FS_BAD_INPUT when it cannot be read, FS_NO_MEMORY. */
 fs_status fs_ini_hash(const char *path, unsigned long long *hash, fs_error *err);
 
 /* Writes the schema as a Markdown table (key, unit, range, default, meaning) to out. */

@@ -59,6 +59,11 @@ fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
  * failure temp is removed. */
 fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err);
 
+/* Installs handler for sig (no SA_RESTART) unless sig is already ignored or handled. The
+ * results-folder functions install their own cleanup for SIGINT, SIGTERM and SIGHUP this way, so
+ * a caller that handles one itself (a campaign keeping its journal) installs its handler first. */
+void fs_catch_signal(int sig, void (*handler)(int));
+
 /* Removes a folder and everything in it (best effort; never follows symbolic links). */
 void fs_remove_tree(const char *dir);
 
@@ -92,5 +97,13 @@ fs_status fs_outdir_shared(const char *dir, const char *const *known, int replac
 /* Normalises a folder path: no trailing slash, no "." components or repeated slashes; a final
  * ".." is resolved. Refuses the root and the empty path. */
 fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *option, fs_error *err);
+
+/* Puts item into a JSON tree being built for a result: into parent under name (an object), or at
+ * its end when name is NULL (an array). cJSON's adds fail silently on out of memory, leaving a
+ * field out of a result file; a builder ands every put (and every cJSON_Add...ToObject's non-NULL
+ * result) and refuses an incomplete tree (FS_NO_MEMORY). When the put fails, or item is NULL
+ * because making it failed, item is deleted; returns 1 when put. */
+struct cJSON;
+int fs_json_put(struct cJSON *parent, const char *name, struct cJSON *item);
 
 #endif

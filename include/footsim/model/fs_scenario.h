@@ -14,6 +14,7 @@
 #include "footsim/model/fs_design.h"
 #include "footsim/model/fs_robot.h"
 #include "footsim/model/fs_terrain.h"
+#include "footsim/io/fs_provenance.h"
 
 /* The most steps one run, trial or walk may take (docs/keys.md): refused before it starts. */
 enum { FS_MAX_STEPS = 1000000000 };
@@ -110,6 +111,20 @@ fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err);
  * definitions and compiling (fs_scenario_compile). NULL when no schema has that key as a number;
  * *key (may be NULL) gets its schema entry, for its range and unit. */
 double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key);
+
+/* Notes the files sc was read from in p (fs_provenance.h), each once: the scenario file, its
+ * design, its terrain, the terrain's heightmap image (by its bytes) and its robot. */
+fs_status fs_scenario_inputs(const fs_scenario *sc, fs_provenance *p, fs_error *err);
+
+/* The record of a result of sc alone (a run, a trial): inputs relative to the scenario file's
+ * folder, the overrides sc was loaded with, its inputs and its settings; no seeds (the caller sets
+ * them). fs_provenance_free releases it, also after a failure. */
+fs_status fs_scenario_provenance(const fs_scenario *sc, const char *const *overrides, int noverrides,
+                                 fs_provenance *p, fs_error *err);
+
+/* sc's step and solver settings as results record them: "step_s 0.0001, stepper step, iterations
+ * 50, springs implicit, contact_layer_m 0.0005, window 3 s" (window: duration_s). */
+void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size);
 
 /* The rectangle [xmin, xmax] x [ymin, ymax] the foot covers at its start pose. */
 void fs_scenario_footprint(const fs_scenario *sc, double box[4]);

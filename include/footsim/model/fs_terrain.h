@@ -108,11 +108,16 @@ void fs_terrain_free(fs_terrain *t);
 /* Whether a section belongs to terrain files (for routing --set overrides). */
 int fs_terrain_has_section(const char *section, size_t len);
 
+/* The colour fs_terrain_map gives a height a fraction u (0 lowest, 1 highest) of the way up, on
+ * level ground (unshaded), 0-255 per channel: for a colour bar. */
+void fs_terrain_map_colour(double u, double rgb[3]);
+
 #endif
 
 /* A shaded top-down picture of the surface over region [xmin, xmax, ymin, ymax]: heights as
  * colours (low blue-green to high sand), lit from the north-west; when outline is not NULL, the
  * rectangle [xmin, xmax, ymin, ymax] it gives is drawn in white (a footprint). rgb holds w*h*3
- * bytes, row 0 at the largest y. Returns the lowest and highest height drawn in zrange. */
-void fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
-                    unsigned char *rgb, double zrange[2]);
+ * bytes, row 0 at the largest y. Returns the lowest and highest height drawn in zrange; FS_NO_MEMORY
+ * (rgb not filled) when the heights' memory is refused. */
+fs_status fs_terrain_map(const fs_terrain *t, const double region[4], const double *outline, int w, int h,
+                         unsigned char *rgb, double zrange[2], fs_error *err);

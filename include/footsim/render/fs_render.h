@@ -23,10 +23,12 @@ typedef enum fs_render_camera {
     FS_RENDER_FRONT = 1,         /* from ahead (+x), looking back at the toes */
     FS_RENDER_THREE_QUARTER = 2, /* from ahead, right and above */
     FS_RENDER_FOLLOW = 3,        /* closer, from behind-right, its target following the foot each frame */
-    FS_RENDER_NCAMERAS = 4
+    FS_RENDER_FOOT = 4,          /* the foot alone (not the robot) filling the picture, from ahead-right and
+                                    above, its target following the foot each frame */
+    FS_RENDER_NCAMERAS = 5
 } fs_render_camera;
 
-/* "side", "front", "three-quarter", "follow", in fs_render_camera order. */
+/* "side", "front", "three-quarter", "follow", "foot", in fs_render_camera order. */
 extern const char *const fs_render_camera_names[FS_RENDER_NCAMERAS];
 
 /* The camera called name, or -1 when there is none. */
@@ -40,12 +42,13 @@ typedef struct fs_render_view {
     double aspect;          /* viewport width / height */
 } fs_render_view;
 
-/* Frames camera on the union of n scenes' extents for a viewport of the given aspect. */
+/* Frames camera on the union of n scenes' extents for a viewport of the given aspect: the foot's
+ * (shapes, links, springs, ankle) and, except for FS_RENDER_FOOT, the robot's box. */
 void fs_render_view_fit(fs_render_view *v, fs_render_camera camera, const fs_scene *const *scenes, int n,
                         double aspect);
 
-/* For FS_RENDER_FOLLOW: moves eye and target with the centre of scene's extent (same direction
- * and distance); other cameras stay put. */
+/* For FS_RENDER_FOLLOW and FS_RENDER_FOOT: moves eye and target with the centre of scene's
+ * extent (same direction and distance); other cameras stay put. */
 void fs_render_view_follow(fs_render_view *v, const fs_scene *scene);
 
 /* The pixel (x right, y down from the top, continuous) at which p appears in a w x h viewport;
@@ -73,13 +76,32 @@ int fs_render_height(const fs_render *r);
 void fs_render_clear(fs_render *r);
 
 /* Draws scene as v sees it into the viewport whose top-left pixel is (x0, y0), w x h (inside the
- * frame), with the overlay (time, scenario, foot, terrain) in its top-left corner. Shows: the
- * ground as a lit, height-shaded mesh; every shape as it collides (spheres, boxes); a shadow blob
- * on the ground under each shape; links and joints; springs coloured by force (red tension, blue
- * compression, grey slack); contact points with ground-force arrows; the load at the ankle.
+ * frame), with the overlay (time, scenario, foot, terrain and the note, one line) along its top
+ * and a scale bar (a round number of mm at the camera's target) in its bottom-left corner. Shows:
+ * the ground as a lit, height-shaded mesh; every shape as it collides (spheres, boxes); a shadow
+ * blob on the ground under each shape; links as solid bars with joints; springs coloured by force
+ * (red tension, blue compression, grey slack); contact points with ground-force arrows; the load
+ * at the ankle; the robot as a translucent box (the foot shows through).
  * Spring colours and arrow lengths are scaled by the largest force r has drawn so far (so that
  * successive frames compare); the overlay scales with the viewport. */
 void fs_render_draw(fs_render *r, const fs_render_view *v, const fs_scene *scene, int x0, int y0, int w, int h);
+
+/* A note said on the overlay of every frame drawn after (at most 63 characters; NULL or "" for
+ * none): "displacements x20" for an exaggerated view. */
+void fs_render_set_note(fs_render *r, const char *note);
+
+/* The colour legend (spring in tension, in compression, contact force, load) as one row of
+ * swatches and words, left-aligned and vertically centred in the box at (x0, y0), w x h; the
+ * words shrink to fit. Returns the width drawn, pixels. */
+int fs_render_legend(fs_render *r, int x0, int y0, int w, int h);
+
+/* The deformation view: out is now with every foot body's displacement from its pose in neutral,
+ * taken in the ankle body's frame, multiplied by factor (translation scaled, rotation angle scaled
+ * about the same axis), placed back on the ankle body where it is now. Shapes, links, springs (each
+ * end with its body) and contacts (with the nearest shape's body) move with their bodies; the
+ * ankle body, the robot, forces and the ground stay. factor 1, or scenes without body poses (or
+ * with different body counts), give out = now. out may be now. */
+void fs_render_exaggerate(const fs_scene *neutral, const fs_scene *now, double factor, fs_scene *out);
 
 /* The RGBA bytes of pixel (x, y) of the last drawn frame. */
 const unsigned char *fs_render_pixel(const fs_render *r, int x, int y);

@@ -6,7 +6,7 @@
 #ifndef FS_SCENE_H
 #define FS_SCENE_H
 
-enum { FS_SCENE_MAX_SHAPES = 16, FS_SCENE_MAX_SEGMENTS = 32, FS_SCENE_MAX_CONTACTS = 128 };
+enum { FS_SCENE_MAX_SHAPES = 16, FS_SCENE_MAX_SEGMENTS = 32, FS_SCENE_MAX_CONTACTS = 128, FS_SCENE_MAX_BODIES = 16 };
 
 typedef enum fs_shape_type { FS_SHAPE_SPHERE = 0, FS_SHAPE_BOX = 1 } fs_shape_type;
 
@@ -15,14 +15,23 @@ typedef struct fs_scene_shape {
     double size[3];     /* sphere: radius in size[0]; box: edge lengths */
     double pos[3];
     double quat[4];     /* w, x, y, z */
-    int body;           /* index of the body it belongs to */
+    int body;           /* index of the body it belongs to (-1: none of the foot's, the robot) */
 } fs_scene_shape;
 
-/* A line between two points: a link (joint to joint) or a spring (force_N: tension positive). */
+/* A line between two points: a link (joint to joint on one body, body1 = body2) or a spring
+ * (force_N: tension positive) from body1 to body2. A body -1 is the world (a point that never
+ * moves). */
 typedef struct fs_scene_segment {
     double p1[3], p2[3];
     double force_N;
+    int body1, body2;   /* the bodies p1 and p2 are fixed to */
 } fs_scene_segment;
+
+/* A body's pose: its centre of mass and orientation (w, x, y, z). */
+typedef struct fs_scene_pose {
+    double pos[3];
+    double quat[4];
+} fs_scene_pose;
 
 typedef struct fs_scene_contact {
     double pos[3];
@@ -49,6 +58,11 @@ typedef struct fs_scene {
     fs_scene_contact contact[FS_SCENE_MAX_CONTACTS];
     double ankle[3];    /* the load's point */
     double load_N[3];   /* the load acting there now */
+    int nbodies;        /* the foot's bodies (0: poses unknown) */
+    fs_scene_pose body[FS_SCENE_MAX_BODIES];
+    int ankle_body;     /* the body the load acts on */
+    int has_robot;      /* the robot: a box (body -1) of its mass and inertia, drawn from the ankle up */
+    fs_scene_shape robot;
 } fs_scene;
 
 #endif

@@ -8,18 +8,20 @@
  * ground only), the ODE step, and the state checks of fs_check.h (finite, speed, loop closure,
  * energy). fs_sim_options.profile times them.
  *
- * Re-entrant: everything a simulation uses lives in its fs_sim (contact scratch, profile, names),
- * so simulations may be built and stepped interleaved in one process and give the bits each gives
- * alone. The one process-wide piece is ODE's message handler's context (fs_error.h), which each
- * step points at its own sim. Workers still run as processes (fs_pool.h): ODE ends the process
- * after its error handler and keeps one random generator, which fs_sim_build reseeds — so the
- * guarantee holds for dWorldStep (the default); QuickStep sims interleaved share that generator.
- * test_engine_determinism steps three sims interleaved against each alone. */
+ * Re-entrant: everything a simulation uses lives in its fs_sim (contact scratch, profile, names,
+ * its state of ODE's random generator), so simulations may be built and stepped interleaved in one
+ * process and give the bits each gives alone, with either stepper. ODE's handlers and its random
+ * generator are process-wide: each step points the handlers' context at its own sim (fs_ode.h) and
+ * sets the generator to the sim's own state before the ODE step, saving it after. Workers still
+ * run as processes (fs_pool.h): ODE ends the process after its error handler, and a generator
+ * shared between threads would be raced. test_engine_determinism steps five sims (two with
+ * QuickStep) interleaved against each alone. */
 #ifndef FS_SIM_H
 #define FS_SIM_H
 
 #include "footsim/sim/fs_check.h"
 #include "footsim/model/fs_scenario.h"
+#include "footsim/sim/fs_ode.h"
 #include "footsim/sim/fs_scene.h"
 #include "footsim/sim/fs_spring.h"
 
@@ -72,6 +74,7 @@ typedef struct fs_sim {
     long contacts_total, collision_tests;
     fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
     struct fs_contact_scratch *scratch; /* one shape's contacts while a step gathers them */
+    unsigned long rand_seed; /* this sim's state of ODE's random generator, which QuickStep draws on */
     char ode_context[FS_PATH_MAX]; /* what ODE's complaints name while this sim steps: its scenario */
     struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_options.profile) */
     double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
@@ -146,6 +149,14 @@ typedef struct fs_rows {
     int contacts;          /* the contact points the contact rows are for */
 } fs_rows;
 void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows);
+
+/* Body i (0 .. nbodies - 1; nbodies: the robot) now: its position, m, and rotation R (row-major,
+ * R[3 * r + c]: its axes are the columns, world = R * body), either of them NULL if not wanted. */
+void fs_sim_body_pose(const fs_sim *sim, int i, double p[3], double R[9]);
+/* Body i's linear velocity, m/s, and angular velocity, rad/s (world frame), either NULL if not wanted. */
+void fs_sim_body_velocity(const fs_sim *sim, int i, double v[3], double w[3]);
+/* Adds a torque (world frame, N m) to body i for the coming step only (a driver's before_step). */
+void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3]);
 
 /* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. */
 double fs_sim_robot_tilt(const fs_sim *sim);

@@ -1,0 +1,35 @@
+/* fs_carriage.h: a kinematic carriage that carries a simulation's robot body (the walking
+ * machine's actuator).
+ *
+ * fs_carriage_attach puts a kinematic body height_m above the robot body, joined to it by a
+ * vertical slider and a suspension spring-damper (k, c, rest length height_m) of the scenario's
+ * spring implementation, and tells the sim's checks its work (fs_check_set_work): the slider's
+ * force and torque and the suspension's force times the robot's displacement and turn over each
+ * step (explicit springs: the suspension's force from the state before the step, as applied;
+ * implicit: after, as backward Euler applies it). Before each step, fs_carriage_drive sets the
+ * carriage's velocity so that it reaches start + (dx, 0, dz) at the step's end and prepares the
+ * suspension. The carriage lives in the sim's world and goes with fs_sim_destroy; c must stay where
+ * it is (ODE writes the slider's feedback into it) until then. Nothing here allocates. */
+#ifndef FS_CARRIAGE_H
+#define FS_CARRIAGE_H
+
+#include "footsim/sim/fs_sim.h"
+
+typedef struct fs_carriage {
+    fs_sim *sim;
+    dBodyID body;
+    dJointID slider;
+    dJointFeedback slider_feedback; /* the slider's force and torque on the robot over the last step */
+    fs_spring suspension;
+    double start[3];                /* where the carriage started, m */
+    double before[3];               /* the robot body's position before the step, m */
+    double suspension_force_N[3];   /* the suspension's force on the robot over the step, N */
+} fs_carriage;
+
+/* Attaches c above sim's robot body (the sim must have one). */
+void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N_per_m, double c_Ns_per_m);
+
+/* Before a step: the carriage is to move from where it is to start + (dx_m, 0, dz_m) over it. */
+void fs_carriage_drive(fs_carriage *c, double dx_m, double dz_m);
+
+#endif

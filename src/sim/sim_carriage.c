@@ -1,0 +1,67 @@
+/* sim_carriage.c: the kinematic carriage on a robot body, its drive and its work (fs_carriage.h). */
+#include "footsim/sim/fs_carriage.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The suspension's force on the robot (its body 2) for the state it is measured in, N. */
+static void suspension_force(const fs_spring *s, double f[3])
+{
+    double p1[3], p2[3], len = 0;
+    fs_spring_anchors(s, p1, p2);
+    for (int k = 0; k < 3; k++)
+        len += (p2[k] - p1[k]) * (p2[k] - p1[k]);
+    len = sqrt(len);
+    double t = fs_spring_measure(s).force_N;
+    for (int k = 0; k < 3; k++)
+        f[k] = len > 0 ? -t * (p2[k] - p1[k]) / len : 0;
+}
+
+static int explicit_springs(const fs_sim *sim) { return sim->sc->def.springs == FS_SPRING_EXPLICIT; }
+
+/* The carriage's work on the robot over the step just taken, J (fs_check_work_fn). */
+static double carriage_work(void *user, const fs_sim *sim)
+{
+    fs_carriage *c = user;
+    if (!explicit_springs(sim))
+        suspension_force(&c->suspension, c->suspension_force_N);
+    const dReal *p = dBodyGetPosition(sim->robot), *w = dBodyGetAngularVel(sim->robot);
+    const dReal *f = c->slider_feedback.f1, *t = c->slider_feedback.t1;
+    double h = sim->sc->def.step_s, work = 0;
+    for (int k = 0; k < 3; k++)
+        work += (f[k] + c->suspension_force_N[k]) * (p[k] - c->before[k]) + t[k] * w[k] * h;
+    return work;
+}
+
+void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N_per_m, double c_Ns_per_m)
+{
+    memset(c, 0, sizeof *c);
+    c->sim = sim;
+    const dReal *p = dBodyGetPosition(sim->robot);
+    double robot_at[3] = {p[0], p[1], p[2]};
+    c->start[0] = p[0];
+    c->start[1] = p[1];
+    c->start[2] = p[2] + height_m;
+    c->body = dBodyCreate(sim->world);
+    dBodySetKinematic(c->body);
+    dBodySetPosition(c->body, c->start[0], c->start[1], c->start[2]);
+    c->slider = dJointCreateSlider(sim->world, 0);
+    dJointAttach(c->slider, sim->robot, c->body);
+    dJointSetSliderAxis(c->slider, 0, 0, 1);
+    dJointSetFeedback(c->slider, &c->slider_feedback);
+    fs_spring_init(&c->suspension, sim->world, (fs_spring_impl)sim->sc->def.springs, c->body, sim->robot, c->start,
+                   robot_at, k_N_per_m, c_Ns_per_m, height_m);
+    fs_check_set_work(sim, carriage_work, c);
+}
+
+void fs_carriage_drive(fs_carriage *c, double dx_m, double dz_m)
+{
+    fs_sim *sim = c->sim;
+    double h = sim->sc->def.step_s;
+    const dReal *at = dBodyGetPosition(c->body);
+    dBodySetLinearVel(c->body, (c->start[0] + dx_m - at[0]) / h, 0, (c->start[2] + dz_m - at[2]) / h);
+    fs_spring_prepare(&c->suspension, h);
+    memcpy(c->before, dBodyGetPosition(sim->robot), sizeof c->before);
+    if (explicit_springs(sim))
+        suspension_force(&c->suspension, c->suspension_force_N);
+}

@@ -1,0 +1,79 @@
+#!/bin/sh
+# footsim campaign --shard I/N and footsim merge (issue 13 §4): 3 shards (one of them killed and
+# resumed) merged give the files of the campaign run on one machine, byte for byte, as do 2
+# shards; a merge is refused (exit 2, saying which) for a shard missing, a shard given twice, a
+# shard of other overrides, a campaign changed since the shards ran, a folder that is no shard;
+# --shard takes only I/N with 1 <= I <= N. Usage: cli_campaign_shards.sh path/to/footsim (run from
+# the source folder).
+fs=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+
+check() { # check DESCRIPTION COMMAND...: the command must succeed
+    what=$1
+    shift
+    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $what" >&2; fi
+}
+
+. tests/small_campaign.sh
+
+camp -j 2 --out "$tmp/ref" >/dev/null 2>&1
+check "the whole campaign exits 0" [ $? -eq 0 ]
+
+# 3 shards, the second killed after its first trial and run again
+camp -j 1 --shard 1/3 --out "$tmp/s1" >"$tmp/s1.out" 2>/dev/null
+check "shard 1/3 exits 0" [ $? -eq 0 ]
+check "shard 1/3 ran its 2 of 6 trials" grep -q '^campaign small, shard 1/3: 2 of 6 trials' "$tmp/s1.out"
+check "a shard folder holds its trials (and the marker) only" [ "$(ls -A "$tmp/s1" | tr '\n' ' ')" = ".footsim-results trials.journal " ]
+check "shard 1/3 holds trials 0 and 3" [ "$(grep -o '^[0-9]* [0-9]* ' "$tmp/s1/trials.journal" | cut -d' ' -f1 | tr '\n' ' ')" = "0 3 " ]
+FOOTSIM_TEST_SIGNAL_AFTER="1 9" camp -j 1 --shard 2/3 --out "$tmp/s2" >/dev/null 2>&1
+check "shard 2/3 killed: no folder yet" [ ! -e "$tmp/s2" ]
+camp -j 1 --shard 2/3 --out "$tmp/s2" >/dev/null 2>"$tmp/s2.err"
+check "shard 2/3 resumed" grep -q 'resuming from .*s2.journal/journal: 1 of 2 trials done, 1 to run' "$tmp/s2.err"
+camp -j 1 --shard 3/3 --out "$tmp/s3" >/dev/null 2>&1
+"$fs" merge "$tmp/s3" "$tmp/s1" "$tmp/s2" --out "$tmp/m3" >"$tmp/m3.out" 2>"$tmp/m3.err"
+check "merge of 3 shards exits 0" [ $? -eq 0 ]
+for f in $files; do
+    check "3 shards merged: $f byte for byte the single run's" cmp -s "$tmp/ref/$f" "$tmp/m3/$f"
+done
+camp -j 1 --shard 2/3 --out "$tmp/s2" >"$tmp/again.out" 2>&1
+check "a finished shard again: nothing to do" grep -q 'already holds this campaign.s finished results' "$tmp/again.out"
+
+# any N: 2 shards
+camp -j 2 --shard 1/2 --out "$tmp/h1" >/dev/null 2>&1
+camp -j 2 --shard 2/2 --out "$tmp/h2" >/dev/null 2>&1
+"$fs" merge "$tmp/h1" "$tmp/h2" --out "$tmp/m2" >/dev/null 2>&1
+check "merge of 2 shards exits 0" [ $? -eq 0 ]
+check "2 shards merged: summary.json the single run's" cmp -s "$tmp/ref/summary.json" "$tmp/m2/summary.json"
+check "2 shards merged: trials.csv the single run's" cmp -s "$tmp/ref/trials.csv" "$tmp/m2/trials.csv"
+
+# refusals, each exit 2 and saying which
+"$fs" merge "$tmp/s1" "$tmp/s2" --out "$tmp/bad" >/dev/null 2>"$tmp/miss.err"
+check "a shard missing: exit 2" [ $? -eq 2 ]
+check "a shard missing: names it and the command" grep -q '2 of 6 trials missing (the first: trial 2, of shard 3/3).*--shard 3/3 .*--set run.duration_s=0.15' "$tmp/miss.err"
+"$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" "$tmp/s2" --out "$tmp/bad" >/dev/null 2>"$tmp/twice.err"
+check "a shard twice: exit 2" [ $? -eq 2 ]
+check "a shard twice: names the trial and both folders" grep -q "trial 1 (foot bio on terrain bumpy under robot drop_weight, seed 2) is in both $tmp/s2 and $tmp/s2" "$tmp/twice.err"
+"$fs" merge "$tmp/s1" "$tmp/h2" --out "$tmp/bad" >/dev/null 2>"$tmp/mixed.err"
+check "overlapping shards of two splits: exit 2" [ $? -eq 2 ]
+camp -j 1 --shard 3/3 --set run.step_s=2e-4 --out "$tmp/s3other" >/dev/null 2>&1
+"$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3other" --out "$tmp/bad" >/dev/null 2>"$tmp/other.err"
+check "a shard of other overrides: exit 2" [ $? -eq 2 ]
+check "a shard of other overrides: says what differs" grep -q "s3other and .*s1 are shards of different campaigns or inputs (settings: 'step_s 0.0002,' in" "$tmp/other.err"
+"$fs" merge "$tmp/s1" "$tmp/ref" --out "$tmp/bad" >/dev/null 2>"$tmp/noshard.err"
+check "a folder that is no shard: exit 2" [ $? -eq 2 ]
+check "a folder that is no shard: said so" grep -q "ref: holds no trials.journal" "$tmp/noshard.err"
+sed -i "s/^landed_tilt_deg = 15/landed_tilt_deg = 14/" "$tmp/trial.ini"
+"$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$tmp/bad" >/dev/null 2>"$tmp/changed.err"
+check "the campaign changed since: exit 2" [ $? -eq 2 ]
+check "the campaign changed since: says which input" grep -q "has changed since its shards ran (inputs: 'trial.ini=" "$tmp/changed.err"
+check "no refused merge wrote anything" [ ! -e "$tmp/bad" ]
+for bad in 0/3 4/3 1/0 x 1/2/3 2; do
+    camp --shard $bad --out "$tmp/badshard" >/dev/null 2>"$tmp/shard.err"
+    check "--shard $bad: exit 2" [ $? -eq 2 ]
+    check "--shard $bad: says what it takes" grep -q 'give I/N' "$tmp/shard.err"
+done
+
+echo "cli_campaign_shards: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

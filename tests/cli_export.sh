@@ -1,0 +1,30 @@
+#!/bin/sh
+# footsim export --mjcf from the command line: bad input refused with exit 2 and nothing written,
+# the XML and its heightfield file written where asked (or under results/export/), an existing
+# export replaced whole, --data honoured, the XML well-formed. What the XML holds is
+# test_export_mjcf's and test_export_mujoco's. Usage: cli_export.sh path/to/footsim.
+. "$(dirname "$0")/cli_check.sh"
+src=$(pwd)
+expect 2 "give the format, --mjcf" -- export scenarios/feet/biomimetic.ini --out "$tmp/a.xml"
+expect 2 "is a folder" -- export --mjcf scenarios/feet/biomimetic.ini --out "$tmp"
+expect 2 "give a path in an existing folder" -- export --mjcf scenarios/feet/biomimetic.ini --out "$tmp/no/a.xml"
+expect 2 "k_d1_N_per_m" -- export --mjcf scenarios/feet/biomimetic.ini --set springs.k_d1_N_per_m=-5 --out "$tmp/a.xml"
+expect 2 "nope.ini" -- export --mjcf scenarios/feet/biomimetic.ini --scenario nope.ini --out "$tmp/a.xml"
+check '[ ! -e "$tmp/a.xml" ]'
+# written, with its heightfield beside; written again over itself
+check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/walking.ini --out "$tmp/w.xml" >"$tmp/out"'
+check '[ -s "$tmp/w.xml" ] && [ -s "$tmp/w.hfield.bin" ] && grep -q "w.hfield.bin" "$tmp/out"'
+echo stale >"$tmp/w.xml"
+check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/walking.ini --out "$tmp/w.xml" >"$tmp/out"'
+check 'grep -q "file=\"w.hfield.bin\"" "$tmp/w.xml" && [ -z "$(ls "$tmp" | grep "\.tmp\.")" ]'
+# by data name from another folder: the default path under the current folder
+mkdir "$tmp/work"
+(cd "$tmp/work" && "$fs" export --mjcf biomimetic.ini --data "$src" >/dev/null)
+check '[ -s "$tmp/work/results/export/biomimetic.xml" ]'
+if command -v xmllint >/dev/null; then
+    check 'xmllint --noout "$tmp/w.xml" "$tmp/work/results/export/biomimetic.xml"'
+else
+    echo "cli_export: no xmllint (Debian libxml2-utils); well-formedness is test_export_mjcf's" >&2
+fi
+check '"$fs" export --help | grep -q -- "--mjcf \[--scenario SCENARIO\] \[--out FILE\]"'
+finish

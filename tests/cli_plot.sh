@@ -1,0 +1,158 @@
+#!/bin/sh
+# footsim plot and terrain --png (issue 14 §2). Always: plot refuses (exit 2, nothing written) what
+# is not a run's or a campaign's folder, a damaged trajectory or summary, and an --out it may not
+# write; a run's trajectory.csv carries every spring-damper's force. With gnuplot: a short run and a
+# small campaign folder (a summary.json: bars with a zero rate, a one-key sweep, a two-key heat map)
+# give whole PNGs of the stated size; terrain --png is the bare map grown by the figure's margins,
+# its colour bar's pixels brightening from the lowest height to the highest. Without gnuplot those
+# checks are skipped, said. Usage: cli_plot.sh path/to/footsim (run from the source folder).
+fs=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+
+check() { # check DESCRIPTION COMMAND...: the command must succeed
+    what=$1
+    shift
+    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $what" >&2; fi
+}
+
+# png_ok FILE: a PNG signature first, an IHDR chunk, the IEND chunk last
+png_ok() {
+    [ "$(od -An -tu1 -N8 "$1" | tr -s ' ')" = " 137 80 78 71 13 10 26 10" ] &&
+        [ "$(od -An -c -j12 -N4 "$1" | tr -d ' ')" = "IHDR" ] &&
+        [ "$(tail -c 8 "$1" | od -An -c -N4 | tr -d ' ')" = "IEND" ]
+}
+# png_size FILE: WxH from the IHDR chunk
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 "x" $5 * 16777216 + $6 * 65536 + $7 * 256 + $8 }'; }
+# bytes FILE
+bytes() { wc -c <"$1" | tr -d ' '; }
+
+# ---- a short run: its trajectory has the spring-damper forces ---------------------------------------
+"$fs" run scenarios/static_load.ini --set run.duration_s=0.03 --out "$tmp/run" >/dev/null
+check "the short run exits 0" [ $? -eq 0 ]
+header=$(head -1 "$tmp/run/trajectory.csv")
+check "trajectory.csv: t_s first, then the ankle, contacts, 11 hinges and 15 springs (31 columns)" \
+    [ "$(echo "$header" | tr ',' '\n' | wc -l)" -eq 31 ] && [ "${header%%,*}" = t_s ]
+for c in d1_chain1_N d2_chain3_N d3_chain5_N mtp5_rad; do
+    check "trajectory.csv has $c" sh -c "echo '$header' | tr ',' '\n' | grep -qx $c"
+done
+
+# ---- refusals: exit 2, the fix named, nothing written -----------------------------------------------
+mkdir -p "$tmp/empty" "$tmp/trial" "$tmp/badrun" "$tmp/badsum" "$tmp/other"
+echo '{"seed": 1}' >"$tmp/trial/trial.json"
+printf 'time,z\n1,2\n' >"$tmp/badrun/trajectory.csv"
+echo keep >"$tmp/other/notes.txt"
+expect2() { # expect2 DESCRIPTION PATTERN ARGS...: exit 2, PATTERN on stderr
+    what=$1 pattern=$2
+    shift 2
+    "$fs" plot "$@" >"$tmp/out.txt" 2>"$tmp/err.txt"
+    s=$?
+    check "$what: exit 2 (got $s)" [ $s -eq 2 ]
+    check "$what: says '$pattern'" grep -q "$pattern" "$tmp/err.txt"
+}
+expect2 "a missing folder" "No such file or directory; give the folder a run or a campaign wrote" "$tmp/none"
+expect2 "a file" "not a folder; give the folder" "$tmp/trial/trial.json"
+expect2 "an empty folder" "not a run's or a campaign's results (no trajectory.csv, no summary.json)" "$tmp/empty"
+expect2 "a trial's folder" "trial.json holds its outcome, not a time series" "$tmp/trial"
+expect2 "another CSV" "not a trajectory written by footsim run" "$tmp/badrun"
+check "a refused folder gets nothing" [ "$(ls "$tmp/empty" "$tmp/trial" "$tmp/badrun" | grep -c 'png\|\.gp')" -eq 0 ]
+# a summary whose rows are not every foot on every terrain (a cell missing)
+cat >"$tmp/badsum/summary.json" <<EOF
+{"campaign": "broken", "seeds": 4, "first_seed": 1, "sweep": null, "sweep2": null, "rows": [
+ {"foot": "bio", "terrain": "flat", "robot": "r", "trials": 4, "landed": 4, "success_rate": 1, "ci_low": 0.5, "ci_high": 1},
+ {"foot": "bio", "terrain": "rough", "robot": "r", "trials": 4, "landed": 0, "success_rate": 0, "ci_low": 0, "ci_high": 0.5},
+ {"foot": "flat", "terrain": "flat", "robot": "r", "trials": 4, "landed": 2, "success_rate": 0.5, "ci_low": 0.15, "ci_high": 0.85}]}
+EOF
+expect2 "a summary missing a cell" "its rows are not a campaign's cells" "$tmp/badsum"
+check "a refused summary gets no chart" [ ! -e "$tmp/badsum/chart.gp" ] && [ ! -e "$tmp/badsum/success.png" ]
+expect2 "--out a folder footsim did not make" "a folder footsim did not make .*--replace" "$tmp/run" --out "$tmp/other"
+check "--out refused: its files untouched" [ "$(ls "$tmp/other")" = notes.txt ]
+
+# ---- a small campaign folder: a summary.json (two feet, two terrains, one rate of zero) -------------
+mkdir -p "$tmp/camp" "$tmp/sweep" "$tmp/heat"
+row() { # row FOOT TERRAIN LANDED [EXTRA]: a row of 4 trials with a rough interval
+    printf '{"foot": "%s", "terrain": "%s", "robot": "r", "trials": 4, "landed": %d, "success_rate": %s, "ci_low": 0, "ci_high": 1, "law_prediction": "n/a"%s}' \
+        "$1" "$2" "$3" "$(echo "$3" | awk '{ print $1 / 4 }')" "$4"
+}
+{
+    echo '{"campaign": "small", "seeds": 4, "first_seed": 1, "sweep": null, "sweep2": null, "rows": ['
+    echo "$(row bio flat 4), $(row bio complex_uneven 0), $(row flat flat 3), $(row flat complex_uneven 1)]}"
+} >"$tmp/camp/summary.json"
+{
+    echo '{"campaign": "swept", "seeds": 4, "first_seed": 1, "sweep": "rough.rms_m", "sweep2": null, "rows": ['
+    echo "$(row bio rough@0 4 ', "sweep_value": 0'), $(row bio rough@0.005 2 ', "sweep_value": 0.005'),"
+    echo "$(row bio rough@0.01 0 ', "sweep_value": 0.01')]}"
+} >"$tmp/sweep/summary.json"
+{
+    echo '{"campaign": "heat", "seeds": 4, "first_seed": 1, "sweep": "springs.scale", "sweep2": "robot.com_height_m", "rows": ['
+    sep=
+    for x in 1 10 100; do
+        for h in 0.02 0.3; do
+            printf '%s%s' "$sep" "$(row bio "flat@$x,$h" 2 ", \"sweep_value\": $x, \"sweep_value2\": $h, \"law_critical_com_height_m\": $(echo $x | awk '{ print 0.05 * $1 }')")"
+            sep=", "
+        done
+    done
+    echo ']}'
+} >"$tmp/heat/summary.json"
+
+if ! command -v gnuplot >/dev/null 2>&1; then
+    echo "gnuplot is not installed: the plotting checks are skipped (the refusals above ran)"
+    "$fs" plot "$tmp/run" 2>"$tmp/err.txt"
+    check "no gnuplot: plot says so" grep -q 'gnuplot is not installed' "$tmp/err.txt"
+    echo "$passed passed, $failed failed"
+    [ "$failed" -eq 0 ]
+    exit
+fi
+
+"$fs" plot "$tmp/run" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check "plot of a run exits 0" [ $? -eq 0 ]
+check "plot of a run: a whole PNG" png_ok "$tmp/run/plot.png"
+# five panels (drop, contacts, two of angles, springs) in three rows of 330 px under a 60 px title
+check "plot of a run: 1200x1050 (got $(png_size "$tmp/run/plot.png"))" [ "$(png_size "$tmp/run/plot.png")" = 1200x1050 ]
+check "plot of a run: more than 30 kB of curves, less than 5 MB" \
+    [ "$(bytes "$tmp/run/plot.png")" -gt 30000 ] && [ "$(bytes "$tmp/run/plot.png")" -lt 5000000 ]
+check "plot of a run: axes with units" grep -q "ylabel 'ankle drop (mm)'" "$tmp/run/plot.gp"
+check "plot of a run: a line per spring-damper (15)" [ "$(grep -c 'dt [123] lc [1-5] ' "$tmp/run/plot.gp")" -ge 15 ]
+"$fs" plot "$tmp/run" --out "$tmp/elsewhere" >/dev/null 2>&1
+check "plot --out: the chart there, whole" png_ok "$tmp/elsewhere/plot.png"
+"$fs" plot "$tmp/run" --out "$tmp/other" --replace >/dev/null 2>&1
+check "plot --out --replace: the chart beside the folder's own files" png_ok "$tmp/other/plot.png" &&
+    [ -f "$tmp/other/notes.txt" ]
+
+for d in camp sweep heat; do
+    "$fs" plot "$tmp/$d" >"$tmp/out.txt" 2>"$tmp/err.txt"
+    check "plot of campaign folder $d exits 0" [ $? -eq 0 ]
+    check "plot of campaign folder $d: a whole PNG" png_ok "$tmp/$d/success.png"
+    check "plot of campaign folder $d: more than 10 kB" [ "$(bytes "$tmp/$d/success.png")" -gt 10000 ]
+done
+check "bars: 960x540 (got $(png_size "$tmp/camp/success.png"))" [ "$(png_size "$tmp/camp/success.png")" = 960x540 ]
+check "bars: a rate of zero drawn under the zero line" grep -q '== 0 ? -0.025' "$tmp/camp/chart.gp"
+check "bars: every cell's rate in the data" [ "$(grep -c '^"' "$tmp/camp/chart.dat")" -eq 2 ]
+check "heat map: one panel, 560x440" [ "$(png_size "$tmp/heat/success.png")" = 560x440 ]
+
+# ---- terrain --png: the bare map without gnuplot, the figure with it ----------------------------------
+mkdir -p "$tmp/nognuplot"
+PATH="$tmp/nognuplot" "$fs" terrain terrains/complex_uneven.ini --png "$tmp/bare.png" >/dev/null 2>"$tmp/err.txt"
+check "terrain --png without gnuplot: exit 0, the bare map, said" png_ok "$tmp/bare.png" &&
+    grep -q 'the bare map, without axes or colour bar' "$tmp/err.txt"
+"$fs" terrain terrains/flat.ini --png "$tmp/flat.png" >"$tmp/out.txt" 2>&1
+check "terrain --png of level ground: a figure too (a bar 1 mm up from its height)" grep -q 'axes and colour bar in mm' "$tmp/out.txt"
+"$fs" terrain terrains/complex_uneven.ini --png "$tmp/fig.png" >"$tmp/out.txt"
+check "terrain --png exits 0 and says axes in mm" grep -q 'axes and colour bar in mm' "$tmp/out.txt"
+check "terrain --png: a whole PNG" png_ok "$tmp/fig.png"
+bw=$(png_size "$tmp/bare.png" | cut -dx -f1) bh=$(png_size "$tmp/bare.png" | cut -dx -f2)
+fw=$(png_size "$tmp/fig.png" | cut -dx -f1) fh=$(png_size "$tmp/fig.png" | cut -dx -f2)
+# margins: 80 px left (y axis), 130 px right (colour bar), 60 px under (x axis), 50 px over (title)
+check "terrain --png: the map grown by the margins (${bw}x$bh -> ${fw}x$fh)" [ $((fw - bw)) -eq 210 ] && [ $((fh - bh)) -eq 110 ]
+# the colour bar: 20 px right of the map, 22 px wide, as tall as the map; its middle column from the
+# bottom up, a pixel in from each end, gets brighter (the ramp's R+G+B rises 210 -> 710)
+x=$((80 + bw + 20 + 11))
+gnuplot -e "set table '$tmp/bar.txt'; plot '$tmp/fig.png' binary filetype=png every 1:1:$x:0:$x:$((fh - 1)) using 1:2:3 with table" 2>/dev/null
+awk -v lo=$((60 + 2)) -v hi=$((60 + bh - 3)) '$2 >= lo && $2 <= hi { print $2, $3 + $4 + $5 }' "$tmp/bar.txt" | sort -n >"$tmp/bar.sum"
+check "colour bar: $(wc -l <"$tmp/bar.sum") pixels read" [ "$(wc -l <"$tmp/bar.sum")" -gt $((bh - 10)) ]
+check "colour bar: brighter from bottom to top, by more than 300 (R+G+B)" \
+    awk 'NR == 1 { first = $2 } NR > 1 && $2 < prev - 3 { bad = 1 } { prev = $2 } END { exit bad || prev - first <= 300 }' "$tmp/bar.sum"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

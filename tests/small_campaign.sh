@@ -1,0 +1,23 @@
+# Sourced by the campaign resume and shard tests (run from the source folder, $tmp set): writes
+# $tmp/trial.ini (campaign_test_trial.ini with absolute paths, so that the test may edit it) and
+# $tmp/small.ini, 2 feet x 1 terrain x 3 seeds = 6 trials; camp runs it with a short window (the
+# numbers do not matter to these tests) through "$fs"; $files are the files a campaign writes.
+cp scenarios/campaign_test_trial.ini "$tmp/trial.ini"
+sed -i "s#^design = feet/#design = $PWD/scenarios/feet/#; s#^terrain = ../terrains/#terrain = $PWD/terrains/#; s#^design = robots/#design = $PWD/scenarios/robots/#" "$tmp/trial.ini"
+cat >"$tmp/small.ini" <<END
+[campaign]
+trial = trial.ini
+seeds = 3
+
+[foot.bio]
+file = $PWD/scenarios/feet/biomimetic.ini
+
+[foot.flat]
+file = $PWD/scenarios/feet/flat.ini
+
+[terrain.bumpy]
+file = $PWD/terrains/simply_uneven.ini
+END
+files="summary.json summary.csv summary.md trials.csv chart.dat chart.gp"
+command -v gnuplot >/dev/null 2>&1 && files="$files success.png"
+camp() { nice "$fs" campaign "$tmp/small.ini" --set run.duration_s=0.15 "$@"; }
