@@ -88,7 +88,8 @@ int cli_walk(const cli_args *a);
 int cli_campaign(const cli_args *a);  /* app/cli_campaign.c */
 int cli_optimize(const cli_args *a);  /* app/cli_optimize.c */
 /* Runs every trial of c in `jobs` worker processes into results (by trial index), with progress on
- * stderr under the name who; a dead worker's trial is failed_numerics (app/cli_campaign.c). Returns
+ * stderr under the name who; a dead worker's trial is failed_numerics, a worker the watchdog killed
+ * makes its trial hung (app/cli_campaign.c). Returns
  * an fs_status. */
 struct fs_campaign;
 struct fs_trial_result;
@@ -182,5 +183,11 @@ const char *cli_data_installed(void);
 
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);
+
+/* A zeroed block for a command's large working state (a scenario, a campaign, a results folder's
+ * paths): on the heap, owned and freed by the command, never a function-static, so that nothing
+ * lives from one call to the next. NULL after "footsim: out of memory" on stderr (the caller
+ * returns FS_NO_MEMORY). */
+void *cli_zalloc(size_t size);
 
 #endif

@@ -2,10 +2,11 @@
  * the expectations) and `footsim compare` (a summary against its baseline).
  *
  * The trials run in footsim's pool of worker processes (fs_pool.h). A worker that dies (an ODE
- * error exits with status 3) or that the watchdog kills (no answer for FS_POOL_WATCHDOG_S) marks
- * its trial failed_numerics, saying which trial, which seed and how it ended; a fresh worker takes
- * its place and the campaign goes on. Tests: FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with
- * status 3 on seed N, FOOTSIM_TEST_STOP_SEED=N stops it (SIGSTOP) on seed N;
+ * error exits with status 3) marks its trial failed_numerics, one that the watchdog kills (no
+ * answer for FS_POOL_WATCHDOG_S) marks it hung, never a numerical failure; each is said with its
+ * trial, seed and how it ended; a fresh worker takes its place and the campaign goes on. Tests:
+ * FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with status 3 on seed N, FOOTSIM_TEST_STOP_SEED=N
+ * stops it (SIGSTOP) on seed N;
  * FOOTSIM_TEST_KILL_IN_WRITE kills the campaign with SIGKILL half way through writing its files;
  * FOOTSIM_TEST_SIGNAL_AFTER="N SIG" makes the campaign raise signal SIG on itself once N trials
  * are in its journal (a kill at a chosen point, for the resume tests).
@@ -128,17 +129,17 @@ static void record_death(int task, const fs_pool_death *d, void *user)
     r->end_time_s = r->touchdown_s = r->peak_tilt_deg = r->final_tilt_deg = r->peak_force_N = nan;
     r->impact_impulse_Ns = r->settle_time_s = r->mean_contacts = r->final_contacts = nan;
     r->ankle_drop_m = r->slip_m = nan;
-    r->outcome = FS_FAILED_NUMERICS;
+    r->outcome = d->timed_out ? FS_HUNG : FS_FAILED_NUMERICS; /* a hang says nothing of the physics */
     fs_trial_draw_pose(fs_campaign_pair(c, cell), seed, &r->draw);
     int foot, terrain, robot;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
-    r->rule = FS_RULE_NUMERICS;
+    r->rule = d->timed_out ? FS_RULE_WATCHDOG : FS_RULE_NUMERICS;
     snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s under robot %s, seed %d, %s",
              c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed, d->how);
     p->failed++;
     if (p->progress.tty)
         fputc('\n', stderr);
-    fprintf(stderr, "footsim campaign: %s; counted as failed_numerics\n", r->failure);
+    fprintf(stderr, "footsim campaign: %s; counted as %s\n", r->failure, fs_outcome_name(r->outcome));
     if (p->journal_status == FS_OK)
         p->journal_status = journal_trial(p, index, &p->journal_err);
 }
@@ -179,8 +180,8 @@ static fs_status run_trials(const fs_campaign *c, fs_trial_result *results, cons
     }
     if (s == FS_OK && stats.timed_out)
         fprintf(stderr, "%s: %d worker%s made no progress for the watchdog's time and %s killed; their trials are "
-                        "counted as failed_numerics\n", who, stats.timed_out, stats.timed_out > 1 ? "s" : "",
-                stats.timed_out > 1 ? "were" : "was");
+                        "counted as hung, not as numerical failures\n",
+                who, stats.timed_out, stats.timed_out > 1 ? "s" : "", stats.timed_out > 1 ? "were" : "was");
     return s;
 }
 
@@ -213,7 +214,11 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
         printf("  %-12s on %-18s under %-14s landed %3d of %3d (%.2f, 95 %% CI [%.2f, %.2f])", c->foot[r->foot].name,
                c->terrain[r->terrain].name, c->robot[r->robot].name, r->landed, r->trials, r->success_rate, r->ci_low, r->ci_high);
         printf(", fell %3d, undecided %d; law: %s", r->fell, r->undecided, fs_law_name(r->law));
-        printf(r->failed_numerics ? ", failed_numerics %d\n" : "\n", r->failed_numerics);
+        if (r->failed_numerics)
+            printf(", failed_numerics %d", r->failed_numerics);
+        if (r->hung)
+            printf(", hung %d", r->hung);
+        putchar('\n');
     }
 }
 
@@ -460,7 +465,8 @@ static int resume(const fs_campaign *c, const fs_journal_head *h, const char *pa
 /* Runs the trials of c's share that the journal lacks, then draws the --frames-of trials (handing
  * *frames_of on, NULL after) and writes the results. */
 static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs_journal_head *h,
-                               const char *given_dir, fs_outdir *out, int jobs, cli_frames_of **frames_of)
+                               const char *given_dir, fs_outdir *out, fs_journal *journal, int jobs,
+                               cli_frames_of **frames_of)
 {
     char jdir[FS_OUT_PATH + 16], jpath[FS_OUT_PATH + 32], again[4 * FS_OUT_PATH];
     snprintf(jdir, sizeof jdir, "%s.journal", out->path);
@@ -495,8 +501,7 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
     fs_error err;
     if (!s && kind == 0 && mkdir(jdir, 0777) != 0)
         s = cli_report(FS_IO, "cannot make the journal folder");
-    static fs_journal journal;
-    if (!s && fs_journal_open(&journal, jpath, h, &err) != FS_OK)
+    if (!s && fs_journal_open(journal, jpath, h, &err) != FS_OK)
         s = fail(&err);
     for (int i = 0; !s && i < ntrials; i++)
         if (fs_campaign_in_shard(i, h->shard, h->nshards)) {
@@ -509,9 +514,9 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
                 npending);
     if (!s) {
         int finished = 0;
-        fs_status r = run_trials(c, results, pending, npending, ndone, total, &journal, &finished, jobs,
+        fs_status r = run_trials(c, results, pending, npending, ndone, total, journal, &finished, jobs,
                                  "footsim campaign", &err);
-        fs_journal_close(&journal);
+        fs_journal_close(journal);
         int kept = ndone + finished;
         if (kept == 0 && (interrupted || r != FS_OK)) { /* nothing to keep */
             fs_remove_tree(jdir);
@@ -543,11 +548,56 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
     return s;
 }
 
-static int run_campaign(const cli_args *a, const fs_campaign *c, const fs_journal_head *h, const char *given_dir,
-                        fs_outdir *out, int jobs, cli_frames_of *frames_of)
+/* What a campaign works on, too large for the stack (the campaign, its journal's head and file, the
+ * results folder's paths): on the heap, one per command, freed on every path. */
+typedef struct campaign_work {
+    fs_campaign c;
+    fs_journal_head head;
+    fs_journal journal;
+    fs_outdir out;
+} campaign_work;
+
+static int run_campaign(const cli_args *a, campaign_work *w, const char *given_dir, int jobs,
+                        cli_frames_of *frames_of)
 {
-    int s = run_campaign_trials(a, c, h, given_dir, out, jobs, &frames_of);
+    int s = run_campaign_trials(a, &w->c, &w->head, given_dir, &w->out, &w->journal, jobs, &frames_of);
     cli_frames_of_free(frames_of); /* still here when the trials did not all run */
+    return s;
+}
+
+/* The campaign a->input with its journal's head, loaded into w, then run (w's parts freed here). */
+static int campaign_work_run(const cli_args *a, int jobs, int shard, int nshards, campaign_work *w)
+{
+    fs_error err;
+    if (fs_campaign_load(a->input, a->set, a->nset, &w->c, &err) != FS_OK)
+        return fail(&err);
+    int s = 0;
+    if (fs_journal_head_of(&w->c, a->input, a->set, a->nset, shard, nshards, &w->head, &err) != FS_OK) {
+        fs_campaign_free(&w->c);
+        return fail(&err);
+    }
+    cli_frames_of *frames_of = NULL; /* --frames-of (app/cli_frames_of.c): checked before any trial */
+    if (a->frames_of && nshards > 1)
+        s = cli_report(FS_BAD_INPUT, "--frames-of with --shard: a shard holds only some trials; draw them from "
+                                     "the merged campaign, or run without --shard");
+    if (!s)
+        s = cli_frames_of_open(a, &w->c, &frames_of);
+    if (!s) {
+        char dir[FS_PATH_MAX + 64];
+        snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : w->c.name);
+        /* SIGINT and SIGTERM stop the trials and keep the journal (a signal ignored stays ignored) */
+        fs_catch_signal(SIGINT, on_signal);
+        fs_catch_signal(SIGTERM, on_signal);
+        if (fs_outdir_open(&w->out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK) {
+            cli_frames_of_free(frames_of);
+            s = fail(&err);
+        } else {
+            s = run_campaign(a, w, dir, jobs, frames_of);
+        }
+        fs_outdir_abort(&w->out); /* when it was not committed */
+    }
+    fs_journal_head_free(&w->head);
+    fs_campaign_free(&w->c);
     return s;
 }
 
@@ -557,40 +607,11 @@ int cli_campaign(const cli_args *a)
     int s = cli_parse_jobs(a, &jobs);
     if (s || (s = parse_shard(a, &shard, &nshards)))
         return s;
-    static fs_campaign c;
-    fs_error err;
-    if (fs_campaign_load(a->input, a->set, a->nset, &c, &err) != FS_OK)
-        return fail(&err);
-    static fs_journal_head head;
-    if (fs_journal_head_of(&c, a->input, a->set, a->nset, shard, nshards, &head, &err) != FS_OK) {
-        fs_campaign_free(&c);
-        return fail(&err);
-    }
-    cli_frames_of *frames_of = NULL; /* --frames-of (app/cli_frames_of.c): checked before any trial */
-    if (a->frames_of && nshards > 1) {
-        fs_journal_head_free(&head);
-        fs_campaign_free(&c);
-        return cli_report(FS_BAD_INPUT, "--frames-of with --shard: a shard holds only some trials; draw them from "
-                                        "the merged campaign, or run without --shard");
-    }
-    if ((s = cli_frames_of_open(a, &c, &frames_of))) {
-        fs_journal_head_free(&head);
-        fs_campaign_free(&c);
-        return s;
-    }
-    char dir[FS_PATH_MAX + 64];
-    snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c.name);
-    /* SIGINT and SIGTERM stop the trials and keep the journal (a signal ignored stays ignored) */
-    fs_catch_signal(SIGINT, on_signal);
-    fs_catch_signal(SIGTERM, on_signal);
-    static fs_outdir out;
-    if (fs_outdir_open(&out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK)
-        s = fail(&err);
-    else
-        s = run_campaign(a, &c, &head, dir, &out, jobs, frames_of);
-    fs_outdir_abort(&out); /* when it was not committed */
-    fs_journal_head_free(&head);
-    fs_campaign_free(&c);
+    campaign_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    s = campaign_work_run(a, jobs, shard, nshards, w);
+    free(w);
     return s;
 }
 
@@ -610,22 +631,29 @@ static int journal_in(const char *dir, char *path, size_t size)
     return 0;
 }
 
+/* What merge works on, too large for the stack: on the heap, one per command. */
+typedef struct merge_work {
+    fs_campaign c;
+    fs_outdir out;
+} merge_work;
+
 int cli_merge(const cli_args *a)
 {
     int n = 1 + a->nmore, s = 0;
     const char **dirs = malloc((size_t)n * sizeof *dirs);
     fs_journal_head *heads = calloc((size_t)n, sizeof *heads);
-    if (!dirs || !heads) {
-        free(dirs), free(heads);
+    merge_work *w = calloc(1, sizeof *w);
+    if (!dirs || !heads || !w) {
+        free(dirs), free(heads), free(w);
         return cli_report(FS_NO_MEMORY, "out of memory");
     }
+    fs_campaign *const c = &w->c;
     dirs[0] = a->input;
     for (int i = 1; i < n; i++)
         dirs[i] = a->more[i - 1];
     fs_trial_result *results = NULL;
     int *from = NULL; /* the shard each trial came from, -1 for none */
     fs_error err;
-    static fs_campaign c;
     int loaded = 0;
     for (int k = 0; k < n && !s; k++) {
         char path[FS_OUT_PATH + 32];
@@ -644,9 +672,9 @@ int cli_merge(const cli_args *a)
         if (k == 0) {
             /* the campaign the shards ran, loaded as they loaded it: its files must not have changed */
             fs_journal_head now;
-            if (fs_campaign_load(heads[0].campaign, (const char *const *)heads[0].set, heads[0].nset, &c, &err) != FS_OK)
+            if (fs_campaign_load(heads[0].campaign, (const char *const *)heads[0].set, heads[0].nset, c, &err) != FS_OK)
                 s = fail(&err);
-            else if ((loaded = 1, fs_journal_head_of(&c, heads[0].campaign, (const char *const *)heads[0].set,
+            else if ((loaded = 1, fs_journal_head_of(c, heads[0].campaign, (const char *const *)heads[0].set,
                                                      heads[0].nset, 1, 1, &now, &err)) != FS_OK)
                 s = fail(&err);
             else {
@@ -670,17 +698,17 @@ int cli_merge(const cli_args *a)
             s = FS_BAD_INPUT;
         }
         if (!s)
-            s = check_records(&c, &heads[k], r, d, path);
+            s = check_records(c, &heads[k], r, d, path);
         for (int i = 0; !s && i < heads[0].ntrials; i++) {
             if (!d[i])
                 continue;
             if (from[i] >= 0) {
                 int cell, seed, foot, terrain, robot;
-                fs_campaign_trial_of(&c, i, &cell, &seed);
-                fs_campaign_cell_of(&c, cell, &foot, &terrain, &robot);
+                fs_campaign_trial_of(c, i, &cell, &seed);
+                fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
                 fprintf(stderr, "footsim merge: trial %d (foot %s on terrain %s under robot %s, seed %d) is in both "
-                        "%s and %s; give each shard once, all of one --shard I/N split\n", i, c.foot[foot].name,
-                        c.terrain[terrain].name, c.robot[robot].name, seed, dirs[from[i]], dirs[k]);
+                        "%s and %s; give each shard once, all of one --shard I/N split\n", i, c->foot[foot].name,
+                        c->terrain[terrain].name, c->robot[robot].name, seed, dirs[from[i]], dirs[k]);
                 s = FS_BAD_INPUT;
             } else {
                 results[i] = r[i];
@@ -709,19 +737,18 @@ int cli_merge(const cli_args *a)
     }
     if (!s) {
         char dir[FS_PATH_MAX + 64];
-        snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c.name);
-        static fs_outdir out;
-        if (fs_outdir_open(&out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK)
+        snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c->name);
+        if (fs_outdir_open(&w->out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK)
             s = fail(&err);
         else
-            s = finish(&c, results, &out);
-        fs_outdir_abort(&out);
+            s = finish(c, results, &w->out);
+        fs_outdir_abort(&w->out);
     }
     for (int k = 0; k < n; k++)
         fs_journal_head_free(&heads[k]);
     if (loaded)
-        fs_campaign_free(&c);
-    free(dirs), free(heads), free(results), free(from);
+        fs_campaign_free(c);
+    free(dirs), free(heads), free(results), free(from), free(w);
     return s;
 }
 

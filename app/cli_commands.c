@@ -26,8 +26,17 @@ static int fail(const fs_error *err) { return cli_report(err->status, err->messa
 
 /* ---- run -------------------------------------------------------------------------------------- */
 
-static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
+/* What a run works on, too large for the stack (a scenario, a results folder's paths): on the heap,
+ * one per command (no state outlives it), freed on every path by its owner. */
+typedef struct run_work {
+    fs_scenario sc;
+    fs_outdir out;
+} run_work;
+
+static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
 {
+    fs_scenario *sc = &w->sc;
+    fs_outdir *out = &w->out;
     fs_error err;
     if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "run", &err) != FS_OK)
         return fail(&err);
@@ -43,15 +52,14 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
         snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
     /* the folder must be one footsim may replace, and the frame options right, before anything is
      * simulated; everything goes to a partial folder beside it, swapped in whole at the end */
-    static fs_outdir out;
-    if (fs_outdir_open(&out, dir, cli_run_files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_open(out, dir, cli_run_files, a->replace, "--out", &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     if (a->frames) {
-        int fs = cli_frames_open(a, sc, out.partial, &frames, &observer);
+        int fs = cli_frames_open(a, sc, out->partial, &frames, &observer);
         if (fs) {
-            fs_outdir_abort(&out);
+            fs_outdir_abort(out);
             return fs;
         }
         obs = &observer;
@@ -62,12 +70,12 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     fs_status rs = fs_scenario_provenance(sc, a->set, a->nset, &prov, &err);
     if (rs == FS_OK)
         rs = fs_run(sc, obs, res, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
-    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, &prov, out.partial, &err)) == FS_OK)
-        rs = fs_outdir_commit(&out, &err);
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
+    if (rs == FS_OK && !fstatus && (rs = fs_run_write(sc, res, &prov, out->partial, &err)) == FS_OK)
+        rs = fs_outdir_commit(out, &err);
     fs_provenance_free(&prov);
     if (rs != FS_OK || fstatus) {
-        fs_outdir_abort(&out);
+        fs_outdir_abort(out);
         fs_run_free(res);
         return fstatus ? fstatus : fail(&err);
     }
@@ -85,21 +93,28 @@ static int run_scenario(const cli_args *a, fs_run_result *res, fs_scenario *sc)
     else
         snprintf(load, sizeof load, "%.1f kg at %.0f deg", sc->def.load_kg, sc->def.tilt_deg);
     printf("%s: %s foot, %s: ankle drop %.3f mm, %s\n  results: %s/metrics.json, %s/trajectory.csv\n", sc->name,
-           sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", load, res->ankle_drop_m * 1e3, settled, out.path,
-           out.path);
+           sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic", load, res->ankle_drop_m * 1e3, settled, out->path,
+           out->path);
     return 0;
 }
 
-int cli_run(const cli_args *a)
+/* One run of a (a scenario file, or footsim's own for demo), its work on the heap. */
+static int run_once(const cli_args *a)
 {
-    static fs_scenario sc;
+    run_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
     fs_run_result res;
-    int s = run_scenario(a, &res, &sc);
+    int s = run_scenario(a, &res, w);
     if (s == 0)
         fs_run_free(&res);
-    fs_scenario_free(&sc);
+    fs_outdir_abort(&w->out); /* a no-op where run_scenario committed or gave it up */
+    fs_scenario_free(&w->sc);
+    free(w);
     return s;
 }
+
+int cli_run(const cli_args *a) { return run_once(a); }
 
 /* ---- model ------------------------------------------------------------------------------------ */
 
@@ -113,20 +128,31 @@ static int print_json(cJSON *root)
     return 0;
 }
 
-int cli_model(const cli_args *a)
+/* Runs a command that reads a design (model, stiffness) on its scenario (fs_scenario_for_design),
+ * which lives on the heap for the command and is freed on every path. */
+static int with_design(const cli_args *a, int (*command)(const cli_args *a, const fs_scenario *sc))
 {
-    static fs_scenario sc;
+    fs_scenario *sc = cli_zalloc(sizeof *sc);
+    if (!sc)
+        return FS_NO_MEMORY;
     fs_error err;
-    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
-        return fail(&err);
-    cJSON *root = fs_model_json(&sc, &err);
+    int s = fs_scenario_for_design(a->input, a->set, a->nset, sc, &err) != FS_OK ? fail(&err) : command(a, sc);
+    fs_scenario_free(sc);
+    free(sc);
+    return s;
+}
+
+static int model_of(const cli_args *a, const fs_scenario *sc)
+{
+    fs_error err;
+    cJSON *root = fs_model_json(sc, &err);
     if (!root)
         return fail(&err);
     int s = 0;
     if (a->json) {
         s = print_json(root);
     } else {
-        const fs_foot_geom *g = &sc.geom;
+        const fs_foot_geom *g = &sc->geom;
         printf("%s: %s foot, %d bodies, %d hinges, %d springs, %d contact shapes, %.3f kg\n", a->input,
                g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic", g->nbodies, g->nhinges, g->nsprings,
                g->nspheres + g->has_box, g->total_mass_kg);
@@ -139,6 +165,8 @@ int cli_model(const cli_args *a)
     cJSON_Delete(root);
     return s;
 }
+
+int cli_model(const cli_args *a) { return with_design(a, model_of); }
 
 /* ---- stiffness -------------------------------------------------------------------------------- */
 
@@ -295,17 +323,14 @@ static int flat_stiffness(const cli_args *a, const fs_scenario *sc)
     return 0;
 }
 
-int cli_stiffness(const cli_args *a)
+static int stiffness_of(const cli_args *a, const fs_scenario *sc)
 {
-    static fs_scenario sc;
     fs_error err;
-    if (fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err) != FS_OK)
-        return fail(&err);
-    if (sc.geom.kind == FS_FOOT_FLAT)
-        return flat_stiffness(a, &sc);
+    if (sc->geom.kind == FS_FOOT_FLAT)
+        return flat_stiffness(a, sc);
     fs_chain_stiffness k[FS_CHAINS];
-    fs_stiffness_analytic(&sc.geom, k);
-    if (fs_stiffness_measure(&sc, k, &err) != FS_OK)
+    fs_stiffness_analytic(&sc->geom, k);
+    if (fs_stiffness_measure(sc, k, &err) != FS_OK)
         return fail(&err);
     double worst = 0;
     for (int i = 0; i < FS_CHAINS; i++)
@@ -313,14 +338,14 @@ int cli_stiffness(const cli_args *a)
     /* the arch under the design load, on ground that grips (rolling) and on ground that does not */
     fs_planar_result eq[2];
     for (int f = 0; f < 2; f++) {
-        fs_planar_load load = {sc.design.design_load_kg * sc.def.gravity_m_per_s2, sc.def.gravity_m_per_s2, 0, f};
-        if (fs_planar_equilibrium(&sc.design, &sc.geom, 2, &load, &eq[f], &err) != FS_OK)
+        fs_planar_load load = {sc->design.design_load_kg * sc->def.gravity_m_per_s2, sc->def.gravity_m_per_s2, 0, f};
+        if (fs_planar_equilibrium(&sc->design, &sc->geom, 2, &load, &eq[f], &err) != FS_OK)
             return fail(&err);
     }
     /* the whole foot against pitching its ankle body, under the design load: the model, and ODE on
        the default ground's friction and on gripping ground */
     pitch_report pitch;
-    if (pitch_stiffness(&sc, a->input, &pitch, &err) != FS_OK)
+    if (pitch_stiffness(sc, a->input, &pitch, &err) != FS_OK)
         return fail(&err);
     if (a->json) {
         cJSON *root = cJSON_CreateObject();
@@ -340,7 +365,7 @@ int cli_stiffness(const cli_args *a)
         pitch_json(root, &pitch);
         cJSON_AddNumberToObject(root, "tolerance", STIFFNESS_TOLERANCE);
         cJSON *st = cJSON_AddObjectToObject(root, "static_check");
-        cJSON_AddNumberToObject(st, "load_kg", sc.design.design_load_kg);
+        cJSON_AddNumberToObject(st, "load_kg", sc->design.design_load_kg);
         cJSON_AddNumberToObject(st, "chain", 3);
         for (int f = 0; f < 2; f++) {
             cJSON *o = cJSON_AddObjectToObject(st, f ? "frictionless" : "gripping");
@@ -365,7 +390,7 @@ int cli_stiffness(const cli_args *a)
         }
         printf("largest relative difference %.2e (must be below %.0e): %s\n", worst, STIFFNESS_TOLERANCE,
                worst <= STIFFNESS_TOLERANCE ? "agree" : "DISAGREE");
-        printf("static check of chain 3 under %.1f kg (planar model, all chains alike):\n", sc.design.design_load_kg);
+        printf("static check of chain 3 under %.1f kg (planar model, all chains alike):\n", sc->design.design_load_kg);
         for (int f = 0; f < 2; f++)
             printf("  %-12s %s, %s; ankle drop %.3f mm, midfoot %+.2f deg, MTP %+.2f deg, ball %.2f mm above the "
                    "ground\n",
@@ -376,6 +401,8 @@ int cli_stiffness(const cli_args *a)
     }
     return worst <= STIFFNESS_TOLERANCE ? 0 : FS_EXPECTATION_FAILED;
 }
+
+int cli_stiffness(const cli_args *a) { return with_design(a, stiffness_of); }
 
 /* ---- trial ------------------------------------------------------------------------------------ */
 
@@ -428,32 +455,33 @@ typedef struct folder_job {
     const fs_provenance *provenance; /* what made the result, put into the JSON (NULL: none) */
 } folder_job;
 
-static int in_folder(const cli_args *a, const folder_job *j, char *dir_out, size_t size)
+/* out: the caller's results folder (on the heap with the rest of its work), aborted here when it
+ * was not committed. */
+static int in_folder(const cli_args *a, const folder_job *j, fs_outdir *out, char *dir_out, size_t size)
 {
-    static fs_outdir out;
     fs_error err;
-    if (fs_outdir_open(&out, j->dir, j->files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_open(out, j->dir, j->files, a->replace, "--out", &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     int s = 0;
-    if (a->frames && !(s = cli_frames_open(a, j->framed, out.partial, &frames, &observer)))
+    if (a->frames && !(s = cli_frames_open(a, j->framed, out->partial, &frames, &observer)))
         obs = &observer;
     fs_status rs = s ? FS_OK : j->run(j->user, obs, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out.path) : 0;
+    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
     if (!s && rs == FS_OK && !fstatus) {
         cJSON *o = j->to_json(j->result);
         if (j->provenance)
             cJSON_AddItemToObject(o, "provenance", fs_provenance_json(j->provenance));
-        rs = fs_write_in(out.partial, j->name, fill_json, o, &err);
+        rs = fs_write_in(out->partial, j->name, fill_json, o, &err);
         cJSON_Delete(o);
         if (rs == FS_OK)
-            rs = fs_outdir_commit(&out, &err);
+            rs = fs_outdir_commit(out, &err);
     }
-    fs_outdir_abort(&out);
+    fs_outdir_abort(out);
     if (!s && rs != FS_OK)
         s = fail(&err);
-    snprintf(dir_out, size, "%s", out.path);
+    snprintf(dir_out, size, "%s", out->path);
     return s ? s : fstatus;
 }
 
@@ -474,32 +502,48 @@ static cJSON *trial_json_of(const void *r) { return trial_json(r); }
 /* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
  * trial.json and the frames, swapped in whole at the end. The frames are framed on the pose the
  * seed draws. */
-static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
+/* What a trial with a folder works on, too large for the stack: on the heap, one per command. */
+typedef struct trial_files {
+    fs_scenario base, placed;
+    fs_outdir out;
+} trial_files;
+
+static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, trial_files *w)
 {
-    static fs_scenario base, placed;
+    fs_scenario *base = &w->base, *placed = &w->placed;
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, &base, &err) != FS_OK || fs_scenario_require(&base, "trial", &err) != FS_OK)
+    if (fs_scenario_load(a->input, a->set, a->nset, base, &err) != FS_OK || fs_scenario_require(base, "trial", &err) != FS_OK)
         return fail(&err);
     char dir[FS_PATH_MAX + 64];
     if (a->out)
         snprintf(dir, sizeof dir, "%s", a->out);
     else
-        snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base.name, seed);
+        snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base->name, seed);
     int s = 0;
-    if (a->frames && (fs_scenario_copy(&placed, &base, &err) != FS_OK || fs_trial_place(&placed, seed, NULL, &err) != FS_OK))
+    if (a->frames && (fs_scenario_copy(placed, base, &err) != FS_OK || fs_trial_place(placed, seed, NULL, &err) != FS_OK))
         s = fail(&err);
     fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings, the seed */
-    if (!s && fs_scenario_provenance(&base, a->set, a->nset, &prov, &err) != FS_OK)
+    if (!s && fs_scenario_provenance(base, a->set, a->nset, &prov, &err) != FS_OK)
         s = fail(&err);
     prov.first_seed = seed, prov.nseeds = 1;
-    trial_job t = {&base, seed, r};
-    folder_job j = {dir, cli_trial_files, &placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov};
+    trial_job t = {base, seed, r};
+    folder_job j = {dir, cli_trial_files, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov};
     if (!s)
-        s = in_folder(a, &j, dir_out, size);
+        s = in_folder(a, &j, &w->out, dir_out, size);
     fs_provenance_free(&prov);
-    if (a->frames)
-        fs_scenario_free(&placed);
-    fs_scenario_free(&base);
+    return s; /* the scenarios and the folder are the caller's to free */
+}
+
+static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
+{
+    trial_files *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    int s = trial_work(a, seed, r, dir_out, size, w);
+    fs_outdir_abort(&w->out); /* each is a no-op where trial_work did it already */
+    fs_scenario_free(&w->base);
+    fs_scenario_free(&w->placed);
+    free(w);
     return s;
 }
 
@@ -570,34 +614,45 @@ static fs_status run_walk_job(void *user, const fs_run_observer *obs, fs_error *
     return fs_walk_run(w->sc, obs, w->r, err);
 }
 
+/* What a walk works on, too large for the stack: on the heap, one per command. */
+typedef struct walk_work {
+    fs_scenario sc;
+    fs_outdir out;
+} walk_work;
+
 int cli_walk(const cli_args *a)
 {
-    static fs_scenario sc;
+    walk_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    fs_scenario *sc = &w->sc;
     fs_error err;
-    if (fs_scenario_load(a->input, a->set, a->nset, &sc, &err) != FS_OK || fs_scenario_require(&sc, "walk", &err) != FS_OK)
-        return fail(&err);
     fs_walk_result r;
-    const char *foot = sc.geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
     char dir[FS_PATH_MAX + 64], shown[4 * FS_PATH_MAX + 64] = "";
     int s = 0;
-    if (a->frames || a->out) {
+    if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "walk", &err) != FS_OK)
+        s = fail(&err);
+    const char *foot = sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
+    if (!s && (a->frames || a->out)) {
         /* a folder of its own (default results/walks/NAME/): walk.json and the frames, whole */
         if (a->out)
             snprintf(dir, sizeof dir, "%s", a->out);
         else
-            snprintf(dir, sizeof dir, "results/walks/%s", sc.name);
-        walk_job w = {&sc, &r};
+            snprintf(dir, sizeof dir, "results/walks/%s", sc->name);
+        walk_job job = {sc, &r};
         fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
-        if (fs_scenario_provenance(&sc, a->set, a->nset, &prov, &err) != FS_OK)
+        if (fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
             s = fail(&err);
-        folder_job j = {dir, cli_walk_files, &sc, run_walk_job, &w, "walk.json", walk_json, &r, &prov};
+        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov};
         if (!s)
-            s = in_folder(a, &j, shown, sizeof shown);
+            s = in_folder(a, &j, &w->out, shown, sizeof shown);
         fs_provenance_free(&prov);
-    } else if (fs_walk_run(&sc, NULL, &r, &err) != FS_OK) {
+    } else if (!s && fs_walk_run(sc, NULL, &r, &err) != FS_OK) {
         s = fail(&err);
     }
-    fs_scenario_free(&sc);
+    fs_outdir_abort(&w->out); /* a no-op where in_folder did it already */
+    fs_scenario_free(sc);
+    free(w);
     if (s)
         return s;
     if (a->json) {
@@ -643,16 +698,12 @@ int cli_keys(const cli_args *a)
 int cli_demo(const cli_args *a)
 {
     (void)a;
-    static const char *scenarios[] = {"scenarios/static_load.ini", "scenarios/tilt10.ini"};
-    static fs_scenario sc;
+    static const char *const scenarios[] = {"scenarios/static_load.ini", "scenarios/tilt10.ini"};
     for (int i = 0; i < 2; i++) {
-        fs_run_result res;
         cli_args run = {.command = "run", .input = cli_data_path(scenarios[i])};
-        int s = run_scenario(&run, &res, &sc);
-        fs_scenario_free(&sc);
+        int s = run_once(&run);
         if (s)
             return s;
-        fs_run_free(&res);
     }
     cli_args st = {.command = "stiffness", .input = cli_data_path("scenarios/feet/biomimetic.ini")};
     int s = cli_stiffness(&st);
@@ -667,16 +718,21 @@ int cli_demo(const cli_args *a)
     /* the finding, in one line: the law for the trial scenario's robot (single_tall) on Table I */
     fs_error err;
     double K;
-    if (!s && fs_scenario_load(cli_data_path("scenarios/landing_trial.ini"), NULL, 0, &sc, &err) == FS_OK) {
+    fs_scenario *sc = s ? NULL : cli_zalloc(sizeof *sc);
+    if (!s && !sc)
+        return FS_NO_MEMORY;
+    if (sc && fs_scenario_load(cli_data_path("scenarios/landing_trial.ini"), NULL, 0, sc, &err) == FS_OK) {
         fs_pitch_law law;
-        double g = sc.def.gravity_m_per_s2;
-        if (fs_pitch_stiffness_model(&sc.design, &sc.geom, sc.def.robot.mass_kg * g, g, &K, &err) == FS_OK) {
-            fs_pitch_law_apply(K, &sc.def.robot, g, sc.def.landed_tilt_deg * M_PI / 180, &law);
+        double g = sc->def.gravity_m_per_s2;
+        if (fs_pitch_stiffness_model(&sc->design, &sc->geom, sc->def.robot.mass_kg * g, g, &K, &err) == FS_OK) {
+            fs_pitch_law_apply(K, &sc->def.robot, g, sc->def.landed_tilt_deg * M_PI / 180, &law);
             printf("note: the Table I biomimetic foot toppling under single_tall is the documented finding, not a "
                    "fault: that robot needs %.1f N m/rad of pitch stiffness and the foot has %.1f (docs/landing.md, "
                    "the pitch-stiffness law); under drop_weight it lands\n", law.demand, law.K);
         }
-        fs_scenario_free(&sc);
     }
+    if (sc)
+        fs_scenario_free(sc);
+    free(sc);
     return s;
 }

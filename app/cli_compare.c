@@ -93,14 +93,13 @@ static void store_free(scene_store *st)
 static const fs_scene *scene_at(const scene_store *st, int i) { return &st->scene[i < st->n ? i : st->n - 1]; }
 
 /* Side k at snapshot i as drawn (--exaggerate), at (x0, y0), w x h, its view following its foot
- * for the cameras that follow. */
+ * for the cameras that follow; drawn: the caller's room for the scene (large: on the heap). */
 static void draw_one(fs_render *r, const cli_frame_opts *o, fs_render_view *view, const scene_store *run, int i,
-                     int x0, int y0, int w, int h)
+                     int x0, int y0, int w, int h, fs_scene *drawn)
 {
-    static fs_scene drawn; /* large: not on the stack */
-    cli_frame_scene(o, &run->scene[0], scene_at(run, i), &drawn);
-    fs_render_view_follow(view, &drawn);
-    fs_render_draw(r, view, &drawn, x0, y0, w, h);
+    cli_frame_scene(o, &run->scene[0], scene_at(run, i), drawn);
+    fs_render_view_follow(view, drawn);
+    fs_render_draw(r, view, drawn, x0, y0, w, h);
 }
 
 /* The same camera for both sides, framed on both first states. */
@@ -111,7 +110,8 @@ static void fit_pair(fs_render_view view[2], fs_render_camera camera, const scen
     view[1] = view[0];
 }
 
-static int write_frames(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *frames_dir)
+static int write_frames(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *frames_dir,
+                        fs_scene *drawn)
 {
     int cw = o->width / 2, n = run[0].n > run[1].n ? run[0].n : run[1].n;
     fs_render_view view[2];
@@ -119,7 +119,7 @@ static int write_frames(fs_render *r, const cli_frame_opts *o, const scene_store
     fs_render_clear(r);
     for (int i = 0; i < n; i++) {
         for (int k = 0; k < 2; k++)
-            draw_one(r, o, &view[k], &run[k], i, k * cw, 0, cw, o->height);
+            draw_one(r, o, &view[k], &run[k], i, k * cw, 0, cw, o->height, drawn);
         cli_frame_legend(r, 0, 0, o->width, o->height);
         fs_error err;
         if (cli_frames_write(r, frames_dir, i, &err) != FS_OK)
@@ -142,7 +142,8 @@ static int legend_band(int ch) { return ch >= 96 ? 16 * (int)fmax(1, ch / 480) :
 
 /* FILMSTRIP_FRAMES columns at the same simulated times in both rows, from the earlier touch-down
  * to the later end; A above, B below, the legend under them. */
-static int write_filmstrip(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *dir, int ch)
+static int write_filmstrip(fs_render *r, const cli_frame_opts *o, const scene_store run[2], const char *dir, int ch,
+                           fs_scene *drawn)
 {
     int cw = fs_render_width(r) / FILMSTRIP_FRAMES;
     fs_render_view view[2];
@@ -153,7 +154,7 @@ static int write_filmstrip(fs_render *r, const cli_frame_opts *o, const scene_st
     for (int c = 0; c < FILMSTRIP_FRAMES; c++) {
         int i = t0 + (int)lround((double)c * (t1 - t0) / (FILMSTRIP_FRAMES - 1));
         for (int k = 0; k < 2; k++)
-            draw_one(r, o, &view[k], &run[k], i, c * cw, k * ch, cw, ch);
+            draw_one(r, o, &view[k], &run[k], i, c * cw, k * ch, cw, ch, drawn);
     }
     int band = fs_render_height(r) - 2 * ch;
     if (band > 0)
@@ -186,7 +187,7 @@ static const char *foot_name(const fs_scenario *sc) { return sc->geom.kind == FS
 /* Loads both scenarios and works out DIR (default results/compare/A-foot_vs_B-foot). */
 static int load_pair(const cli_args *a, fs_scenario sc[2], char *dir, size_t size)
 {
-    static const char *sets[2][CLI_MAX_SET];
+    const char *sets[2][CLI_MAX_SET]; /* 4 KiB of pointers into a->set */
     int nsets[2];
     split_sets(a, sets, nsets);
     const char *input[2] = {a->input, a->input2};
@@ -220,48 +221,61 @@ static int prepare(const cli_args *a, const fs_scenario sc[2], const char *dir, 
     return s;
 }
 
+/* What render-compare works on, too large for the stack: on the heap, one per command. */
+typedef struct compare_work {
+    fs_scenario sc[2];
+    char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
+    fs_outdir out;
+    fs_scene drawn; /* the frame being drawn */
+} compare_work;
+
 int cli_render_compare(const cli_args *a)
 {
     if (!a->input2)
         return cli_report(FS_BAD_INPUT, "render-compare: give two scenario files, SCENARIO_A SCENARIO_B "
                                         "(the same file twice with --set b:foot.kind=flat compares the feet)");
-    static fs_scenario sc[2];
-    static char dir[CLI_FRAMES_PATH], frames_dir[CLI_FRAMES_PATH];
-    static fs_outdir out;
+    compare_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    fs_scenario *sc = w->sc;
+    char *dir = w->dir, *frames_dir = w->frames_dir;
+    fs_outdir *out = &w->out;
     fs_error err;
     cli_frame_opts o;
     fs_render *r[2] = {NULL, NULL};
     scene_store run[2] = {{0}, {0}};
-    int s = load_pair(a, sc, dir, sizeof dir);
+    int s = load_pair(a, sc, dir, sizeof w->dir);
     /* the folder must be one footsim may replace before anything is simulated; everything goes to
      * a partial folder beside it, swapped in whole at the end: a failure leaves the old one */
-    if (!s && fs_outdir_open(&out, dir, cli_compare_files, a->replace, "--out", &err) != FS_OK)
+    if (!s && fs_outdir_open(out, dir, cli_compare_files, a->replace, "--out", &err) != FS_OK)
         s = cli_report(err.status, err.message);
     if (!s)
-        s = prepare(a, sc, out.partial, &o, frames_dir, r);
+        s = prepare(a, sc, out->partial, &o, frames_dir, r);
     if (!s)
         s = reserve(sc, o.fps, run);
     for (int k = 0; k < 2 && !s; k++)
         s = run_stored(&sc[k], o.fps, &run[k]);
     if (!s)
-        s = write_frames(r[0], &o, run, frames_dir);
+        s = write_frames(r[0], &o, run, frames_dir, &w->drawn);
     if (!s)
-        s = write_filmstrip(r[1], &o, run, out.partial, o.height / 2 > 0 ? o.height / 2 : 1);
+        s = write_filmstrip(r[1], &o, run, out->partial, o.height / 2 > 0 ? o.height / 2 : 1, &w->drawn);
     if (!s && o.video)
-        s = cli_frames_video(out.partial, frames_dir, o.fps, run[0].n > run[1].n ? run[0].n : run[1].n, dir);
-    if (!s && fs_outdir_commit(&out, &err) != FS_OK)
+        s = cli_frames_video(out->partial, frames_dir, o.fps, run[0].n > run[1].n ? run[0].n : run[1].n, dir);
+    if (!s && fs_outdir_commit(out, &err) != FS_OK)
         s = cli_report(err.status, err.message);
     if (!s) {
         int n = run[0].n > run[1].n ? run[0].n : run[1].n;
         printf("render-compare: %s (%s foot, left) beside %s (%s foot, right)\n  frames: %s/frames/000000.png ... %06d.png "
                "(%d at %g per simulated second, %dx%d, camera %s)\n  filmstrip: %s/filmstrip.png\n",
-               sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), out.path, n - 1, n, o.fps, o.width,
-               o.height, fs_render_camera_names[o.camera], out.path);
+               sc[0].name, foot_name(&sc[0]), sc[1].name, foot_name(&sc[1]), out->path, n - 1, n, o.fps, o.width,
+               o.height, fs_render_camera_names[o.camera], out->path);
     }
-    fs_outdir_abort(&out); /* when it was not committed */
+    fs_outdir_abort(out); /* when it was not committed */
     for (int k = 0; k < 2; k++) {
         fs_render_close(r[k]);
         store_free(&run[k]);
+        fs_scenario_free(&sc[k]);
     }
+    free(w);
     return s;
 }

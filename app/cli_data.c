@@ -22,7 +22,9 @@
 #define FS_BINDIR_NAME "bin"
 #endif
 
-static const char *data_dir; /* --data DIR, or NULL */
+/* --data DIR, or NULL. Process-wide on purpose: it is an option of the one command this process
+ * runs, set once by main before the command starts and read by every lookup of a data file. */
+static const char *data_dir;
 
 int cli_data_set_dir(const char *dir)
 {
@@ -46,6 +48,7 @@ static int is_file(const char *path)
  * installed to), canonical, or "" when the command is not in a bin folder or there is none. */
 static const char *beside_command(void)
 {
+    /* static on purpose: where the running executable lives is a fact of the process, found once */
     static char dir[PATH_MAX];
     static int done;
     if (done)
@@ -98,6 +101,8 @@ const char *cli_data_find(const char *path, cli_data_kind kind, char *buf, size_
 const char *cli_data_path(const char *rel)
 {
     enum { SLOTS = 16 };
+    /* static on purpose: the contract (cli.h) is text that lives as long as the process, for
+     * footsim's own few names; a cache of what was found, never a result of a simulation */
     static struct {
         const char *rel;
         char full[FS_PATH_MAX];

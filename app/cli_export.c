@@ -10,29 +10,33 @@
 #include <stdlib.h>
 #include <string.h>
 
-int cli_export(const cli_args *a)
+/* What an export works on, too large for the stack: on the heap, one per command. */
+typedef struct export_work {
+    fs_scenario sc;
+    char design[FS_PATH_MAX + 32], full[FS_PATH_MAX];
+} export_work;
+
+static int export_mjcf(const cli_args *a, export_work *w)
 {
-    if (!a->mjcf)
-        return cli_report(FS_BAD_INPUT, "export: give the format, --mjcf (MuJoCo's MJCF, the one written so far)");
-    static fs_scenario sc;
+    fs_scenario *sc = &w->sc;
+    char *design = w->design, *full = w->full;
     fs_error err;
     fs_status s;
     if (a->scenario) {
         /* the scenario with DESIGN as its foot: DESIGN first among the overrides, so --set still wins */
-        static char design[FS_PATH_MAX + 32], full[FS_PATH_MAX];
         const char *over[CLI_MAX_SET + 1];
         /* a scenario's paths are relative to its folder: give DESIGN's whole path */
         if (!realpath(a->input, full)) {
             fprintf(stderr, "footsim: export: %s: %s; give an existing design file\n", a->input, strerror(errno));
             return FS_BAD_INPUT;
         }
-        snprintf(design, sizeof design, "scenario.design=%s", full);
+        snprintf(design, sizeof w->design, "scenario.design=%s", full);
         over[0] = design;
         for (int i = 0; i < a->nset; i++)
             over[i + 1] = a->set[i];
-        s = fs_scenario_load(a->scenario, over, a->nset + 1, &sc, &err);
+        s = fs_scenario_load(a->scenario, over, a->nset + 1, sc, &err);
     } else {
-        s = fs_scenario_for_design(a->input, a->set, a->nset, &sc, &err);
+        s = fs_scenario_for_design(a->input, a->set, a->nset, sc, &err);
     }
     if (s != FS_OK)
         return cli_report(err.status, err.message);
@@ -43,14 +47,14 @@ int cli_export(const cli_args *a)
         char stem[FS_NAME_MAX];
         fs_path_stem(a->input, stem, sizeof stem);
         if (fs_make_dirs("results/export", &err) != FS_OK) {
-            fs_scenario_free(&sc);
+            fs_scenario_free(sc);
             return cli_report(err.status, err.message);
         }
-        snprintf(out, sizeof out, "results/export/%s%s%s.xml", stem, a->scenario ? "-" : "", a->scenario ? sc.name : "");
+        snprintf(out, sizeof out, "results/export/%s%s%s.xml", stem, a->scenario ? "-" : "", a->scenario ? sc->name : "");
     }
-    s = fs_mjcf_write(&sc, a->scenario != NULL, out, &err);
-    int hfield = a->scenario && fs_terrain_is_heightfield(&sc.terrain);
-    fs_scenario_free(&sc);
+    s = fs_mjcf_write(sc, a->scenario != NULL, out, &err);
+    int hfield = a->scenario && fs_terrain_is_heightfield(&sc->terrain);
+    fs_scenario_free(sc);
     if (s != FS_OK)
         return cli_report(err.status, err.message);
     char hpath[FS_OUT_PATH];
@@ -58,4 +62,17 @@ int cli_export(const cli_args *a)
     printf("wrote %s%s%s (MuJoCo MJCF; docs/export.md says what maps one to one)\n", out, hfield ? " and " : "",
            hfield ? hpath : "");
     return 0;
+}
+
+int cli_export(const cli_args *a)
+{
+    if (!a->mjcf)
+        return cli_report(FS_BAD_INPUT, "export: give the format, --mjcf (MuJoCo's MJCF, the one written so far)");
+    export_work *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    int s = export_mjcf(a, w);
+    fs_scenario_free(&w->sc); /* a no-op where export_mjcf freed it */
+    free(w);
+    return s;
 }

@@ -169,14 +169,20 @@ static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int t, const
     fs_error err;
     if (fs_make_dirs(path, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    static fs_scenario placed;
-    if (fs_scenario_copy(&placed, fs_campaign_pair(c, cell), &err) != FS_OK ||
-        fs_trial_place(&placed, seed, NULL, &err) != FS_OK)
-        return cli_report(err.status, err.message);
-    cli_frames *frames;
+    /* the pose the seed draws, to frame the camera on: on the heap, freed on every path */
+    fs_scenario *placed = cli_zalloc(sizeof *placed);
+    if (!placed)
+        return FS_NO_MEMORY;
+    int s = 0;
+    if (fs_scenario_copy(placed, fs_campaign_pair(c, cell), &err) != FS_OK ||
+        fs_trial_place(placed, seed, NULL, &err) != FS_OK)
+        s = cli_report(err.status, err.message);
+    cli_frames *frames = NULL;
     fs_run_observer obs;
-    int s = cli_frames_open_at(f->a, &placed, path, &frames, &obs);
-    fs_scenario_free(&placed);
+    if (!s)
+        s = cli_frames_open_at(f->a, placed, path, &frames, &obs);
+    fs_scenario_free(placed);
+    free(placed);
     if (s)
         return s;
     fs_trial_result r;

@@ -8,6 +8,7 @@
 #include "footsim/sim/fs_ode.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 typedef struct command {
@@ -43,7 +44,7 @@ static const command commands[] = {
      "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
      "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
      "  Exit 1 when analytic and measured differ by more than 1 %."},
-    {"terrain", cli_terrain, "TERRAIN", "--height --png --scenario --set --data",
+    {"terrain", cli_terrain, "TERRAIN", "--height --png --replace --scenario --set --data",
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
      "  --scenario S gives one); with neither, a summary."},
@@ -131,7 +132,7 @@ static void usage(FILE *out)
 static void command_help(const command *c)
 {
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
-    if (strstr(c->options, "--replace"))
+    if (strstr(c->options, "--replace") && strstr(c->options, "--out"))
         printf(" [--out DIR [--replace]]");
     else if (strstr(c->options, "--mjcf"))
         printf(" --mjcf [--scenario SCENARIO] [--out FILE]");
@@ -152,7 +153,7 @@ static void command_help(const command *c)
     if (strstr(c->options, "--shard"))
         printf(" [--shard I/N] [--fresh]");
     if (strstr(c->options, "--height"))
-        printf(" [--height X Y] [--png FILE [--scenario SCENARIO]]");
+        printf(" [--height X Y] [--png FILE [--replace] [--scenario SCENARIO]]");
     if (strstr(c->options, "--frames "))
         printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--exaggerate F] [--video]]");
     if (strstr(c->options, "--frames-of"))
@@ -166,6 +167,9 @@ static void command_help(const command *c)
         printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
                "  without footsim's %s marker or only %s files in it is refused unless --replace.\n", FS_MARKER,
                c->name);
+    else if (strstr(c->options, "--replace") && !strstr(c->options, "--out"))
+        printf("\n  An existing FILE is replaced only when it is a PNG already; anything else there (a user's\n"
+               "  notes, data) is refused unless --replace is given.\n");
     else if (strstr(c->options, "--replace"))
         printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
                "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",
@@ -316,6 +320,14 @@ int cli_report(int status, const char *message)
     return status;
 }
 
+void *cli_zalloc(size_t size)
+{
+    void *p = calloc(1, size);
+    if (!p)
+        cli_report(FS_NO_MEMORY, "out of memory");
+    return p;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -337,7 +349,7 @@ int main(int argc, char **argv)
             return s;
         /* relative data files not found as given: --data, here, the installed data */
         cli_data_kind kind = data_kind(a.command);
-        static char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX];
+        char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX]; /* live until the command ends */
         a.input = cli_data_find(a.input, kind, input, sizeof input);
         a.input2 = cli_data_find(a.input2, kind, input2, sizeof input2);
         a.scenario = cli_data_find(a.scenario, CLI_DATA_SCENARIO, scenario, sizeof scenario);

@@ -168,77 +168,88 @@ int cli_optimize(const cli_args *a)
     int s = cli_parse_jobs(a, &jobs);
     if (s)
         return s;
-    static fs_optimize o;
+    /* the search and its results folder, too large for the stack: on the heap for this command */
+    struct optimize_work {
+        fs_optimize o;
+        fs_outdir out;
+    } *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    fs_optimize *o = &w->o;
+    fs_outdir *out = &w->out;
     fs_error err;
-    if (fs_optimize_load(a->input, a->set, a->nset, &o, &err) != FS_OK)
-        return cli_report(err.status, err.message);
-    char dir[FS_PATH_MAX + 64];
-    snprintf(dir, sizeof dir, a->out ? "%s" : "results/optimize/%s", a->out ? a->out : o.name);
-    static fs_outdir out;
-    if (fs_outdir_open(&out, dir, cli_optimize_files, a->replace, "--out", &err) != FS_OK) {
-        fs_optimize_free(&o);
+    if (fs_optimize_load(a->input, a->set, a->nset, o, &err) != FS_OK) {
+        free(w); /* fs_optimize_load freed what it read */
         return cli_report(err.status, err.message);
     }
-    int ntrials = fs_campaign_ntrials(&o.campaign), ncells = fs_campaign_ncells(&o.campaign);
+    char dir[FS_PATH_MAX + 64];
+    snprintf(dir, sizeof dir, a->out ? "%s" : "results/optimize/%s", a->out ? a->out : o->name);
+    if (fs_outdir_open(out, dir, cli_optimize_files, a->replace, "--out", &err) != FS_OK) {
+        fs_optimize_free(o);
+        free(w);
+        return cli_report(err.status, err.message);
+    }
+    int ntrials = fs_campaign_ntrials(&o->campaign), ncells = fs_campaign_ncells(&o->campaign);
     optimize_run run = {.jobs = jobs, .log = calloc(MAX_EVALUATIONS_KEPT, sizeof(evaluation)),
-                        .nrounds = o.max_evaluations + 3};
+                        .nrounds = o->max_evaluations + 3};
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
     fs_campaign_row *rows = calloc(3 * (size_t)ncells, sizeof *rows);
     double start[FS_OPTIMIZE_MAX_PARAMS], best[FS_OPTIMIZE_MAX_PARAMS], value;
-    for (int p = 0; p < o.nparams; p++)
-        start[p] = o.param[p].start;
+    for (int p = 0; p < o->nparams; p++)
+        start[p] = o->param[p].start;
     fs_status st = run.log && results && rows ? FS_OK : fs_fail(&err, FS_NO_MEMORY, "out of memory");
-    printf("optimize %s: %d parameters, %d trials per candidate, at most %d candidates\n", o.name, o.nparams, ntrials,
-           o.max_evaluations);
+    printf("optimize %s: %d parameters, %d trials per candidate, at most %d candidates\n", o->name, o->nparams, ntrials,
+           o->max_evaluations);
     if (st == FS_OK)
-        st = fs_optimize_run(&o, run_trials, report, &run, results, rows, best, &value, &err);
+        st = fs_optimize_run(o, run_trials, report, &run, results, rows, best, &value, &err);
     /* the start and the best again, on the search's seeds and on fresh ones */
-    int first = o.campaign.first_seed;
-    run.round = o.max_evaluations; /* the reruns are the last three rounds, however soon the search ended */
+    int first = o->campaign.first_seed;
+    run.round = o->max_evaluations; /* the reruns are the last three rounds, however soon the search ended */
     if (st == FS_OK)
-        st = fs_optimize_apply(&o, start, &err);
+        st = fs_optimize_apply(o, start, &err);
     if (st == FS_OK)
-        st = evaluate(&o, &run, results, rows + ncells, &err);
+        st = evaluate(o, &run, results, rows + ncells, &err);
     if (st == FS_OK)
-        st = fs_optimize_apply(&o, best, &err);
+        st = fs_optimize_apply(o, best, &err);
     if (st == FS_OK)
-        st = evaluate(&o, &run, results, rows, &err);
-    o.campaign.first_seed = o.validation_first_seed;
+        st = evaluate(o, &run, results, rows, &err);
+    o->campaign.first_seed = o->validation_first_seed;
     if (st == FS_OK)
-        st = evaluate(&o, &run, results, rows + 2 * ncells, &err);
-    o.campaign.first_seed = first;
+        st = evaluate(o, &run, results, rows + 2 * ncells, &err);
+    o->campaign.first_seed = first;
     cli_progress_round(NULL, 0, 0);
     /* what made the results: the optimize file, every --set, and its campaign's inputs and settings */
     fs_provenance prov = {.ninputs = 0};
-    if (st == FS_OK && (st = fs_provenance_init(&prov, o.path, &err)) == FS_OK &&
+    if (st == FS_OK && (st = fs_provenance_init(&prov, o->path, &err)) == FS_OK &&
         (st = fs_provenance_overrides(&prov, a->set, a->nset, &err)) == FS_OK &&
-        (st = fs_provenance_add_ini(&prov, o.path, &err)) == FS_OK)
-        st = fs_provenance_include(&prov, &o.campaign.provenance, &err);
-    optimize_out x = {&o, &run, start, best, rows, rows + ncells, rows + 2 * ncells, o.validation_first_seed, &prov};
+        (st = fs_provenance_add_ini(&prov, o->path, &err)) == FS_OK)
+        st = fs_provenance_include(&prov, &o->campaign.provenance, &err);
+    optimize_out x = {o, &run, start, best, rows, rows + ncells, rows + 2 * ncells, o->validation_first_seed, &prov};
     if (st == FS_OK)
-        st = fs_write_in(out.partial, "evaluations.csv", fill_evaluations, &x, &err);
+        st = fs_write_in(out->partial, "evaluations.csv", fill_evaluations, &x, &err);
     if (st == FS_OK)
-        st = fs_write_in(out.partial, "result.md", fill_result, &x, &err);
+        st = fs_write_in(out->partial, "result.md", fill_result, &x, &err);
     if (st == FS_OK)
-        st = fs_outdir_commit(&out, &err);
-    int met = st == FS_OK && fs_optimize_shortfall(&o.campaign, rows) == 0 &&
-              fs_optimize_shortfall(&o.campaign, rows + 2 * ncells) == 0;
+        st = fs_outdir_commit(out, &err);
+    int met = st == FS_OK && fs_optimize_shortfall(&o->campaign, rows) == 0 &&
+              fs_optimize_shortfall(&o->campaign, rows + 2 * ncells) == 0;
     if (st == FS_OK) {
         printf("best:");
-        for (int p = 0; p < o.nparams; p++)
-            printf(" %s = %.6g (start %.6g)", o.param[p].key, best[p], start[p]);
+        for (int p = 0; p < o->nparams; p++)
+            printf(" %s = %.6g (start %.6g)", o->param[p].key, best[p], start[p]);
         printf("\ntargets %s on the search's seeds and %s on fresh seeds %d to %d\nresults: %s/result.md, "
                "evaluations.csv\n",
-               fs_optimize_shortfall(&o.campaign, rows) == 0 ? "met" : "MISSED",
-               fs_optimize_shortfall(&o.campaign, rows + 2 * ncells) == 0 ? "met" : "MISSED", o.validation_first_seed,
-               o.validation_first_seed + o.campaign.seeds - 1, out.path);
+               fs_optimize_shortfall(&o->campaign, rows) == 0 ? "met" : "MISSED",
+               fs_optimize_shortfall(&o->campaign, rows + 2 * ncells) == 0 ? "met" : "MISSED", o->validation_first_seed,
+               o->validation_first_seed + o->campaign.seeds - 1, out->path);
     }
-    fs_outdir_abort(&out);
+    fs_outdir_abort(out);
     fs_provenance_free(&prov);
     free(run.log);
     free(results);
     free(rows);
-    fs_optimize_free(&o);
+    fs_optimize_free(o);
+    free(w);
     if (st != FS_OK)
         return cli_report(err.status, err.message);
     return met ? 0 : FS_EXPECTATION_FAILED;

@@ -286,50 +286,71 @@ static int fill_run_script(FILE *f, const void *user)
     return 1;
 }
 
-/* A run's folder: dir/trajectory.csv drawn into out/plot.png. */
-static int plot_run(const char *dir, const char *out)
+/* A run's folder: dir/trajectory.csv drawn into out/plot.png, read into t (zeroed). */
+static int plot_run_into(const char *dir, const char *out, trajectory *t)
 {
-    static trajectory t;
-    memset(&t, 0, sizeof t);
-    int s = read_trajectory(dir, &t);
+    int s = read_trajectory(dir, t);
     if (s)
         return s;
-    run_title(dir, &t);
+    run_title(dir, t);
     /* gnuplot runs in out: the data by its absolute path unless it is there */
     char here[PATH_MAX], there[PATH_MAX];
     if (!realpath(dir, here) || !realpath(out, there))
         return cli_report(FS_BAD_INPUT, "plot: cannot resolve the folders' paths");
     if (!strcmp(here, there))
-        snprintf(t.path, sizeof t.path, "trajectory.csv");
+        snprintf(t->path, sizeof t->path, "trajectory.csv");
     else
-        snprintf(t.path, sizeof t.path, "%s/trajectory.csv", here);
+        snprintf(t->path, sizeof t->path, "%s/trajectory.csv", here);
     fs_error err;
-    if (fs_write_in(out, "plot.gp", fill_run_script, &t, &err) != FS_OK)
+    if (fs_write_in(out, "plot.gp", fill_run_script, t, &err) != FS_OK)
         return cli_report(err.status, err.message);
     char png[FS_PATH_MAX + 16];
     snprintf(png, sizeof png, "%s/plot.png", out);
     s = cli_gnuplot_to(out, "plot.gp", png, "plot");
     if (!s)
-        printf("%s: %s (script %s/plot.gp)\n", png, t.title, out);
+        printf("%s: %s (script %s/plot.gp)\n", png, t->title, out);
     return s < 0 ? 0 : s;
 }
 
-/* A campaign's folder: its chart drawn again from dir/summary.json into out/success.png. */
-static int plot_campaign(const char *dir, const char *out)
+/* plot_run_into with its trajectory on the heap (large), for this command only. */
+static int plot_run(const char *dir, const char *out)
 {
-    static fs_campaign c;
-    static fs_campaign_row rows[FS_CAMPAIGN_MAX_FEET * FS_CAMPAIGN_MAX_TERRAINS * FS_CAMPAIGN_MAX_ROBOTS];
+    trajectory *t = cli_zalloc(sizeof *t);
+    if (!t)
+        return FS_NO_MEMORY;
+    int s = plot_run_into(dir, out, t);
+    free(t);
+    return s;
+}
+
+/* A campaign's folder: its chart drawn again from dir/summary.json into out/success.png. */
+static int plot_campaign_into(const char *dir, const char *out, fs_campaign *c, fs_campaign_row *rows)
+{
     char path[2 * FS_PATH_MAX];
     snprintf(path, sizeof path, "%s/summary.json", dir);
     fs_error err;
-    if (fs_campaign_reload(path, &c, rows, &err) != FS_OK || fs_campaign_write_chart(&c, rows, out, &err) != FS_OK)
+    if (fs_campaign_reload(path, c, rows, &err) != FS_OK || fs_campaign_write_chart(c, rows, out, &err) != FS_OK)
         return cli_report(err.status, err.message);
     snprintf(path, sizeof path, "%s/success.png", out);
     int s = cli_gnuplot_to(out, "chart.gp", path, "plot");
     if (!s)
         printf("%s/success.png: campaign %s, %d cells (feet x terrains x robots: %d x %d x %d; data %s/chart.dat)\n",
-               out, c.name, fs_campaign_ncells(&c), c.nfeet, c.nterrains, c.nrobots, out);
+               out, c->name, fs_campaign_ncells(c), c->nfeet, c->nterrains, c->nrobots, out);
     return s < 0 ? 0 : s;
+}
+
+/* plot_campaign_into with the campaign and its rows on the heap (large), for this command only. */
+static int plot_campaign(const char *dir, const char *out)
+{
+    struct {
+        fs_campaign c;
+        fs_campaign_row rows[FS_CAMPAIGN_MAX_FEET * FS_CAMPAIGN_MAX_TERRAINS * FS_CAMPAIGN_MAX_ROBOTS];
+    } *w = cli_zalloc(sizeof *w);
+    if (!w)
+        return FS_NO_MEMORY;
+    int s = plot_campaign_into(dir, out, &w->c, w->rows);
+    free(w);
+    return s;
 }
 
 int cli_plot(const cli_args *a)

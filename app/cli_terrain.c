@@ -134,14 +134,20 @@ static int write_map(fs_terrain *t, const cli_args *a)
     for (int k = 0; k < 4; k++)
         region[k] = DEFAULT_REGION[k];
     if (a->scenario) {
-        static fs_scenario sc;
-        if (fs_scenario_load(a->scenario, NULL, 0, &sc, &err) != FS_OK)
+        fs_scenario *sc = cli_zalloc(sizeof *sc);
+        if (!sc)
+            return FS_NO_MEMORY;
+        fs_status ls = fs_scenario_load(a->scenario, NULL, 0, sc, &err);
+        if (ls == FS_OK) {
+            fs_scenario_footprint(sc, foot);
+            double m = sc->def.region_margin_m;
+            region[0] = foot[0] - m, region[1] = foot[1] + m, region[2] = foot[2] - m, region[3] = foot[3] + m;
+            outline = foot;
+        }
+        fs_scenario_free(sc);
+        free(sc);
+        if (ls != FS_OK)
             return cli_report(err.status, err.message);
-        fs_scenario_footprint(&sc, foot);
-        double m = sc.def.region_margin_m;
-        region[0] = foot[0] - m, region[1] = foot[1] + m, region[2] = foot[2] - m, region[3] = foot[3] + m;
-        outline = foot;
-        fs_scenario_free(&sc);
     }
     if (fs_terrain_crop(t, region[0], region[1], region[2], region[3], &err) != FS_OK)
         return cli_report(err.status, err.message);
@@ -192,19 +198,27 @@ static int summary(fs_terrain *t)
 
 int cli_terrain(const cli_args *a)
 {
-    static fs_terrain t;
     fs_error err;
-    if (a->png && fs_check_file_target(a->png, "--png", &err) != FS_OK)
+    /* an existing file there is replaced only when it is a PNG already (its signature), or --replace */
+    static const unsigned char png_signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (a->png && fs_check_file_target(a->png, "--png", png_signature, sizeof png_signature, "a PNG", a->replace,
+                                       &err) != FS_OK)
         return cli_report(err.status, err.message);
-    if (fs_terrain_load(a->input, a->set, a->nset, &t, &err) != FS_OK)
+    fs_terrain *t = cli_zalloc(sizeof *t);
+    if (!t)
+        return FS_NO_MEMORY;
+    if (fs_terrain_load(a->input, a->set, a->nset, t, &err) != FS_OK) {
+        free(t); /* fs_terrain_load freed what it read */
         return cli_report(err.status, err.message);
+    }
     int s = 0;
     if (a->height_x)
-        s = print_height(&t, a);
+        s = print_height(t, a);
     if (!s && a->png)
-        s = write_map(&t, a);
+        s = write_map(t, a);
     if (!a->height_x && !a->png)
-        s = summary(&t);
-    fs_terrain_free(&t);
+        s = summary(t);
+    fs_terrain_free(t);
+    free(t);
     return s;
 }

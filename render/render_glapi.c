@@ -4,6 +4,8 @@
 #include <dlfcn.h>
 #include <stdlib.h>
 
+/* Process-wide on purpose: OSMesa is one shared library, opened once per process with dlopen, and
+ * this is the table of its functions every renderer calls through (no renderer's own state). */
 render_gl_api render_gl;
 
 /* The runtime library of Debian's libosmesa6 (and the development link, as a second choice). */
@@ -27,7 +29,7 @@ static void *open_library(const char **tried)
 
 fs_status render_gl_load(fs_error *err)
 {
-    static int loaded;
+    static int loaded; /* the library is loaded once per process (see render_gl above) */
     if (loaded)
         return FS_OK;
     const char *tried = "";

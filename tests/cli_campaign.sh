@@ -49,7 +49,7 @@ check_that "no carriage return without a terminal" [ -z "$(tr -dc '\r' <"$tmp/j1
 check_that "a plain progress line at the end" grep -q '^footsim campaign: 6/6 trials done, 0 failed, ' "$tmp/j1.err"
 check_that "at most a line per tenth and the end" [ "$(grep -c 'trials done' "$tmp/j1.err")" -le 11 ]
 check_that "summary.json has the row fields" grep -q '"median_peak_force_N"' "$tmp/j1/summary.json"
-check_that "summary.csv names its columns with units" grep -q '^foot,terrain,robot,trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
+check_that "summary.csv names its columns with units" grep -q '^foot,terrain,robot,trials,landed,fell,undecided,failed_numerics,hung,success_rate,ci_low,ci_high,median_end_time_s,' "$tmp/j1/summary.csv"
 check_that "trials.csv names the rule that decided each trial" grep -q "^foot,terrain,robot,seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule," "$tmp/j1/trials.csv"
 
 # a worker that dies on seed 2 (as an ODE error makes it, exit 3): failed_numerics, the campaign

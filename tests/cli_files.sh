@@ -83,7 +83,8 @@ else
     echo "skipped: running as root, a folder cannot be made unsearchable (the permission case of finding 11)"
 fi
 expect 2 "l1_m = '1e-308' is below the smallest normal double (2.2e-308)" -- model scenarios/feet/biomimetic.ini --set links.l1_m=1e-308
-expect 2 "from --set links.l3_m" -- model scenarios/feet/biomimetic.ini --set links.l3_m=1e-300
+expect 2 "footsim: --set links.l3_m: chain 1's toe cannot rest .* from --set links.l3_m)" -- model scenarios/feet/biomimetic.ini --set links.l3_m=1e-300
+check '! grep -q "biomimetic.ini:[0-9]" "$tmp/err"'
 check '! grep -q "[0-9]\{30\}" "$tmp/err"' # no 300-digit number for tiny geometry
 
 # ---- finding 12: nonsense refused ----------------------------------------------------------------
@@ -93,6 +94,10 @@ expect 2 "mass_kg = '0x1P-1074' is hexadecimal; write it in decimal" -- run $sl 
 expect 2 "mass_kg = '4.9e-324' is below the smallest normal double" -- run $sl --set load.mass_kg=4.9e-324 --out "$tmp/o"
 printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\nterrain = %s/terrains/heightmap.ini\n' "$src" "$src" >"$tmp/hm.ini"
 expect 2 "heightmap.ini: the heightmap covers x 100\.\.[0-9.]* m.*the foot .* is off it" -- run "$tmp/hm.ini" --set heightmap.x0_m=100 --out "$tmp/o"
+# a heightmap that covers only part of the foot's region runs, warned with where it was placed
+expect 0 "warning: .*heightmap.ini: the heightmap covers x 0\.05\.\..*x0_m from --set heightmap.x0_m, y0_m from .*heightmap.ini:10).* [0-9][0-9]* % of the foot's region .* is outside it" -- run "$tmp/hm.ini" --set heightmap.x0_m=0.05 --set run.duration_s=0.01 --out "$tmp/hmpart"
+"$fs" run "$tmp/hm.ini" --set run.duration_s=0.01 --out "$tmp/hmall" >/dev/null 2>"$tmp/hmall.err"
+check '! grep -q warning "$tmp/hmall.err"'
 expect 2 "period_s = 5e-05 gives a stance of 3e-05 s and a swing of 2e-05 s, one shorter than step_s = 0.0001" -- walk scenarios/walking.ini --set walk.period_s=5e-5
 
 # ---- finding 13: options that contradicted each other without need --------------------------------

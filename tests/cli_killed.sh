@@ -40,8 +40,20 @@ check '[ "$status" -eq 3 ] && [ ! -e "$tmp/ode" ] && [ -z "$(ls -a "$tmp" | grep
 FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=5 "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/w" >/dev/null 2>"$tmp/werr"
 status=$?
 check '[ "$status" -eq 0 ] && grep -q "seed 2, made no progress for 5 s and was killed by the watchdog" "$tmp/werr"'
-check 'grep -q "1 worker made no progress" "$tmp/werr" && [ "$(grep -c "failed_numerics" "$tmp/w/trials.csv")" -eq 1 ]'
-check 'grep "failed_numerics" "$tmp/w/trials.csv" | grep -q "^bio,flat,drop_weight,2,"'
+# counted as hung, its own outcome, never as a numerical failure (trials.csv, summary.csv, .json)
+check 'grep -q "1 worker made no progress.*counted as hung, not as numerical failures" "$tmp/werr" && grep -q "seed 2, .*; counted as hung" "$tmp/werr"'
+check '[ "$(grep -c ",hung,watchdog," "$tmp/w/trials.csv")" -eq 1 ] && ! grep -q "failed_numerics,numerics" "$tmp/w/trials.csv"'
+check 'grep ",hung,watchdog," "$tmp/w/trials.csv" | grep -q "^bio,flat,drop_weight,2,"'
+check 'grep -q "\"hung\":	1" "$tmp/w/summary.json" && grep -q "\"failed_numerics\":	0" "$tmp/w/summary.json"'
+check 'grep -q "^foot,terrain,robot,trials,landed,fell,undecided,failed_numerics,hung," "$tmp/w/summary.csv" && grep -q "^bio,flat,drop_weight,[0-9]*,[0-9]*,[0-9]*,[0-9]*,0,1," "$tmp/w/summary.csv"'
+# a hung trial goes through the journal as hung: shard 2/2 (seed 2) keeps it in its trials.journal,
+# and the merge of both shards counts it hung, never failed_numerics
+FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=5 "$fs" campaign "$tmp/camp.ini" $short -j 2 --shard 2/2 --out "$tmp/s2" >/dev/null 2>&1
+"$fs" campaign "$tmp/camp.ini" $short -j 1 --shard 1/2 --out "$tmp/s1" >/dev/null 2>&1
+"$fs" merge "$tmp/s1" "$tmp/s2" --out "$tmp/m" >/dev/null 2>&1
+status=$?
+check '[ "$status" -eq 0 ] && grep ",hung,watchdog," "$tmp/m/trials.csv" | grep -q "^bio,flat,drop_weight,2,"'
+check 'grep -q "\"hung\":	1" "$tmp/m/summary.json" && grep -q "\"failed_numerics\":	0" "$tmp/m/summary.json"'
 # finding 9: a refused fork (at most one process for an unprivileged user) leaves no folder
 if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null && command -v prlimit >/dev/null; then
     mkdir "$tmp/nobody" && chmod 777 "$tmp/nobody" && chmod 755 "$tmp" && cp "$tmp/camp.ini" "$tmp/nobody/" && chmod 644 "$tmp/nobody/camp.ini"

@@ -84,6 +84,17 @@ ln -s "$tmp/file" "$tmp/pnglink"
 "$fs" terrain terrains/flat.ini --png "$tmp/pnglink" >/dev/null 2>/dev/null
 s11=$?
 check '[ "$s11" -eq 2 ] && [ -L "$tmp/pnglink" ] && [ "$(cat "$tmp/file")" = data ]'
+# a user's file that is not a PNG is not replaced by one (exit 2, the fix named) unless --replace;
+# a PNG (footsim's earlier picture) is
+echo "thesis notes" >"$tmp/notes.txt"
+expect 2 "the file exists and is not a PNG.*give another name, remove it, or add --replace" -- terrain terrains/flat.ini --png "$tmp/notes.txt"
+check '[ "$(cat "$tmp/notes.txt")" = "thesis notes" ]'
+"$fs" terrain terrains/flat.ini --png "$tmp/map.png" >/dev/null 2>&1 && "$fs" terrain terrains/rough.ini --png "$tmp/map.png" >/dev/null 2>"$tmp/err13"
+s13=$?
+check '[ "$s13" -eq 0 ] && [ "$(head -c 4 "$tmp/map.png" | tail -c 3)" = PNG ]'
+"$fs" terrain terrains/flat.ini --png "$tmp/notes.txt" --replace >/dev/null 2>"$tmp/err14"
+s14=$?
+check '[ "$s14" -eq 0 ] && [ "$(head -c 4 "$tmp/notes.txt" | tail -c 3)" = PNG ]'
 if mknod "$tmp/null" c 1 3 2>/dev/null; then
     "$fs" terrain terrains/flat.ini --png "$tmp/null" >/dev/null 2>"$tmp/err8"
     s12=$?

@@ -105,6 +105,17 @@ static void test_summarize(void)
     fs_campaign_cell_of(&c, cell, &foot, &terrain, &robot);
     CHECK(cell == 1 && foot == 1 && terrain == 0 && robot == 0 && seed == 2);
     CHECK(rows[1].foot == 1 && rows[1].terrain == 0 && rows[1].robot == 0);
+    /* a trial whose worker the watchdog killed is hung: its own count, never failed_numerics, and
+       no measurement for the medians */
+    fs_trial_result r[8];
+    small_results(r);
+    r[2].outcome = FS_HUNG;
+    r[2].peak_force_N = NAN;
+    fs_campaign_summarize(&c, r, rows);
+    CHECK(rows[0].hung == 1 && rows[0].failed_numerics == 1 && rows[0].landed == 2 && rows[0].nmetric == 2);
+    CHECK(rows[0].median[4] == 150); /* peak_force_N of 100, 200 */
+    CHECK(rows[1].hung == 0);
+    CHECK(!strcmp(fs_outcome_name(FS_HUNG), "hung") && !strcmp(fs_rule_name(FS_RULE_WATCHDOG), "watchdog"));
 }
 
 static void test_expectations(void)
@@ -141,19 +152,27 @@ static void rate_in(fs_campaign_row *rows) { rows[1].success_rate = 0.5; }
 static void force_near(fs_campaign_row *rows) { rows[0].median[4] += 20; } /* 0.1 * 200 + 1 = 21 allowed */
 static void force_far(fs_campaign_row *rows) { rows[0].median[4] += 22; }
 static void no_median(fs_campaign_row *rows) { rows[0].median[4] = NAN; }
+static void one_hung(fs_campaign_row *rows) { rows[0].hung = 1; }
 
-static fs_status compare_with(const char *tmp, const char *name, void (*change)(fs_campaign_row *))
+/* Compares the summary change() makes with the baseline in tmp/base (or tmp/BASE_NAME). */
+static fs_status compare_against(const char *tmp, const char *base_name, const char *name,
+                                 void (*change)(fs_campaign_row *))
 {
     char dir[512], result[600], baseline[600];
     snprintf(dir, sizeof dir, "%s/%s", tmp, name);
     write_summary(dir, change);
     snprintf(result, sizeof result, "%s/summary.json", dir);
-    snprintf(baseline, sizeof baseline, "%s/base/summary.json", tmp);
+    snprintf(baseline, sizeof baseline, "%s/%s/summary.json", tmp, base_name);
     FILE *null = fopen("/dev/null", "w");
     fs_error err;
     fs_status s = fs_campaign_compare(result, baseline, 0, null, &err);
     fclose(null);
     return s;
+}
+
+static fs_status compare_with(const char *tmp, const char *name, void (*change)(fs_campaign_row *))
+{
+    return compare_against(tmp, "base", name, change);
 }
 
 static void test_compare(void)
@@ -169,6 +188,14 @@ static void test_compare(void)
     CHECK(compare_with(tmp, "force_near", force_near) == FS_OK);
     CHECK(compare_with(tmp, "force_far", force_far) == FS_EXPECTATION_FAILED);
     CHECK(compare_with(tmp, "no_median", no_median) == FS_EXPECTATION_FAILED);
+    /* hung trials: never more than the baseline's; a summary from before the count reads as 0 */
+    CHECK(compare_with(tmp, "hung", one_hung) == FS_EXPECTATION_FAILED);
+    char cmd_old[1400];
+    snprintf(cmd_old, sizeof cmd_old, "mkdir '%s/old' && grep -v '\"hung\"' '%s/base/summary.json' >'%s/old/summary.json'",
+             tmp, tmp, tmp);
+    REQUIRE(system(cmd_old) == 0);
+    CHECK(compare_against(tmp, "old", "same_as_old", NULL) == FS_OK);
+    CHECK(compare_against(tmp, "old", "hung_vs_old", one_hung) == FS_EXPECTATION_FAILED);
     /* a file that is no summary is bad input */
     fs_error err;
     char path[600];

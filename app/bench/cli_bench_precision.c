@@ -84,8 +84,10 @@ static void with_settings(const scene *s, const row *r, fs_scenario *sc)
  * on it (a long run times itself well): the error of the first run, the median wall time. */
 static fs_status measure(row *r, int repeats, fs_error *err)
 {
-    static fs_scenario sc;
-    with_settings(r->sc, r, &sc);
+    fs_scenario *sc = malloc(sizeof *sc); /* a shallow copy (with_settings): freed, owns nothing */
+    if (!sc)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory");
+    with_settings(r->sc, r, sc);
     fs_status s = FS_OK;
     fs_sim_options opts = {.with_ground = 1, .pinned_chain = r->sc->pinned_chain, .record_drift = 1};
     double wall[8], spent = 0;
@@ -94,7 +96,7 @@ static fs_status measure(row *r, int repeats, fs_error *err)
     for (int k = 0; k < repeats && r->ok && (k == 0 || spent < REPEAT_BUDGET_S); k++) {
         fs_track t;
         fs_error run_err;
-        fs_status ran = fs_track_run(&sc, &opts, r->sc->duration_s, &t, &run_err);
+        fs_status ran = fs_track_run(sc, &opts, r->sc->duration_s, &t, &run_err);
         if (ran == FS_NUMERICAL) {
             r->ok = 0; /* blown up: a result of the sweep, not a failure of the command */
             break;
@@ -117,6 +119,7 @@ static fs_status measure(row *r, int repeats, fs_error *err)
         qsort(wall, (size_t)done, sizeof wall[0], fs_compare_doubles);
         r->wall_s = wall[done / 2];
     }
+    free(sc);
     return s;
 }
 
@@ -180,10 +183,13 @@ static fs_status landing_scene(scene *s, const char *name, const char *title, co
     s->has_springs = s->base.geom.nsprings > 0 || s->base.def.robot.joint != FS_ROBOT_RIGID;
     /* the reference: footsim itself at the finest step with dWorldStep */
     row ref = {.sc = s, .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT, .step_s = REF_STEP_S};
-    static fs_scenario sc;
-    with_settings(s, &ref, &sc);
+    fs_scenario *sc = malloc(sizeof *sc); /* a shallow copy (with_settings): freed, owns nothing */
+    if (!sc)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory");
+    with_settings(s, &ref, sc);
     fs_sim_options opts = {.with_ground = 1};
-    st = fs_track_run(&sc, &opts, s->duration_s, &s->ref, err);
+    st = fs_track_run(sc, &opts, s->duration_s, &s->ref, err);
+    free(sc);
     s->ref_wall_s = s->ref.wall_s;
     return st;
 }
@@ -461,8 +467,13 @@ static int fill_chart(FILE *f, const void *user)
 int cli_bench_precision(const cli_args *a, const char *dir)
 {
     fs_error err;
-    static scene scenes[NSCENES];
-    static row rows[MAX_ROWS];
+    scene *scenes = calloc(NSCENES, sizeof *scenes); /* large: on the heap for this command */
+    row *rows = calloc(MAX_ROWS, sizeof *rows);
+    if (!scenes || !rows) {
+        free(scenes);
+        free(rows);
+        return cli_report(FS_NO_MEMORY, "out of memory");
+    }
     int nrows = 0;
     char machine[512];
     cli_machine(machine, sizeof machine);
@@ -512,6 +523,8 @@ int cli_bench_precision(const cli_args *a, const char *dir)
         fs_track_free(&scenes[c].ref);
         fs_scenario_free(&scenes[c].base);
     }
+    free(scenes);
+    free(rows);
     if (s != FS_OK)
         return cli_report(s, err.message);
     printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}\n", nrows, dir);

@@ -650,8 +650,10 @@ static fs_status time_skips(measuring *m, skip_timing *t, int *n, fs_error *err)
 
 int cli_bench_speed(const cli_args *a, const char *dir)
 {
-    static timing t[NSCENES];
-    static skip_timing k[NSKIPS];
+    timing t[NSCENES];
+    skip_timing k[NSKIPS];
+    memset(t, 0, sizeof t);
+    memset(k, 0, sizeof k);
     int n = 0, nk = 0;
     context c;
     start_context(&c, a->quick);

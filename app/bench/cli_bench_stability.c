@@ -45,7 +45,7 @@ static const slice SLICES[NSLICES] = {
 /* finer around the explicit springs' limit (4e-5 to 8e-5 s for the default foot) */
 static const double STEPS_FULL[] = {1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 6e-5, 8e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
 static const double STEPS_QUICK[] = {2e-5, 1e-4, 5e-4, 2e-3, 1e-2};
-static const char *STEPPERS[2] = {"step", "quickstep"}, *SPRINGS[2] = {"implicit", "explicit"};
+static const char *const STEPPERS[2] = {"step", "quickstep"}, *const SPRINGS[2] = {"implicit", "explicit"};
 
 /* Simulated time of each run, s: the static load rises over 20 ms and settles by 0.2 s; the robot
  * dropped 5 cm lands at 0.1 s. */
@@ -105,17 +105,20 @@ static fs_status configure(const config *c, const fs_design_def *base, double du
  * copy of its slice's scenario, loaded once (loaded), its definitions edited. */
 static void run_config(const config *c, const fs_scenario *loaded, double duration, outcome *o)
 {
-    static fs_scenario sc;
+    fs_scenario *sc = calloc(1, sizeof *sc); /* large: on the heap, freed on every path */
     fs_error err = {FS_OK, ""};
     memset(o, 0, sizeof *o);
-    o->status = fs_scenario_copy(&sc, loaded, &err);
+    o->status = sc ? fs_scenario_copy(sc, loaded, &err) : fs_fail(&err, FS_NO_MEMORY, "out of memory");
     if (o->status == FS_OK)
-        o->status = configure(c, &loaded->design, duration, &sc, &err);
+        o->status = configure(c, &loaded->design, duration, sc, &err);
     fs_sim sim;
     if (o->status == FS_OK)
-        o->status = fs_sim_build(&sim, &sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
+        o->status = fs_sim_build(&sim, sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
     if (o->status != FS_OK) {
         snprintf(o->error, sizeof o->error, "%.500s", err.message);
+        if (sc)
+            fs_scenario_free(sc);
+        free(sc);
         return;
     }
     fs_drive_spec spec = {.max_steps = (long)ceil(duration / c->step_s - 1e-9)};
@@ -137,9 +140,10 @@ static void run_config(const config *c, const fs_scenario *loaded, double durati
     o->bound_J = k->energy_bound_J;
     o->speed_m_per_s = k->max_speed_m_per_s;
     o->limit_s = fs_check_explicit_step_limit(&sim);
-    o->iterations = sc.def.iterations;
+    o->iterations = sc->def.iterations;
     fs_sim_destroy(&sim);
-    fs_scenario_free(&sc);
+    fs_scenario_free(sc);
+    free(sc);
 }
 
 /* ---- the runs, in footsim's pool of worker processes -------------------------------------------- */
@@ -462,8 +466,11 @@ int cli_bench_stability(const cli_args *a, const char *dir)
                                  "and step_s, and its slice's quantity; the rest as the inputs give them", &err);
     if (s == FS_OK)
         s = fs_make_dirs(dir, &err);
-    static config cfg[NSLICES * NCOMBOS * MAX_VALUES * 16];
-    int n = grid(a->quick, cfg);
+    /* the grid of configurations: large, so on the heap for this command */
+    config *cfg = calloc(NSLICES * NCOMBOS * MAX_VALUES * 16, sizeof *cfg);
+    if (s == FS_OK && !cfg)
+        s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
+    int n = cfg ? grid(a->quick, cfg) : 0;
     outcome *out = s == FS_OK ? calloc((size_t)n, sizeof *out) : NULL;
     if (s == FS_OK && !out)
         s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
@@ -486,6 +493,7 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     if (s == FS_OK)
         s = fs_write_in(dir, "stability.md", fill_summary, &x, &err);
     free(out);
+    free(cfg);
     fs_provenance_free(&prov);
     for (int i = 0; i < NSLICES; i++) {
         int shared = 0;

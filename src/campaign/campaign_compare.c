@@ -65,6 +65,18 @@ static int report_change(FILE *out, const cJSON *row, const char *what, double b
     return bad;
 }
 
+/* A count that may only fall (undecided, hung trials): never more than the baseline's. A summary
+ * without it (written before footsim counted it) had none: 0. Returns 1 when it rose. */
+static int compare_count(FILE *out, const cJSON *b, const cJSON *r, const char *key, int *changed)
+{
+    double now = number_of(r, key), base = number_of(b, key);
+    now = isnan(now) ? 0 : now, base = isnan(base) ? 0 : base;
+    if (now == base)
+        return 0;
+    (*changed)++;
+    return report_change(out, r, key, base, now, 0, base);
+}
+
 /* Compares one row of each; returns how many quantities left their allowance; counts changes. */
 static int compare_row(FILE *out, const cJSON *baseline, const cJSON *b, const cJSON *r, int *changed)
 {
@@ -74,14 +86,10 @@ static int compare_row(FILE *out, const cJSON *baseline, const cJSON *b, const c
         (*changed)++;
         bad += report_change(out, r, "success_rate", base_rate, rate, number_of(b, "ci_low"), number_of(b, "ci_high"));
     }
-    /* trials the window left undecided: never more than the baseline's (a baseline without the
-       count had none: its rules decided every trial) */
-    double und = number_of(r, "undecided"), base_und = number_of(b, "undecided");
-    und = isnan(und) ? 0 : und, base_und = isnan(base_und) ? 0 : base_und;
-    if (und != base_und) {
-        (*changed)++;
-        bad += report_change(out, r, "undecided", base_und, und, 0, base_und);
-    }
+    /* trials the window left undecided (a baseline without the count had none: its rules decided
+       every trial), and trials whose worker hung (a baseline has none) */
+    bad += compare_count(out, b, r, "undecided", changed);
+    bad += compare_count(out, b, r, "hung", changed);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
         char key[FS_NAME_MAX + 8];
         snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);

@@ -241,6 +241,8 @@ static int parse_record(char *line, int *index, fs_trial_result *r)
     }
     if (v[0] < 0 || v[0] > INT_MAX || v[1] < INT_MIN || v[1] > INT_MAX)
         return 0;
+    if (v[2] < 0 || v[2] >= FS_NOUTCOMES || v[3] < 0 || v[3] >= FS_NRULES) /* hung and watchdog included */
+        return 0;
     *index = (int)v[0];
     r->draw.seed = (int)v[1], r->outcome = (int)v[2], r->rule = (int)v[3], r->steps = v[4];
     for (int k = 0; k < NDOUBLES; k++) {

@@ -133,7 +133,7 @@ static int fill_trials(FILE *f, const out_ctx *x)
         fprintf(f, ",%s,%s", fs_outcome_name(r->outcome), fs_rule_name(r->rule));
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             csv_number(f, fs_metric_value(r, m));
-        csv_text(f, r->outcome == FS_FAILED_NUMERICS ? r->failure : "");
+        csv_text(f, r->outcome == FS_FAILED_NUMERICS || r->outcome == FS_HUNG ? r->failure : "");
         fputc('\n', f);
     }
     return 1;
@@ -144,14 +144,14 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
     const fs_campaign *c = x->c;
     csv_provenance(f, c);
     csv_key_header(f, c);
-    fputs(",trials,landed,fell,undecided,failed_numerics,success_rate,ci_low,ci_high", f);
+    fputs(",trials,landed,fell,undecided,failed_numerics,hung,success_rate,ci_low,ci_high", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
     fputs(",law_prediction,law_K_N_m_per_rad,law_critical_com_height_m\n", f);
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         csv_row_key(f, c, r->foot, r->terrain, r->robot);
-        fprintf(f, ",%d,%d,%d,%d,%d", r->trials, r->landed, r->fell, r->undecided, r->failed_numerics);
+        fprintf(f, ",%d,%d,%d,%d,%d,%d", r->trials, r->landed, r->fell, r->undecided, r->failed_numerics, r->hung);
         csv_number(f, r->success_rate);
         csv_number(f, r->ci_low);
         csv_number(f, r->ci_high);
@@ -172,24 +172,24 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
     fs_path_stem(c->trial_path, trial, sizeof trial);
     fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot, terrain and robot)%s%s. Success: the "
                "trial landed; undecided trials (the window ended first) count as not landed and are shown apart; "
-               "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically.\n\n",
+               "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically or hang (hung: the worker killed by the watchdog).\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
             c->nsweep ? "; each terrain swept over " : "", c->sweep[0]);
     if (c->nsweep == 2)
         fprintf(f, "Swept over %s and %s: a terrain named NAME@v1,v2 is the point (%s = v1, %s = v2).\n\n", c->sweep[0],
                 c->sweep[1], c->sweep[0], c->sweep[1]);
-    fputs("| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | success | 95 % CI | law |", f);
+    fputs("| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | hung | success | 95 % CI | law |", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, " %s |", fs_campaign_metrics[m].name);
-    fputs("\n|---|---|---|--:|--:|--:|--:|--:|--:|---|---|", f);
+    fputs("\n|---|---|---|--:|--:|--:|--:|--:|--:|--:|---|---|", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fputs("--:|", f);
     fputc('\n', f);
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
-        fprintf(f, "| %s | %s | %s | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
+        fprintf(f, "| %s | %s | %s | %d | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
                 c->terrain[r->terrain].name, c->robot[r->robot].name, r->trials, r->landed, r->fell, r->undecided,
-                r->failed_numerics, r->success_rate, r->ci_low, r->ci_high);
+                r->failed_numerics, r->hung, r->success_rate, r->ci_low, r->ci_high);
         if (isfinite(r->law_K))
             fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m) |", fs_law_name(r->law), r->law_K,
                     r->law_critical_m);
@@ -257,6 +257,7 @@ static cJSON *summary_json(const out_ctx *x)
         ok &= cJSON_AddNumberToObject(o, "fell", r->fell) != NULL;
         ok &= cJSON_AddNumberToObject(o, "undecided", r->undecided) != NULL;
         ok &= cJSON_AddNumberToObject(o, "failed_numerics", r->failed_numerics) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "hung", r->hung) != NULL;
         ok &= cJSON_AddNumberToObject(o, "success_rate", r->success_rate) != NULL;
         ok &= cJSON_AddNumberToObject(o, "ci_low", r->ci_low) != NULL;
         ok &= cJSON_AddNumberToObject(o, "ci_high", r->ci_high) != NULL;

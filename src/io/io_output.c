@@ -29,6 +29,8 @@ typedef struct pending {
     int tree;
     pid_t owner;
 } pending;
+/* Static on purpose: the atexit and signal handlers that remove these take no argument, so the list
+ * they read must be the process's own (filled and read with no allocation: safe in a handler). */
 static pending pend[PENDING_MAX];
 static int npend, atexit_set;
 
@@ -168,7 +170,7 @@ fs_status fs_make_dirs(const char *dir, fs_error *err)
 }
 
 static int fsync_path(const char *path);
-static int sync_failed;
+static int sync_failed; /* static on purpose: nftw's callback takes no user pointer to report through */
 
 static int sync_folder(const char *path, const struct stat *st, int flag, struct FTW *ftw)
 {
@@ -220,12 +222,33 @@ static fs_status write_error(fs_error *err, const char *path, int e)
 
 /* ---- files -------------------------------------------------------------------------------------- */
 
-fs_status fs_check_file_target(const char *path, const char *what, fs_error *err)
+/* Whether the regular file at path begins with the n bytes of sig (read without following a link). */
+static int begins_with(const char *path, const unsigned char *sig, size_t n)
+{
+    unsigned char buf[64];
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0 || n > sizeof buf) {
+        if (fd >= 0)
+            close(fd);
+        return 0;
+    }
+    ssize_t got = read(fd, buf, n);
+    close(fd);
+    return got == (ssize_t)n && !memcmp(buf, sig, n);
+}
+
+fs_status fs_check_file_target(const char *path, const char *what, const unsigned char *signature, size_t nsig,
+                               const char *kind, int replace, fs_error *err)
 {
     struct stat st;
-    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
+    int exists = lstat(path, &st) == 0;
+    if (exists && !S_ISREG(st.st_mode))
         return fs_fail(err, FS_BAD_INPUT, "%s %s: is %s; footsim writes only regular files: give a file's path", what,
                        path, type_name(st.st_mode));
+    /* a user's file (notes, data) is not replaced by accident: only what footsim would write there */
+    if (exists && !replace && st.st_size > 0 && !begins_with(path, signature, nsig))
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: the file exists and is not %s; footsim replaces only its own kind of "
+                       "file: give another name, remove it, or add --replace to overwrite it", what, path, kind);
     char dir[FS_OUT_PATH];
     parent_of(path, dir, sizeof dir);
     if (stat(dir, &st) != 0)

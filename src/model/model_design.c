@@ -129,6 +129,14 @@ static void add_sphere(fs_foot_geom *g, const char *name, int body, fs_vec3 c, d
     s->radius_m = r;
 }
 
+/* Where a message about two keys that meet begins: the other key's --set when it was given by --set
+ * (a value from the command line is not blamed on a line of the file), else the file line of the
+ * first. */
+static const char *lead_where(const char *first, const char *other)
+{
+    return strncmp(other, "--set ", 6) ? first : other;
+}
+
 static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, int i, fs_vec3 H, fs_vec3 A,
                                 fs_foot_geom *g, fs_error *err)
 {
@@ -144,22 +152,24 @@ static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, in
     if (sin3 < -1 || sin3 > 0) {
         /* several keys meet here: name where l3_m came from too (a --set is not a line of the file) */
         char where_l3[FS_PATH_MAX + 80];
+        fs_config_where(cfg, "pose", "toe_deg", where, sizeof where);
+        fs_config_where(cfg, "links", "l3_m", where_l3, sizeof where_l3);
         return fs_fail(err, FS_BAD_INPUT,
                        "%s: chain %d's toe cannot rest on the ground (its metatarsal would need sin = %.3g; l3_m = %.3g "
                        "m from %s); change l3_m, toe_deg or the heel and talus angles",
-                       fs_config_where(cfg, "pose", "toe_deg", where, sizeof where), i + 1, sin3, d->l3_m,
-                       fs_config_where(cfg, "links", "l3_m", where_l3, sizeof where_l3));
+                       lead_where(where, where_l3), i + 1, sin3, d->l3_m, where_l3);
     }
     double a3 = asin(sin3);
     fs_vec3 B = fs_add(M, fs_scale(in_plane(f, a3), l3));
     fs_vec3 T = fs_add(B, fs_scale(in_plane(f, a4), l4));
     if (B.z < rb) {
         char where_rb[FS_PATH_MAX + 80];
+        fs_config_where(cfg, "pose", "toe_deg", where, sizeof where);
+        fs_config_where(cfg, "contact", "ball_radius_m", where_rb, sizeof where_rb);
         return fs_fail(err, FS_BAD_INPUT,
                        "%s: chain %d's ball sphere would start %.3g mm into the ground (ball_radius_m = %.3g m from "
                        "%s); use a steeper toe_deg or a smaller ball_radius_m",
-                       fs_config_where(cfg, "pose", "toe_deg", where, sizeof where), i + 1, (rb - B.z) * 1e3,
-                       d->ball_radius_m, fs_config_where(cfg, "contact", "ball_radius_m", where_rb, sizeof where_rb));
+                       lead_where(where, where_rb), i + 1, (rb - B.z) * 1e3, d->ball_radius_m, where_rb);
     }
     int meta = g->nbodies++, phal = g->nbodies++;
     char name[32];

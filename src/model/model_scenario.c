@@ -113,7 +113,10 @@ static int override_target(const char *assignment)
     return has_section(fs_terrain_keys, fs_terrain_nkeys, assignment) ? 1 : 2;
 }
 
-static fs_status crop_terrain(fs_scenario *sc, fs_error *err)
+/* Samples the terrain over the region the foot can reach. A heightmap the foot never reaches would
+ * give flat-ground results without a word: refused. One that covers only part of the foot's region
+ * is warned about on stderr when `warn` (a scenario read from its file, not each trial's copy). */
+static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
 {
     double box[4];
     fs_scenario_footprint(sc, box);
@@ -121,17 +124,18 @@ static fs_status crop_terrain(fs_scenario *sc, fs_error *err)
     if (sc->def.kind == FS_SCENARIO_WALK) /* the walking machine's path */
         box[1] += sc->def.walk_steps * sc->def.step_length_m;
     const fs_terrain *t = &sc->terrain;
-    if (t->def.kind == FS_TERRAIN_HEIGHTMAP && t->img) {
-        /* a heightmap the foot never reaches would give flat-ground results without a word */
-        const fs_terrain_def *d = &t->def;
-        double x1 = d->heightmap_x0_m + (t->img_w - 1) * d->heightmap_pixel_m;
-        double y1 = d->heightmap_y0_m + (t->img_h - 1) * d->heightmap_pixel_m;
-        if (box[1] < d->heightmap_x0_m || box[0] > x1 || box[3] < d->heightmap_y0_m || box[2] > y1)
-            return fs_fail(err, FS_BAD_INPUT, "%s: the heightmap covers x %.4g..%.4g m, y %.4g..%.4g m, and the foot "
-                           "(x %.3g..%.3g m, y %.3g..%.3g m) is off it: the run would be on flat ground; move the "
-                           "heightmap (x0_m, y0_m) or the foot (start.x_m, y_m)", t->path, d->heightmap_x0_m, x1,
-                           d->heightmap_y0_m, y1, box[0], box[1], box[2], box[3]);
-    }
+    double e[4], outside = fs_terrain_outside(t, box, e);
+    if (outside > 0 && (box[1] < e[0] || box[0] > e[1] || box[3] < e[2] || box[2] > e[3]))
+        return fs_fail(err, FS_BAD_INPUT, "%s: the heightmap covers x %.4g..%.4g m, y %.4g..%.4g m, and the foot "
+                       "(x %.3g..%.3g m, y %.3g..%.3g m) is off it: the run would be on flat ground; move the "
+                       "heightmap (x0_m, y0_m) or the foot (start.x_m, y_m)", t->path, e[0], e[1], e[2], e[3], box[0],
+                       box[1], box[2], box[3]);
+    if (warn && outside > 0)
+        fprintf(stderr, "footsim: warning: %s: the heightmap covers x %.4g..%.4g m, y %.4g..%.4g m (%s); %.0f %% of the "
+                "foot's region (x %.3g..%.3g m, y %.3g..%.3g m) is outside it, where the ground only draws out the "
+                "image's edge; move the heightmap (x0_m, y0_m) or the foot (start.x_m, y_m) to keep the foot on the "
+                "data\n", t->path, e[0], e[1], e[2], e[3], t->placed_at, fmax(1, round(outside * 100)), box[0], box[1],
+                box[2], box[3]);
     return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
 }
 
@@ -211,7 +215,7 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     if (s == FS_OK)
         s = fs_terrain_load(sc->def.terrain_path, part[1], n[1], &sc->terrain, err);
     if (s == FS_OK)
-        s = crop_terrain(sc, err);
+        s = crop_terrain(sc, 1, err);
     return s;
 }
 
@@ -256,7 +260,7 @@ fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
     if (s != FS_OK)
         return s;
     fs_terrain_redraw(&sc->terrain);
-    return crop_terrain(sc, err);
+    return crop_terrain(sc, 0, err);
 }
 
 fs_status fs_scenario_inputs(const fs_scenario *sc, fs_provenance *p, fs_error *err)

@@ -398,6 +398,10 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
         char where[FS_PATH_MAX + 80];
         fs_config_where(&cfg, "heightmap", "file", where, sizeof where);
         s = fs_png_read_gray(t->def.heightmap_path, where, &t->img_w, &t->img_h, &t->img, err);
+        char where_y[FS_PATH_MAX + 80];
+        snprintf(t->placed_at, sizeof t->placed_at, "x0_m from %s, y0_m from %s",
+                 fs_config_where(&cfg, "heightmap", "x0_m", where, sizeof where),
+                 fs_config_where(&cfg, "heightmap", "y0_m", where_y, sizeof where_y));
     }
     fs_config_free(&cfg);
     if (s == FS_OK)
@@ -408,6 +412,19 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
 }
 
 void fs_terrain_redraw(fs_terrain *t) { draw_rocks(t); }
+
+double fs_terrain_outside(const fs_terrain *t, const double region[4], double extent[4])
+{
+    if (t->def.kind != FS_TERRAIN_HEIGHTMAP || !t->img)
+        return 0;
+    const fs_terrain_def *d = &t->def;
+    extent[0] = d->heightmap_x0_m, extent[1] = d->heightmap_x0_m + (t->img_w - 1) * d->heightmap_pixel_m;
+    extent[2] = d->heightmap_y0_m, extent[3] = d->heightmap_y0_m + (t->img_h - 1) * d->heightmap_pixel_m;
+    double w = region[1] - region[0], h = region[3] - region[2];
+    double in_x = fmax(0, fmin(region[1], extent[1]) - fmax(region[0], extent[0]));
+    double in_y = fmax(0, fmin(region[3], extent[3]) - fmax(region[2], extent[2]));
+    return w > 0 && h > 0 ? 1 - in_x * in_y / (w * h) : 0;
+}
 
 /* A copy of n doubles, or NULL (for src NULL too). */
 static double *dup_doubles(const double *src, size_t n)

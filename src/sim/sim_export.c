@@ -738,7 +738,9 @@ fs_status fs_mjcf_write(const fs_scenario *sc, int with_scenario, const char *pa
     char hpath[FS_OUT_PATH];
     fs_mjcf_hfield_path(path, hpath, sizeof hpath);
     const char *slash = strrchr(hpath, '/');
-    fs_status s = fs_check_file_target(path, "--out", err);
+    /* the structural checks only (replace = 1): export has no --replace, and writes over a file at
+     * --out as it did before the kind check came in for terrain --png */
+    fs_status s = fs_check_file_target(path, "--out", NULL, 0, "an MJCF file", 1, err);
     if (s != FS_OK)
         return s;
     fs_mjcf m;

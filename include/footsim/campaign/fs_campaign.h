@@ -125,8 +125,9 @@ void fs_wilson(int k, int n, double *low, double *high);
 typedef struct fs_campaign_row {
     int foot, terrain, robot;
     int trials, landed, fell, undecided, failed_numerics;
+    int hung;                              /* trials whose worker the watchdog killed (not physics) */
     double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
-    int nmetric;                           /* trials the medians are over (all but failed_numerics) */
+    int nmetric;                           /* trials the medians are over (all but failed_numerics, hung) */
     double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
     /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
     int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */

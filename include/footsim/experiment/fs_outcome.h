@@ -17,8 +17,10 @@
 #ifndef FS_OUTCOME_H
 #define FS_OUTCOME_H
 
-typedef enum fs_outcome { FS_LANDED = 0, FS_FELL = 1, FS_FAILED_NUMERICS = 2, FS_UNDECIDED = 3 } fs_outcome;
-enum { FS_NOUTCOMES = 4 };
+/* FS_HUNG is no judge's decision: a campaign gives it to a trial whose worker the pool's watchdog
+ * killed (no answer in its time), which says nothing of the physics. */
+typedef enum fs_outcome { FS_LANDED = 0, FS_FELL = 1, FS_FAILED_NUMERICS = 2, FS_UNDECIDED = 3, FS_HUNG = 4 } fs_outcome;
+enum { FS_NOUTCOMES = 5 };
 
 /* Which rule decided a trial (fs_rule_name gives the words). */
 typedef enum fs_rule {
@@ -31,6 +33,7 @@ typedef enum fs_rule {
     FS_RULE_DYING,          /* landed: the window ended upright, supported, motion dying out */
     FS_RULE_WINDOW,         /* undecided: the window ended first */
     FS_RULE_NUMERICS,       /* failed_numerics: the state checks stopped the trial */
+    FS_RULE_WATCHDOG,       /* hung: the pool's watchdog killed the trial's worker */
     FS_NRULES
 } fs_rule;
 
@@ -73,7 +76,7 @@ int fs_judge_step(fs_judge *j, const fs_outcome_sample *s);
  * decided yet from the last sample and the deepest foot shape's penetration, m. */
 void fs_judge_finish(fs_judge *j, const fs_outcome_sample *last, double penetration_m);
 
-/* "landed", "fell", "failed_numerics", "undecided". */
+/* "landed", "fell", "failed_numerics", "undecided", "hung". */
 const char *fs_outcome_name(int outcome);
 /* "leaned past the fall angle", ...: what decided it. */
 const char *fs_rule_name(int rule);

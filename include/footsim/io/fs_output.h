@@ -46,8 +46,11 @@ fs_status fs_write_in(const char *dir, const char *name, fs_fill_fn fill, const 
 fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_error *err);
 
 /* Refuses (FS_BAD_INPUT) a path footsim must not write a file at: a device, FIFO, socket,
- * folder or symbolic link, or a file in a folder that does not exist or cannot be written. */
-fs_status fs_check_file_target(const char *path, const char *what, fs_error *err);
+ * folder or symbolic link, a file in a folder that does not exist or cannot be written, or (unless
+ * replace, --replace) an existing non-empty file that is not `kind` ("a PNG"), that is, does not
+ * begin with its nsig (at most 64) signature bytes: a user's file is never overwritten by accident. */
+fs_status fs_check_file_target(const char *path, const char *what, const unsigned char *signature, size_t nsig,
+                               const char *kind, int replace, fs_error *err);
 
 /* A temporary name for path beside it ("path.tmp.<pid>"), removed at exit unless committed. */
 fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err);

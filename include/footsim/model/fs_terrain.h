@@ -50,6 +50,8 @@ typedef struct fs_terrain {
     fs_rock rock[FS_MAX_ROCKS];     /* complex_uneven: drawn from the seed */
     int img_w, img_h;               /* heightmap: the image, heights in m, row 0 at the largest y */
     double *img;
+    char placed_at[2 * FS_PATH_MAX + 200]; /* heightmap: where x0_m and y0_m came from, for messages
+                                              ("x0_m from FILE:LINE, y0_m from --set heightmap.y0_m") */
     /* the cropped lattice: nx * ny samples, z[j * nx + i] at (x0 + i dx, y0 + j dx) */
     int nx, ny;
     long i0, j0;                    /* lattice index of sample (0, 0) */
@@ -94,6 +96,12 @@ double fs_terrain_height(const fs_terrain *t, double x, double y);
 double fs_terrain_function(const fs_terrain *t, double x, double y);
 
 int fs_terrain_is_heightfield(const fs_terrain *t);
+
+/* For a heightmap, the image's extent (x0, x1, y0, y1, m: the first and last pixel centres) and the
+ * part of region [xmin, xmax, ymin, ymax] (by area, 0 to 1) that lies beyond it, where the image's
+ * edge heights are drawn out and the ground is not the data; 0 for the generated kinds (their
+ * height function covers the plane), with extent left untouched. */
+double fs_terrain_outside(const fs_terrain *t, const double region[4], double extent[4]);
 
 void fs_terrain_free(fs_terrain *t);
 
