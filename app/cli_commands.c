@@ -453,6 +453,8 @@ typedef struct folder_job {
     cJSON *(*to_json)(const void *result);
     const void *result;
     const fs_provenance *provenance; /* what made the result, put into the JSON (NULL: none) */
+    /* more files beside the JSON (a trial's trajectory.csv), written into dir; NULL: none */
+    fs_status (*write_more)(void *user, const char *dir, fs_error *err);
 } folder_job;
 
 /* out: the caller's results folder (on the heap with the rest of its work), aborted here when it
@@ -475,6 +477,8 @@ static int in_folder(const cli_args *a, const folder_job *j, fs_outdir *out, cha
             cJSON_AddItemToObject(o, "provenance", fs_provenance_json(j->provenance));
         rs = fs_write_in(out->partial, j->name, fill_json, o, &err);
         cJSON_Delete(o);
+        if (rs == FS_OK && j->write_more)
+            rs = j->write_more(j->user, out->partial, &err);
         if (rs == FS_OK)
             rs = fs_outdir_commit(out, &err);
     }
@@ -489,23 +493,34 @@ typedef struct trial_job {
     const fs_scenario *sc;
     int seed;
     fs_trial_result *r;
+    fs_run_result *log; /* the trial's time series, for trajectory.csv */
 } trial_job;
 
 static fs_status run_trial_job(void *user, const fs_run_observer *obs, fs_error *err)
 {
     trial_job *t = user;
-    return fs_trial_run_scenario(t->sc, t->seed, obs, t->r, err);
+    return fs_trial_run_logged(t->sc, t->seed, obs, t->log, t->r, err);
+}
+
+static fs_status write_trial_log(void *user, const char *dir, fs_error *err)
+{
+    const trial_job *t = user;
+    char path[FS_OUT_PATH + 32];
+    snprintf(path, sizeof path, "%s/trajectory.csv", dir);
+    return fs_run_write_trajectory(t->log, path, err);
 }
 
 static cJSON *trial_json_of(const void *r) { return trial_json(r); }
 
 /* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
- * trial.json and the frames, swapped in whole at the end. The frames are framed on the pose the
+ * trial.json, its time series trajectory.csv (footsim plot draws it) and the frames, swapped in
+ * whole at the end. The frames are framed on the pose the
  * seed draws. */
 /* What a trial with a folder works on, too large for the stack: on the heap, one per command. */
 typedef struct trial_files {
     fs_scenario base, placed;
     fs_outdir out;
+    fs_run_result log;
 } trial_files;
 
 static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, trial_files *w)
@@ -526,8 +541,9 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     if (!s && fs_scenario_provenance(base, a->set, a->nset, &prov, &err) != FS_OK)
         s = fail(&err);
     prov.first_seed = seed, prov.nseeds = 1;
-    trial_job t = {base, seed, r};
-    folder_job j = {dir, cli_trial_files, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov};
+    trial_job t = {base, seed, r, &w->log};
+    folder_job j = {dir, cli_trial_files, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov,
+                    write_trial_log};
     if (!s)
         s = in_folder(a, &j, &w->out, dir_out, size);
     fs_provenance_free(&prov);
@@ -543,6 +559,7 @@ static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char
     fs_outdir_abort(&w->out); /* each is a no-op where trial_work did it already */
     fs_scenario_free(&w->base);
     fs_scenario_free(&w->placed);
+    fs_run_free(&w->log);
     free(w);
     return s;
 }
@@ -643,7 +660,7 @@ int cli_walk(const cli_args *a)
         fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
         if (fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
             s = fail(&err);
-        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov};
+        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL};
         if (!s)
             s = in_folder(a, &j, &w->out, shown, sizeof shown);
         fs_provenance_free(&prov);

@@ -20,7 +20,7 @@ typedef struct command {
 } command;
 
 const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames", "video.mp4", NULL};
-const char *const cli_trial_files[] = {"trial.json", "frames", "video.mp4", NULL};
+const char *const cli_trial_files[] = {"trial.json", "trajectory.csv", "frames", "video.mp4", NULL};
 const char *const cli_walk_files[] = {"walk.json", "frames", "video.mp4", NULL};
 const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
                                           "chart.dat", "chart.gp", "trials.journal", NULL};
@@ -51,8 +51,9 @@ static const command commands[] = {
     {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
-     "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json and the frames of exactly\n"
-     "  that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
+     "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json, its time series\n"
+     "  DIR/trajectory.csv (with the robot's lean: footsim plot DIR draws it) and the frames of\n"
+     "  exactly that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
     {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data --shard --fresh",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"

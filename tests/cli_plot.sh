@@ -1,9 +1,10 @@
 #!/bin/sh
 # footsim plot and terrain --png (issue 14 §2). Always: plot refuses (exit 2, nothing written) what
 # is not a run's or a campaign's folder, a damaged trajectory or summary, and an --out it may not
-# write; a run's trajectory.csv carries every spring-damper's force. With gnuplot: a short run and a
+# write; a run's trajectory.csv carries every spring-damper's force; a landing trial's folder
+# (trial --out) carries its time series with the robot's lean, the trial unchanged by it. With gnuplot: a short run and a
 # small campaign folder (a summary.json: bars with a zero rate, a one-key sweep, a two-key heat map)
-# give whole PNGs of the stated size; terrain --png is the bare map grown by the figure's margins,
+# and a trial's folder give whole PNGs of the stated size (the trial's with its lean panel); terrain --png is the bare map grown by the figure's margins,
 # its colour bar's pixels brightening from the lowest height to the highest. Without gnuplot those
 # checks are skipped, said. Usage: cli_plot.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
@@ -87,6 +88,18 @@ row() { # row FOOT TERRAIN LANDED [EXTRA]: a row of 4 trials with a rough interv
     echo ']}'
 } >"$tmp/heat/summary.json"
 
+# a landing trial's folder holds its time series, the robot's lean with it; the trial is the same
+# with it as without
+trial="$fs trial scenarios/landing_trial.ini --seed 1 --set robot.design=robots/drop_weight.ini --set run.duration_s=0.1"
+$trial --out "$tmp/trial1" >/dev/null 2>&1
+check_that "trial --out writes its time series" [ -s "$tmp/trial1/trajectory.csv" ]
+check_that "with the robot's lean last" sh -c "head -1 '$tmp/trial1/trajectory.csv' | grep -q ',d3_chain5_N,lean_deg\$'"
+$trial --json >"$tmp/plain.json" 2>/dev/null
+for k in outcome end_time_s peak_force_N ankle_drop_m; do
+    check_that "the trial's $k is the same with its time series kept" \
+        [ "$(grep "\"$k\"" "$tmp/plain.json")" = "$(grep "\"$k\"" "$tmp/trial1/trial.json")" ]
+done
+
 if ! command -v gnuplot >/dev/null 2>&1; then
     echo "gnuplot is not installed: the plotting checks are skipped (the refusals above ran)"
     "$fs" plot "$tmp/run" 2>"$tmp/err.txt"
@@ -109,6 +122,10 @@ check_that "plot --out: the chart there, whole" png_ok "$tmp/elsewhere/plot.png"
 "$fs" plot "$tmp/run" --out "$tmp/other" --replace >/dev/null 2>&1
 check_that "plot --out --replace: the chart beside the folder's own files" png_ok "$tmp/other/plot.png" &&
     [ -f "$tmp/other/notes.txt" ]
+
+"$fs" plot "$tmp/trial1" >/dev/null 2>&1
+check_that "plot of a trial's folder: a whole PNG" png_ok "$tmp/trial1/plot.png"
+check_that "plot of a trial's folder: the lean panel" grep -q "ylabel 'lean (deg)'" "$tmp/trial1/plot.gp"
 
 for d in camp sweep heat; do
     "$fs" plot "$tmp/$d" >"$tmp/out.txt" 2>"$tmp/err.txt"

@@ -1,6 +1,8 @@
 /* experiment_run.c: a scenario run to rest, its metrics, and writing them. */
 #include "footsim/experiment/fs_run.h"
 
+#include "experiment_log.h"
+
 #include "footsim/io/fs_output.h"
 #include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
@@ -11,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void name_columns(fs_run_result *res, const fs_foot_geom *g)
+static void name_columns(fs_run_result *res, const fs_foot_geom *g, int with_lean)
 {
     static const char *fixed[] = {"t_s", "ankle_x_m", "ankle_y_m", "ankle_z_m", "contacts"};
     res->ncols = 0;
@@ -25,9 +27,12 @@ static void name_columns(fs_run_result *res, const fs_foot_geom *g)
         snprintf(res->spring_col[i], sizeof res->spring_col[i], "%s_N", g->spring[i].name);
         res->col_name[res->ncols++] = res->spring_col[i];
     }
+    res->lean_col = with_lean ? res->ncols : 0;
+    if (with_lean)
+        res->col_name[res->ncols++] = "lean_deg";
 }
 
-static void log_row(fs_run_result *res, const fs_sim *sim)
+void fs_log_row(fs_run_result *res, const fs_sim *sim)
 {
     if (res->nrows == res->capacity)
         return;
@@ -42,7 +47,38 @@ static void log_row(fs_run_result *res, const fs_sim *sim)
         row[5 + i] = fs_sim_hinge_angle(sim, i);
     for (int i = 0; i < sim->geom->nsprings; i++)
         row[5 + sim->geom->nhinges + i] = fs_spring_measure(&sim->spring[i]).force_N;
+    if (res->lean_col)
+        row[res->lean_col] = fs_sim_robot_tilt(sim) * 180 / M_PI;
     res->nrows++;
+}
+
+void fs_log_last(fs_run_result *res, const fs_sim *sim)
+{
+    if (res->nrows == 0 || res->rows[(size_t)(res->nrows - 1) * res->ncols] != sim->time_s)
+        fs_log_row(res, sim);
+}
+
+fs_status fs_log_open(fs_run_result *res, const fs_scenario *sc, int with_lean, fs_error *err)
+{
+    const fs_scenario_def *d = &sc->def;
+    name_columns(res, &sc->geom, with_lean);
+    long nsteps = (long)ceil(d->duration_s / d->step_s - 1e-9);
+    long every = lround(d->log_interval_s / d->step_s);
+    if (every < 1)
+        every = 1;
+    /* the trajectory is kept in memory: bounded before the first step */
+    double bytes = ((double)nsteps / every + 2) * res->ncols * sizeof *res->rows;
+    if (nsteps > FS_MAX_STEPS || bytes > FS_TRAJ_MAX_BYTES)
+        return fs_fail(err, FS_BAD_INPUT, "%s: duration_s / log_interval_s asks for %.3g trajectory rows (%.3g GB); "
+                       "at most %.3g GB: a longer log_interval_s or a shorter duration_s", sc->path,
+                       (double)nsteps / every + 2, bytes / 1e9, FS_TRAJ_MAX_BYTES / 1e9);
+    res->capacity = (int)(nsteps / every + 2);
+    res->every = every;
+    res->rows = malloc((size_t)res->capacity * res->ncols * sizeof *res->rows);
+    if (!res->rows)
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for %d trajectory rows; a longer log_interval_s",
+                       sc->path, res->capacity);
+    return FS_OK;
 }
 
 /* The last logged time at which the ankle was farther than band from its final height. */
@@ -75,17 +111,11 @@ static void measure_end(fs_run_result *res, const fs_sim *sim)
     res->energy_end_J = fs_sim_energy(sim, NULL, NULL, NULL);
 }
 
-/* The trajectory, a row every `every` steps (a hook that never stops the run). */
-typedef struct run_logger {
-    fs_run_result *res;
-    long every, step;
-} run_logger;
-
-static int log_after_step(void *user, fs_sim *sim)
+int fs_log_after_step(void *user, fs_sim *sim)
 {
-    run_logger *l = user;
+    fs_run_logger *l = user;
     if (++l->step % l->every == 0)
-        log_row(l->res, sim);
+        fs_log_row(l->res, sim);
     return 0;
 }
 
@@ -111,22 +141,10 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
 {
     const fs_scenario_def *d = &sc->def;
     memset(res, 0, sizeof *res);
-    name_columns(res, &sc->geom);
     long nsteps = (long)ceil(d->duration_s / d->step_s - 1e-9);
-    long every = lround(d->log_interval_s / d->step_s);
-    if (every < 1)
-        every = 1;
-    /* the trajectory is kept in memory: bounded before the first step */
-    double bytes = ((double)nsteps / every + 2) * res->ncols * sizeof *res->rows;
-    if (nsteps > FS_MAX_STEPS || bytes > FS_TRAJ_MAX_BYTES)
-        return fs_fail(err, FS_BAD_INPUT, "%s: duration_s / log_interval_s asks for %.3g trajectory rows (%.3g GB); "
-                       "at most %.3g GB: a longer log_interval_s or a shorter duration_s", sc->path,
-                       (double)nsteps / every + 2, bytes / 1e9, FS_TRAJ_MAX_BYTES / 1e9);
-    res->capacity = (int)(nsteps / every + 2);
-    res->rows = malloc((size_t)res->capacity * res->ncols * sizeof *res->rows);
-    if (!res->rows)
-        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for %d trajectory rows; a longer log_interval_s",
-                       sc->path, res->capacity);
+    fs_status opened = fs_log_open(res, sc, 0, err);
+    if (opened != FS_OK)
+        return opened;
     fs_sim_options opts = fs_observer_sim_options(obs);
     fs_sim sim;
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
@@ -134,18 +152,17 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
         return s;
     fs_sim_ankle(&sim, res->ankle_start_m);
     res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
-    log_row(res, &sim);
-    run_logger logger = {res, every, 0};
+    fs_log_row(res, &sim);
+    fs_run_logger logger = {res, res->every, 0};
     rest_rule rest = {d, -1};
-    const fs_step_hook hooks[] = {{"logged", log_after_step, &logger}, {"at rest", at_rest, &rest}};
+    const fs_step_hook hooks[] = {{"logged", fs_log_after_step, &logger}, {"at rest", at_rest, &rest}};
     fs_drive_spec spec = {.max_steps = nsteps, .hooks = hooks, .nhooks = 2, .obs = obs};
     fs_drive_result r;
     s = fs_drive(&sim, &spec, &r, err);
     res->steps = (int)r.steps;
     res->at_rest = r.stopped_by == 1;
     if (s == FS_OK) {
-        if (res->nrows == 0 || res->rows[(size_t)(res->nrows - 1) * res->ncols] != sim.time_s)
-            log_row(res, &sim);
+        fs_log_last(res, &sim);
         measure_end(res, &sim);
         res->settle_time_s = settle_time(res, d->settle_band_m);
     }
@@ -234,7 +251,7 @@ static int fill_trajectory(FILE *f, const void *user)
     return 1;
 }
 
-static fs_status write_trajectory(const fs_run_result *res, const char *path, fs_error *err)
+fs_status fs_run_write_trajectory(const fs_run_result *res, const char *path, fs_error *err)
 {
     return fs_write_file(path, fill_trajectory, res, err);
 }
@@ -247,7 +264,7 @@ fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const fs
         return s;
     char path[4096];
     snprintf(path, sizeof path, "%s/trajectory.csv", dir);
-    s = write_trajectory(res, path, err);
+    s = fs_run_write_trajectory(res, path, err);
     if (s != FS_OK)
         return s;
     snprintf(path, sizeof path, "%s/metrics.json", dir);

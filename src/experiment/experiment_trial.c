@@ -2,6 +2,8 @@
  * (fs_outcome.h). */
 #include "footsim/experiment/fs_trial.h"
 
+#include "experiment_log.h"
+
 #include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
 
@@ -135,22 +137,33 @@ static int judge_step(void *user, fs_sim *sim)
 }
 
 /* Steps until the judge decides or the window ends; classifies. */
-static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs_trial_result *out, fs_error *err)
+static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs_run_result *log,
+                           fs_trial_result *out, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
+    if (log) {
+        memset(log, 0, sizeof *log);
+        fs_status opened = fs_log_open(log, sc, 1, err);
+        if (opened != FS_OK)
+            return opened;
+    }
     fs_sim_options opts = fs_observer_sim_options(obs);
     fs_sim sim;
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
+    if (log)
+        fs_log_row(log, &sim);
+    fs_run_logger logger = {log, log ? log->every : 1, 0};
     trial_run t = {.d = d, .w = {.rest_since = -1}, .out = out};
     fs_outcome_rules rules;
     rules_of(sc, &sim, &rules);
     out->robot_mass_kg = d->robot.mass_kg;
     fs_judge_init(&t.judge, &rules);
-    const fs_step_hook hooks[] = {{"judged", judge_step, &t}};
-    fs_drive_spec spec = {.max_steps = (long)ceil(d->duration_s / d->step_s - 1e-9), .hooks = hooks, .nhooks = 1,
-                          .obs = obs};
+    /* the logger last and only when asked: it never stops the trial, so the judge's stop is the same */
+    const fs_step_hook hooks[] = {{"judged", judge_step, &t}, {"logged", fs_log_after_step, &logger}};
+    fs_drive_spec spec = {.max_steps = (long)ceil(d->duration_s / d->step_s - 1e-9), .hooks = hooks,
+                          .nhooks = log ? 2 : 1, .obs = obs};
     fs_drive_result r;
     fs_error step_err;
     s = fs_drive(&sim, &spec, &r, &step_err);
@@ -167,6 +180,8 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
         return s;
     }
     finish(&sim, &t.w, out);
+    if (log)
+        fs_log_last(log, &sim);
     if (out->outcome != FS_FAILED_NUMERICS) {
         sample_of(&sim, &t.last);
         fs_judge_finish(&t.judge, &t.last, fs_sim_penetration(&sim));
@@ -197,6 +212,12 @@ fs_status fs_trial_place(fs_scenario *sc, int seed, fs_trial_draw *draw, fs_erro
 fs_status fs_trial_run_scenario(const fs_scenario *base, int seed, const fs_run_observer *obs, fs_trial_result *out,
                                 fs_error *err)
 {
+    return fs_trial_run_logged(base, seed, obs, NULL, out, err);
+}
+
+fs_status fs_trial_run_logged(const fs_scenario *base, int seed, const fs_run_observer *obs, fs_run_result *log,
+                              fs_trial_result *out, fs_error *err)
+{
     memset(out, 0, sizeof *out);
     fs_scenario *sc = malloc(sizeof *sc); /* the caller's, not the process's: trials are re-entrant */
     if (!sc)
@@ -208,7 +229,7 @@ fs_status fs_trial_run_scenario(const fs_scenario *base, int seed, const fs_run_
     }
     s = fs_trial_place(sc, seed, &out->draw, err);
     if (s == FS_OK)
-        s = run_trial(sc, obs, out, err);
+        s = run_trial(sc, obs, log, out, err);
     fs_scenario_free(sc);
     free(sc);
     return s;

@@ -12,7 +12,7 @@
 
 /* trajectory columns: t_s, the ankle's x, y, z (m), contacts, each hinge's angle (NAME_rad), each
  * spring-damper's force (NAME_N, positive in tension) */
-enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES + FS_MAX_SPRINGS };
+enum { FS_TRAJ_MAX_COLS = 5 + FS_MAX_HINGES + FS_MAX_SPRINGS + 1 }; /* time, ankle, contacts, hinges, springs, lean */
 
 /* The most memory a run's trajectory may take (docs/keys.md); a run asking for more is refused
  * (FS_BAD_INPUT) before its first step. */
@@ -36,6 +36,8 @@ typedef struct fs_run_result {
     char hinge_col[FS_MAX_HINGES][48];      /* the hinge columns' names, owned by the result */
     char spring_col[FS_MAX_SPRINGS][48];    /* the spring columns' names, owned by the result */
     double *rows;
+    long every;                             /* a row every `every` steps (log_interval_s) */
+    int lean_col;                           /* the robot's lean column (lean_deg), 0 when none */
 } fs_run_result;
 
 /* obs (fs_observer.h) may be NULL. */
@@ -46,5 +48,9 @@ void fs_run_free(fs_run_result *res);
  * records prov (fs_provenance.h; may be NULL) as its "provenance". */
 fs_status fs_run_write(const fs_scenario *sc, const fs_run_result *res, const fs_provenance *prov, const char *dir,
                        fs_error *err);
+
+/* Writes res's trajectory alone as path (CSV, a header of column names with units); a landing
+ * trial's time series (fs_trial_run_logged) is written this way. */
+fs_status fs_run_write_trajectory(const fs_run_result *res, const char *path, fs_error *err);
 
 #endif

@@ -13,6 +13,7 @@
 #define FS_TRIAL_H
 
 #include "footsim/experiment/fs_outcome.h"
+#include "footsim/experiment/fs_run.h"
 #include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
@@ -60,5 +61,11 @@ fs_status fs_trial_run(const char *scenario_path, const char *const *overrides, 
  * once). Otherwise as fs_trial_run. */
 fs_status fs_trial_run_scenario(const fs_scenario *sc, int seed, const fs_run_observer *obs, fs_trial_result *out,
                                 fs_error *err);
+
+/* The same, keeping the trial's time series in log (fs_run.h's columns and the robot's lean,
+ * lean_deg, every log_interval_s, and at the end) when log is not NULL: fs_run_free releases it,
+ * fs_run_write_trajectory writes it. The trial's result is the same bits with or without it. */
+fs_status fs_trial_run_logged(const fs_scenario *sc, int seed, const fs_run_observer *obs, fs_run_result *log,
+                              fs_trial_result *out, fs_error *err);
 
 #endif
