@@ -311,8 +311,8 @@ static void test_sweep(void)
     fs_error err;
     REQUIRE(fs_campaign_load("scenarios/roughness.ini", NULL, 0, &c, &err) == FS_OK);
     CHECK(!strcmp(c.sweep[0], "rough.rms_m") && c.nsweep == 1 && c.nterrains == 11 && c.nbase == 1);
-    CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && !strcmp(c.terrain[3].set[0], "rough.rms_m=0.003"));
-    CHECK(c.terrain[10].sweep_value[0] == 0.02 && !c.terrain[10].set[1][0]);
+    CHECK(!strcmp(c.terrain[3].name, "rough@0.003") && c.terrain[3].sweep_value[0] == 0.003);
+    CHECK(c.terrain[10].sweep_value[0] == 0.02 && c.terrain[10].sweep_value[1] == 0);
     CHECK(c.nrobots == 2 && !strcmp(c.robot[1].name, "drop_weight"));
     /* the swept value in its cells: foot 0, terrain 3, each robot (cell = (foot * 11 + 3) * 2 + robot) */
     CHECK(fs_campaign_pair(&c, 6)->terrain.def.rms_m == 0.003 && fs_campaign_pair(&c, 7)->terrain.def.rms_m == 0.003);
@@ -334,7 +334,7 @@ static void test_sweep(void)
     rmdir(tmp);
     const char *bad[] = {"campaign.sweep_values=0, -0.001"};
     CHECK(fs_campaign_load("scenarios/roughness.ini", bad, 1, &c, &err) == FS_BAD_INPUT);
-    CHECK(strstr(err.message, "rms_m = '-0.001' is out of range") && strstr(err.message, "rough@-0.001"));
+    CHECK(strstr(err.message, "rms_m = '-0.001' is out of range") && strstr(err.message, "sweep_values"));
 }
 
 /* Two keys of the design and the robot swept over every pair of values, on each of two terrains. */
@@ -349,7 +349,7 @@ static void test_sweep_two_keys(void)
     /* terrain-major, then the first key, then the second */
     const fs_campaign_item *p = &c.terrain[6 + 1 * 3 + 2];
     CHECK(!strcmp(p->name, "complex_uneven@10,0.3") && p->base == 1 && p->point[0] == 1 && p->point[1] == 2);
-    CHECK(!strcmp(p->set[0], "springs.scale=10") && !strcmp(p->set[1], "robot.com_height_m=0.3"));
+    CHECK(p->sweep_value[0] == 10 && p->sweep_value[1] == 0.3);
     const fs_scenario *sc = fs_campaign_pair(&c, 6 + 1 * 3 + 2);
     CHECK(sc->design.spring_scale == 10 && sc->geom.spring[0].k_N_per_m == 10 * sc->design.k_N_per_m[0]);
     CHECK(sc->def.robot.com_height_m == 0.3 && sc->terrain.def.kind == FS_TERRAIN_COMPLEX_UNEVEN);
@@ -367,5 +367,58 @@ static void test_sweep_two_keys(void)
     CHECK(fs_campaign_load("scenarios/envelope.ini", alone, 3, &c, &err) == FS_BAD_INPUT);
 }
 
+/* A sweep's points are typed edits of the loaded definitions, compiled: the same scenario, bit for
+ * bit, as loading the trial with the swept value as --set; an integer key takes whole numbers only;
+ * the relations the values enter are checked; --set of the swept key is refused. */
+static void test_sweep_typed(void)
+{
+    static fs_campaign c;
+    static fs_scenario loaded;
+    fs_error err;
+    const char *set[] = {"campaign.sweep_values=0.001, 0.004", "campaign.seeds=1"};
+    REQUIRE(fs_campaign_load("scenarios/roughness.ini", set, 2, &c, &err) == FS_OK);
+    for (int cell = 0; cell < fs_campaign_ncells(&c); cell++) {
+        int f, t, r;
+        fs_campaign_cell_of(&c, cell, &f, &t, &r);
+        char buf[3][FS_PATH_MAX + 32], swept[64];
+        const char *ov[FS_CAMPAIGN_MAX_SET + 4];
+        int n = fs_campaign_overrides(&c, cell, buf, ov);
+        snprintf(swept, sizeof swept, "rough.rms_m=%s", t ? "0.004" : "0.001");
+        ov[n++] = swept;
+        REQUIRE(fs_scenario_load(c.trial_path, ov, n, &loaded, &err) == FS_OK);
+        const fs_scenario *sc = fs_campaign_pair(&c, cell);
+        CHECK(sc->terrain.def.rms_m == (t ? 0.004 : 0.001) && sc->terrain.nx == loaded.terrain.nx &&
+              sc->terrain.ny == loaded.terrain.ny && sc->terrain.x0 == loaded.terrain.x0 &&
+              sc->terrain.y0 == loaded.terrain.y0);
+        CHECK(sc->terrain.nx == loaded.terrain.nx && sc->terrain.ny == loaded.terrain.ny &&
+              !memcmp(sc->terrain.z, loaded.terrain.z, sizeof(double) * (size_t)loaded.terrain.nx * (size_t)loaded.terrain.ny));
+        CHECK(sc->def.robot.com_height_m == loaded.def.robot.com_height_m && sc->def.step_s == loaded.def.step_s &&
+              sc->geom.total_mass_kg == loaded.geom.total_mass_kg);
+        fs_scenario_free(&loaded);
+    }
+    fs_campaign_free(&c);
+    /* an integer key: whole numbers only, each point its own value */
+    const char *seeds[] = {"campaign.sweep=rough.seed", "campaign.sweep_values=3, 4"};
+    REQUIRE(fs_campaign_load("scenarios/roughness.ini", seeds, 2, &c, &err) == FS_OK);
+    CHECK(fs_campaign_pair(&c, 0)->terrain.def.seed == 3 && fs_campaign_pair(&c, 2)->terrain.def.seed == 4);
+    fs_campaign_free(&c);
+    const char *half[] = {"campaign.sweep=rough.seed", "campaign.sweep_values=3, 4.5"};
+    CHECK(fs_campaign_load("scenarios/roughness.ini", half, 2, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "seed = '4.5' is not a whole number") && strstr(err.message, "sweep_values"));
+    /* an unset log interval follows a swept step; a step too short for the window is refused */
+    const char *steps[] = {"campaign.sweep=run.step_s", "campaign.sweep_values=0.002, 0.0001"};
+    REQUIRE(fs_campaign_load("scenarios/roughness.ini", steps, 2, &c, &err) == FS_OK);
+    CHECK(fs_campaign_pair(&c, 0)->def.log_interval_s == 0.002 && fs_campaign_pair(&c, 2)->def.log_interval_s == 1e-3);
+    fs_campaign_free(&c);
+    const char *tiny[] = {"campaign.sweep=run.step_s", "campaign.sweep_values=0.001, 1e-7", "run.duration_s=1000"};
+    CHECK(fs_campaign_load("scenarios/roughness.ini", tiny, 3, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "a run may take at most") && strstr(err.message, "set in code"));
+    /* one --set of the swept key would be overwritten by the sweep */
+    const char *both[] = {"rough.rms_m=0.002"};
+    CHECK(fs_campaign_load("scenarios/roughness.ini", both, 1, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "is the key the campaign sweeps") != NULL);
+}
+
 FS_TEST_MAIN(TEST(test_wilson), TEST(test_median), TEST(test_summarize), TEST(test_expectations), TEST(test_compare), TEST(test_equivalence),
-             TEST(test_load), TEST(test_sweep), TEST(test_sweep_two_keys))
+             TEST(test_load), TEST(test_sweep), TEST(test_sweep_two_keys),
+             TEST(test_sweep_typed))

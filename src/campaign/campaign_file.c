@@ -305,7 +305,8 @@ static fs_status terrain_choices(binder *b, const fs_campaign *c, fs_error *err)
 }
 
 /* A sweep: every terrain becomes a point per value (per pair of values, with two keys), each with
- * the keys' overrides; the values are checked when each point's trial scenario is loaded. */
+ * the keys' values, read by the keys' own rules (a whole number for an integer key, the range);
+ * the relations they enter are checked when each point's trial scenario is compiled. */
 static fs_status expand_sweep(const fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
 {
     char where[FS_PATH_MAX + 80];
@@ -335,12 +336,22 @@ static fs_status expand_sweep(const fs_config *cfg, binder *b, fs_campaign *c, f
                        fs_config_where(cfg, "campaign", "sweep2", where, sizeof where), c->sweep[1]);
     if (sweep_values(b, c->nsweep, c->nvalues, err) != FS_OK)
         return FS_BAD_INPUT;
+    for (int i = 0; i < c->nset; i++) /* a swept key's values are the sweep's: one --set would be overwritten */
+        for (int w = 0; w < c->nsweep; w++) {
+            size_t len = strlen(c->sweep[w]);
+            const char *rest = c->set[i] + strspn(c->set[i], " \t");
+            if (!strncmp(rest, c->sweep[w], len) && (rest[len] == '=' || rest[len] == ' ' || rest[len] == '\t'))
+                return fs_fail(err, FS_BAD_INPUT, "--set %s: %s is the key the campaign sweeps (%s); give its values "
+                               "with --set campaign.%s=..., not one value", c->set[i], c->sweep[w],
+                               b->sweep_where[w], sweep_values_key[w]);
+        }
     long points = (long)c->nterrains * c->nvalues[0] * c->nvalues[1];
     if (points > FS_CAMPAIGN_MAX_TERRAINS)
         return fs_fail(err, FS_BAD_INPUT, "%s: %d terrains x %d x %d values = %ld points; a campaign may have at most "
                        "%d: fewer values or terrains", fs_config_where(cfg, "campaign", "sweep", where, sizeof where),
                        c->nterrains, c->nvalues[0], c->nvalues[1], points, FS_CAMPAIGN_MAX_TERRAINS);
     fs_campaign_item *base = b->base;
+    fs_status s = FS_OK;
     memcpy(base, c->terrain, (size_t)c->nterrains * sizeof base[0]);
     c->nbase = c->nterrains;
     int n = 0;
@@ -352,14 +363,12 @@ static fs_status expand_sweep(const fs_config *cfg, binder *b, fs_campaign *c, f
                 point_name(p->name, base[t].name, b->values[0][i], b->values[1][j]);
                 p->base = t;
                 p->point[0] = i, p->point[1] = j;
-                for (int w = 0; w < c->nsweep; w++) {
-                    const char *v = b->values[w][w ? j : i];
-                    snprintf(p->set[w], sizeof p->set[w], "%s=%s", c->sweep[w], v);
-                    p->sweep_value[w] = strtod(v, NULL);
-                }
+                for (int w = 0; w < c->nsweep && s == FS_OK; w++)
+                    s = fs_config_number(fs_campaign_sweepable(c->sweep_choice[w]), b->values[w][w ? j : i],
+                                         b->sweep_where[w], &p->sweep_value[w], err);
             }
     c->nterrains = n;
-    return FS_OK;
+    return s;
 }
 
 /* Relations between keys that no single key can judge. */
@@ -446,7 +455,9 @@ static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *
     return FS_OK;
 }
 
-/* Loads (and so checks) the trial scenario of every cell, once, for the trials. */
+/* Loads (and so checks) the trial scenario of every cell, once, for the trials. A sweep's points
+ * are typed edits: the first point of each (foot, terrain, robot) is loaded from its files, the
+ * others copy it; each then gets its values (fs_scenario_set) and is compiled. */
 static fs_status load_pairs(fs_campaign *c, fs_error *err)
 {
     int ncells = fs_campaign_ncells(c);
@@ -455,16 +466,26 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
         return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", ncells);
     fs_status s = FS_OK;
     for (int cell = 0; cell < ncells && s == FS_OK; cell++) {
-        char buf[5][FS_PATH_MAX + 32];
-        const char *ov[FS_CAMPAIGN_MAX_SET + 5];
-        int n = fs_campaign_overrides(c, cell, buf, ov);
-        fs_error e;
-        fs_scenario *sc = &c->pair[cell];
-        s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
-        if (s == FS_OK)
-            s = fs_scenario_require(sc, "trial", &e);
         int f, t, r;
         fs_campaign_cell_of(c, cell, &f, &t, &r);
+        const fs_campaign_item *point = &c->terrain[t];
+        int from = point->point[0] * c->nvalues[1] + point->point[1]; /* how far past its first point */
+        fs_scenario *sc = &c->pair[cell];
+        fs_error e;
+        if (!c->nsweep || !from) {
+            char buf[3][FS_PATH_MAX + 32];
+            const char *ov[FS_CAMPAIGN_MAX_SET + 3];
+            int n = fs_campaign_overrides(c, cell, buf, ov);
+            s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
+            if (s == FS_OK)
+                s = fs_scenario_require(sc, "trial", &e);
+        } else {
+            s = fs_scenario_copy(sc, &c->pair[(f * c->nterrains + t - from) * c->nrobots + r], &e);
+        }
+        for (int w = 0; w < c->nsweep && s == FS_OK; w++)
+            s = fs_scenario_set(sc, c->sweep[w], point->sweep_value[w], &e);
+        if (s == FS_OK && c->nsweep)
+            s = fs_scenario_compile(sc, &e);
         if (s != FS_OK)
             fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s)", e.message, c->path,
                     c->foot[f].name, c->terrain[t].name, c->robot[r].name);
@@ -604,7 +625,7 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
     return s;
 }
 
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out)
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[3][FS_PATH_MAX + 32], const char **out)
 {
     int foot, terrain, robot, n = 0;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
@@ -616,11 +637,6 @@ int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MA
         snprintf(buf[2], sizeof buf[2], "robot.design=%s", c->robot[robot].path);
         out[n++] = buf[2];
     }
-    for (int w = 0; w < 2; w++)
-        if (c->terrain[terrain].set[w][0]) {
-            snprintf(buf[3 + w], sizeof buf[3 + w], "%s", c->terrain[terrain].set[w]);
-            out[n++] = buf[3 + w];
-        }
     for (int i = 0; i < c->nset; i++)
         out[n++] = c->set[i];
     return n;

@@ -536,6 +536,19 @@ static void list_known(const fs_key *schema, int nkeys, const char *section, cha
     }
 }
 
+fs_status fs_config_number(const fs_key *k, const char *value, const char *where, double *out, fs_error *err)
+{
+    if (k->type != FS_KEY_NUMBER && k->type != FS_KEY_INTEGER)
+        return fs_fail(err, FS_BAD_INPUT, "%s: [%s] %s is not a number key", where, k->section, k->name);
+    fs_key at_start = *k;
+    at_start.offset = 0;
+    union { double number; int integer; } slot;
+    fs_status s = bind_value(&at_start, value, where, "", &slot, err);
+    if (s == FS_OK)
+        *out = k->type == FS_KEY_INTEGER ? slot.integer : slot.number;
+    return s;
+}
+
 fs_status fs_config_check(const fs_key *schema, int nkeys, const void *def, const char *what, fs_error *err)
 {
     for (int i = 0; i < nkeys; i++) {

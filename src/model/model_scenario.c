@@ -3,6 +3,7 @@
 
 #include "footsim/base/fs_path.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -139,6 +140,40 @@ static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
     return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
 }
 
+/* Relations between the scenario's keys that no single key can judge, checked where the file is
+ * read (cfg, for file:line) and again when a definition edited in code is compiled (cfg NULL): an
+ * unset log interval follows the step; the walking machine's phases each last a step; a run's
+ * length in steps is bounded before anything is built (counters and buffers are sized by it). */
+static fs_status check_relations(fs_scenario *sc, const fs_config *cfg, fs_error *err)
+{
+    fs_scenario_def *d = &sc->def;
+    char where[FS_PATH_MAX + 80], where_step[FS_PATH_MAX + 80];
+    if (sc->log_interval_default_s > 0 && d->log_interval_s == sc->log_interval_followed_s)
+        d->log_interval_s = fmax(sc->log_interval_default_s, d->step_s); /* not set (in the file or since) */
+    sc->log_interval_followed_s = d->log_interval_s;
+    if (d->log_interval_s < d->step_s)
+        return fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g (from %s); make it at "
+                       "least one step", fs_config_where(cfg, "run", "log_interval_s", where, sizeof where),
+                       d->log_interval_s, d->step_s, fs_config_where(cfg, "run", "step_s", where_step, sizeof where_step));
+    int walk = d->kind == FS_SCENARIO_WALK;
+    if (walk) {
+        double stance = d->walk_period_s * d->stance_fraction, swing = d->walk_period_s - stance;
+        if (stance < d->step_s || (swing > 0 && swing < d->step_s))
+            return fs_fail(err, FS_BAD_INPUT, "%s: period_s = %g gives a stance of %g s and a swing of %g s, one "
+                           "shorter than step_s = %g; make each phase at least one step",
+                           fs_config_where(cfg, "walk", "period_s", where, sizeof where), d->walk_period_s, stance,
+                           swing, d->step_s);
+    }
+    double steps = (walk ? d->walk_steps * d->walk_period_s : d->duration_s) / d->step_s;
+    if (steps > FS_MAX_STEPS)
+        return fs_fail(err, FS_BAD_INPUT, "%s: %s / step_s = %.4g steps; a run may take at most %.0e: %s, or a longer "
+                       "step_s", fs_config_where(cfg, walk ? "walk" : "run", walk ? "period_s" : "duration_s", where,
+                                                 sizeof where),
+                       walk ? "steps x period_s" : "duration_s", steps, (double)FS_MAX_STEPS,
+                       walk ? "fewer or shorter steps" : "a shorter duration_s");
+    return FS_OK;
+}
+
 fs_status fs_scenario_load(const char *path, const char *const *overrides, int noverrides, fs_scenario *sc,
                            fs_error *err)
 {
@@ -168,44 +203,12 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
         }
     if (s == FS_OK)
         s = fs_config_bind(&cfg, fs_scenario_keys, fs_scenario_nkeys, &sc->def, err);
-    if (s == FS_OK && sc->def.log_interval_s < sc->def.step_s) {
-        /* an unset log interval follows the step; one the user set must be at least a step */
-        char where[FS_PATH_MAX + 80], where_step[FS_PATH_MAX + 80];
-        if (!fs_config_has(&cfg, "run", "log_interval_s"))
-            sc->def.log_interval_s = sc->def.step_s;
-        else
-            s = fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g (from %s); make it at "
-                        "least one step",
-                        fs_config_where(&cfg, "run", "log_interval_s", where, sizeof where), sc->def.log_interval_s,
-                        sc->def.step_s, fs_config_where(&cfg, "run", "step_s", where_step, sizeof where_step));
-    }
-    if (s == FS_OK && sc->def.kind == FS_SCENARIO_WALK) {
-        /* the walking machine's stance and swing must each last a step at least */
-        const fs_scenario_def *d = &sc->def;
-        double stance = d->walk_period_s * d->stance_fraction, swing = d->walk_period_s - stance;
-        char where[FS_PATH_MAX + 80];
-        if (stance < d->step_s || (swing > 0 && swing < d->step_s))
-            s = fs_fail(err, FS_BAD_INPUT, "%s: period_s = %g gives a stance of %g s and a swing of %g s, one shorter "
-                        "than step_s = %g; make each phase at least one step",
-                        fs_config_where(&cfg, "walk", "period_s", where, sizeof where), d->walk_period_s, stance, swing,
-                        d->step_s);
-    }
+    if (s == FS_OK && !fs_config_has(&cfg, "run", "log_interval_s"))
+        sc->log_interval_default_s = sc->log_interval_followed_s = sc->def.log_interval_s;
     /* which command the file is for: a landing trial has a [robot] or [landing] section */
     sc->is_trial = fs_config_has(&cfg, "robot", NULL) || fs_config_has(&cfg, "landing", NULL);
-    if (s == FS_OK) {
-        /* a run's length in steps, bounded before anything is built (counters and buffers are sized by it) */
-        const fs_scenario_def *d = &sc->def;
-        int walk = d->kind == FS_SCENARIO_WALK;
-        double steps = (walk ? d->walk_steps * d->walk_period_s : d->duration_s) / d->step_s;
-        if (steps > FS_MAX_STEPS) {
-            char where[FS_PATH_MAX + 80];
-            s = fs_fail(err, FS_BAD_INPUT, "%s: %s / step_s = %.4g steps; a run may take at most %.0e: %s, or a longer "
-                        "step_s", fs_config_where(&cfg, walk ? "walk" : "run", walk ? "period_s" : "duration_s", where,
-                                                  sizeof where),
-                        walk ? "steps x period_s" : "duration_s", steps, (double)FS_MAX_STEPS,
-                        walk ? "fewer or shorter steps" : "a shorter duration_s");
-        }
-    }
+    if (s == FS_OK)
+        s = check_relations(sc, &cfg, err);
     fs_config_free(&cfg);
     if (s == FS_OK)
         s = fs_robot_load(sc->def.robot_path, part[3], n[3], &sc->def.robot, err);
@@ -256,11 +259,13 @@ fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
     if (s == FS_OK)
         s = fs_config_check(fs_robot_keys, fs_robot_nkeys, &sc->def.robot, what, err);
     if (s == FS_OK)
+        s = check_relations(sc, NULL, err);
+    if (s == FS_OK)
         s = fs_design_geometry(&sc->design, NULL, &sc->geom, err);
-    if (s != FS_OK)
-        return s;
-    fs_terrain_redraw(&sc->terrain);
-    return crop_terrain(sc, 0, err);
+    if (s == FS_OK)
+        s = fs_terrain_redraw(&sc->terrain, err);
+    sc->is_trial |= sc->def.robot.mass_kg > 0;
+    return s == FS_OK ? crop_terrain(sc, 0, err) : s;
 }
 
 fs_status fs_scenario_inputs(const fs_scenario *sc, fs_provenance *p, fs_error *err)
@@ -341,7 +346,9 @@ fs_status fs_scenario_for_design(const char *design_path, const char *const *ove
     return fs_design_load(design_path, overrides, noverrides, &sc->design, &sc->geom, err);
 }
 
-double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key)
+/* The field of sc's definitions that the number key "section.key" sets (FS_KEY_NUMBER, or also
+ * FS_KEY_INTEGER when integers), with its schema entry; NULL when no schema has it. */
+static void *number_field(fs_scenario *sc, const char *name, int integers, const fs_key **key)
 {
     const fs_key *schema[4] = {fs_scenario_keys, fs_design_keys, fs_robot_keys, fs_terrain_keys};
     const int nkeys[4] = {fs_scenario_nkeys, fs_design_nkeys, fs_robot_nkeys, fs_terrain_nkeys};
@@ -353,12 +360,35 @@ double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key
     for (int s = 0; s < 4; s++)
         for (int i = 0; i < nkeys[s]; i++) {
             const fs_key *k = &schema[s][i];
-            if (k->type == FS_KEY_NUMBER && strlen(k->section) == len && !strncmp(k->section, name, len) &&
-                !strcmp(k->name, dot + 1)) {
+            if ((k->type == FS_KEY_NUMBER || (integers && k->type == FS_KEY_INTEGER)) && strlen(k->section) == len &&
+                !strncmp(k->section, name, len) && !strcmp(k->name, dot + 1)) {
                 if (key)
                     *key = k;
-                return (double *)(def[s] + k->offset);
+                return def[s] + k->offset;
             }
         }
     return NULL;
+}
+
+double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key)
+{
+    return number_field(sc, name, 0, key);
+}
+
+fs_status fs_scenario_set(fs_scenario *sc, const char *name, double value, fs_error *err)
+{
+    const fs_key *k;
+    void *field = number_field(sc, name, 1, &k);
+    if (!field)
+        return fs_fail(err, FS_BAD_INPUT, "%s: %s is not a number of a scenario, design, robot or terrain file", sc->path,
+                       name);
+    if (k->type == FS_KEY_NUMBER) {
+        *(double *)field = value;
+        return FS_OK;
+    }
+    if (!(value == floor(value) && fabs(value) <= INT_MAX))
+        return fs_fail(err, FS_BAD_INPUT, "%s: [%s] %s = %.17g is not a whole number; give an integer", sc->path,
+                       k->section, k->name, value);
+    *(int *)field = (int)value;
+    return FS_OK;
 }

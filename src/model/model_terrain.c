@@ -411,7 +411,13 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
     return s;
 }
 
-void fs_terrain_redraw(fs_terrain *t) { draw_rocks(t); }
+fs_status fs_terrain_redraw(fs_terrain *t, fs_error *err)
+{
+    fs_status s = check_terrain(t, NULL, err);
+    if (s == FS_OK)
+        draw_rocks(t);
+    return s;
+}
 
 double fs_terrain_outside(const fs_terrain *t, const double region[4], double extent[4])
 {

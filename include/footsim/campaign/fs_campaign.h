@@ -47,7 +47,6 @@ double fs_metric_value(const fs_trial_result *r, int m);
 typedef struct fs_campaign_item {
     char name[FS_NAME_MAX];  /* the section's NAME, or for a sweep "NAME@value" */
     char path[FS_PATH_MAX];  /* absolute; for the one robot of a campaign without [robot.NAME], "": the trial's */
-    char set[2][FS_VALUE_MAX]; /* a sweep's overrides "section.key=value" (first and second key), or "" */
     double sweep_value[2];   /* the swept values (0 without a sweep) */
     int base;                /* a sweep's point: the index of the terrain it is a point of ... */
     int point[2];            /* ... and of its value of each key */
@@ -108,10 +107,11 @@ void fs_campaign_cell_of(const fs_campaign *c, int cell, int *foot, int *terrain
 /* The loaded trial scenario of a cell. */
 const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell);
 
-/* The overrides of a cell's trials: scenario.design, scenario.terrain, robot.design (when the
- * campaign names robots), the sweep's, then c->set. buf holds their text; out gets up to
- * FS_CAMPAIGN_MAX_SET + 5 pointers; returns the count. */
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out);
+/* The overrides a cell's trial scenario is loaded with: scenario.design, scenario.terrain,
+ * robot.design (when the campaign names robots), then c->set; a sweep's values are not among them
+ * (fs_campaign_load sets them in the loaded definitions). buf holds their text; out gets up to
+ * FS_CAMPAIGN_MAX_SET + 3 pointers; returns the count. */
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[3][FS_PATH_MAX + 32], const char **out);
 
 /* Trials are numbered cell-major: index = cell * seeds + seed - first_seed. */
 int fs_campaign_ntrials(const fs_campaign *c);

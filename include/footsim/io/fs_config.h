@@ -80,6 +80,10 @@ fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *e
  * key of the schema used (unknown section or key, with the known ones listed). */
 fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *def, fs_error *err);
 
+/* Reads value as the number or integer key k reads it from a file (the same rules and range, the
+ * message led by where), into *out: for values of a key given elsewhere, such as a sweep's. */
+fs_status fs_config_number(const fs_key *k, const char *value, const char *where, double *out, fs_error *err);
+
 /* Checks a definition edited in code against the schema that binds files to it: every number,
  * whole number, list value and choice in its range, as a file's value would be. `what` names the
  * definition in the message ("scenarios/x.ini, edited in code"). FS_OK, or FS_BAD_INPUT naming the

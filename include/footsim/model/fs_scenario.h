@@ -73,6 +73,10 @@ typedef struct fs_scenario {
     fs_foot_geom geom;
     fs_terrain terrain;        /* cut to the region the foot can reach */
     int is_trial;              /* the file (or --set) gives [robot] or [landing]: a landing trial */
+    /* an unset log interval follows the step (its default or the step, the longer): the default,
+       0 when the file or --set gave one; the value it was given last, so that an edit in code of
+       def.log_interval_s counts as setting it */
+    double log_interval_default_s, log_interval_followed_s;
 } fs_scenario;
 
 extern const fs_key fs_scenario_keys[];
@@ -99,8 +103,10 @@ fs_status fs_scenario_copy(fs_scenario *dst, const fs_scenario *src, fs_error *e
 
 /* Compiles a loaded scenario again after its definitions were edited in code (the start pose in
  * sc->def, the terrain's seed in sc->terrain.def, as a landing trial does; a spring's stiffness or
- * a link's mass in sc->design, as bench stability does): each definition checked against its
- * schema's ranges, then the foot's geometry, the terrain's drawn features and its samples cut to
+ * a link's mass in sc->design, as bench stability does; a swept key, as a campaign does): each
+ * definition checked against its schema's ranges, the relations between keys that loading checks
+ * (named "set in code": an unset log interval follows the step, a run's steps bounded, a terrain's
+ * ranges in order), then the foot's geometry, the terrain's drawn features and its samples cut to
  * the region the foot can reach from the new pose. Reads no file; gives the same bits as loading
  * the file with the same edits as --set. Edits that change which files a scenario uses (design,
  * terrain, heightmap) need fs_scenario_load. */
@@ -111,6 +117,11 @@ fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err);
  * definitions and compiling (fs_scenario_compile). NULL when no schema has that key as a number;
  * *key (may be NULL) gets its schema entry, for its range and unit. */
 double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key);
+
+/* Sets the number or integer key "section.key" of sc's definitions to value, as a sweep does
+ * before compiling: FS_BAD_INPUT when no schema has that key as a number or integer, or value is
+ * not a whole number for an integer key. Ranges are checked by fs_scenario_compile. */
+fs_status fs_scenario_set(fs_scenario *sc, const char *name, double value, fs_error *err);
 
 /* Notes the files sc was read from in p (fs_provenance.h), each once: the scenario file, its
  * design, its terrain, the terrain's heightmap image (by its bytes) and its robot. */

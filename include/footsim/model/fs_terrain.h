@@ -81,9 +81,10 @@ enum { FS_TERRAIN_MAX_SAMPLES = 4000000 };
 fs_status fs_terrain_crop(fs_terrain *t, double xmin, double xmax, double ymin, double ymax, fs_error *err);
 
 /* Derives again what t's definition draws (complex_uneven's rocks, from def.seed) after the
- * definition was edited in code; the sampled heights follow at the next fs_terrain_crop. Reads no
- * file (a heightmap's image stays the one loaded). */
-void fs_terrain_redraw(fs_terrain *t);
+ * definition was edited in code, first checking the relations between its keys that loading
+ * checks (FS_BAD_INPUT, naming the keys "set in code"); the sampled heights follow at the next
+ * fs_terrain_crop. Reads no file (a heightmap's image stays the one loaded). */
+fs_status fs_terrain_redraw(fs_terrain *t, fs_error *err);
 
 /* dst becomes a copy of src that owns its own image and samples (FS_NO_MEMORY, dst empty, if they
  * cannot be had). */
