@@ -7,13 +7,13 @@
 #include "footsim/experiment/fs_run.h"
 #include "footsim/experiment/fs_trial.h"
 #include "footsim/experiment/fs_walk.h"
+#include "footsim/sim/fs_ode.h"
 #include "footsim/sim/fs_sim.h"
 
 #include "footsim/base/fs_path.h"
 
 #include <cJSON.h>
 #include <dirent.h>
-#include <ode/ode.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -65,7 +65,7 @@ static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
         obs = &observer;
     }
     if (getenv("FOOTSIM_TEST_ODE_ERROR"))
-        dDebug(1, "FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
+        fs_ode_fail("FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
     fs_provenance prov; /* what made the results: the files, the --set, the settings */
     fs_status rs = fs_scenario_provenance(sc, a->set, a->nset, &prov, &err);
     if (rs == FS_OK)

@@ -6,9 +6,9 @@
 #    (the command) and tests/ may include anything. A file's layer is its folder (src/LAYER/,
 #    include/footsim/LAYER/, render/); a footsim header's layer is its folder under include/footsim/.
 # 2. Only the sim layer (src/sim/, include/footsim/sim/) calls ODE or includes its headers: no
-#    call of a d[A-Z]... function and no #include <ode/...> elsewhere in src/, include/ or render/
-#    (comments and string literals aside). app/ is the command, a leaf: it may ask ODE for its
-#    build configuration (bench machine) and, for the tests, for ODE's error path.
+#    call of a d[A-Z]... function and no #include <ode/...> elsewhere in src/, include/, render/
+#    or app/ (comments and string literals aside); what the command needs of ODE (its build
+#    configuration, its error path for the tests) it asks through include/footsim/sim/fs_ode.h.
 # 3. A header beside its sources is private to its folder: src/LAYER/*.h to src/LAYER/,
 #    render/*.h to render/, app/*.h to app/ (and app/bench/). No file elsewhere includes one;
 #    tests/ may.
@@ -64,7 +64,7 @@ code_only() {
 }
 
 # 2. ODE only in the sim layer
-for f in $(find src include/footsim render -name '*.c' -o -name '*.h' | sort); do
+for f in $(find src include/footsim render app -name '*.c' -o -name '*.h' | sort); do
   case "$f" in src/sim/* | include/footsim/sim/*) continue ;; esac
   hits=$(code_only "$f" | grep -nE '(^|[^A-Za-z0-9_])d[A-Z][A-Za-z0-9_]*[[:space:]]*\(|#[[:space:]]*include[[:space:]]*<ode/' || true)
   if [ -n "$hits" ]; then

@@ -3,8 +3,8 @@
 #include "cli.h"
 
 #include "footsim/model/fs_scenario.h"
+#include "footsim/sim/fs_ode.h"
 
-#include <ode/ode.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -21,14 +21,13 @@ void cli_machine(char *out, size_t size)
         }
     if (f)
         fclose(f);
-    const char *config = dGetConfiguration();
     snprintf(out, size, "%s, %ld cores online, %s %s, ODE %s", cpu, sysconf(_SC_NPROCESSORS_ONLN),
 #ifdef __clang__
              "clang",
 #else
              "gcc",
 #endif
-             __VERSION__, strstr(config, "ODE_double_precision") ? "double precision" : "single precision");
+             __VERSION__, fs_ode_double_precision() ? "double precision" : "single precision");
 }
 
 double cli_load_average(void)

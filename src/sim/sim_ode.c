@@ -6,6 +6,7 @@
 #include <ode/ode.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 #include <stdlib.h>
 
 /* The text of the simulation stepping now on this thread (its owner keeps it alive), or NULL. */
@@ -51,3 +52,7 @@ void fs_ode_init(void)
 }
 
 void fs_ode_close(void) { dCloseODE(); }
+
+int fs_ode_double_precision(void) { return strstr(dGetConfiguration(), "ODE_double_precision") != NULL; }
+
+void fs_ode_fail(const char *message) { dDebug(1, "%s", message); }

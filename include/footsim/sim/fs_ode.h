@@ -20,4 +20,12 @@ void fs_ode_close(void);
 void fs_ode_context(const char *context);
 void fs_ode_context_leave(const char *context);
 
+/* Whether the ODE footsim is linked with computes in double precision (its build configuration),
+ * for the record of the machine a benchmark ran on. */
+int fs_ode_double_precision(void);
+
+/* Calls ODE's debug handler with message, as an internal error of ODE's would: the handler
+ * installed by fs_ode_init exits with FS_NUMERICAL. Never returns; for tests of that path. */
+void fs_ode_fail(const char *message);
+
 #endif
