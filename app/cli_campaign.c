@@ -238,6 +238,10 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdi
     if (s == FS_OK)
         s = fs_campaign_write_chart(c, rows, out->partial, &err);
     int g = s == FS_OK ? cli_gnuplot(out->partial, "chart.gp", "success.png", "campaign") : 0;
+    if (s == FS_OK && !g && interrupted) { /* stopped while writing: the old folder stays, whole */
+        free(rows);
+        return 128 + interrupted;
+    }
     if (s == FS_OK && !g)
         s = fs_campaign_write_summary(c, rows, out->partial, &err);
     if (s == FS_OK && !g)
@@ -399,6 +403,8 @@ static int finish_shard(const fs_campaign *c, const fs_journal_head *h, const fs
     const shard_file x = {h, results};
     fs_error err;
     fs_status s = fs_write_in(out->partial, "trials.journal", fill_shard, &x, &err);
+    if (s == FS_OK && interrupted) /* stopped while writing: the old folder stays, whole */
+        return 128 + interrupted;
     if (s == FS_OK)
         s = fs_outdir_commit(out, &err);
     if (s != FS_OK)
@@ -539,6 +545,9 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
                 s = h->nshards > 1 ? finish_shard(c, h, results, out) : finish(c, results, out);
             if (!out->open) /* the results are in place: the journal has served */
                 fs_remove_tree(jdir);
+            else if (interrupted) /* while the results were written (--frames-of, the chart) */
+                fprintf(stderr, "footsim campaign: stopped by %s: %d of %d trials done, kept in %s/; to continue: "
+                        "%s\n", interrupted == SIGINT ? "SIGINT" : "SIGTERM", kept, total, jdir, again);
             else
                 fprintf(stderr, "footsim campaign: the trials are kept in %s/; once the problem is solved, run again: "
                         "%s\n", jdir, again);

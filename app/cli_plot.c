@@ -76,8 +76,11 @@ int cli_gnuplot_to(const char *dir, const char *script, const char *png, const c
         _exit(127);
     }
     int status = -1;
+    /* a signal the caller handles (a campaign's SIGINT, SIGTERM) must not end the wait: gnuplot
+     * would go on writing the temporary file after it was given up */
     if (pid > 0)
-        waitpid(pid, &status, 0);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            ;
     if (!(pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
         remove(temp);
         fprintf(stderr, "footsim %s: gnuplot failed: no chart %s (the data and script %s are in %s)\n", who, png,
