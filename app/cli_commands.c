@@ -599,7 +599,7 @@ int cli_trial(const cli_args *a)
                r.end_time_s, r.peak_tilt_deg, r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, rest,
                r.mean_contacts, r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
         if (dir[0])
-            printf("  results: %s/trial.json%s\n", dir, a->frames ? ", frames/" : "");
+            printf("  results: %s/trial.json, %s/trajectory.csv%s\n", dir, dir, a->frames ? ", frames/" : "");
     }
     return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
 }
