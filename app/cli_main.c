@@ -46,8 +46,9 @@ static const command commands[] = {
      "  Exit 1 when analytic and measured differ by more than 1 %."},
     {"terrain", cli_terrain, "TERRAIN", "--height --png --replace --scenario --set --data",
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
-     "  foot collides with; --png FILE writes a shaded top-down picture (with the footprint when\n"
-     "  --scenario S gives one); with neither, a summary."},
+     "  foot collides with; --png FILE writes a shaded top-down picture; with neither, a summary.\n"
+     "  --scenario S: both over S's region (the foot's footprint at its start and the margin), the\n"
+     "  picture with the footprint drawn."},
     {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
@@ -154,7 +155,7 @@ static void command_help(const command *c)
     if (strstr(c->options, "--shard"))
         printf(" [--shard I/N] [--fresh]");
     if (strstr(c->options, "--height"))
-        printf(" [--height X Y] [--png FILE [--replace] [--scenario SCENARIO]]");
+        printf(" [--height X Y] [--png FILE [--replace]] [--scenario SCENARIO]");
     if (strstr(c->options, "--frames "))
         printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--exaggerate F] [--video]]");
     if (strstr(c->options, "--frames-of"))

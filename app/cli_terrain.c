@@ -127,28 +127,39 @@ static int write_figure(const figure *g, const unsigned char *rgb, const char *p
     return s;
 }
 
+/* The region the summary and the picture show: the scenario's (--scenario: the foot's footprint at
+ * its start plus its margin, kept in foot[] and *outline set) or DEFAULT_REGION. 0, or an exit
+ * status (said). */
+static int region_of(const cli_args *a, double region[4], double foot[4], double **outline)
+{
+    fs_error err;
+    for (int k = 0; k < 4; k++)
+        region[k] = DEFAULT_REGION[k];
+    *outline = NULL;
+    if (!a->scenario)
+        return 0;
+    fs_scenario *sc = cli_zalloc(sizeof *sc);
+    if (!sc)
+        return FS_NO_MEMORY;
+    fs_status ls = fs_scenario_load(a->scenario, NULL, 0, sc, &err);
+    if (ls == FS_OK) {
+        fs_scenario_footprint(sc, foot);
+        double m = sc->def.region_margin_m;
+        region[0] = foot[0] - m, region[1] = foot[1] + m, region[2] = foot[2] - m, region[3] = foot[3] + m;
+        *outline = foot;
+    }
+    fs_scenario_free(sc);
+    free(sc);
+    return ls == FS_OK ? 0 : cli_report(err.status, err.message);
+}
+
 static int write_map(fs_terrain *t, const cli_args *a)
 {
     fs_error err;
-    double region[4], foot[4], *outline = NULL;
-    for (int k = 0; k < 4; k++)
-        region[k] = DEFAULT_REGION[k];
-    if (a->scenario) {
-        fs_scenario *sc = cli_zalloc(sizeof *sc);
-        if (!sc)
-            return FS_NO_MEMORY;
-        fs_status ls = fs_scenario_load(a->scenario, NULL, 0, sc, &err);
-        if (ls == FS_OK) {
-            fs_scenario_footprint(sc, foot);
-            double m = sc->def.region_margin_m;
-            region[0] = foot[0] - m, region[1] = foot[1] + m, region[2] = foot[2] - m, region[3] = foot[3] + m;
-            outline = foot;
-        }
-        fs_scenario_free(sc);
-        free(sc);
-        if (ls != FS_OK)
-            return cli_report(err.status, err.message);
-    }
+    double region[4], foot[4], *outline;
+    int rs = region_of(a, region, foot, &outline);
+    if (rs)
+        return rs;
     if (fs_terrain_crop(t, region[0], region[1], region[2], region[3], &err) != FS_OK)
         return cli_report(err.status, err.message);
     int w = MAP_WIDTH_PX, h = (int)lround(w * (region[3] - region[2]) / (region[1] - region[0]));
@@ -174,11 +185,14 @@ static int write_map(fs_terrain *t, const cli_args *a)
     return 0;
 }
 
-static int summary(fs_terrain *t)
+static int summary(fs_terrain *t, const cli_args *a)
 {
     static const char *kinds[] = {"flat", "slope", "stepped", "rough", "simply_uneven", "complex_uneven", "heightmap"};
     fs_error err;
-    const double *r = DEFAULT_REGION;
+    double r[4], foot[4], *outline;
+    int rs = region_of(a, r, foot, &outline);
+    if (rs)
+        return rs;
     if (fs_terrain_crop(t, r[0], r[1], r[2], r[3], &err) != FS_OK)
         return cli_report(err.status, err.message);
     double lo = INFINITY, hi = -INFINITY, sum = 0, sum2 = 0;
@@ -190,9 +204,9 @@ static int summary(fs_terrain *t)
         }
     double mean = sum / n;
     printf("%s: %s terrain; material mu %.2f, restitution %.2f, stiffness %.3g N/m, damping %.3g N s/m\n"
-           "  over x %.2f..%.2f m, y %.2f..%.2f m: heights %.4f..%.4f m, mean %.4f m, RMS about the mean %.4f m\n",
+           "  over x %.3f..%.3f m, y %.3f..%.3f m%s: heights %.4f..%.4f m, mean %.4f m, RMS about the mean %.4f m\n",
            t->path, kinds[t->def.kind], t->def.mu, t->def.restitution, t->def.stiffness_N_per_m,
-           t->def.damping_Ns_per_m, r[0], r[1], r[2], r[3], lo, hi, mean, sqrt(fmax(0, sum2 / n - mean * mean)));
+           t->def.damping_Ns_per_m, r[0], r[1], r[2], r[3], outline ? " (the scenario's footprint and margin)" : "", lo, hi, mean, sqrt(fmax(0, sum2 / n - mean * mean)));
     return 0;
 }
 
@@ -217,7 +231,7 @@ int cli_terrain(const cli_args *a)
     if (!s && a->png)
         s = write_map(t, a);
     if (!a->height_x && !a->png)
-        s = summary(t);
+        s = summary(t, a);
     fs_terrain_free(t);
     free(t);
     return s;

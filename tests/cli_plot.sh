@@ -138,6 +138,16 @@ check_that "bars: a rate of zero drawn under the zero line" grep -q '== 0 ? -0.0
 check_that "bars: every cell's rate in the data" [ "$(grep -c '^"' "$tmp/camp/chart.dat")" -eq 2 ]
 check_that "heat map: one panel, 560x440" [ "$(png_size "$tmp/heat/success.png")" = 560x440 ]
 
+# ---- terrain's summary over a scenario's region: the region the picture shows, said ------------------
+"$fs" terrain terrains/complex_uneven.ini >"$tmp/plain.txt"
+"$fs" terrain terrains/complex_uneven.ini --scenario scenarios/landing_trial.ini >"$tmp/scen.txt"
+"$fs" terrain terrains/complex_uneven.ini --scenario scenarios/landing_trial.ini --png "$tmp/scen.png" >"$tmp/scen_png.txt"
+region() { grep -o 'over x [-0-9.]*\.\.[-0-9.]* m, y [-0-9.]*\.\.[-0-9.]* m' "$1" | sed 's/^over //'; }
+check_that "terrain --scenario: the summary names the scenario's region" grep -q "the scenario's footprint and margin" "$tmp/scen.txt"
+check_that "terrain --scenario: its region is not the default one" [ "$(region "$tmp/scen.txt")" != "$(region "$tmp/plain.txt")" ]
+check_that "terrain --scenario: the summary and the picture cover the same region" \
+    [ "$(region "$tmp/scen.txt")" = "$(grep -o 'over x [-0-9.]*\.\.[-0-9.]* m, y [-0-9.]*\.\.[-0-9.]* m' "$tmp/scen_png.txt" | sed 's/^over //')" ]
+
 # ---- terrain --png: the bare map without gnuplot, the figure with it ----------------------------------
 mkdir -p "$tmp/nognuplot"
 PATH="$tmp/nognuplot" "$fs" terrain terrains/complex_uneven.ini --png "$tmp/bare.png" >/dev/null 2>"$tmp/err.txt"
