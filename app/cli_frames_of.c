@@ -202,8 +202,16 @@ int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_r
                         const char *shown_dir)
 {
     int s = 0;
-    for (int i = 0; f && i < f->n && !s; i++)
+    for (int i = 0; f && i < f->n && !s; i++) {
+        /* drawing takes a while (a trial run again, a frame every 1/fps s): say which, after the
+           trials' progress line */
+        int cell, seed, foot, terrain, robot;
+        fs_campaign_trial_of(c, f->trial[i], &cell, &seed);
+        fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+        fprintf(stderr, "footsim campaign: --frames-of: drawing %d of %d: %s on %s under %s, seed %d\n", i + 1, f->n,
+                c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed);
         s = draw_trial(f, c, f->trial[i], &results[f->trial[i]], dir, shown_dir);
+    }
     cli_frames_of_free(f);
     return s;
 }

@@ -84,6 +84,8 @@ file = $PWD/terrains/flat.ini
 EOF
 check "campaign" "$fs" campaign "$tmp/small.ini" -j 2 --set run.duration_s=0.3 --out "$tmp/camp1"
 check "campaign --frames-of" "$fs" campaign "$tmp/small.ini" -j 2 --set run.duration_s=0.3 --out "$tmp/camp2" --frames-of foot=bio,seed=2 --size 64x48 --fps 10
+cp "$tmp/err" "$tmp/camp2.err"
+check "which trial it draws, said" grep -q -- '--frames-of: drawing 1 of 1: bio on flat under drop_weight, seed 2' "$tmp/camp2.err"
 check "the chosen trial's frames" [ -s "$tmp/camp2/frames/bio-flat-drop_weight-seed2/000000.png" ]
 check "no other trial's" [ "$(ls "$tmp/camp2/frames")" = bio-flat-drop_weight-seed2 ]
 for f in summary.md summary.csv summary.json trials.csv chart.dat; do
