@@ -201,8 +201,8 @@ static fs_status check_text(const char *path, const char *text, size_t len, fs_e
                 return fs_fail(err, FS_BAD_INPUT, "%s:%d: text after ']' ('%.*s'); put each key on a line of its own "
                                "below [section]", path, line, (int)(end - q > 40 ? 40 : end - q), text + q);
             if (section_line && section_keys == 0)
-                return fs_fail(err, FS_BAD_INPUT, "%s:%d: [%s] has no keys (an empty section, or a misspelt name); give its keys, or remove it",
-                               path, section_line, section);
+                return fs_fail(err, FS_BAD_INPUT, "%s:%d: [%s] has no keys (an empty section, or a misspelt name); "
+                               "give its keys, or remove it", path, section_line, section);
             snprintf(section, sizeof section, "%.*s", (int)(close - (text + p) - 1), text + p + 1);
             section_line = line, section_keys = 0;
         } else if (p < end && text[p] != ';' && text[p] != '#') {
@@ -212,8 +212,8 @@ static fs_status check_text(const char *path, const char *text, size_t len, fs_e
         line++;
     }
     if (section_line && section_keys == 0)
-        return fs_fail(err, FS_BAD_INPUT, "%s:%d: [%s] has no keys (an empty section, or a misspelt name); give its keys, or remove it", path,
-                       section_line, section);
+        return fs_fail(err, FS_BAD_INPUT, "%s:%d: [%s] has no keys (an empty section, or a misspelt name); give its "
+                       "keys, or remove it", path, section_line, section);
     if (keys == 0)
         return fs_fail(err, FS_BAD_INPUT, "%s:1: no keys (the file is empty, or blank, or only comments); give the "
                        "file's [sections] and keys", path);

@@ -340,6 +340,10 @@ fs_status fs_scenario_for_design(const char *design_path, const char *const *ove
     fs_status s = fs_config_bind(&empty, fs_scenario_keys + 1, fs_scenario_nkeys - 1, &sc->def, err);
     if (s == FS_OK)
         s = fs_terrain_load("", NULL, 0, &sc->terrain, err);
+    if (s == FS_OK) /* the log interval, not given, follows the step */
+        sc->log_interval_default_s = sc->log_interval_followed_s = sc->def.log_interval_s;
+    if (s == FS_OK)
+        s = check_relations(sc, NULL, err);
     if (s != FS_OK)
         return s;
     snprintf(sc->def.design_path, sizeof sc->def.design_path, "%s", design_path);
