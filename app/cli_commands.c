@@ -700,6 +700,7 @@ int cli_keys(const cli_args *a)
     printf("### Limits\n\nWhat footsim refuses up front (exit 2, before anything is simulated or written), so that no\n"
            "count overflows and no buffer outgrows memory:\n\n| what | at most |\n|---|---|\n"
            "| an input file (design, scenario, terrain, campaign) | %d bytes, %d keys; regular files only |\n"
+           "| a line of an input file | %d characters |\n"
            "| steps of one run, trial or walk (duration_s / step_s; steps x period_s / step_s) | %.0e |\n"
            "| a run's trajectory in memory (rows x columns x 8 bytes) | %.0f MiB |\n"
            "| trials of a campaign (feet x terrains x seeds) | %d |\n"
@@ -707,7 +708,7 @@ int cli_keys(const cli_args *a)
            "| frames `render-compare` keeps in memory | half of the machine's memory |\n"
            "| a number | decimal; 0 or a normal double, 2.2e-308 to 1.8e308 in magnitude (hexadecimal and subnormals refused) |\n"
            "| `terrain --height X Y` | metres from -1000 to 1000 |\n\n",
-           FS_CONFIG_MAX_BYTES, FS_CONFIG_MAX_KEYS, (double)FS_MAX_STEPS, FS_TRAJ_MAX_BYTES / (1024.0 * 1024),
+           FS_CONFIG_MAX_BYTES, FS_CONFIG_MAX_KEYS, fs_config_max_line(), (double)FS_MAX_STEPS, FS_TRAJ_MAX_BYTES / (1024.0 * 1024),
            FS_CAMPAIGN_MAX_TRIALS, 999999);
     return 0;
 }

@@ -246,7 +246,7 @@ fs_status fs_config_load(fs_config *cfg, const char *path, fs_error *err)
         s = r.status;
     else if (s == FS_OK && r.long_line && (bad == 0 || r.long_line <= bad))
         s = fs_fail(err, FS_BAD_INPUT, "%s:%d: line longer than %d characters; shorten it", path, r.long_line,
-                    ini_max_line - 3);
+                    fs_config_max_line());
     else if (s == FS_OK && bad > 0)
         s = fs_fail(err, FS_BAD_INPUT, "%s:%d: not an INI line; write `[section]`, `key = value` or a `;` comment",
                     path, bad);
@@ -535,6 +535,8 @@ static void list_known(const fs_key *schema, int nkeys, const char *section, cha
         used += (size_t)n;
     }
 }
+
+int fs_config_max_line(void) { return ini_max_line - 3; }
 
 fs_status fs_config_number(const fs_key *k, const char *value, const char *where, double *out, fs_error *err)
 {

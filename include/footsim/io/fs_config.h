@@ -18,6 +18,10 @@ enum { FS_NAME_MAX = 64, FS_VALUE_MAX = 256, FS_PATH_MAX = 1024, FS_LIST_MAX = 8
 /* Caps on a file (docs/keys.md): bytes and keys. */
 enum { FS_CONFIG_MAX_BYTES = 1024 * 1024, FS_CONFIG_MAX_KEYS = 10000 };
 
+/* The longest line an input file may have, in characters (the INI reader's buffer, less its line
+ * end and terminator): a longer one is refused with its file:line. */
+int fs_config_max_line(void);
+
 typedef struct fs_entry {
     char section[FS_NAME_MAX];
     char name[FS_NAME_MAX];
