@@ -52,6 +52,14 @@ static int export_mjcf(const cli_args *a, export_work *w)
         }
         snprintf(out, sizeof out, "results/export/%s%s%s.xml", stem, a->scenario ? "-" : "", a->scenario ? sc->name : "");
     }
+    /* an existing file is replaced only when footsim exported it (its first bytes), or --replace */
+    static const char mjcf_signature[] = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- footsim export";
+    s = fs_check_file_target(out, "--out", (const unsigned char *)mjcf_signature, sizeof mjcf_signature - 1,
+                             "an MJCF file footsim exported", a->replace, &err);
+    if (s != FS_OK) {
+        fs_scenario_free(sc);
+        return cli_report(err.status, err.message);
+    }
     s = fs_mjcf_write(sc, a->scenario != NULL, out, &err);
     int hfield = a->scenario && fs_terrain_is_heightfield(&sc->terrain);
     fs_scenario_free(sc);

@@ -108,8 +108,9 @@ static const command commands[] = {
      "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves.\n"
      "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
      "  worker processes (default: the CPUs it may use; the results do not depend on N)."},
-    {"export", cli_export, "DESIGN", "--mjcf --scenario --out --set --data",
-     "Writes the foot as MuJoCo MJCF (docs/export.md) to --out FILE (default results/export/<design>.xml):\n"
+    {"export", cli_export, "DESIGN", "--mjcf --scenario --out --replace --set --data",
+     "Writes the foot as MuJoCo MJCF (docs/export.md) to --out FILE (default results/export/<design>.xml;\n"
+     "  a file there that footsim did not export is kept unless --replace):\n"
      "  bodies with their masses and inertias, the hinges as a tree, the springs as spatial tendons, the\n"
      "  contact spheres and box; with --scenario S, in S's start pose with its ground (a heightfield's\n"
      "  samples in FILE's name with .hfield.bin), gravity, step, robot and load."},
@@ -134,10 +135,10 @@ static void usage(FILE *out)
 static void command_help(const command *c)
 {
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
-    if (strstr(c->options, "--replace") && strstr(c->options, "--out"))
+    if (strstr(c->options, "--mjcf"))
+        printf(" --mjcf [--scenario SCENARIO] [--out FILE [--replace]]");
+    else if (strstr(c->options, "--replace") && strstr(c->options, "--out"))
         printf(" [--out DIR [--replace]]");
-    else if (strstr(c->options, "--mjcf"))
-        printf(" --mjcf [--scenario SCENARIO] [--out FILE]");
     else if (strstr(c->options, "--out"))
         printf(" [--out DIR]");
     if (strstr(c->options, "-j "))

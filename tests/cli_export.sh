@@ -1,7 +1,8 @@
 #!/bin/sh
 # footsim export --mjcf from the command line: bad input refused with exit 2 and nothing written,
 # the XML and its heightfield file written where asked (or under results/export/), an existing
-# export replaced whole, --data honoured, the XML well-formed. What the XML holds is
+# export replaced whole, a file footsim did not export kept unless --replace, --data honoured, the
+# XML well-formed. What the XML holds is
 # test_export_mjcf's and test_export_mujoco's. Usage: cli_export.sh path/to/footsim.
 . "$(dirname "$0")/cli_check.sh"
 src=$(pwd)
@@ -14,8 +15,12 @@ check '[ ! -e "$tmp/a.xml" ]'
 # written, with its heightfield beside; written again over itself
 check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/walking.ini --out "$tmp/w.xml" >"$tmp/out"'
 check '[ -s "$tmp/w.xml" ] && [ -s "$tmp/w.hfield.bin" ] && grep -q "w.hfield.bin" "$tmp/out"'
-echo stale >"$tmp/w.xml"
 check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/walking.ini --out "$tmp/w.xml" >"$tmp/out"'
+# a file footsim did not export is not replaced without --replace
+echo "my notes" >"$tmp/notes.xml"
+expect 2 "is not an MJCF file footsim exported" -- export --mjcf scenarios/feet/biomimetic.ini --out "$tmp/notes.xml"
+check '[ "$(cat "$tmp/notes.xml")" = "my notes" ]'
+check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --out "$tmp/notes.xml" --replace >/dev/null && grep -q "<mujoco" "$tmp/notes.xml"'
 check 'grep -q "file=\"w.hfield.bin\"" "$tmp/w.xml" && [ -z "$(ls "$tmp" | grep "\.tmp\.")" ]'
 # by data name from another folder: the default path under the current folder
 mkdir "$tmp/work"
@@ -26,5 +31,5 @@ if command -v xmllint >/dev/null; then
 else
     echo "cli_export: no xmllint (Debian libxml2-utils); well-formedness is test_export_mjcf's" >&2
 fi
-check '"$fs" export --help | grep -q -- "--mjcf \[--scenario SCENARIO\] \[--out FILE\]"'
+check '"$fs" export --help | grep -q -- "--mjcf \[--scenario SCENARIO\] \[--out FILE \[--replace\]\]"'
 finish
