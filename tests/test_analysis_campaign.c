@@ -153,6 +153,7 @@ static void force_near(fs_campaign_row *rows) { rows[0].median[4] += 20; } /* 0.
 static void force_far(fs_campaign_row *rows) { rows[0].median[4] += 22; }
 static void no_median(fs_campaign_row *rows) { rows[0].median[4] = NAN; }
 static void one_hung(fs_campaign_row *rows) { rows[0].hung = 1; }
+static void one_undecided(fs_campaign_row *rows) { rows[0].undecided = 1; }
 
 /* Compares the summary change() makes with the baseline in tmp/base (or tmp/BASE_NAME). */
 static fs_status compare_against(const char *tmp, const char *base_name, const char *name,
@@ -251,6 +252,9 @@ static void test_equivalence(void)
     CHECK(equivalent_to(tmp, "drop_out", drop_past_floor) == FS_EXPECTATION_FAILED);
     CHECK(equivalent_to(tmp, "force", force_doubled) == FS_OK);
     CHECK(equivalent_to(tmp, "no_contacts", no_contacts) == FS_EXPECTATION_FAILED);
+    /* a trial more left undecided, or hung, is not equivalent */
+    CHECK(equivalent_to(tmp, "hung", one_hung) == FS_EXPECTATION_FAILED);
+    CHECK(equivalent_to(tmp, "undecided", one_undecided) == FS_EXPECTATION_FAILED);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
     CHECK(system(cmd) == 0);

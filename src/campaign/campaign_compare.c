@@ -194,6 +194,15 @@ static int equivalence_row(FILE *out, const cJSON *ref, const cJSON *r)
         double allow = fmax(EQUIVALENCE_RELATIVE * fabs(base), equivalence_metrics[i].floor);
         bad += report_equivalence(out, r, key, base, now, base - allow, base + allow, 1);
     }
+    /* trials the window left undecided or whose worker hung: never more than the reference's (a
+       step that leaves trials undecided answers a different question) */
+    static const char *const counts[] = {"undecided", "hung"};
+    for (int i = 0; i < 2; i++) {
+        double base = number_of(ref, counts[i]), now = number_of(r, counts[i]);
+        base = isnan(base) ? 0 : base, now = isnan(now) ? 0 : now;
+        if (now != base)
+            bad += report_equivalence(out, r, counts[i], base, now, 0, base, 1);
+    }
     bad += report_equivalence(out, r, "median_peak_force_N", number_of(ref, "median_peak_force_N"),
                               number_of(r, "median_peak_force_N"), 0, 0, 0);
     return bad;
