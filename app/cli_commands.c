@@ -192,6 +192,7 @@ static const double LAW_LEAN_DEG = 15;
 /* The whole foot's pitch stiffness and, for each shipped robot, what the law says. */
 typedef struct pitch_report {
     double load_kg, K_model, K_ode_mu1, K_ode_grip;
+    double K_ode_plane;           /* gripping in each chain's plane, free across: the model's contacts */
     int flat;                     /* a flat sole: the model is its contacts' springs */
     int nrobots;
     char robot[MAX_ROBOTS][FS_NAME_MAX];
@@ -239,9 +240,11 @@ static fs_status pitch_stiffness(const fs_scenario *sc, const char *design, pitc
     p->flat = sc->geom.kind == FS_FOOT_FLAT;
     fs_status s = fs_pitch_stiffness_foot(sc, load_N, &p->K_model, err);
     if (s == FS_OK)
-        s = fs_pitch_stiffness_measure(sc, load_N, 1, p->K_model, &p->K_ode_mu1, err);
+        s = fs_pitch_stiffness_measure(sc, load_N, 1, 0, p->K_model, &p->K_ode_mu1, err);
     if (s == FS_OK)
-        s = fs_pitch_stiffness_measure(sc, load_N, 10, p->K_model, &p->K_ode_grip, err);
+        s = fs_pitch_stiffness_measure(sc, load_N, 10, 0, p->K_model, &p->K_ode_grip, err);
+    if (s == FS_OK && !p->flat)
+        s = fs_pitch_stiffness_measure(sc, load_N, 10, 1, p->K_model, &p->K_ode_plane, err);
     if (s == FS_OK) {
         fs_error ignored;
         shipped_robots(design, p->K_model, g, p, &ignored);
@@ -258,6 +261,9 @@ static void pitch_print(const pitch_report *p)
            p->load_kg,
            p->flat ? "the sole's corners on the contacts' springs" : "each chain rolls in its plane, free across it",
            p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1), p->K_ode_grip);
+    if (!p->flat)
+        printf("  %-54s %8.2f (%+.1f %%)\n", "measured in ODE, the model's contacts (grip in plane)", p->K_ode_plane,
+               100 * (p->K_ode_plane / p->K_model - 1));
     if (p->nrobots)
         printf("the law, K (the model's, an Achilles tendon in series) against m g h of each robot:\n");
     for (int i = 0; i < p->nrobots; i++) {
@@ -284,6 +290,8 @@ static void pitch_json(cJSON *root, const pitch_report *p)
     cJSON_AddNumberToObject(o, "model_N_m_per_rad", p->K_model);
     cJSON_AddNumberToObject(o, "ode_mu1_N_m_per_rad", p->K_ode_mu1);
     cJSON_AddNumberToObject(o, "ode_mu10_N_m_per_rad", p->K_ode_grip);
+    if (!p->flat)
+        cJSON_AddNumberToObject(o, "ode_in_plane_N_m_per_rad", p->K_ode_plane);
     cJSON *robots = cJSON_AddArrayToObject(o, "robots");
     for (int i = 0; i < p->nrobots; i++) {
         cJSON *r = cJSON_CreateObject();

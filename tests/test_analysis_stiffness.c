@@ -61,9 +61,13 @@ static void pitch_stiffness_model_and_ode_agree(void)
     REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", alike, 3, &sc, &err) == FS_OK);
     double g = sc.def.gravity_m_per_s2, load = 26 * g, K, K_ode;
     REQUIRE(fs_pitch_stiffness_model(&sc.design, &sc.geom, load, g, &K, &err) == FS_OK);
-    REQUIRE(fs_pitch_stiffness_measure(&sc, load, 10, K, &K_ode, &err) == FS_OK);
+    REQUIRE(fs_pitch_stiffness_measure(&sc, load, 10, 0, K, &K_ode, &err) == FS_OK);
     CHECK(K > 0);
     CHECK_NEAR(K_ode / K, 1, 0.01);
+    /* unsplayed, a chain's plane is the foot's: gripping in it alone is gripping (same allowance) */
+    double K_plane;
+    REQUIRE(fs_pitch_stiffness_measure(&sc, load, 10, 1, K, &K_plane, &err) == FS_OK);
+    CHECK_NEAR(K_plane / K, 1, 0.01);
     const char *stiffer[] = {"chains.splay_deg=0,0,0,0,0", "chains.scale=1,1,1,1,1", "springs.d3_heel_spread=1",
                              "springs.k_d1_N_per_m=24000", "springs.k_d2_N_per_m=24000", "springs.k_d3_N_per_m=24000"};
     static fs_scenario sc2;
@@ -76,6 +80,21 @@ static void pitch_stiffness_model_and_ode_agree(void)
     REQUIRE(fs_scenario_for_design("scenarios/feet/flat.ini", NULL, 0, &flat, &err) == FS_OK);
     CHECK(fs_pitch_stiffness_model(&flat.design, &flat.geom, load, g, &K, &err) == FS_BAD_INPUT);
     fs_scenario_free(&flat);
+}
+
+/* Splayed chains (Table I): freeing the toes across their planes removes constraints, so the foot
+ * can only be softer in pitch than when they grip every way; the model's own contacts (grip in each
+ * chain's plane, free across) are the softer of the two. */
+static void freeing_toes_across_their_planes_softens_the_foot(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", NULL, 0, &sc, &err) == FS_OK);
+    double g = sc.def.gravity_m_per_s2, load = 26 * g, K, K_grip, K_plane;
+    REQUIRE(fs_pitch_stiffness_model(&sc.design, &sc.geom, load, g, &K, &err) == FS_OK);
+    REQUIRE(fs_pitch_stiffness_measure(&sc, load, 10, 0, K, &K_grip, &err) == FS_OK);
+    REQUIRE(fs_pitch_stiffness_measure(&sc, load, 10, 1, K, &K_plane, &err) == FS_OK);
+    CHECK(K_plane > 0 && K_plane < K_grip);
 }
 
 /* A flat sole's pitch stiffness is its contacts': its four bottom corners on springs of the sole's
@@ -94,14 +113,14 @@ static void flat_sole_pitch_stiffness_model_and_ode_agree(void)
     double k = flat.design.sole_stiffness_N_per_m * flat.terrain.def.stiffness_N_per_m /
                (flat.design.sole_stiffness_N_per_m + flat.terrain.def.stiffness_N_per_m);
     CHECK_NEAR(K / (k * flat.geom.box_size.x * flat.geom.box_size.x), 1, 1e-12);
-    REQUIRE(fs_pitch_stiffness_measure(&flat, load, 1, K, &K_ode, &err) == FS_OK);
+    REQUIRE(fs_pitch_stiffness_measure(&flat, load, 1, 0, K, &K_ode, &err) == FS_OK);
     CHECK_NEAR(K_ode / K, 1, 0.01);
     flat.design.sole_stiffness_N_per_m *= 2;
     flat.terrain.def.stiffness_N_per_m *= 2;
     double K2;
     REQUIRE(fs_pitch_stiffness_foot(&flat, load, &K2, &err) == FS_OK);
     CHECK_NEAR(K2 / K, 2, 1e-12);
-    REQUIRE(fs_pitch_stiffness_measure(&flat, load, 1, K2, &K_ode, &err) == FS_OK);
+    REQUIRE(fs_pitch_stiffness_measure(&flat, load, 1, 0, K2, &K_ode, &err) == FS_OK);
     CHECK_NEAR(K_ode / K2, 1, 0.01);
     fs_scenario_free(&flat);
 }
@@ -136,6 +155,6 @@ static void pitch_law_for_each_robot(void)
     CHECK(l.held && l.stands);
 }
 
-FS_TEST_MAIN(TEST(default_design_agrees), TEST(other_design_agrees), TEST(jacobian_has_the_papers_pattern),
+FS_TEST_MAIN(TEST(freeing_toes_across_their_planes_softens_the_foot), TEST(default_design_agrees), TEST(other_design_agrees), TEST(jacobian_has_the_papers_pattern),
              TEST(pitch_stiffness_model_and_ode_agree), TEST(flat_sole_pitch_stiffness_model_and_ode_agree),
              TEST(pitch_law_for_each_robot))

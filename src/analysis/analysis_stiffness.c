@@ -197,10 +197,10 @@ static int still_after_ramp(void *user, fs_sim *sim)
 }
 
 /* The ankle body's pitch at rest under torque tau: the turn of its x axis about the world's y. */
-static fs_status pitch_probe(const fs_scenario *sc, double tau, double *pitch, fs_error *err)
+static fs_status pitch_probe(const fs_scenario *sc, double tau, int in_plane, double *pitch, fs_error *err)
 {
     fs_sim sim;
-    fs_sim_options opts = {.with_ground = 1};
+    fs_sim_options opts = {.with_ground = 1, .chain_plane_friction = in_plane};
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     pitch_load load = {tau, sc->def.ramp_s};
     const fs_step_hook hooks[] = {{"still", still_after_ramp, &load}, {"out of time", out_of_time, NULL}};
@@ -249,7 +249,7 @@ fs_status fs_pitch_stiffness_foot(const fs_scenario *sc, double load_N, double *
     return FS_OK;
 }
 
-fs_status fs_pitch_stiffness_measure(const fs_scenario *sc_in, double load_N, double mu, double K_guess, double *K,
+fs_status fs_pitch_stiffness_measure(const fs_scenario *sc_in, double load_N, double mu, int in_plane, double K_guess, double *K,
                                      fs_error *err)
 {
     fs_scenario sc = *sc_in;
@@ -259,9 +259,9 @@ fs_status fs_pitch_stiffness_measure(const fs_scenario *sc_in, double load_N, do
     /* a probe about 1e-3 rad deep: linear, yet far above the solver's residuals; and far from
        lifting the footprint's heel or toe (a flat sole is linear only while all four corners bear) */
     double tau = fmin(1e-3 * K_guess, 0.05 * load_N * 0.5 * footprint_length_m(&sc.geom)), plus, minus;
-    fs_status s = pitch_probe(&sc, tau, &plus, err);
+    fs_status s = pitch_probe(&sc, tau, in_plane, &plus, err);
     if (s == FS_OK)
-        s = pitch_probe(&sc, -tau, &minus, err);
+        s = pitch_probe(&sc, -tau, in_plane, &minus, err);
     *K = s == FS_OK ? 2 * tau / (plus - minus) : NAN;
     return s;
 }

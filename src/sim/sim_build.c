@@ -186,6 +186,22 @@ static void build_shapes(fs_sim *sim)
     }
 }
 
+/* With chain_plane_friction: each sphere grips along the horizontal line of its chain's plane
+ * (metatarsal and phalanx: midfoot joint to toe), the heel's and talus's along the foot's x. */
+static void grip_directions(fs_sim *sim)
+{
+    const fs_foot_geom *g = sim->geom;
+    for (int i = 0; i < g->nspheres; i++) {
+        fs_vec3 d = fs_v3(1, 0, 0);
+        for (int c = 0; c < FS_CHAINS; c++)
+            if (g->sphere[i].body == g->chain[c].metatarsal || g->sphere[i].body == g->chain[c].phalanx)
+                d = fs_sub(g->chain[c].toe, g->chain[c].midfoot);
+        d = turn(sim, d);
+        double len = hypot(d.x, d.y);
+        sim->grip_dir[i][0] = d.x / len, sim->grip_dir[i][1] = d.y / len, sim->grip_dir[i][2] = 0;
+    }
+}
+
 static void build_joints(fs_sim *sim)
 {
     const fs_foot_geom *g = sim->geom;
@@ -398,6 +414,9 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a.x, a.y, a.z, sim->ankle_local);
     sim->load_N = s->load_kg * s->gravity_m_per_s2 / share;
     contact_template(sim);
+    sim->chain_plane_friction = opts->chain_plane_friction && sim->geom->kind == FS_FOOT_BIOMIMETIC;
+    if (sim->chain_plane_friction)
+        grip_directions(sim);
     body_reach(sim);
     sim->profile = opts->profile;
     return scene_ground(sim, err);

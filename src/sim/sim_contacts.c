@@ -206,6 +206,24 @@ static void bound_friction(dContact *ct, double N)
     ct->surface.mu *= N;
 }
 
+/* fs_sim_options.chain_plane_friction: the contact grips along dir (its chain's plane, made
+ * tangent to the surface) and slides freely across it. */
+static void grip_in_plane(dContact *ct, const double dir[3])
+{
+    const double *n = ct->geom.normal;
+    double along = dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2], t[3], len = 0;
+    for (int k = 0; k < 3; k++) {
+        t[k] = dir[k] - along * n[k];
+        len += t[k] * t[k];
+    }
+    if (len < 1e-12) /* the chain's line along the normal: no direction in the surface to grip in */
+        return;
+    ct->surface.mode |= dContactMu2 | dContactFDir1;
+    ct->surface.mu2 = 0;
+    for (int k = 0; k < 3; k++)
+        ct->fdir1[k] = t[k] / sqrt(len);
+}
+
 /* Whether the contact point leaves the surface faster than SEPARATING_M_PER_S: the last step's
  * force says nothing of a contact that is coming apart (a foot bounced off a rock), and a bound
  * from it could hold the point to the surface; such a contact keeps dContactApprox1. */
@@ -274,6 +292,8 @@ void fs_sim_collide(fs_sim *sim)
         for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {
             dContact ct = sim->contact_template;
             ct.geom = g->c[i];
+            if (sim->chain_plane_friction && s < sim->geom->nspheres)
+                grip_in_plane(&ct, sim->grip_dir[s]);
             if (g->match[i] >= 0 && sim->contact_template.surface.mu > 0 && !separating(body, &g->c[i]))
                 bound_friction(&ct, g->prev_N[g->match[i]] / g->share[g->match[i]]);
             add_contact(sim, &ct, body, 0, s);

@@ -73,11 +73,13 @@ fs_status fs_pitch_stiffness_foot(const fs_scenario *sc, double load_N, double *
 /* The same stiffness measured in ODE: the foot on the scenario's ground with friction mu (sole and
  * ground), under load_N at the ankle (the scenario's load and robot replaced), torques +tau and
  * -tau (1e-3 rad times K_guess, and at most a twentieth of the moment that would lift the
- * footprint's heel or toe, load_N times half its length) about the lateral axis on the ankle body, risen with the load and
- * held until still; K = 2 tau / (pitch(+tau) - pitch(-tau)). With mu = 10 heel and toes grip
- * (the model's assumption in each chain's plane, but splayed toes are then held across their
- * planes too); docs/landing.md gives both. */
-fs_status fs_pitch_stiffness_measure(const fs_scenario *sc, double load_N, double mu, double K_guess, double *K,
+ * footprint's heel or toe, load_N times half its length) about the lateral axis on the ankle body,
+ * risen with the load and held until still; K = 2 tau / (pitch(+tau) - pitch(-tau)). With mu = 10
+ * heel and toes grip (the model's assumption in each chain's plane, but splayed toes are then held
+ * across their planes too). in_plane 1 (a biomimetic foot on level ground): the contacts grip with
+ * mu along each chain's plane and slide freely across it (fs_sim_options.chain_plane_friction),
+ * the contacts the model assumes; docs/landing.md gives all three. */
+fs_status fs_pitch_stiffness_measure(const fs_scenario *sc, double load_N, double mu, int in_plane, double K_guess, double *K,
                                      fs_error *err);
 
 /* The law for one robot on a foot of pitch stiffness K_foot: an Achilles tendon acts in series

@@ -38,6 +38,11 @@ typedef struct fs_sim_options {
     struct fs_profile *profile; /* where this sim's step time goes (added to), or NULL: not timed */
     int keep_robot_body;    /* 1: a rigid, free robot stays a body of its own on a fixed joint instead
                                of being merged into the ankle body (the export shows it apart) */
+    int chain_plane_friction; /* 1 (biomimetic foot): each sphere's contacts grip along its chain's
+                               plane (made tangent to the surface) and slide freely across it (mu
+                               in-plane, 0 across: ODE's dContactMu2 and fdir1), the heel's along
+                               the foot: the contacts the pitch-stiffness model assumes
+                               (fs_pitch_stiffness_measure) */
 } fs_sim_options;
 
 typedef struct fs_sim {
@@ -70,6 +75,8 @@ typedef struct fs_sim {
     dContact contact_template;
     double match_m[FS_MAX_SPHERES + 1]; /* how far a shape's contact may move in a step and still
                                            continue the last step's (its friction bound) */
+    int chain_plane_friction;          /* fs_sim_options.chain_plane_friction */
+    double grip_dir[FS_MAX_SPHERES][3]; /* with it: each sphere's direction of grip, horizontal, world */
     double time_s;
     double load_N;         /* the load's weight; fs_sim_step ramps it in */
     int contacts_now;      /* contact points in the last step */
