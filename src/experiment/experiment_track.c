@@ -72,6 +72,8 @@ fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double
         s = fs_drive(&sim, &spec, &r, err);
         out->wall_s = fs_clock_s() - start;
         out->check_class = fs_check_class_of(sim.check.first_drift);
+        out->first_drift = sim.check.first_drift;
+        out->max_loop_error_m = sim.check.max_loop_error_m;
     }
     fs_sim_destroy(&sim);
     if (s != FS_OK)

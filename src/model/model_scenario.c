@@ -91,6 +91,9 @@ const fs_key fs_scenario_keys[] = {
     NUM("run", "auto_disable_s", auto_disable_s, 0, 100, 0, "s", "0",
         "0: off; else ODE stops stepping a body slower than rest_speed_m_per_s (turning slower than that "
         "over 1 cm) for this long"),
+    NUM("run", "min_inertia_kg_m2", min_inertia_kg_m2, 0, 1e-2, 0, "kg m^2", "0",
+        "0: off; else each foot body's inertia tensor I becomes I + d 1, d = max(0, this - I's smallest principal "
+        "moment): no moment below this, none raised by more; masses kept (for QuickStep's mass ratio: docs/bench.md)"),
 };
 const int fs_scenario_nkeys = (int)(sizeof fs_scenario_keys / sizeof fs_scenario_keys[0]);
 
@@ -300,6 +303,9 @@ void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
     snprintf(buf, size, "step_s %.6g, stepper %s, iterations %d, springs %s, contact_layer_m %.6g, window %.6g s",
              d->step_s, d->stepper ? "quickstep" : "step", d->iterations, d->springs ? "explicit" : "implicit",
              d->contact_layer_m, d->duration_s);
+    size_t used = strlen(buf);
+    if (d->min_inertia_kg_m2 > 0 && used < size) /* said only when on: results made without it read as before */
+        snprintf(buf + used, size - used, ", min_inertia_kg_m2 %.6g", d->min_inertia_kg_m2);
 }
 
 void fs_scenario_footprint(const fs_scenario *sc, double box[4])

@@ -126,6 +126,40 @@ static void robot_mass(const fs_sim *sim, dMass *m)
     dMassSetParameters(m, sim->sc->def.robot.mass_kg, 0, 0, 0, I[0], I[1], I[2], 0, 0, 0);
 }
 
+/* The smallest eigenvalue of the symmetric 3x3 matrix ODE keeps in a dMass (rows 4 apart):
+ * the smallest principal moment of inertia (closed form, trigonometric; Smith 1961). */
+static double smallest_moment(const dReal *I)
+{
+    double a = I[0], b = I[5], c = I[10], d = I[1], e = I[6], f = I[2];
+    double off = d * d + e * e + f * f;
+    if (off == 0)
+        return fmin(a, fmin(b, c));
+    double q = (a + b + c) / 3;
+    double p = sqrt(((a - q) * (a - q) + (b - q) * (b - q) + (c - q) * (c - q) + 2 * off) / 6);
+    /* det((A - q 1) / p) / 2, in [-1, 1] but for rounding */
+    double A = (a - q) / p, B = (b - q) / p, C = (c - q) / p, D = d / p, E = e / p, F = f / p;
+    double r = 0.5 * (A * (B * C - E * E) - D * (D * C - E * F) + F * (D * E - B * F));
+    double phi = acos(fmax(-1.0, fmin(1.0, r))) / 3;
+    return q + 2 * p * cos(phi + 2 * M_PI / 3);
+}
+
+/* [run] min_inertia_kg_m2 (for QuickStep: docs/bench.md, "QuickStep and the mass ratio"): I becomes
+ * I + d 1 with d = max(0, floor - smallest principal moment), so that no principal moment is below
+ * the floor and none is raised by more than it; the principal axes stay, the moments' triangle
+ * inequality holds (each grows by d), and the mass and centre are untouched. Off (0), nothing is done:
+ * the bits are those of a build without the key. */
+static void inertia_floor(dMass *m, double floor_kg_m2)
+{
+    if (!(floor_kg_m2 > 0))
+        return;
+    double d = floor_kg_m2 - smallest_moment(m->I);
+    if (d <= 0)
+        return;
+    m->I[0] += d;
+    m->I[5] += d;
+    m->I[10] += d;
+}
+
 /* Body i's mass; for the ankle body with a merged robot, the robot's added at its centre (the two
  * frames are alike), and the body's centre moved to the combined one (ODE keeps a body's centre at
  * its origin): sim->com[i] says where, in the design frame. */
@@ -155,6 +189,7 @@ static void build_body(fs_sim *sim, int i)
     dBodyID b = dBodyCreate(sim->world);
     dMass m;
     body_mass(sim, i, &m);
+    inertia_floor(&m, sim->sc->def.min_inertia_kg_m2);
     dBodySetMass(b, &m);
     fs_vec3 p = place(sim, sim->com[i]);
     dBodySetPosition(b, p.x, p.y, p.z);

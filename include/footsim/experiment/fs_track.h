@@ -22,6 +22,8 @@ typedef struct fs_track {
     double (*angle)[FS_TRACK_ANGLES];
     double wall_s;             /* fs_track_run: wall-clock time of the steps (not of building), s */
     int check_class;           /* fs_track_run: fs_check_class of the run (drifting only with record_drift) */
+    int first_drift;           /* fs_track_run: the fs_check_kind of the first drift (FS_CHECK_OK: none) */
+    double max_loop_error_m;   /* fs_track_run: the widest a hinge's two anchors stood apart, m */
 } fs_track;
 
 /* Runs sc built with opts (NULL: the whole foot on its ground) for duration_s at sc's step and

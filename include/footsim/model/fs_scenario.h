@@ -63,6 +63,8 @@ typedef struct fs_scenario_def {
     /* what a run may skip (the speed benchmark measures both ways) */
     int collide_all;           /* 0: foot shapes against the ground only; 1: every pair, foot-foot too */
     double auto_disable_s;     /* > 0: ODE disables bodies slower than rest_speed_m_per_s for this long */
+    double min_inertia_kg_m2;  /* > 0: each foot body's inertia raised so that its smallest principal
+                                  moment is at least this (fs_sim_build; for QuickStep); 0: off */
 } fs_scenario_def;
 
 typedef struct fs_scenario {
