@@ -384,11 +384,10 @@ static void test_sweep_typed(void)
     for (int cell = 0; cell < fs_campaign_ncells(&c); cell++) {
         int f, t, r;
         fs_campaign_cell_of(&c, cell, &f, &t, &r);
-        char buf[3][FS_PATH_MAX + 32], swept[64];
-        const char *ov[FS_CAMPAIGN_MAX_SET + 4];
-        int n = fs_campaign_overrides(&c, cell, buf, ov);
-        snprintf(swept, sizeof swept, "rough.rms_m=%s", t ? "0.004" : "0.001");
-        ov[n++] = swept;
+        char buf[5][FS_PATH_MAX + 32];
+        const char *ov[FS_CAMPAIGN_MAX_SET + 5];
+        int n = fs_campaign_overrides(&c, cell, buf, ov); /* the point's value among them, as --set */
+        CHECK(!strcmp(ov[n - 1], t ? "rough.rms_m=0.0040000000000000001" : "rough.rms_m=0.001"));
         REQUIRE(fs_scenario_load(c.trial_path, ov, n, &loaded, &err) == FS_OK);
         const fs_scenario *sc = fs_campaign_pair(&c, cell);
         CHECK(sc->terrain.def.rms_m == (t ? 0.004 : 0.001) && sc->terrain.nx == loaded.terrain.nx &&
@@ -417,6 +416,26 @@ static void test_sweep_typed(void)
     const char *tiny[] = {"campaign.sweep=run.step_s", "campaign.sweep_values=0.001, 1e-7", "run.duration_s=1000"};
     CHECK(fs_campaign_load("scenarios/roughness.ini", tiny, 3, &c, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "a run may take at most") && strstr(err.message, "set in code"));
+    /* a swept log interval stays each point's own, also where a later point repeats the first's */
+    const char *logs[] = {"campaign.sweep_values=0, 0.004", "campaign.sweep2=run.log_interval_s",
+                          "campaign.sweep2_values=0.002, 0.005"};
+    REQUIRE(fs_campaign_load("scenarios/roughness.ini", logs, 3, &c, &err) == FS_OK);
+    for (int cell = 0; cell < fs_campaign_ncells(&c); cell++) {
+        int f, t, r;
+        fs_campaign_cell_of(&c, cell, &f, &t, &r);
+        CHECK(fs_campaign_pair(&c, cell)->def.log_interval_s == c.terrain[t].sweep_value[1]);
+    }
+    fs_campaign_free(&c);
+    /* the file's relations are judged on each point's values, not on the file's own value of the
+       swept key: height_max_m swept from 0.05 with height_min_m set to 0.045 is valid everywhere */
+    const char *rocks[] = {"campaign.sweep=rocks.height_max_m", "campaign.sweep_values=0.05, 0.08",
+                           "campaign.sweep2=none", "campaign.sweep2_values=", "rocks.height_min_m=0.045"};
+    CHECK(fs_campaign_load("scenarios/envelope.ini", rocks, 5, &c, &err) == FS_OK);
+    fs_campaign_free(&c);
+    /* a point that leaves the trial without a robot is refused, as --set robot.mass_kg=0 is */
+    const char *massless[] = {"campaign.sweep=robot.mass_kg", "campaign.sweep_values=26, 0"};
+    CHECK(fs_campaign_load("scenarios/roughness.ini", massless, 2, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "has none (mass 0)") != NULL);
     /* one --set of the swept key would be overwritten by the sweep */
     const char *both[] = {"rough.rms_m=0.002"};
     CHECK(fs_campaign_load("scenarios/roughness.ini", both, 1, &c, &err) == FS_BAD_INPUT);

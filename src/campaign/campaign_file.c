@@ -456,8 +456,10 @@ static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *
 }
 
 /* Loads (and so checks) the trial scenario of every cell, once, for the trials. A sweep's points
- * are typed edits: the first point of each (foot, terrain, robot) is loaded from its files, the
- * others copy it; each then gets its values (fs_scenario_set) and is compiled. */
+ * are typed edits: the first point of each (foot, terrain, robot) is read from its files with its
+ * values among the overrides (so the file's relations are judged on them, as with --set); every
+ * later point copies it, gets its own values (fs_scenario_set) and is compiled, without reading a
+ * file. */
 static fs_status load_pairs(fs_campaign *c, fs_error *err)
 {
     int ncells = fs_campaign_ncells(c);
@@ -472,20 +474,20 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
         int from = point->point[0] * c->nvalues[1] + point->point[1]; /* how far past its first point */
         fs_scenario *sc = &c->pair[cell];
         fs_error e;
-        if (!c->nsweep || !from) {
-            char buf[3][FS_PATH_MAX + 32];
-            const char *ov[FS_CAMPAIGN_MAX_SET + 3];
+        if (!from) { /* read from the files, the first point with its values as --set would give them */
+            char buf[5][FS_PATH_MAX + 32];
+            const char *ov[FS_CAMPAIGN_MAX_SET + 5];
             int n = fs_campaign_overrides(c, cell, buf, ov);
             s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
-            if (s == FS_OK)
-                s = fs_scenario_require(sc, "trial", &e);
-        } else {
+        } else { /* a later point: the first one's definitions, its values set in them, compiled */
             s = fs_scenario_copy(sc, &c->pair[(f * c->nterrains + t - from) * c->nrobots + r], &e);
+            for (int w = 0; w < c->nsweep && s == FS_OK; w++)
+                s = fs_scenario_set(sc, c->sweep[w], point->sweep_value[w], &e);
+            if (s == FS_OK)
+                s = fs_scenario_compile(sc, &e);
         }
-        for (int w = 0; w < c->nsweep && s == FS_OK; w++)
-            s = fs_scenario_set(sc, c->sweep[w], point->sweep_value[w], &e);
-        if (s == FS_OK && c->nsweep)
-            s = fs_scenario_compile(sc, &e);
+        if (s == FS_OK)
+            s = fs_scenario_require(sc, "trial", &e);
         if (s != FS_OK)
             fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s)", e.message, c->path,
                     c->foot[f].name, c->terrain[t].name, c->robot[r].name);
@@ -625,7 +627,7 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
     return s;
 }
 
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[3][FS_PATH_MAX + 32], const char **out)
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out)
 {
     int foot, terrain, robot, n = 0;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
@@ -636,6 +638,14 @@ int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[3][FS_PATH_MA
     if (c->robot[robot].path[0]) {
         snprintf(buf[2], sizeof buf[2], "robot.design=%s", c->robot[robot].path);
         out[n++] = buf[2];
+    }
+    for (int w = 0; w < c->nsweep; w++) { /* the swept values, exactly (17 digits read back the same double) */
+        double v = c->terrain[terrain].sweep_value[w];
+        if (fs_campaign_sweepable(c->sweep_choice[w])->type == FS_KEY_INTEGER)
+            snprintf(buf[3 + w], sizeof buf[3 + w], "%s=%d", c->sweep[w], (int)v);
+        else
+            snprintf(buf[3 + w], sizeof buf[3 + w], "%s=%.17g", c->sweep[w], v);
+        out[n++] = buf[3 + w];
     }
     for (int i = 0; i < c->nset; i++)
         out[n++] = c->set[i];

@@ -394,6 +394,8 @@ fs_status fs_scenario_set(fs_scenario *sc, const char *name, double value, fs_er
                        name);
     if (k->type == FS_KEY_NUMBER) {
         *(double *)field = value;
+        if (field == &sc->def.log_interval_s) /* set, as by --set: it no longer follows the step */
+            sc->log_interval_default_s = 0;
         return FS_OK;
     }
     if (!(value == floor(value) && fabs(value) <= INT_MAX))

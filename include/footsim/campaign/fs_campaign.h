@@ -107,11 +107,12 @@ void fs_campaign_cell_of(const fs_campaign *c, int cell, int *foot, int *terrain
 /* The loaded trial scenario of a cell. */
 const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell);
 
-/* The overrides a cell's trial scenario is loaded with: scenario.design, scenario.terrain,
- * robot.design (when the campaign names robots), then c->set; a sweep's values are not among them
- * (fs_campaign_load sets them in the loaded definitions). buf holds their text; out gets up to
- * FS_CAMPAIGN_MAX_SET + 3 pointers; returns the count. */
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[3][FS_PATH_MAX + 32], const char **out);
+/* The overrides a cell's trial scenario reads its files with: scenario.design, scenario.terrain,
+ * robot.design (when the campaign names robots), the sweep's values at the cell's point (to 17
+ * digits: the same double read back), then c->set. fs_campaign_load reads the first point of each
+ * (foot, terrain, robot) so and makes the later points by typed edits of it. buf holds their text;
+ * out gets up to FS_CAMPAIGN_MAX_SET + 5 pointers; returns the count. */
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out);
 
 /* Trials are numbered cell-major: index = cell * seeds + seed - first_seed. */
 int fs_campaign_ntrials(const fs_campaign *c);
