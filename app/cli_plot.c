@@ -13,6 +13,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,8 +84,12 @@ int cli_gnuplot_to(const char *dir, const char *script, const char *png, const c
             ;
     if (!(pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
         remove(temp);
-        fprintf(stderr, "footsim %s: gnuplot failed: no chart %s (the data and script %s are in %s)\n", who, png,
-                script, dir);
+        if (pid > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
+            fprintf(stderr, "footsim %s: gnuplot stopped by %s: no chart %s\n", who,
+                    WTERMSIG(status) == SIGINT ? "SIGINT" : "SIGTERM", png); /* Ctrl-C reaches the group */
+        else
+            fprintf(stderr, "footsim %s: gnuplot failed: no chart %s (the data and script %s are in %s)\n", who,
+                    png, script, dir);
         return -1;
     }
     /* gnuplot says nothing when it could not write all of it (a full disk): the file must be a
