@@ -425,17 +425,8 @@ static cJSON *trial_json(const fs_trial_result *r)
     cJSON_AddNumberToObject(o, "robot_mass_kg", r->robot_mass_kg);
     double pose[5] = {r->draw.x_m, r->draw.y_m, r->draw.yaw_deg, r->draw.pitch_deg, r->draw.roll_deg};
     cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
-    cJSON_AddNumberToObject(o, "touchdown_s", r->touchdown_s);
-    cJSON_AddNumberToObject(o, "end_time_s", r->end_time_s);
-    cJSON_AddNumberToObject(o, "peak_tilt_deg", r->peak_tilt_deg);
-    cJSON_AddNumberToObject(o, "final_tilt_deg", r->final_tilt_deg);
-    cJSON_AddNumberToObject(o, "peak_force_N", r->peak_force_N);
-    cJSON_AddNumberToObject(o, "impact_impulse_Ns", r->impact_impulse_Ns);
-    cJSON_AddNumberToObject(o, "settle_time_s", r->settle_time_s);
-    cJSON_AddNumberToObject(o, "mean_contacts", r->mean_contacts);
-    cJSON_AddNumberToObject(o, "final_contacts", r->final_contacts);
-    cJSON_AddNumberToObject(o, "ankle_drop_m", r->ankle_drop_m);
-    cJSON_AddNumberToObject(o, "slip_m", r->slip_m);
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) /* the metrics, named as campaigns name them */
+        cJSON_AddNumberToObject(o, fs_campaign_metrics[m].name, fs_metric_value(r, m));
     return o;
 }
 

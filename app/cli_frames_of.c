@@ -153,13 +153,17 @@ int cli_frames_of_open(const cli_args *a, const fs_campaign *c, cli_frames_of **
     return 0;
 }
 
-/* One chosen trial: its frames folder, and the trial run again with the frames observer. */
-static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int t, const fs_trial_result *recorded,
+/* The i-th chosen trial: its frames folder, and the trial run again with the frames observer. */
+static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int i, const fs_trial_result *recorded,
                       const char *dir, const char *shown_dir)
 {
     int cell, seed, foot, terrain, robot;
-    fs_campaign_trial_of(c, t, &cell, &seed);
+    fs_campaign_trial_of(c, f->trial[i], &cell, &seed);
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+    /* drawing takes a while (the trial run again, a frame every 1/fps s): say which, after the
+       trials' progress line */
+    fprintf(stderr, "footsim campaign: --frames-of: drawing %d of %d: %s on %s under %s, seed %d\n", i + 1, f->n,
+            c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed);
     char path[FS_PATH_MAX * 2], shown[FS_PATH_MAX * 2];
     if (snprintf(path, sizeof path, "%s/frames/%s-%s-%s-seed%d", dir, c->foot[foot].name, c->terrain[terrain].name,
                  c->robot[robot].name, seed) >= (int)sizeof path ||
@@ -202,16 +206,8 @@ int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_r
                         const char *shown_dir)
 {
     int s = 0;
-    for (int i = 0; f && i < f->n && !s; i++) {
-        /* drawing takes a while (a trial run again, a frame every 1/fps s): say which, after the
-           trials' progress line */
-        int cell, seed, foot, terrain, robot;
-        fs_campaign_trial_of(c, f->trial[i], &cell, &seed);
-        fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
-        fprintf(stderr, "footsim campaign: --frames-of: drawing %d of %d: %s on %s under %s, seed %d\n", i + 1, f->n,
-                c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed);
-        s = draw_trial(f, c, f->trial[i], &results[f->trial[i]], dir, shown_dir);
-    }
+    for (int i = 0; f && i < f->n && !s; i++)
+        s = draw_trial(f, c, i, &results[f->trial[i]], dir, shown_dir);
     cli_frames_of_free(f);
     return s;
 }

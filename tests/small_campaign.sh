@@ -1,4 +1,4 @@
-# Sourced by the campaign resume and shard tests (run from the source folder, $tmp set): writes
+# Sourced by the campaign, resume, shard and signal tests (run from the source folder, $tmp set): writes
 # $tmp/trial.ini (campaign_test_trial.ini with absolute paths, so that the test may edit it) and
 # $tmp/small.ini, 2 feet x 1 terrain x 3 seeds = 6 trials; camp runs it with a short window (the
 # numbers do not matter to these tests) through "$fs"; $files are the files a campaign writes.
