@@ -73,7 +73,7 @@ const fs_key fs_scenario_keys[] = {
     NUM("walk", "suspension_k_N_per_m", suspension_k_N_per_m, 0, 1e9, POS, "N/m", "3e4", "the leg's suspension to the carriage"),
     NUM("walk", "suspension_c_Ns_per_m", suspension_c_Ns_per_m, 0, 1e7, 0, "N s/m", "1000", "its damping"),
     NUM("walk", "fall_tilt_deg", walk_fall_tilt_deg, 0, 180, POS, "deg", "30", "a step fails when the ankle body tilts more than this"),
-    {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, 64, 0, 0, NULL, "", "8",
+    {"run", "max_contacts", FS_KEY_INTEGER, F(max_contacts), 1, FS_MAX_SHAPE_CONTACTS, 0, 0, NULL, "", "64",
      "contact points kept per foot shape against the terrain (after merging duplicates)"},
     NUM("check", "max_speed_m_per_s", check_max_speed_m_per_s, 0, 1e6, POS, "m/s", "100",
         "blown up: any point of a body faster than this (a 10 m fall lands at 14 m/s)"),

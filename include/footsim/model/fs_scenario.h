@@ -18,6 +18,9 @@
 
 /* The most steps one run, trial or walk may take (docs/keys.md): refused before it starts. */
 enum { FS_MAX_STEPS = 1000000000 };
+/* The most contacts one foot shape finds against the terrain in a step: run.max_contacts keeps up
+ * to this many (all of them: the reference its default is checked against). */
+enum { FS_MAX_SHAPE_CONTACTS = 256 };
 
 typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
 

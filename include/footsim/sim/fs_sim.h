@@ -27,7 +27,7 @@
 
 #include <ode/ode.h>
 
-enum { FS_MAX_CONTACTS = 256, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * 64 };
+enum { FS_MAX_CONTACTS = FS_MAX_SHAPE_CONTACTS, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * 64 };
 
 typedef struct fs_sim_options {
     int with_ground;        /* 0: no ground (the stiffness probes) */
