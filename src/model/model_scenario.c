@@ -212,9 +212,15 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     sc->is_trial = fs_config_has(&cfg, "robot", NULL) || fs_config_has(&cfg, "landing", NULL);
     if (s == FS_OK)
         s = check_relations(sc, &cfg, err);
+    char robot_where[FS_PATH_MAX + 80] = "";
+    if (s == FS_OK)
+        fs_config_where(&cfg, "robot", "design", robot_where, sizeof robot_where);
     fs_config_free(&cfg);
     if (s == FS_OK)
         s = fs_robot_load(sc->def.robot_path, part[3], n[3], &sc->def.robot, err);
+    if (s == FS_OK && sc->def.kind == FS_SCENARIO_WALK && sc->def.robot.kind == FS_ROBOT_BIPED)
+        s = fs_fail(err, FS_BAD_INPUT, "%s: %s is a biped, and the walking machine carries one body on one foot: "
+                    "name a single robot (robots/single_tall_achilles.ini)", robot_where, sc->def.robot_path);
     sc->is_trial |= sc->def.robot.mass_kg > 0; /* a robot given by --set alone */
     if (s == FS_OK)
         s = fs_design_load(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, err);
