@@ -5,6 +5,7 @@
 #include "fs_test.h"
 
 #include "footsim/analysis/fs_analysis.h"
+#include "footsim/experiment/fs_trial.h"
 #include "footsim/sim/fs_sim.h"
 
 #include <math.h>
@@ -137,6 +138,26 @@ static void stands_on_both_feet(void)
     fs_scenario_free(&sc);
 }
 
+/* A trial's time series has a column for each hinge and spring of the built biped (its two feet and
+ * legs), not of one foot: a row holds what the sim logs. */
+static void trajectory_has_the_bipeds_columns(void)
+{
+    static fs_scenario sc;
+    load_biped("feet/biomimetic.ini", &sc);
+    sc.def.duration_s = 0.01;
+    fs_foot_geom biped;
+    const fs_foot_geom *g = fs_scenario_geometry(&sc, &biped);
+    CHECK(g->nhinges == 2 * sc.geom.nhinges + 6);
+    fs_run_result log;
+    fs_trial_result r;
+    fs_error err;
+    REQUIRE(fs_trial_run_logged(&sc, 1, NULL, &log, &r, &err) == FS_OK);
+    CHECK(log.ncols == 5 + g->nhinges + g->nsprings + 1);
+    CHECK(r.nfeet == 2);
+    fs_run_free(&log);
+    fs_scenario_free(&sc);
+}
+
 /* The pitch-stiffness law for the biped: two legs side by side, each its foot and ankle in series. */
 static void law_counts_two_legs(void)
 {
@@ -148,4 +169,4 @@ static void law_counts_two_legs(void)
 }
 
 FS_TEST_MAIN(TEST(builds_two_feet_and_its_legs), TEST(single_robots_are_unchanged), TEST(stands_on_both_feet),
-             TEST(law_counts_two_legs))
+             TEST(trajectory_has_the_bipeds_columns), TEST(law_counts_two_legs))

@@ -316,14 +316,18 @@ void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
         snprintf(buf + used, size - used, ", min_inertia_kg_m2 %.6g", d->min_inertia_kg_m2);
 }
 
+const fs_foot_geom *fs_scenario_geometry(const fs_scenario *sc, fs_foot_geom *biped)
+{
+    if (sc->def.robot.kind != FS_ROBOT_BIPED || sc->def.robot.mass_kg <= 0)
+        return &sc->geom;
+    fs_robot_biped_geometry(&sc->def.robot, &sc->geom, biped);
+    return biped;
+}
+
 void fs_scenario_footprint(const fs_scenario *sc, double box[4])
 {
     fs_foot_geom biped; /* a biped's two feet */
-    const fs_foot_geom *g = &sc->geom;
-    if (sc->def.robot.kind == FS_ROBOT_BIPED && sc->def.robot.mass_kg > 0) {
-        fs_robot_biped_geometry(&sc->def.robot, &sc->geom, &biped);
-        g = &biped;
-    }
+    const fs_foot_geom *g = fs_scenario_geometry(sc, &biped);
     double yaw = sc->def.yaw_deg * M_PI / 180, c = cos(yaw), s = sin(yaw);
     box[0] = box[2] = INFINITY;
     box[1] = box[3] = -INFINITY;

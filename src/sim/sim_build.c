@@ -427,9 +427,8 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
             return made;
         sim->geom = &sim->own_geom;
         share = FS_CHAINS;
-    } else if (s->robot.kind == FS_ROBOT_BIPED && s->robot.mass_kg > 0) {
-        fs_robot_biped_geometry(&s->robot, &sc->geom, &sim->own_geom); /* two feet and the legs */
-        sim->geom = &sim->own_geom;
+    } else {
+        sim->geom = fs_scenario_geometry(sc, &sim->own_geom); /* a biped's: two feet and the legs */
     }
     double tilt = s->tilt_deg * DEG;
     sim->down[0] = sin(tilt);
