@@ -73,6 +73,11 @@ static void builds_two_feet_and_its_legs(void)
         fs_sim_constraint_rows(&sim, &rows);
         CHECK(rows.hinge == 5 * g->nhinges && rows.stop == 6 && rows.spring == g->nsprings && rows.fixed == 0);
         CHECK(rows.total == 5 * g->nhinges + 6 + g->nsprings);
+        /* a drawing holds all of it: every shape, body and spring, and the links with room to spare */
+        static fs_scene scene;
+        fs_sim_scene(&sim, &scene);
+        CHECK(scene.nshapes == g->nspheres + g->nboxes && scene.nbodies == g->nbodies);
+        CHECK(scene.nsprings == g->nsprings && scene.nlinks < FS_SCENE_MAX_SEGMENTS);
         fs_sim_destroy(&sim);
         fs_scenario_free(&sc);
     }
