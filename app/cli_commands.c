@@ -155,7 +155,7 @@ static int model_of(const cli_args *a, const fs_scenario *sc)
         const fs_foot_geom *g = &sc->geom;
         printf("%s: %s foot, %d bodies, %d hinges, %d springs, %d contact shapes, %.3f kg\n", a->input,
                g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic", g->nbodies, g->nhinges, g->nsprings,
-               g->nspheres + g->has_box, g->total_mass_kg);
+               g->nspheres + g->nboxes, g->total_mass_kg);
         printf("ankle at (%.4f, %.4f, %.4f) m\n", g->ankle.x, g->ankle.y, g->ankle.z);
         for (int i = 0; i < g->nbodies; i++)
             printf("  body %-12s %.4f kg at (%.4f, %.4f, %.4f) m\n", g->body[i].name, g->body[i].mass_kg,
@@ -427,6 +427,20 @@ static cJSON *trial_json(const fs_trial_result *r)
     cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) /* the metrics, named as campaigns name them */
         cJSON_AddNumberToObject(o, fs_campaign_metrics[m].name, fs_metric_value(r, m));
+    if (r->nfeet > 1) { /* a biped: each foot's own, right then left */
+        cJSON *feet = cJSON_AddArrayToObject(o, "feet");
+        for (int f = 0; f < r->nfeet; f++) {
+            cJSON *e = cJSON_CreateObject();
+            cJSON_AddStringToObject(e, "foot", f ? "left" : "right");
+            cJSON_AddNumberToObject(e, "touchdown_s", r->foot[f].touchdown_s);
+            cJSON_AddNumberToObject(e, "ankle_drop_m", r->foot[f].ankle_drop_m);
+            cJSON_AddNumberToObject(e, "slip_m", r->foot[f].slip_m);
+            cJSON_AddNumberToObject(e, "mean_contacts", r->foot[f].mean_contacts);
+            cJSON_AddNumberToObject(e, "final_contacts", r->foot[f].final_contacts);
+            cJSON_AddNumberToObject(e, "final_force_N", r->foot[f].final_force_N);
+            cJSON_AddItemToArray(feet, e);
+        }
+    }
     return o;
 }
 
@@ -597,6 +611,10 @@ int cli_trial(const cli_args *a)
                r.robot_mass_kg, r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg, r.touchdown_s,
                r.end_time_s, r.peak_tilt_deg, r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, rest,
                r.mean_contacts, r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
+        for (int f = 0; r.nfeet > 1 && f < r.nfeet; f++)
+            printf("  %s foot: touchdown %.3f s; contacts mean %.1f, final %.0f; ankle drop %.2f mm, slip %.2f mm; "
+                   "ground force at the end %.0f N\n", f ? "left" : "right", r.foot[f].touchdown_s, r.foot[f].mean_contacts,
+                   r.foot[f].final_contacts, r.foot[f].ankle_drop_m * 1e3, r.foot[f].slip_m * 1e3, r.foot[f].final_force_N);
         if (dir[0])
             printf("  results: %s/trial.json, %s/trajectory.csv%s\n", dir, dir, a->frames ? ", frames/" : "");
     }

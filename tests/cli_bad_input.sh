@@ -33,6 +33,13 @@ printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign =
 expect 2 "$tmp/inline.ini:4: 'mass_kg' is a key of a robot file, not of a scenario" -- trial "$tmp/inline.ini"
 expect 2 "$tmp/bad_robot.ini:3: mount = 'sideways'" -- trial "$tmp/uses_bad.ini"
 expect 2 "--set robot.mass: unknown key 'mass' in \[robot\]" -- trial scenarios/landing_trial.ini --set robot.mass=3
+# a biped's mass follows from its parts; a single body has no legs; the walking machine carries no biped
+printf '[robot]\nkind = biped\nmass_kg = 52\n' >"$tmp/heavy_biped.ini"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign = heavy_biped.ini\n' "$PWD" >"$tmp/uses_heavy.ini"
+expect 2 "$tmp/heavy_biped.ini:3: 'mass_kg' is a single body's key and this robot is a biped" -- trial "$tmp/uses_heavy.ini"
+expect 2 "--set robot.hip_width_m: 'hip_width_m' is a biped's key and this robot is one body" -- trial scenarios/landing_trial.ini --set robot.hip_width_m=0.3
+expect 2 "--set robot.design: .*robots/biped.ini is a biped, and the walking machine carries one body" -- walk scenarios/walking.ini --set robot.design=robots/biped.ini
+expect 2 "scenarios/robots/biped.ini: kind = biped: the biped is not exported" -- export scenarios/feet/biomimetic.ini --mjcf --scenario scenarios/landing_trial.ini --set robot.design=robots/biped.ini --out "$tmp/biped.xml"
 printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[landing]\nlanded_tilt_deg = 15\n' "$PWD" >"$tmp/norobot.ini"
 expect 2 "$tmp/norobot.ini: a landing trial drops a robot and this scenario has none" -- trial "$tmp/norobot.ini"
 

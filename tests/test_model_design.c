@@ -72,12 +72,12 @@ static void flat_foot_matches_the_biomimetic_one(void)
     const char *set[] = {"foot.kind=flat"};
     CHECK(fs_scenario_for_design("scenarios/feet/biomimetic.ini", NULL, 0, &bio, &err) == FS_OK);
     CHECK(fs_scenario_for_design("scenarios/feet/biomimetic.ini", set, 1, &flat, &err) == FS_OK);
-    CHECK(flat.geom.nbodies == 1 && flat.geom.has_box);
+    CHECK(flat.geom.nbodies == 1 && flat.geom.nboxes == 1);
     CHECK_NEAR(flat.geom.total_mass_kg, bio.geom.total_mass_kg, 1e-15);
     CHECK_NEAR(flat.geom.ankle.z, bio.geom.ankle.z, 1e-15);
-    CHECK_NEAR(flat.geom.box_centre.z - 0.5 * flat.geom.box_size.z, 0, 1e-15);
+    CHECK_NEAR(flat.geom.box[0].centre.z - 0.5 * flat.geom.box_size.z, 0, 1e-15);
     const fs_sphere_geom *heel = sphere_named(&bio.geom, "heel_medial");
-    CHECK_NEAR(flat.geom.box_centre.x - 0.5 * flat.geom.box_size.x, heel->centre.x - heel->radius_m, 1e-15);
+    CHECK_NEAR(flat.geom.box[0].centre.x - 0.5 * flat.geom.box_size.x, heel->centre.x - heel->radius_m, 1e-15);
 }
 
 /* The shipped flat.ini stays comparable with the shipped biomimetic.ini. */

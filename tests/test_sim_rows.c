@@ -38,7 +38,7 @@ static void biomimetic_foot_on_a_rigid_robot(void)
     /* standing: 3 rows a contact point, at most max_contacts a shape */
     rows_of(NULL, 0, 600, &r, &sc); /* 60 ms: touched down at 32 ms */
     CHECK(r.contacts > 0 && r.contact == 3 * r.contacts);
-    CHECK(r.contact <= 3 * sc.def.max_contacts * (g->nspheres + g->has_box));
+    CHECK(r.contact <= 3 * sc.def.max_contacts * (g->nspheres + g->nboxes));
     fs_scenario_free(&sc);
 }
 

@@ -224,7 +224,7 @@ static fs_status pitch_probe(const fs_scenario *sc, double tau, int in_plane, do
 /* The footprint's length along the foot (x): the flat sole's box, or the spheres' extent. */
 static double footprint_length_m(const fs_foot_geom *g)
 {
-    if (g->has_box)
+    if (g->nboxes)
         return g->box_size.x;
     double lo = INFINITY, hi = -INFINITY;
     for (int i = 0; i < g->nspheres; i++) {
@@ -275,6 +275,10 @@ void fs_pitch_law_apply(double K_foot, const fs_robot_def *r, double gravity_m_p
     out->K_series = r->joint == FS_ROBOT_ACHILLES ? r->achilles_k_N_per_m * FS_ACHILLES_LEVER_M * FS_ACHILLES_LEVER_M
                                                   : INFINITY;
     out->K = isfinite(out->K_series) ? 1 / (1 / K_foot + 1 / out->K_series) : K_foot;
+    if (r->kind == FS_ROBOT_BIPED) { /* two legs side by side, each its foot and ankle spring in series */
+        out->K_series = r->ankle_k_N_m_per_rad;
+        out->K = 2 / (1 / K_foot + 1 / out->K_series);
+    }
     out->demand = r->mass_kg * gravity_m_per_s2 * r->com_height_m;
     out->critical_height_m = r->mass_kg > 0 ? out->K / (r->mass_kg * gravity_m_per_s2) : INFINITY;
     double margin = out->K - out->demand;

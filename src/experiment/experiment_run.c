@@ -61,7 +61,8 @@ void fs_log_last(fs_run_result *res, const fs_sim *sim)
 fs_status fs_log_open(fs_run_result *res, const fs_scenario *sc, int with_lean, fs_error *err)
 {
     const fs_scenario_def *d = &sc->def;
-    name_columns(res, &sc->geom, with_lean);
+    fs_foot_geom biped; /* the columns are the built geometry's hinges and springs (a biped's two feet and legs) */
+    name_columns(res, fs_scenario_geometry(sc, &biped), with_lean);
     long nsteps = (long)ceil(d->duration_s / d->step_s - 1e-9);
     long every = lround(d->log_interval_s / d->step_s);
     if (every < 1)

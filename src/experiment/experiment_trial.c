@@ -45,10 +45,30 @@ typedef struct watch {
     double contact_sum;
     long contact_steps;
     double rest_since;
+    /* a biped's feet, each from its own touchdown */
+    int foot_touched[FS_MAX_FEET];
+    double foot_touch_ankle[FS_MAX_FEET][3], foot_contact_sum[FS_MAX_FEET];
 } watch;
+
+/* Each of a biped's feet: its touchdown, and its contacts while the trial watches. */
+static void observe_feet(const fs_sim *sim, watch *w, fs_trial_result *out)
+{
+    for (int f = 0; f < sim->geom->nfeet; f++) {
+        int n = fs_sim_foot_contacts(sim, f);
+        if (!w->foot_touched[f] && n > 0) {
+            w->foot_touched[f] = 1;
+            out->foot[f].touchdown_s = sim->time_s;
+            fs_sim_foot_ankle(sim, f, w->foot_touch_ankle[f]);
+        }
+        if (w->touched)
+            w->foot_contact_sum[f] += n;
+    }
+}
 
 static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, double h)
 {
+    if (sim->geom->nfeet > 1)
+        observe_feet(sim, w, out);
     double f[3];
     fs_sim_ground_force(sim, f);
     double tilt = fs_sim_robot_tilt(sim) / DEG;
@@ -85,16 +105,45 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
         out->slip_m = hypot(a[0] - w->touch_ankle[0], a[1] - w->touch_ankle[1]);
         out->settle_time_s = (w->rest_since >= 0 ? w->rest_since : sim->time_s) - out->touchdown_s;
     }
+    out->nfeet = sim->geom->nfeet > 1 ? sim->geom->nfeet : 1;
+    if (out->nfeet == 1) {
+        double f[3];
+        fs_sim_ground_force(sim, f);
+        out->foot[0].touchdown_s = out->touchdown_s;
+        out->foot[0].ankle_drop_m = out->ankle_drop_m;
+        out->foot[0].slip_m = out->slip_m;
+        out->foot[0].mean_contacts = out->mean_contacts;
+        out->foot[0].final_contacts = out->final_contacts;
+        out->foot[0].final_force_N = f[2];
+        return;
+    }
+    out->ankle_drop_m = out->slip_m = 0;
+    for (int i = 0; i < out->nfeet; i++) {
+        double p[3], f[3];
+        fs_sim_foot_ankle(sim, i, p);
+        fs_sim_foot_force(sim, i, f);
+        out->foot[i].final_contacts = fs_sim_foot_contacts(sim, i);
+        out->foot[i].mean_contacts = w->contact_steps ? w->foot_contact_sum[i] / w->contact_steps : 0;
+        out->foot[i].final_force_N = f[2];
+        if (w->foot_touched[i]) {
+            const double *t = w->foot_touch_ankle[i];
+            out->foot[i].ankle_drop_m = t[2] - p[2];
+            out->foot[i].slip_m = hypot(p[0] - t[0], p[1] - t[1]);
+        }
+        out->ankle_drop_m += out->foot[i].ankle_drop_m / out->nfeet;
+        out->slip_m = fmax(out->slip_m, out->foot[i].slip_m);
+    }
 }
 
 /* The rules of fs_outcome.h from the scenario's [landing] and [run] keys and the terrain's bound. */
 static void rules_of(const fs_scenario *sc, const fs_sim *sim, fs_outcome_rules *r)
 {
     const fs_scenario_def *d = &sc->def;
-    double mass = 0;
+    double mass = 0; /* every body: the foot's, and the robot (a biped's legs are among the geometry's bodies) */
     for (int i = 0; i < sim->geom->nbodies; i++)
-        mass += sc->geom.body[i].mass_kg;
-    mass += d->robot.mass_kg;
+        mass += sim->geom->body[i].mass_kg;
+    if (!sim->geom->biped)
+        mass += d->robot.mass_kg;
     *r = (fs_outcome_rules){.fall_lean_rad = d->fall_tilt_deg * DEG,
                             .landed_lean_rad = d->landed_tilt_deg * DEG,
                             .lost_ground_s = d->lost_ground_s,

@@ -84,8 +84,8 @@ static void box_inertia(double m, double a, double b, double c, fs_vec3 u, fs_ve
 }
 
 /* A link of square section w between two points: its body geometry. */
-static void link_body(fs_body_geom *b, const char *name, double m, fs_vec3 from, fs_vec3 to, double width,
-                      double depth)
+void fs_design_link_body(fs_body_geom *b, const char *name, double m, fs_vec3 from, fs_vec3 to, double width,
+                         double depth)
 {
     snprintf(b->name, sizeof b->name, "%s", name);
     b->mass_kg = m;
@@ -174,9 +174,9 @@ static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, in
     int meta = g->nbodies++, phal = g->nbodies++;
     char name[32];
     snprintf(name, sizeof name, "metatarsal%d", i + 1);
-    link_body(&g->body[meta], name, s * d->metatarsal_kg, M, B, d->link_width_m, d->link_width_m);
+    fs_design_link_body(&g->body[meta], name, s * d->metatarsal_kg, M, B, d->link_width_m, d->link_width_m);
     snprintf(name, sizeof name, "phalanx%d", i + 1);
-    link_body(&g->body[phal], name, s * d->phalanx_kg, B, T, d->link_width_m, d->link_width_m);
+    fs_design_link_body(&g->body[phal], name, s * d->phalanx_kg, B, T, d->link_width_m, d->link_width_m);
     g->chain[i].metatarsal = meta;
     g->chain[i].phalanx = phal;
     g->chain[i].midfoot = M;
@@ -227,13 +227,14 @@ static void flat_geometry(const fs_design_def *d, const fs_foot_geom *bio, fs_fo
     memset(g, 0, sizeof *g);
     g->kind = FS_FOOT_FLAT;
     g->nbodies = 1;
-    g->has_box = 1;
+    g->nboxes = 1;
     g->box_size = fs_v3(xmax - xmin, ymax - ymin, d->flat_thickness_m);
-    g->box_centre = fs_v3(0.5 * (xmin + xmax), 0.5 * (ymin + ymax), 0.5 * d->flat_thickness_m);
+    g->box[0].body = 0;
+    g->box[0].centre = fs_v3(0.5 * (xmin + xmax), 0.5 * (ymin + ymax), 0.5 * d->flat_thickness_m);
     fs_body_geom *b = &g->body[0];
     snprintf(b->name, sizeof b->name, "sole");
     b->mass_kg = bio->total_mass_kg;
-    b->com = g->box_centre;
+    b->com = g->box[0].centre;
     box_inertia(b->mass_kg, g->box_size.x, g->box_size.y, g->box_size.z, fs_v3(1, 0, 0), fs_v3(0, 1, 0),
                 fs_v3(0, 0, 1), b->inertia);
     g->ankle_body = 0;
@@ -256,11 +257,11 @@ fs_status fs_design_geometry(const fs_design_def *d, const fs_config *cfg, fs_fo
     }
     /* Rear foot: the heel (heel centre to ankle) and the talus (ankle to the midfoot joints). */
     g.nbodies = 2;
-    link_body(&g.body[FS_BODY_HEEL], "heel", d->heel_kg, H, A, d->link_width_m, d->link_width_m);
+    fs_design_link_body(&g.body[FS_BODY_HEEL], "heel", d->heel_kg, H, A, d->link_width_m, d->link_width_m);
     double a2 = d->talus_deg * DEG;
     fs_vec3 Mc = fs_add(A, fs_v3(d->l2_m * cos(a2), 0.5 * (ymin + ymax), d->l2_m * sin(a2)));
     fs_vec3 Ac = fs_v3(A.x, Mc.y, A.z);
-    link_body(&g.body[FS_BODY_TALUS], "talus", d->talus_kg, Ac, Mc, ymax - ymin + d->link_width_m, d->link_width_m);
+    fs_design_link_body(&g.body[FS_BODY_TALUS], "talus", d->talus_kg, Ac, Mc, ymax - ymin + d->link_width_m, d->link_width_m);
     if (d->l2_m == 0) /* the 4-bar: a talus of no length still has its width and thickness */
         g.body[FS_BODY_TALUS].com = Ac;
     g.hinge[0] = (fs_hinge_geom){.body1 = FS_BODY_HEEL, .body2 = FS_BODY_TALUS, .anchor = A, .axis = fs_v3(0, -1, 0)};
@@ -287,6 +288,10 @@ fs_status fs_design_geometry(const fs_design_def *d, const fs_config *cfg, fs_fo
         flat_geometry(d, &g, geom);
     else
         *geom = g;
+    geom->nfeet = 1;
+    geom->foot[0].nbodies = geom->nbodies;
+    geom->foot[0].ankle_body = geom->ankle_body;
+    geom->foot[0].ankle = geom->ankle;
     return FS_OK;
 }
 

@@ -1,18 +1,28 @@
 /* model_robot.c: the robot file's schema and loading it (fs_robot.h). */
 #include "footsim/model/fs_robot.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
 #define F(member) offsetof(fs_robot_def, member)
 #define NUM(name, member, lo, hi, flags, unit, dflt, help) \
     {"robot", name, FS_KEY_NUMBER, F(member), lo, hi, flags, 0, NULL, unit, dflt, help}
 #define POS FS_KEY_OPEN_MIN
 
+#define DEG (M_PI / 180.0)
+
+/* The single body's keys come first, the biped's from FIRST_BIPED_KEY on (each kind refuses the
+ * other's). */
 const fs_key fs_robot_keys[] = {
+    {"robot", "kind", FS_KEY_CHOICE, F(kind), 0, 0, 0, 0, "single|biped", "", "single",
+     "single: one rigid body on one foot (the keys up to mount); biped: a pelvis on two legs, each on its own "
+     "copy of the foot (the keys from hip_width_m on; docs/landing.md)"},
     NUM("mass_kg", mass_kg, 0, 1e4, 0, "kg", "26", "the passive body on the ankle; half of the paper's 52 kg person is 26"),
     NUM("com_height_m", com_height_m, 0, 10, POS, "m", "0.3", "its centre of mass above the ankle"),
-    NUM("com_forward_m", com_forward_m, -1, 1, 0, "m", "0.03", "its centre of mass ahead of the ankle"),
+    NUM("com_forward_m", com_forward_m, -1, 1, 0, "m", "0.03",
+        "its centre of mass ahead of the ankle (a biped: its pelvis's and legs' together, ahead of the ankles)"),
     {"robot", "inertia_kgm2", FS_KEY_LIST, F(inertia_kgm2), 0, 1e4, FS_KEY_OPEN_MIN, 3, NULL, "kg m^2", "1.4, 1.4, 0.1",
      "its principal moments of inertia about x, y, z at the centre of mass"},
     {"robot", "joint", FS_KEY_CHOICE, F(joint), 0, 0, 0, 0, "rigid|achilles", "", "rigid",
@@ -26,8 +36,51 @@ const fs_key fs_robot_keys[] = {
         "scale with (com_height_m / this)^2 (a sweep of the height stretches the same body)"),
     {"robot", "mount", FS_KEY_CHOICE, F(mount), 0, 0, 0, 0, "free|vertical", "", "free",
      "free: all six degrees of freedom; vertical: on a vertical slide, only up and down (the walking machine's carriage)"},
+#define FIRST_BIPED_KEY "hip_width_m"
+    NUM("hip_width_m", hip_width_m, 0, 2, POS, "m", "0.2", "biped: between the two hip joints, and the two ankles under them"),
+    NUM("thigh_length_m", thigh_length_m, 0, 2, POS, "m", "0.2", "biped: hip joint to knee joint"),
+    NUM("shank_length_m", shank_length_m, 0, 2, POS, "m", "0.2", "biped: knee joint to ankle joint"),
+    NUM("knee_bend_deg", knee_bend_deg, 0, 90, POS, "deg", "10",
+        "biped: the knee's flexion in the built (neutral) pose, the knee ahead of the hip-ankle line"),
+    NUM("leg_width_m", leg_width_m, 0, 1, POS, "m", "0.06", "biped: a thigh's and a shank's square section, for their inertia"),
+    NUM("pelvis_mass_kg", pelvis_mass_kg, 0, 1e4, POS, "kg", "36.76", "biped: pelvis and everything above it (head, arms, trunk)"),
+    NUM("thigh_mass_kg", thigh_mass_kg, 0, 1e4, POS, "kg", "5.2", "biped: each thigh"),
+    NUM("shank_mass_kg", shank_mass_kg, 0, 1e4, POS, "kg", "2.42", "biped: each shank"),
+    NUM("pelvis_com_height_m", pelvis_com_height_m, 0, 10, 0, "m", "0.15", "biped: the pelvis's centre of mass above the hip axis"),
+    {"robot", "pelvis_inertia_kgm2", FS_KEY_LIST, F(pelvis_inertia_kgm2), 0, 1e4, FS_KEY_OPEN_MIN, 3, NULL, "kg m^2",
+     "0.47, 0.35, 0.26", "biped: the pelvis's principal moments about x (roll), y (pitch), z at its centre of mass"},
+    NUM("hip_k_N_m_per_rad", hip_k_N_m_per_rad, 0, 1e7, 0, "N m/rad", "2000", "biped: each hip's angular stiffness toward the built pose"),
+    NUM("hip_c_N_m_s_per_rad", hip_c_N_m_s_per_rad, 0, 1e6, 0, "N m s/rad", "40", "biped: each hip's angular damping"),
+    NUM("knee_k_N_m_per_rad", knee_k_N_m_per_rad, 0, 1e7, 0, "N m/rad", "2000", "biped: each knee's angular stiffness"),
+    NUM("knee_c_N_m_s_per_rad", knee_c_N_m_s_per_rad, 0, 1e6, 0, "N m s/rad", "40", "biped: each knee's angular damping"),
+    NUM("ankle_k_N_m_per_rad", ankle_k_N_m_per_rad, 0, 1e7, 0, "N m/rad", "2000",
+        "biped: each ankle's angular stiffness (shank to the foot's ankle body)"),
+    NUM("ankle_c_N_m_s_per_rad", ankle_c_N_m_s_per_rad, 0, 1e6, 0, "N m s/rad", "100", "biped: each ankle's angular damping"),
 };
 const int fs_robot_nkeys = (int)(sizeof fs_robot_keys / sizeof fs_robot_keys[0]);
+
+/* A key of the other kind's refused: a biped's mass follows from its parts, and a single body has
+ * no legs. */
+static fs_status other_kinds_keys(const fs_config *cfg, const fs_robot_def *def, fs_error *err)
+{
+    int biped_key = 0;
+    for (int i = 1; i < fs_robot_nkeys; i++) { /* after kind */
+        const char *name = fs_robot_keys[i].name;
+        biped_key |= !strcmp(name, FIRST_BIPED_KEY);
+        int both = !strcmp(name, "com_forward_m"); /* a biped's whole body's */
+        if (both || biped_key == (def->kind == FS_ROBOT_BIPED) || !fs_config_has(cfg, "robot", name))
+            continue;
+        char where[FS_PATH_MAX + 80];
+        fs_config_where(cfg, "robot", name, where, sizeof where);
+        if (biped_key)
+            return fs_fail(err, FS_BAD_INPUT, "%s: '%s' is a biped's key and this robot is one body (kind = single): "
+                           "give kind = biped or leave it out", where, name);
+        return fs_fail(err, FS_BAD_INPUT, "%s: '%s' is a single body's key and this robot is a biped (kind = biped), "
+                       "whose mass and centre of mass follow from pelvis_mass_kg, thigh_mass_kg, shank_mass_kg and "
+                       "its lengths: leave it out", where, name);
+    }
+    return FS_OK;
+}
 
 fs_status fs_robot_load(const char *path, const char *const *overrides, int noverrides, fs_robot_def *def,
                         fs_error *err)
@@ -38,8 +91,11 @@ fs_status fs_robot_load(const char *path, const char *const *overrides, int nove
         s = fs_config_override(&cfg, overrides[i], err);
     if (s == FS_OK)
         s = fs_config_bind(&cfg, fs_robot_keys, fs_robot_nkeys, def, err);
-    if (s == FS_OK && !*path && !fs_config_has(&cfg, "robot", "mass_kg"))
+    if (s == FS_OK)
+        s = other_kinds_keys(&cfg, def, err);
+    if (s == FS_OK && !*path && !fs_config_has(&cfg, "robot", "mass_kg") && def->kind == FS_ROBOT_SINGLE)
         def->mass_kg = 0; /* no file: no robot, unless --set gives it a mass */
+    fs_robot_derive(def);
     fs_config_free(&cfg);
     return s;
 }
@@ -50,4 +106,145 @@ void fs_robot_inertia(const fs_robot_def *r, double I[3])
     I[0] = r->inertia_kgm2[0] * f * f;
     I[1] = r->inertia_kgm2[1] * f * f;
     I[2] = r->inertia_kgm2[2];
+}
+
+/* One leg's joint centres in the design frame: its knee and hip above the ankle a, the knee ahead
+ * of the hip-ankle line by the bend (thigh and shank each turned half of it from the vertical). */
+static void leg_points(const fs_robot_def *r, fs_vec3 a, fs_vec3 *knee, fs_vec3 *hip)
+{
+    double half = 0.5 * r->knee_bend_deg * DEG;
+    *knee = fs_add(a, fs_v3(r->shank_length_m * sin(half), 0, r->shank_length_m * cos(half)));
+    *hip = fs_add(*knee, fs_v3(-r->thigh_length_m * sin(half), 0, r->thigh_length_m * cos(half)));
+}
+
+/* The pelvis's centre relative to the ankles' point (x forward, z up): above the hips' midpoint by
+ * pelvis_com_height_m, and forward so that the pelvis and legs together stand com_forward_m ahead
+ * of the ankles. */
+static fs_vec3 pelvis_offset(const fs_robot_def *r)
+{
+    fs_vec3 knee, hip;
+    leg_points(r, fs_v3(0, 0, 0), &knee, &hip);
+    double legs_x = r->shank_mass_kg * 0.5 * knee.x + r->thigh_mass_kg * 0.5 * (knee.x + hip.x);
+    double total = r->pelvis_mass_kg + 2 * (r->thigh_mass_kg + r->shank_mass_kg);
+    double x = (total * r->com_forward_m - 2 * legs_x) / r->pelvis_mass_kg;
+    return fs_v3(x, 0, hip.z + r->pelvis_com_height_m);
+}
+
+void fs_robot_derive(fs_robot_def *r)
+{
+    if (r->kind != FS_ROBOT_BIPED)
+        return;
+    fs_vec3 knee, hip;
+    leg_points(r, fs_v3(0, 0, 0), &knee, &hip);
+    r->mass_kg = r->pelvis_mass_kg + 2 * (r->thigh_mass_kg + r->shank_mass_kg);
+    double mz = r->pelvis_mass_kg * pelvis_offset(r).z + 2 * r->shank_mass_kg * 0.5 * knee.z +
+                2 * r->thigh_mass_kg * 0.5 * (knee.z + hip.z);
+    r->com_height_m = mz / r->mass_kg;
+}
+
+/* A point of the design foot on side f (0: right, as designed, at y - w/2; 1: left, mirrored, at y + w/2). */
+static fs_vec3 side_point(fs_vec3 p, int f, double w)
+{
+    return f ? fs_v3(p.x, -p.y + 0.5 * w, p.z) : fs_v3(p.x, p.y - 0.5 * w, p.z);
+}
+
+/* A hinge's axis mirrored: an axis is a pseudovector (a' = -M a for the mirror M), so the joint's
+ * angle keeps its sense (toes up is positive on both feet). */
+static fs_vec3 side_axis(fs_vec3 a, int f) { return f ? fs_v3(-a.x, a.y, -a.z) : a; }
+
+static void side_name(char *dst, size_t size, int f, const char *name)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%s_%s", f ? "left" : "right", name);
+    snprintf(dst, size, "%.*s", (int)size - 1, buf);
+}
+
+static void add_leg_hinge(fs_foot_geom *g, const char *name, int f, int b1, int b2, fs_vec3 at, double k, double c)
+{
+    fs_hinge_geom *h = &g->hinge[g->nhinges++];
+    *h = (fs_hinge_geom){.body1 = b1, .body2 = b2, .anchor = at, .axis = fs_v3(0, -1, 0), .k_N_m_per_rad = k,
+                         .c_N_m_s_per_rad = c};
+    side_name(h->name, sizeof h->name, f, name);
+}
+
+void fs_robot_biped_geometry(const fs_robot_def *r, const fs_foot_geom *foot, fs_foot_geom *g)
+{
+    memset(g, 0, sizeof *g);
+    g->kind = foot->kind;
+    const int n = foot->nbodies;
+    const double w = r->hip_width_m;
+    g->box_size = foot->box_size;
+    for (int f = 0; f < 2; f++) {
+        const int o = f * n;
+        for (int i = 0; i < n; i++) {
+            fs_body_geom *b = &g->body[o + i];
+            *b = foot->body[i];
+            side_name(b->name, sizeof b->name, f, foot->body[i].name);
+            b->com = side_point(b->com, f, w);
+            if (f) /* M I M: the products with y change sign */
+                b->inertia[1] = -b->inertia[1], b->inertia[3] = -b->inertia[3], b->inertia[5] = -b->inertia[5],
+                b->inertia[7] = -b->inertia[7];
+        }
+        for (int i = 0; i < foot->nhinges; i++) {
+            fs_hinge_geom *h = &g->hinge[g->nhinges++];
+            *h = foot->hinge[i];
+            side_name(h->name, sizeof h->name, f, foot->hinge[i].name);
+            h->body1 += o, h->body2 += o;
+            h->anchor = side_point(h->anchor, f, w);
+            h->axis = side_axis(h->axis, f);
+        }
+        for (int i = 0; i < foot->nsprings; i++) {
+            fs_spring_geom *s = &g->spring[g->nsprings++];
+            *s = foot->spring[i];
+            side_name(s->name, sizeof s->name, f, foot->spring[i].name);
+            s->body1 += o, s->body2 += o;
+            s->p1 = side_point(s->p1, f, w), s->p2 = side_point(s->p2, f, w);
+        }
+        for (int i = 0; i < foot->nspheres; i++) {
+            fs_sphere_geom *s = &g->sphere[g->nspheres++];
+            *s = foot->sphere[i];
+            side_name(s->name, sizeof s->name, f, foot->sphere[i].name);
+            s->body += o;
+            s->centre = side_point(s->centre, f, w);
+        }
+        for (int i = 0; i < foot->nboxes; i++) {
+            g->box[g->nboxes].body = foot->box[i].body + o;
+            g->box[g->nboxes++].centre = side_point(foot->box[i].centre, f, w);
+        }
+        g->foot[f].first_body = o;
+        g->foot[f].nbodies = n;
+        g->foot[f].ankle_body = foot->ankle_body + o;
+        g->foot[f].ankle = side_point(foot->ankle, f, w);
+    }
+    memcpy(g->chain, foot->chain, sizeof g->chain); /* the right foot's (chain_plane_friction is a foot's probe) */
+    g->nfeet = 2;
+    g->biped = 1;
+    g->ankle_body = g->foot[0].ankle_body;
+    g->ankle = g->foot[0].ankle;
+    g->total_mass_kg = 2 * foot->total_mass_kg + r->mass_kg;
+    /* the legs: the pelvis, then per leg a thigh and a shank, and its hip, knee and ankle */
+    const int pelvis = 2 * n;
+    fs_vec3 mid = fs_scale(fs_add(g->foot[0].ankle, g->foot[1].ankle), 0.5);
+    fs_body_geom *p = &g->body[pelvis];
+    snprintf(p->name, sizeof p->name, "pelvis");
+    p->mass_kg = r->pelvis_mass_kg;
+    p->com = fs_add(mid, pelvis_offset(r));
+    for (int k = 0; k < 3; k++)
+        p->inertia[4 * k] = r->pelvis_inertia_kgm2[k];
+    g->pelvis_body = pelvis;
+    g->nbodies = pelvis + 1;
+    for (int f = 0; f < 2; f++) {
+        fs_vec3 a = g->foot[f].ankle, knee, hip;
+        leg_points(r, a, &knee, &hip);
+        int thigh = g->nbodies++, shank = g->nbodies++;
+        char name[32];
+        side_name(name, sizeof name, f, "thigh");
+        fs_design_link_body(&g->body[thigh], name, r->thigh_mass_kg, hip, knee, r->leg_width_m, r->leg_width_m);
+        side_name(name, sizeof name, f, "shank");
+        fs_design_link_body(&g->body[shank], name, r->shank_mass_kg, knee, a, r->leg_width_m, r->leg_width_m);
+        add_leg_hinge(g, "hip", f, pelvis, thigh, hip, r->hip_k_N_m_per_rad, r->hip_c_N_m_s_per_rad);
+        add_leg_hinge(g, "knee", f, thigh, shank, knee, r->knee_k_N_m_per_rad, r->knee_c_N_m_s_per_rad);
+        add_leg_hinge(g, "shank_ankle", f, shank, g->foot[f].ankle_body, a, r->ankle_k_N_m_per_rad,
+                      r->ankle_c_N_m_s_per_rad);
+    }
 }

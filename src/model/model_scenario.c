@@ -212,9 +212,15 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     sc->is_trial = fs_config_has(&cfg, "robot", NULL) || fs_config_has(&cfg, "landing", NULL);
     if (s == FS_OK)
         s = check_relations(sc, &cfg, err);
+    char robot_where[FS_PATH_MAX + 80] = "";
+    if (s == FS_OK)
+        fs_config_where(&cfg, "robot", "design", robot_where, sizeof robot_where);
     fs_config_free(&cfg);
     if (s == FS_OK)
         s = fs_robot_load(sc->def.robot_path, part[3], n[3], &sc->def.robot, err);
+    if (s == FS_OK && sc->def.kind == FS_SCENARIO_WALK && sc->def.robot.kind == FS_ROBOT_BIPED)
+        s = fs_fail(err, FS_BAD_INPUT, "%s: %s is a biped, and the walking machine carries one body on one foot: "
+                    "name a single robot (robots/single_tall_achilles.ini)", robot_where, sc->def.robot_path);
     sc->is_trial |= sc->def.robot.mass_kg > 0; /* a robot given by --set alone */
     if (s == FS_OK)
         s = fs_design_load(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, err);
@@ -262,6 +268,8 @@ fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err)
     if (s == FS_OK)
         s = fs_config_check(fs_robot_keys, fs_robot_nkeys, &sc->def.robot, what, err);
     if (s == FS_OK)
+        fs_robot_derive(&sc->def.robot);
+    if (s == FS_OK)
         s = check_relations(sc, NULL, err);
     if (s == FS_OK)
         s = fs_design_geometry(&sc->design, NULL, &sc->geom, err);
@@ -308,23 +316,33 @@ void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
         snprintf(buf + used, size - used, ", min_inertia_kg_m2 %.6g", d->min_inertia_kg_m2);
 }
 
+const fs_foot_geom *fs_scenario_geometry(const fs_scenario *sc, fs_foot_geom *biped)
+{
+    if (sc->def.robot.kind != FS_ROBOT_BIPED || sc->def.robot.mass_kg <= 0)
+        return &sc->geom;
+    fs_robot_biped_geometry(&sc->def.robot, &sc->geom, biped);
+    return biped;
+}
+
 void fs_scenario_footprint(const fs_scenario *sc, double box[4])
 {
-    const fs_foot_geom *g = &sc->geom;
+    fs_foot_geom biped; /* a biped's two feet */
+    const fs_foot_geom *g = fs_scenario_geometry(sc, &biped);
     double yaw = sc->def.yaw_deg * M_PI / 180, c = cos(yaw), s = sin(yaw);
     box[0] = box[2] = INFINITY;
     box[1] = box[3] = -INFINITY;
     /* every contact shape's extent, turned by the yaw and moved to the start */
-    for (int i = 0; i < g->nspheres + 4 * g->has_box; i++) {
+    for (int i = 0; i < g->nspheres + 4 * g->nboxes; i++) {
         double x, y, r;
         if (i < g->nspheres) {
             x = g->sphere[i].centre.x;
             y = g->sphere[i].centre.y;
             r = g->sphere[i].radius_m;
         } else {
-            int k = i - g->nspheres;
-            x = g->box_centre.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x;
-            y = g->box_centre.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y;
+            int k = (i - g->nspheres) % 4;
+            fs_vec3 c = g->box[(i - g->nspheres) / 4].centre;
+            x = c.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x;
+            y = c.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y;
             r = 0;
         }
         double wx = sc->def.start_x_m + c * x - s * y, wy = sc->def.start_y_m + s * x + c * y;

@@ -77,22 +77,23 @@ static double start_lift(const fs_sim *sim)
         double r = g->sphere[i].radius_m;
         lift = fmax(lift, terrain_top(t, c.x, c.y, r) - (c.z - r));
     }
-    if (g->has_box) {
+    for (int b = 0; b < g->nboxes; b++) {
         /* the plate's corners, and the terrain under it finer than its lattice (the highest point of
          * triangulated samples is a sample or on the edge) */
+        const fs_vec3 bc = g->box[b].centre;
         double lowest = INFINITY, top = -INFINITY;
         for (int k = 0; k < 8; k++) {
-            fs_vec3 corner = fs_v3(g->box_centre.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x,
-                                   g->box_centre.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y,
-                                   g->box_centre.z + ((k & 4) ? 0.5 : -0.5) * g->box_size.z);
+            fs_vec3 corner = fs_v3(bc.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x,
+                                   bc.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y,
+                                   bc.z + ((k & 4) ? 0.5 : -0.5) * g->box_size.z);
             lowest = fmin(lowest, place(sim, corner).z);
         }
         double spacing = fs_terrain_is_heightfield(t) && t->dx > 0 ? 0.5 * t->dx : 0.002;
         int nx = (int)ceil(g->box_size.x / spacing) + 1, ny = (int)ceil(g->box_size.y / spacing) + 1;
         for (int i = 0; i < nx; i++)
             for (int j = 0; j < ny; j++) {
-                fs_vec3 p = fs_v3(g->box_centre.x + (i / (double)(nx - 1) - 0.5) * g->box_size.x,
-                                  g->box_centre.y + (j / (double)(ny - 1) - 0.5) * g->box_size.y, 0);
+                fs_vec3 p = fs_v3(bc.x + (i / (double)(nx - 1) - 0.5) * g->box_size.x,
+                                  bc.y + (j / (double)(ny - 1) - 0.5) * g->box_size.y, 0);
                 p = place(sim, p);
                 top = fmax(top, fs_terrain_height(t, p.x, p.y));
             }
@@ -107,7 +108,7 @@ static double start_lift(const fs_sim *sim)
 static int robot_merges(const fs_sim *sim)
 {
     const fs_scenario_def *s = &sim->sc->def;
-    return s->robot.mass_kg > 0 && s->robot.joint == FS_ROBOT_RIGID && s->robot.mount == FS_ROBOT_FREE &&
+    return s->robot.mass_kg > 0 && s->robot.kind == FS_ROBOT_SINGLE && s->robot.joint == FS_ROBOT_RIGID && s->robot.mount == FS_ROBOT_FREE &&
            s->kind != FS_SCENARIO_WALK && sim->geom->npins == 0;
 }
 
@@ -199,11 +200,23 @@ static void build_body(fs_sim *sim, int i)
     sim->body[i] = b;
 }
 
+/* Which foot body b belongs to (a biped's legs: -1). */
+static int foot_of_body(const fs_foot_geom *g, int b)
+{
+    if (g->nfeet <= 1)
+        return 0;
+    for (int f = 0; f < g->nfeet; f++)
+        if (b >= g->foot[f].first_body && b < g->foot[f].first_body + g->foot[f].nbodies)
+            return f;
+    return -1;
+}
+
 static void build_shapes(fs_sim *sim)
 {
     const fs_foot_geom *g = sim->geom;
     for (int i = 0; i < g->nspheres; i++) {
         const fs_sphere_geom *s = &g->sphere[i];
+        sim->shape_foot[sim->nshapes] = foot_of_body(g, s->body);
         dGeomID geom = dCreateSphere(sim->space, s->radius_m);
         dGeomSetBody(geom, sim->body[s->body]);
         const fs_vec3 c = sim->com[s->body];
@@ -211,11 +224,13 @@ static void build_shapes(fs_sim *sim)
         sim->match_m[sim->nshapes] = s->radius_m / 4; /* far more than a contact moves in a step */
         sim->shape[sim->nshapes++] = geom;
     }
-    if (g->has_box) {
+    for (int b = 0; b < g->nboxes; b++) {
         dGeomID box = dCreateBox(sim->space, g->box_size.x, g->box_size.y, g->box_size.z);
-        dGeomSetBody(box, sim->body[0]);
-        const fs_vec3 c = sim->com[0];
-        dGeomSetOffsetPosition(box, g->box_centre.x - c.x, g->box_centre.y - c.y, g->box_centre.z - c.z);
+        const int body = g->box[b].body;
+        dGeomSetBody(box, sim->body[body]);
+        const fs_vec3 c = sim->com[body], bc = g->box[b].centre;
+        dGeomSetOffsetPosition(box, bc.x - c.x, bc.y - c.y, bc.z - c.z);
+        sim->shape_foot[sim->nshapes] = foot_of_body(g, body);
         sim->match_m[sim->nshapes] = fmin(g->box_size.x, g->box_size.y) / 4; /* corners lie farther apart */
         sim->shape[sim->nshapes++] = box;
     }
@@ -237,6 +252,20 @@ static void grip_directions(fs_sim *sim)
     }
 }
 
+/* A passive angular spring-damper toward the hinge's angle now (0: its built pose), implicit: a stop
+ * with lo = hi, which ODE makes one two-sided row whenever it is met, as it always is (joint.cpp,
+ * dxJointLimitMotor::testRotationalLimit and addLimot: angle <= lo or >= hi sets the limit, and
+ * lo == hi gives the row -inf .. inf bounds), with the stop's ERP and CFM from k and c by the same
+ * implicit-Euler mapping as the contacts and fs_spring.h: ERP = h k / (h k + c), CFM = 1 / (h k + c). */
+static void angular_spring(dJointID j, double k, double c, double h)
+{
+    dJointSetHingeParam(j, dParamLoStop, 0);
+    dJointSetHingeParam(j, dParamHiStop, 0);
+    dJointSetHingeParam(j, dParamStopERP, h * k / (h * k + c));
+    dJointSetHingeParam(j, dParamStopCFM, 1.0 / (h * k + c));
+    dJointSetHingeParam(j, dParamBounce, 0);
+}
+
 static void build_joints(fs_sim *sim)
 {
     const fs_foot_geom *g = sim->geom;
@@ -247,6 +276,8 @@ static void build_joints(fs_sim *sim)
         fs_vec3 a = place(sim, h->anchor), x = turn(sim, h->axis);
         dJointSetHingeAnchor(j, a.x, a.y, a.z);
         dJointSetHingeAxis(j, x.x, x.y, x.z);
+        if (h->k_N_m_per_rad > 0 || h->c_N_m_s_per_rad > 0)
+            angular_spring(j, h->k_N_m_per_rad, h->c_N_m_s_per_rad, sim->sc->def.step_s);
         sim->hinge[i] = j;
     }
     for (int i = 0; i < g->npins; i++) {
@@ -334,8 +365,10 @@ static void body_reach(fs_sim *sim)
         double r = fs_norm(fs_sub(s->centre, g->body[s->body].com)) + s->radius_m;
         sim->reach[s->body] = fmax(sim->reach[s->body], r);
     }
-    if (g->has_box)
-        sim->reach[0] = fmax(sim->reach[0], fs_norm(fs_sub(g->box_centre, g->body[0].com)) + 0.5 * fs_norm(g->box_size));
+    for (int k = 0; k < g->nboxes; k++) {
+        const int b = g->box[k].body;
+        sim->reach[b] = fmax(sim->reach[b], fs_norm(fs_sub(g->box[k].centre, g->body[b].com)) + 0.5 * fs_norm(g->box_size));
+    }
     sim->reach[g->ankle_body] = fmax(sim->reach[g->ankle_body], fs_norm(fs_sub(g->ankle, g->body[g->ankle_body].com)));
 }
 
@@ -394,6 +427,8 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
             return made;
         sim->geom = &sim->own_geom;
         share = FS_CHAINS;
+    } else {
+        sim->geom = fs_scenario_geometry(sc, &sim->own_geom); /* a biped's: two feet and the legs */
     }
     double tilt = s->tilt_deg * DEG;
     sim->down[0] = sin(tilt);
@@ -439,7 +474,7 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         build_body(sim, sim->geom->ankle_body);
     build_shapes(sim);
     build_joints(sim);
-    if (s->robot.mass_kg > 0 && !sim->robot_merged)
+    if (s->robot.mass_kg > 0 && !sim->robot_merged && !sim->geom->biped)
         build_robot(sim);
     if (opts->hold_rear_foot && sim->geom->kind == FS_FOOT_BIOMIMETIC) {
         dBodySetKinematic(sim->body[FS_BODY_HEEL]);
@@ -447,6 +482,10 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     }
     const fs_vec3 a = place(sim, sim->geom->ankle);
     dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a.x, a.y, a.z, sim->ankle_local);
+    for (int f = 0; f < sim->geom->nfeet; f++) {
+        const fs_vec3 fa = place(sim, sim->geom->foot[f].ankle);
+        dBodyGetPosRelPoint(sim->body[sim->geom->foot[f].ankle_body], fa.x, fa.y, fa.z, sim->foot_ankle_local[f]);
+    }
     sim->load_N = s->load_kg * s->gravity_m_per_s2 / share;
     contact_template(sim);
     sim->chain_plane_friction = opts->chain_plane_friction && sim->geom->kind == FS_FOOT_BIOMIMETIC;

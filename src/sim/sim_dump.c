@@ -139,7 +139,7 @@ cJSON *fs_model_json(const fs_scenario *sc, fs_error *err)
     ok &= cJSON_AddStringToObject(root, "design", sc->def.design_path) != NULL;
     ok &= cJSON_AddStringToObject(root, "foot", sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic") != NULL;
     ok &= cJSON_AddStringToObject(root, "frame", "x forward, y left, z up; ground z = 0") != NULL;
-    ok &= cJSON_AddNumberToObject(root, "total_mass_kg", sc->geom.total_mass_kg) != NULL;
+    ok &= cJSON_AddNumberToObject(root, "total_mass_kg", sim.geom->total_mass_kg) != NULL;
     double ankle[3] = {sc->geom.ankle.x, sc->geom.ankle.y, sc->geom.ankle.z};
     ok &= fs_json_put(root, "ankle_m", vec(ankle, 3));
     if (sim.robot_merged) /* a rigid, free robot is part of that body: its mass and inertia are in it */

@@ -219,7 +219,7 @@ static void contact_parameters(exporter *x)
     double mass = g->total_mass_kg;
     if (x->with_scenario)
         mass += sim->sc->def.load_kg + (sim->robot ? sim->sc->def.robot.mass_kg : 0);
-    int points = g->nspheres + 4 * g->has_box;
+    int points = g->nspheres + 4 * g->nboxes;
     double m = mass / (points > 0 ? points : 1);
     x->solref[0] = -k / m;
     x->solref[1] = -c / m;
@@ -668,6 +668,10 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
                         fs_error *err)
 {
     memset(out, 0, sizeof *out);
+    if (with_scenario && sc->def.robot.kind == FS_ROBOT_BIPED && sc->def.robot.mass_kg > 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s: kind = biped: the biped is not exported (its leg joints' angular "
+                       "spring-dampers, ODE hinge stops, have no counterpart in this export yet): export the foot "
+                       "with a single robot (robots/single_tall.ini), or without --scenario", sc->def.robot_path);
     fs_sim sim;
     /* the robot as its own body, welded to the ankle body as footsim's fixed joint welds it: a reader
        sees the robot apart (footsim's merge of the two is a speed cut, docs/bench.md) */

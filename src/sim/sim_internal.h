@@ -40,6 +40,8 @@ static inline int fs_sim_nbodies(const fs_sim *sim) { return sim->geom->nbodies 
 /* The body the robot moves with: its own, or the ankle body it is merged into; NULL without one. */
 static inline dBodyID fs_sim_robot_body(const fs_sim *sim)
 {
+    if (sim->geom->biped)
+        return sim->body[sim->geom->pelvis_body];
     return sim->robot_merged ? sim->body[sim->geom->ankle_body] : sim->robot;
 }
 

@@ -47,6 +47,10 @@ double fs_sim_energy(const fs_sim *sim, double *kinetic, double *potential, doub
         body_energy(sim, sim->robot, &ke, &pe);
     for (int i = 0; i < sim->geom->nsprings; i++)
         se += fs_spring_measure(&sim->spring[i]).energy_J;
+    for (int i = 0; i < sim->geom->nhinges; i++) { /* a biped's leg joints' angular springs */
+        double k = sim->geom->hinge[i].k_N_m_per_rad, a = k > 0 ? fs_sim_hinge_angle(sim, i) : 0;
+        se += 0.5 * k * a * a;
+    }
     if (sim->has_achilles)
         se += fs_spring_measure(&sim->achilles).energy_J;
     if (kinetic)
@@ -90,7 +94,7 @@ void fs_sim_robot_com(const fs_sim *sim, double p[3], double v[3])
     dBodyID b = fs_sim_robot_body(sim);
     if (!b)
         b = sim->body[sim->geom->ankle_body];
-    const double *l = sim->robot_merged ? sim->robot_local : (const double[3]){0, 0, 0};
+    const double *l = sim->robot_merged && !sim->geom->biped ? sim->robot_local : (const double[3]){0, 0, 0};
     dVector3 w;
     if (p) {
         dBodyGetRelPointPos(b, l[0], l[1], l[2], w);
@@ -163,6 +167,42 @@ double fs_sim_penetration(const fs_sim *sim)
     return worst;
 }
 
+void fs_sim_foot_ankle(const fs_sim *sim, int foot, double p[3])
+{
+    if (sim->geom->nfeet <= 1) {
+        fs_sim_ankle(sim, p);
+        return;
+    }
+    const double *l = sim->foot_ankle_local[foot];
+    dVector3 w;
+    dBodyGetRelPointPos(sim->body[sim->geom->foot[foot].ankle_body], l[0], l[1], l[2], w);
+    memcpy(p, w, 3 * sizeof(double));
+}
+
+/* The foot contact i of the last step is on: its shape's (-1 foot against foot). */
+static int contact_foot(const fs_sim *sim, int i)
+{
+    int shape = sim->scratch->shape[i];
+    return shape < 0 ? -1 : sim->shape_foot[shape];
+}
+
+int fs_sim_foot_contacts(const fs_sim *sim, int foot)
+{
+    int n = 0;
+    for (int i = 0; i < sim->contacts_now; i++)
+        n += contact_foot(sim, i) == foot;
+    return n;
+}
+
+void fs_sim_foot_force(const fs_sim *sim, int foot, double force[3])
+{
+    force[0] = force[1] = force[2] = 0;
+    for (int i = 0; i < sim->contacts_now; i++)
+        if (contact_foot(sim, i) == foot)
+            for (int k = 0; k < 3; k++)
+                force[k] += sim->feedback[i].f1[k];
+}
+
 void fs_sim_ground_force(const fs_sim *sim, double force[3])
 {
     force[0] = force[1] = force[2] = 0;
@@ -175,6 +215,17 @@ double fs_sim_hinge_angle(const fs_sim *sim, int i)
 {
     /* ODE's hinge angle turns body1 about the axis relative to body2; ours turns body2 (distal). */
     return -dJointGetHingeAngle(sim->hinge[i]);
+}
+
+/* Whether a hinge's stop adds its row now: ODE's test (joint.cpp, testRotationalLimit): the angle at
+ * or past lo or hi, with a stop set (lo = hi, the leg joints' springs: always). */
+static int stop_active(dJointID j)
+{
+    double lo = dJointGetHingeParam(j, dParamLoStop), hi = dJointGetHingeParam(j, dParamHiStop);
+    if (!(lo > -dInfinity) && !(hi < dInfinity))
+        return 0;
+    double a = dJointGetHingeAngle(j);
+    return a <= lo || a >= hi;
 }
 
 void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows)
@@ -195,7 +246,10 @@ void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows)
                 continue;
             seen[nseen++] = j;
             switch (dJointGetType(j)) {
-            case dJointTypeHinge: rows->hinge += 5; break;
+            case dJointTypeHinge:
+                rows->hinge += 5;
+                rows->stop += stop_active(j);
+                break;
             case dJointTypeFixed: rows->fixed += 6; break;
             case dJointTypeSlider: rows->slider += 5; break;
             case dJointTypeBall: rows->ball += 3; break;
@@ -207,5 +261,6 @@ void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows)
     }
     rows->contacts = sim->contacts_now;
     rows->contact = sim->contacts_now * (sim->contact_template.surface.mu > 0 ? 3 : 1);
-    rows->total = rows->hinge + rows->fixed + rows->slider + rows->ball + rows->spring + rows->contact + rows->other;
+    rows->total = rows->hinge + rows->stop + rows->fixed + rows->slider + rows->ball + rows->spring + rows->contact +
+                  rows->other;
 }

@@ -4,6 +4,11 @@
 #include <math.h>
 #include <string.h>
 
+_Static_assert((int)FS_SCENE_MAX_SHAPES >= (int)FS_MAX_SHAPES && (int)FS_SCENE_MAX_BODIES >= (int)FS_MAX_BODIES &&
+                   (int)FS_SCENE_MAX_SEGMENTS >= (int)FS_MAX_SPRINGS,
+               "a scene holds every shape, body and spring of the largest geometry (a biped's; test_robot_biped "
+               "checks its links fit too)");
+
 static void copy3(double dst[3], const dReal *src)
 {
     for (int k = 0; k < 3; k++)
@@ -113,6 +118,15 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
                 if (dGeomGetBody(sim->shape[k]) == sim->body[b] && dGeomGetClass(sim->shape[k]) == dSphereClass)
                     add_link(scene, sim->hinge[i], b, sim->shape[k], NULL);
         }
+        /* a root that carries no shape (a biped's pelvis): a bar from its first distal hinge to each other */
+        int first = -1, shaped = 0;
+        for (int k = 0; k < sim->nshapes; k++)
+            shaped |= dGeomGetBody(sim->shape[k]) == sim->body[b];
+        for (int i = 0; i < g->nhinges && proximal < 0 && !shaped; i++)
+            if (g->hinge[i].body1 == b && first < 0)
+                first = i;
+            else if (g->hinge[i].body1 == b)
+                add_link(scene, sim->hinge[first], b, NULL, sim->hinge[i]);
     }
     for (int i = 0; i < g->nsprings && i < FS_SCENE_MAX_SEGMENTS; i++) {
         fs_scene_segment *seg = &scene->spring[scene->nsprings++];

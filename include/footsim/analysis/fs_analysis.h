@@ -87,7 +87,8 @@ fs_status fs_pitch_stiffness_measure(const fs_scenario *sc, double load_N, doubl
  * ahead of the ankle leans the robot by m g x / (K - m g h) at rest (small angles): it stands when
  * m g h < K and that lean is below max_lean_rad (a landing's upright bound). */
 typedef struct fs_pitch_law {
-    double K_foot, K_series, K;  /* N m/rad: the foot's, the robot's joint's (INFINITY when rigid), in series */
+    double K_foot, K_series, K;  /* N m/rad: the foot's, the robot's joint's (INFINITY when rigid), in series
+                                    (a biped: twice that, two legs side by side, each on its ankle spring) */
     double demand;               /* m g h, N m/rad: what the robot's weight asks of K */
     double critical_height_m;    /* K / (m g): the highest centre of mass that stands */
     double lean_rad;             /* the lean at rest from the forward offset (INFINITY past the height) */

@@ -39,6 +39,14 @@ typedef struct fs_trial_result {
     double ankle_drop_m;         /* ankle height at touchdown minus at the end */
     double slip_m;               /* horizontal travel of the ankle from touchdown to the end */
     long steps;
+    /* each foot's own (a biped's two: 0 right, 1 left, each from its own touchdown; the trial's
+       ankle_drop_m is then their mean, slip_m the larger, the contacts their sums). One foot: its
+       foot[0] is the trial's own */
+    int nfeet;
+    struct {
+        double touchdown_s, ankle_drop_m, slip_m, mean_contacts, final_contacts;
+        double final_force_N;    /* the ground's vertical force on it in the last step */
+    } foot[FS_MAX_FEET];
 } fs_trial_result;
 
 /* The pose drawn for seed from sc's [landing] ranges (pure function of the two). */

@@ -17,8 +17,15 @@
 #include "footsim/base/fs_vec.h"
 
 enum { FS_CHAINS = 5, FS_SPRINGS_PER_CHAIN = 3 };
-enum { FS_MAX_BODIES = 2 + 2 * FS_CHAINS, FS_MAX_HINGES = 1 + 2 * FS_CHAINS,
-       FS_MAX_SPRINGS = FS_SPRINGS_PER_CHAIN * FS_CHAINS, FS_MAX_SPHERES = 2 + 2 * FS_CHAINS };
+/* One foot's parts, and the most a geometry holds: two feet and a biped's legs (fs_robot.h:
+ * a pelvis, and a thigh and a shank per leg, joined by a hip, a knee and an ankle hinge each). */
+enum { FS_FOOT_BODIES = 2 + 2 * FS_CHAINS, FS_FOOT_HINGES = 1 + 2 * FS_CHAINS,
+       FS_FOOT_SPRINGS = FS_SPRINGS_PER_CHAIN * FS_CHAINS, FS_FOOT_SPHERES = 2 + 2 * FS_CHAINS };
+enum { FS_MAX_FEET = 2, FS_LEG_BODIES = 1 + 2 * FS_MAX_FEET, FS_LEG_HINGES = 3 * FS_MAX_FEET };
+enum { FS_MAX_BODIES = FS_MAX_FEET * FS_FOOT_BODIES + FS_LEG_BODIES,
+       FS_MAX_HINGES = FS_MAX_FEET * FS_FOOT_HINGES + FS_LEG_HINGES,
+       FS_MAX_SPRINGS = FS_MAX_FEET * FS_FOOT_SPRINGS, FS_MAX_SPHERES = FS_MAX_FEET * FS_FOOT_SPHERES,
+       FS_MAX_BOXES = FS_MAX_FEET };
 
 typedef enum fs_foot_kind { FS_FOOT_BIOMIMETIC = 0, FS_FOOT_FLAT = 1 } fs_foot_kind;
 
@@ -62,6 +69,9 @@ typedef struct fs_hinge_geom {
     char name[32];
     int body1, body2;    /* proximal, distal */
     fs_vec3 anchor, axis;
+    /* a passive angular spring-damper about the axis toward the built pose (0, 0: a free hinge;
+       the biped's leg joints), N m/rad and N m s/rad */
+    double k_N_m_per_rad, c_N_m_s_per_rad;
 } fs_hinge_geom;
 
 typedef struct fs_spring_geom {
@@ -78,7 +88,9 @@ typedef struct fs_sphere_geom {
     double radius_m;
 } fs_sphere_geom;
 
-/* Everything built from a def; a flat foot has one body, a box and no hinges or springs. */
+/* Everything built from a def; a flat foot has one body, a box and no hinges or springs. A biped
+ * (fs_robot_biped_geometry) is two copies of a foot (the second mirrored: a right and a left foot)
+ * and its legs in one geometry: foot[] says which bodies are whose. */
 typedef struct fs_foot_geom {
     int kind;
     int nbodies, nhinges, nsprings, nspheres;
@@ -86,13 +98,20 @@ typedef struct fs_foot_geom {
     fs_hinge_geom hinge[FS_MAX_HINGES];
     fs_spring_geom spring[FS_MAX_SPRINGS];
     fs_sphere_geom sphere[FS_MAX_SPHERES];
-    int has_box;
-    fs_vec3 box_size, box_centre; /* the flat sole, on body 0 */
+    int nboxes;          /* the flat sole: one per foot, all of one size */
+    fs_vec3 box_size;
+    struct { int body; fs_vec3 centre; } box[FS_MAX_BOXES];
     int npins;           /* hinges to the world (a pinned chain, fs_design_pinned_chain) */
     struct { int body; fs_vec3 anchor, axis; } pin[2];
-    int ankle_body;      /* the body the load acts on */
+    int ankle_body;      /* the body the load acts on (a biped: its right foot's) */
     fs_vec3 ankle;       /* the load's point: the ankle joint centre */
-    double total_mass_kg;
+    double total_mass_kg; /* the foot's (a biped: both feet and the legs) */
+    /* nfeet 1: the foot's bodies are 0 .. nbodies - 1. A biped: 2, foot f's bodies first_body ..
+       first_body + nbodies - 1, its ankle (the leg's ankle hinge) on ankle_body at ankle; then the
+       legs, pelvis_body whose lean is the robot's */
+    int nfeet;
+    struct { int first_body, nbodies, ankle_body; fs_vec3 ankle; } foot[FS_MAX_FEET];
+    int biped, pelvis_body;
     /* Biomimetic chains: body and hinge indices, and the neutral joint centres. */
     struct {
         int metatarsal, phalanx, midfoot_hinge, mtp_hinge, spring[3];
@@ -100,6 +119,11 @@ typedef struct fs_foot_geom {
         double metatarsal_deg; /* solved so the toe sphere rests on the ground */
     } chain[FS_CHAINS];
 } fs_foot_geom;
+
+/* A link of width x depth section (width across, along y where it can) between two points: its
+ * body geometry (mass centred between them, inertia of a solid box). */
+void fs_design_link_body(fs_body_geom *b, const char *name, double m, fs_vec3 from, fs_vec3 to, double width,
+                         double depth);
 
 /* Body and hinge indices of the biomimetic foot. */
 enum { FS_BODY_HEEL = 0, FS_BODY_TALUS = 1 };

@@ -6,11 +6,23 @@
  * Achilles spring-damper, and mounted free (all six degrees of freedom) or on a vertical slide (the
  * walking machine's carriage: pitch, roll, yaw and horizontal motion held). docs/landing.md gives
  * every shipped robot's choices and why. fs_robot_load reads and checks a file with the scenario's
- * --set overrides of its keys (`--set robot.mass_kg=30`); an empty path is no robot (mass 0). */
+ * --set overrides of its keys (`--set robot.mass_kg=30`); an empty path is no robot (mass 0).
+ *
+ * A biped (kind = biped) is instead a pelvis and two legs, a thigh and a shank each, standing on two
+ * copies of the foot design (the design's foot on the right, its mirror image on the left), hips
+ * hip_width_m apart, joined by passive hip, knee and ankle hinges about the lateral axis, each an
+ * angular spring-damper toward the built pose (knees bent knee_bend_deg). Its mass_kg (pelvis and
+ * legs, the feet not counted, as no robot here counts them) and com_height_m (of pelvis and legs,
+ * above the ankles) follow from its parts (fs_robot_derive); com_forward_m is where the whole body's
+ * centre of mass stands ahead of the ankles, which sets the pelvis's. fs_robot_biped_geometry
+ * builds the whole of it as one geometry. */
 #ifndef FS_ROBOT_H
 #define FS_ROBOT_H
 
 #include "footsim/io/fs_config.h"
+#include "footsim/model/fs_design.h"
+
+typedef enum fs_robot_kind { FS_ROBOT_SINGLE = 0, FS_ROBOT_BIPED = 1 } fs_robot_kind;
 
 typedef enum fs_robot_joint { FS_ROBOT_RIGID = 0, FS_ROBOT_ACHILLES = 1 } fs_robot_joint;
 
@@ -19,6 +31,7 @@ typedef enum fs_robot_joint { FS_ROBOT_RIGID = 0, FS_ROBOT_ACHILLES = 1 } fs_rob
 typedef enum fs_robot_mount { FS_ROBOT_FREE = 0, FS_ROBOT_VERTICAL = 1 } fs_robot_mount;
 
 typedef struct fs_robot_def {
+    int kind;                  /* fs_robot_kind: one rigid body on the foot, or a biped on two */
     double mass_kg, com_height_m, com_forward_m; /* the body (torso and leg); COM above and ahead of the ankle */
     double inertia_kgm2[3];    /* principal moments about its COM */
     int joint;                 /* fs_robot_joint: rigid, or an ankle hinge with an Achilles spring-damper */
@@ -27,7 +40,23 @@ typedef struct fs_robot_def {
     double inertia_height_m;   /* > 0: inertia_kgm2 is the body's at this COM height, and its moments
                                   about x and y scale with (com_height_m / this)^2: the same body
                                   stretched (fs_robot_inertia) */
+    /* the biped (kind = biped) */
+    double hip_width_m, thigh_length_m, shank_length_m, knee_bend_deg, leg_width_m;
+    double pelvis_mass_kg, thigh_mass_kg, shank_mass_kg, pelvis_com_height_m;
+    double pelvis_inertia_kgm2[3];
+    double hip_k_N_m_per_rad, hip_c_N_m_s_per_rad, knee_k_N_m_per_rad, knee_c_N_m_s_per_rad;
+    double ankle_k_N_m_per_rad, ankle_c_N_m_s_per_rad;
 } fs_robot_def;
+
+/* A biped's mass_kg and com_height_m from its parts; nothing for a single body. */
+void fs_robot_derive(fs_robot_def *r);
+
+/* The biped r standing on foot (a checked single foot's geometry) as one geometry: the right foot
+ * (the design's bodies 0 .. n - 1, at y = -hip_width_m / 2), the left (its mirror image, bodies n ..
+ * 2n - 1, at +hip_width_m / 2), then the pelvis, and per leg (right first) a thigh and a shank; the
+ * feet's hinges and springs, then per leg its hip, knee and ankle hinges (ankle: shank to the
+ * foot's ankle body, at its ankle). */
+void fs_robot_biped_geometry(const fs_robot_def *r, const fs_foot_geom *foot, fs_foot_geom *out);
 
 /* The body's principal moments for its centre-of-mass height (inertia_height_m says how). */
 void fs_robot_inertia(const fs_robot_def *r, double I[3]);

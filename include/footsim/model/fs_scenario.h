@@ -142,7 +142,11 @@ fs_status fs_scenario_provenance(const fs_scenario *sc, const char *const *overr
  * 50, springs implicit, contact_layer_m 0.0005, window 3 s" (window: duration_s). */
 void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size);
 
-/* The rectangle [xmin, xmax] x [ymin, ymax] the foot covers at its start pose. */
+/* The geometry a simulation of sc builds: sc->geom, or for a biped robot its two feet and legs
+ * (fs_robot_biped_geometry) made in *biped, which the result then points to. */
+const fs_foot_geom *fs_scenario_geometry(const fs_scenario *sc, fs_foot_geom *biped);
+
+/* The rectangle [xmin, xmax] x [ymin, ymax] the foot (a biped's two) covers at its start pose. */
 void fs_scenario_footprint(const fs_scenario *sc, double box[4]);
 
 #endif

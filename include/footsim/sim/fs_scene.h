@@ -6,7 +6,8 @@
 #ifndef FS_SCENE_H
 #define FS_SCENE_H
 
-enum { FS_SCENE_MAX_SHAPES = 16, FS_SCENE_MAX_SEGMENTS = 32, FS_SCENE_MAX_CONTACTS = 128, FS_SCENE_MAX_BODIES = 16 };
+/* room for a biped's two feet and legs (sim_scene.c checks it against the geometry's limits) */
+enum { FS_SCENE_MAX_SHAPES = 32, FS_SCENE_MAX_SEGMENTS = 96, FS_SCENE_MAX_CONTACTS = 256, FS_SCENE_MAX_BODIES = 32 };
 
 typedef enum fs_shape_type { FS_SHAPE_SPHERE = 0, FS_SHAPE_BOX = 1 } fs_shape_type;
 

@@ -27,7 +27,8 @@
 
 #include <ode/ode.h>
 
-enum { FS_MAX_CONTACTS = FS_MAX_SHAPE_CONTACTS, FS_MAX_STEP_CONTACTS = (FS_MAX_SPHERES + 1) * 64 };
+enum { FS_MAX_SHAPES = FS_MAX_SPHERES + FS_MAX_BOXES };
+enum { FS_MAX_CONTACTS = FS_MAX_SHAPE_CONTACTS, FS_MAX_STEP_CONTACTS = FS_MAX_SHAPES * 64 };
 
 typedef struct fs_sim_options {
     int with_ground;        /* 0: no ground (the stiffness probes) */
@@ -58,7 +59,8 @@ typedef struct fs_sim {
     dBodyID body[FS_MAX_BODIES];
     dJointID hinge[FS_MAX_HINGES];
     dJointID pin[2];       /* a pinned chain's hinges to the world */
-    dGeomID shape[FS_MAX_SPHERES + 1];
+    dGeomID shape[FS_MAX_SHAPES];
+    int shape_foot[FS_MAX_SHAPES]; /* which foot each shape is on (a biped's: 0 right, 1 left) */
     int nshapes;
     fs_spring spring[FS_MAX_SPRINGS];
     dBodyID robot;         /* the passive body on the ankle, or NULL (none, or merged) */
@@ -71,9 +73,10 @@ typedef struct fs_sim {
     int has_achilles;
     double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
     dVector3 ankle_local;  /* the load's point on the ankle body */
+    dVector3 foot_ankle_local[FS_MAX_FEET]; /* each foot's ankle on its ankle body (fs_foot_geom.foot) */
     dVector3 down;         /* unit direction of the load and gravity */
     dContact contact_template;
-    double match_m[FS_MAX_SPHERES + 1]; /* how far a shape's contact may move in a step and still
+    double match_m[FS_MAX_SHAPES]; /* how far a shape's contact may move in a step and still
                                            continue the last step's (its friction bound) */
     int chain_plane_friction;          /* fs_sim_options.chain_plane_friction */
     double grip_dir[FS_MAX_SPHERES][3]; /* with it: each sphere's direction of grip, horizontal, world */
@@ -160,9 +163,11 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene);
 /* The constraint rows the solver handles in a step, by kind: what a step's cost grows with (a
  * dense direct solver's time grows with the cube of the total). Hinges and sliders 5, a fixed
  * joint 6, a ball 3, an implicit spring's DBall row 1, a contact 3 with friction (1 without), for
- * the contacts of the last step. */
+ * the contacts of the last step; a hinge's stop 1 while it is active (a biped's leg joints' spring-
+ * dampers are stops with lo = hi: always active). */
 typedef struct fs_rows {
     int hinge, fixed, slider, ball, spring, contact, other; /* other: joints of any other kind, one each */
+    int stop;              /* hinge stops (limits) active now */
     int total;
     int contacts;          /* the contact points the contact rows are for */
 } fs_rows;
@@ -177,12 +182,19 @@ void fs_sim_body_velocity(const fs_sim *sim, int i, double v[3], double w[3]);
 void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3]);
 
 /* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. A
- * merged robot (fs_sim.robot_merged) leans with the ankle body it is part of. */
+ * merged robot (fs_sim.robot_merged) leans with the ankle body it is part of; a biped's lean is
+ * its pelvis's. */
 double fs_sim_robot_tilt(const fs_sim *sim);
 
 /* The robot's centre of mass and its velocity now (a merged robot's from the ankle body's
- * motion); without a robot, the ankle body's. Either may be NULL. */
+ * motion; a biped's pelvis's); without a robot, the ankle body's. Either may be NULL. */
 void fs_sim_robot_com(const fs_sim *sim, double p[3], double v[3]);
+
+/* Per foot (0 .. geom->nfeet - 1; a biped's 0 right, 1 left): its ankle in world coordinates now,
+ * its contact points with the ground in the last step, and the ground's force on it then, N. */
+void fs_sim_foot_ankle(const fs_sim *sim, int foot, double p[3]);
+int fs_sim_foot_contacts(const fs_sim *sim, int foot);
+void fs_sim_foot_force(const fs_sim *sim, int foot, double force[3]);
 
 /* How far the foot's contact shapes reach below the terrain surface now, m (negative: above). */
 double fs_sim_penetration(const fs_sim *sim);
