@@ -194,22 +194,20 @@ int fs_sim_foot_contacts(const fs_sim *sim, int foot)
     return n;
 }
 
-void fs_sim_foot_force(const fs_sim *sim, int foot, double force[3])
+/* The force of the last step's contacts on foot (EVERY_CONTACT: all of them), in their order. */
+enum { EVERY_CONTACT = -2 };
+static void contact_force(const fs_sim *sim, int foot, double force[3])
 {
     force[0] = force[1] = force[2] = 0;
     for (int i = 0; i < sim->contacts_now; i++)
-        if (contact_foot(sim, i) == foot)
+        if (foot == EVERY_CONTACT || contact_foot(sim, i) == foot)
             for (int k = 0; k < 3; k++)
                 force[k] += sim->feedback[i].f1[k];
 }
 
-void fs_sim_ground_force(const fs_sim *sim, double force[3])
-{
-    force[0] = force[1] = force[2] = 0;
-    for (int i = 0; i < sim->contacts_now; i++)
-        for (int k = 0; k < 3; k++)
-            force[k] += sim->feedback[i].f1[k];
-}
+void fs_sim_foot_force(const fs_sim *sim, int foot, double force[3]) { contact_force(sim, foot, force); }
+
+void fs_sim_ground_force(const fs_sim *sim, double force[3]) { contact_force(sim, EVERY_CONTACT, force); }
 
 double fs_sim_hinge_angle(const fs_sim *sim, int i)
 {
