@@ -759,7 +759,7 @@ int cli_demo(const cli_args *a)
     if (sc && fs_scenario_load(cli_data_path("scenarios/landing_trial.ini"), NULL, 0, sc, &err) == FS_OK) {
         fs_pitch_law law;
         double g = sc->def.gravity_m_per_s2;
-        if (fs_pitch_stiffness_model(&sc->design, &sc->geom, sc->def.robot.mass_kg * g, g, &K, &err) == FS_OK) {
+        if (fs_pitch_stiffness_model(&sc->geom, sc->def.robot.mass_kg * g, g, &K, &err) == FS_OK) {
             fs_pitch_law_apply(K, &sc->def.robot, g, sc->def.landed_tilt_deg * M_PI / 180, &law);
             printf("note: the Table I biomimetic foot toppling under single_tall is the documented finding, not a "
                    "fault: that robot needs %.1f N m/rad of pitch stiffness and the foot has %.1f (docs/landing.md, "

@@ -93,7 +93,7 @@ static void the_law_predicts_the_landing_boundary(void)
     REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", (const char *[]){"robot.design=robots/drop_weight.ini"}, 1,
                              &sc, &err) == FS_OK);
     double g = sc.def.gravity_m_per_s2, m = sc.def.robot.mass_kg, K;
-    REQUIRE(fs_pitch_stiffness_model(&sc.design, &sc.geom, m * g, g, &K, &err) == FS_OK);
+    REQUIRE(fs_pitch_stiffness_model(&sc.geom, m * g, g, &K, &err) == FS_OK);
     fs_scenario_free(&sc);
     double critical = K / (m * g);
     for (int side = 0; side < 2; side++) {

@@ -4,6 +4,7 @@
 #include "footsim/analysis/fs_analysis.h"
 
 #include "analysis_chain.h"
+#include "analysis_diff.h"
 
 #include <math.h>
 #include <string.h>
@@ -77,36 +78,10 @@ static double energy(const planar *c, const double *q, double b[4])
     return E - c->load * (c->down[0] * J.p[1][0] + c->down[1] * J.p[1][1]);
 }
 
-static void gradient(const planar *c, const double *q, double *grad)
+static double energy_of(void *c, const double *q)
 {
-    const double h = 1e-7;
-    for (int i = 0; i < c->nfree; i++) {
-        double qp[3], qm[3], b[4];
-        memcpy(qp, q, sizeof qp);
-        memcpy(qm, q, sizeof qm);
-        qp[i] += h;
-        qm[i] -= h;
-        grad[i] = (energy(c, qp, b) - energy(c, qm, b)) / (2 * h);
-    }
-}
-
-static void hessian(const planar *c, const double *q, double H[3][3])
-{
-    const double h = 1e-5;
-    for (int j = 0; j < c->nfree; j++) {
-        double qp[3], qm[3], gp[3], gm[3];
-        memcpy(qp, q, sizeof qp);
-        memcpy(qm, q, sizeof qm);
-        qp[j] += h;
-        qm[j] -= h;
-        gradient(c, qp, gp);
-        gradient(c, qm, gm);
-        for (int i = 0; i < c->nfree; i++)
-            H[i][j] = (gp[i] - gm[i]) / (2 * h);
-    }
-    for (int i = 0; i < c->nfree; i++)
-        for (int j = 0; j < i; j++)
-            H[i][j] = H[j][i] = 0.5 * (H[i][j] + H[j][i]);
+    double b[4];
+    return energy(c, q, b);
 }
 
 /* Cholesky factorisation in place: 1 if A (n x n) is positive definite. */
@@ -169,8 +144,8 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
     /* Newton on the energy's gradient; its finite differences resolve angles to about 1e-9 rad */
     const double limit = 0.05, tolerance = 1e-9;
     for (int it = 0; it < 200 && !out->converged; it++) {
-        gradient(&c, q, grad);
-        hessian(&c, q, H);
+        fs_diff_gradient(energy_of, &c, c.nfree, q, grad);
+        fs_diff_hessian(energy_of, &c, c.nfree, q, H);
         if (!solve_spd((const double(*)[3])H, grad, dq, c.nfree)) {
             /* not convex here: go downhill along the gradient instead */
             double norm = 0;
@@ -192,7 +167,7 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
     }
     if (!isfinite(energy(&c, q, b)))
         out->converged = 0;
-    hessian(&c, q, H);
+    fs_diff_hessian(energy_of, &c, c.nfree, q, H);
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
             out->K_reduced[i][j] = H[i][j];
@@ -209,31 +184,5 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
     out->ball_clearance_m = J.p[3][1] - c.r_ball;
     for (int k = 0; k < 3; k++)
         out->spring_force_N[k] = c.k[k] * (spring_length(&c, &J, b, k) - c.rest[k]);
-    return FS_OK;
-}
-
-fs_status fs_pitch_stiffness_model(const fs_design_def *d, const fs_foot_geom *g, double load_N,
-                                   double gravity_m_per_s2, double *K, fs_error *err)
-{
-    *K = NAN;
-    if (g->kind != FS_FOOT_BIOMIMETIC)
-        return fs_fail(err, FS_BAD_INPUT, "the pitch-stiffness model is for the biomimetic foot; a flat sole's "
-                                          "pitch stiffness is its contacts' (docs/landing.md)");
-    double sum[2][2] = {{0, 0}, {0, 0}};
-    fs_planar_load load = {load_N, gravity_m_per_s2, 0, 0};
-    for (int i = 0; i < FS_CHAINS; i++) {
-        fs_planar_result eq;
-        fs_status s = fs_planar_equilibrium(d, g, i, &load, &eq, err);
-        if (s != FS_OK)
-            return s;
-        if (!eq.converged || !eq.stable)
-            return fs_fail(err, FS_NUMERICAL, "chain %d has no stable equilibrium under %.4g N at the ankle: the arch "
-                                              "folds, and its pitch stiffness is not positive", i + 1, load_N);
-        for (int r = 0; r < 2; r++)
-            for (int c = 0; c < 2; c++)
-                sum[r][c] += eq.K_reduced[r][c];
-    }
-    /* the heel turns freely: condensed out of (heel, talus) */
-    *K = sum[1][1] - sum[0][1] * sum[1][0] / sum[0][0];
     return FS_OK;
 }

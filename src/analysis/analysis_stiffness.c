@@ -241,7 +241,7 @@ fs_status fs_pitch_stiffness_foot(const fs_scenario *sc, double load_N, double *
 {
     double g = sc->def.gravity_m_per_s2;
     if (sc->geom.kind == FS_FOOT_BIOMIMETIC)
-        return fs_pitch_stiffness_model(&sc->design, &sc->geom, load_N, g, K, err);
+        return fs_pitch_stiffness_model(&sc->geom, load_N, g, K, err);
     (void)err;
     double k = in_series(sc->design.sole_stiffness_N_per_m, sc->terrain.def.stiffness_N_per_m);
     double L = sc->geom.box_size.x;

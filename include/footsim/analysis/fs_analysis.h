@@ -6,6 +6,8 @@
  * - fs_planar_*: one chain in its plane with heel and toe rolling on the ground, solved for its
  *   static equilibrium under a load at the ankle: the stiffness model's prediction of how the foot
  *   deflects, shared with no ODE code.
+ * - fs_pitch_*: the whole foot's stiffness against pitching its ankle body, from its geometry in
+ *   three dimensions (the pitch-stiffness law), measured in ODE too, and the law for a robot.
  * - fs_reference_*: the paper's dynamic model (Sec. IV) of one chain in its plane, heel and toe
  *   pinned at their sphere centres, integrated by GSL's rk8pd: the ground truth for the ODE model's
  *   transient (docs/bench.md), also shared with no ODE code. */
@@ -51,16 +53,17 @@ typedef struct fs_planar_load {
 fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, int chain, const fs_planar_load *load,
                                 fs_planar_result *out, fs_error *err);
 
-/* The pitch-stiffness law (docs/landing.md): the whole foot's stiffness against pitching its ankle
- * body (the talus) about the lateral axis, N m/rad, on gripping ground (heel and toes roll without
- * slipping, none lifts), the heel free to turn, under load_N at the ankle and gravity: each chain's
- * K_reduced at its equilibrium (as if all five were like it, so each with a fifth of the load)
- * summed, and the heel's angle condensed out. Exact for alike, unsplayed chains; a projection
- * otherwise. A robot of mass m whose centre of mass stands h above the ankle stands on the foot
- * when m g h < K. FS_BAD_INPUT for a flat foot (its contacts govern); FS_NUMERICAL when a chain
- * has no stable equilibrium under the load. */
-fs_status fs_pitch_stiffness_model(const fs_design_def *d, const fs_foot_geom *g, double load_N,
-                                   double gravity_m_per_s2, double *K, fs_error *err);
+/* The pitch-stiffness law (docs/landing.md; analysis_pitch.c): one biomimetic foot's stiffness
+ * against pitching its ankle body (the talus) about the lateral axis, N m/rad, under load_N at the
+ * ankle and gravity, from its geometry in three dimensions: heel and toes roll without slipping
+ * along the foot and along each chain's plane, slide freely across them, none lifts; the heel
+ * turns freely and the foot may shift sideways (both condensed out). Splayed or not, alike or not,
+ * ODE given those contacts agrees to 1e-3 (tests/test_analysis_stiffness.c). A robot of
+ * mass m whose centre of mass stands h above the ankle stands on the foot when m g h < K.
+ * FS_BAD_INPUT for a flat foot (its contacts govern) or a geometry without the heel; FS_NUMERICAL
+ * when the foot has no stable equilibrium under the load (the arch folds). */
+fs_status fs_pitch_stiffness_model(const fs_foot_geom *g, double load_N, double gravity_m_per_s2, double *K,
+                                   fs_error *err);
 
 /* The pitch stiffness of a scenario's foot on its ground, N m/rad: for the biomimetic foot the
  * model above (the arch governs; the ground is taken as rigid beside it); for a flat sole its
