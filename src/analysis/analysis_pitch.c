@@ -1,19 +1,20 @@
 /* analysis_pitch.c: the whole biomimetic foot's stiffness against pitching its ankle body, from
  * its geometry in three dimensions (never ODE): the pitch-stiffness law of docs/landing.md.
  *
- * The foot's twelve bodies are placed by two angles, the heel's and the talus's about the ankle
- * axis: the heel rolls on its spheres without slipping along the foot, the talus turns on the heel,
- * and each chain's metatarsal and phalanx turn on their own hinges (about the chain's splayed axis,
- * carried by the talus) until its toe sphere stands on the ground and has rolled, not slid, along
- * its chain's plane; across that plane it slides freely. The potential energy of the springs, of
- * gravity and of the load at the ankle is minimised over the two angles; K is the energy's second
- * derivative in the talus's angle with the heel's angle and the sideways shift condensed out.
+ * The foot's twelve bodies are placed by three coordinates: the heel's and the talus's angles about
+ * the ankle axis, and the foot's sideways shift. The heel rolls on its spheres without slipping
+ * along the foot, the talus turns on the heel, and each chain's metatarsal and phalanx turn on
+ * their own hinges (about the chain's splayed axis, carried by the talus) until its toe sphere
+ * stands on the ground and has rolled, not slid, along its chain's plane; across that plane it
+ * slides freely. The potential energy of the springs, of gravity and of the load at the ankle is
+ * minimised over the three; K is the energy's second derivative in the talus's angle with the
+ * heel's angle and the shift condensed out.
  *
- * The foot may also shift sideways: the heel's and the toes' contacts slide freely across the
- * foot and across each chain's plane, but a splayed toe shifted sideways must roll along its plane
- * too, so the shift is not free, and in a foot not symmetric about its long axis pitching excites
- * it. The heel's two spheres, which stay on the ground and grip along the foot, keep the heel (and
- * so the talus, on its hinge) from rolling and from turning about the vertical. */
+ * The shift: the heel's and the toes' contacts slide freely across the foot and across each
+ * chain's plane, but a splayed toe shifted sideways must roll along its plane too, so the shift is
+ * not free, and in a foot not symmetric about its long axis pitching excites it. The heel's two
+ * spheres, which stay on the ground and grip along the foot, keep the heel (and so the talus, on
+ * its hinge) from rolling and from turning about the vertical. */
 #include "footsim/analysis/fs_analysis.h"
 
 #include "analysis_diff.h"
@@ -102,7 +103,8 @@ static void chain_residual(const foot3d *m, int i, const placement *talus, const
     r[1] = fs_dot(d, m->f[i]) - m->r_toe[i] * fs_dot(rotation_vector(&phal->R), m->lat[i]);
 }
 
-/* Solves chain i's midfoot and MTP angles (Newton, the Jacobian by central differences). */
+/* Solves chain i's midfoot and MTP angles (Newton, the Jacobian by central differences), from
+ * the last solution; 0 when the toe cannot be closed on the ground. */
 static int close_chain(foot3d *m, int i, const placement *talus, placement *meta, placement *phal)
 {
     double *a = m->chain_angles[i], r[2];
@@ -124,12 +126,15 @@ static int close_chain(foot3d *m, int i, const placement *talus, placement *meta
         }
         double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
         if (!(fabs(det) > 1e-300))
-            return 0;
+            break;
         a[0] -= (J[1][1] * r[0] - J[0][1] * r[1]) / det;
         a[1] -= (-J[1][0] * r[0] + J[0][0] * r[1]) / det;
     }
     chain_residual(m, i, talus, a, meta, phal, r);
-    return fabs(r[0]) + fabs(r[1]) < 1e-13;
+    if (fabs(r[0]) + fabs(r[1]) < 1e-13)
+        return 1;
+    a[0] = a[1] = 0; /* the next start from the neutral pose, not from where this one failed */
+    return 0;
 }
 
 /* The potential energy at q; NAN when a toe cannot reach the ground. */
