@@ -256,13 +256,14 @@ static void pitch_print(const pitch_report *p)
 {
     printf("whole foot against pitching its ankle body under %.1f kg at the ankle (docs/landing.md), N m/rad:\n"
            "  model: %-46s %8.2f\n"
-           "  measured in ODE, friction 1 (the landing trials')     %8.2f (%+.1f %%)\n"
-           "  measured in ODE, friction 10 (toes held across too)   %8.2f\n",
+           "  measured in ODE, friction 1 (the landing trials')     %8.2f (%+.2f %%)\n"
+           "  %-53s %8.2f\n",
            p->load_kg,
            p->flat ? "the sole's corners on the contacts' springs" : "each chain rolls in its plane, free across it",
-           p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1), p->K_ode_grip);
+           p->K_model, p->K_ode_mu1, 100 * (p->K_ode_mu1 / p->K_model - 1),
+           p->flat ? "measured in ODE, friction 10" : "measured in ODE, friction 10 (toes held across too)", p->K_ode_grip);
     if (!p->flat)
-        printf("  %-54s %8.2f (%+.1f %%)\n", "measured in ODE, the model's contacts (grip in plane)", p->K_ode_plane,
+        printf("  %-53s %8.2f (%+.2f %%)\n", "measured in ODE, the model's contacts (grip in plane)", p->K_ode_plane,
                100 * (p->K_ode_plane / p->K_model - 1));
     if (p->nrobots)
         printf("the law, K (the model's, an Achilles tendon in series) against m g h of each robot:\n");
