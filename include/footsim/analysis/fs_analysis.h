@@ -58,7 +58,7 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
  * ankle and gravity, from its geometry in three dimensions: heel and toes roll without slipping
  * along the foot and along each chain's plane, slide freely across them, none lifts; the heel
  * turns freely and the foot may shift sideways (both condensed out). Splayed or not, alike or not,
- * ODE given those contacts agrees to 1e-3 (tests/test_analysis_stiffness.c). A robot of
+ * ODE given those contacts agrees within 6e-4 (tests/test_analysis_stiffness.c). A robot of
  * mass m whose centre of mass stands h above the ankle stands on the foot when m g h < K.
  * FS_BAD_INPUT for a flat foot (its contacts govern) or a geometry without the heel; FS_NUMERICAL
  * when the foot has no stable equilibrium under the load (the arch folds). */
