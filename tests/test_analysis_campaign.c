@@ -362,6 +362,47 @@ static void test_sweep_two_keys(void)
     fs_robot_inertia(&fs_campaign_pair(&c, 0)->def.robot, I);
     CHECK_NEAR(I[0], 1.4 * (0.02 / 0.3) * (0.02 / 0.3), 1e-12);
     CHECK(I[2] == 0.1);
+    /* a point's name holds a comma: written quoted, every CSV row has the header's fields */
+    char tmp[] = "/tmp/fs_sweep_csv_XXXXXX";
+    REQUIRE(mkdtemp(tmp) != NULL);
+    fs_trial_result *results = calloc((size_t)fs_campaign_ntrials(&c), sizeof *results);
+    fs_campaign_row *rows = calloc((size_t)fs_campaign_ncells(&c), sizeof *rows);
+    REQUIRE(results && rows);
+    fs_campaign_summarize(&c, results, rows);
+    CHECK(fs_campaign_write(&c, results, rows, tmp, &err) == FS_OK);
+    const char *files[] = {"trials.csv", "summary.csv"};
+    for (int k = 0; k < 2; k++) {
+        char path[600], line[8192];
+        snprintf(path, sizeof path, "%s/%s", tmp, files[k]);
+        FILE *f = fopen(path, "r");
+        REQUIRE(f != NULL);
+        int header = -1, nrows = 0, last_quoted = 0;
+        while (fgets(line, sizeof line, f)) {
+            if (line[0] == '#')
+                continue;
+            int fields = 1, quoted = 0;
+            for (const char *q = line; *q; q++)
+                if (*q == '"')
+                    quoted = !quoted;
+                else if (*q == ',' && !quoted)
+                    fields++;
+            if (header < 0)
+                header = fields;
+            else {
+                CHECK(fields == header);
+                nrows++;
+                last_quoted = strstr(line, ",\"complex_uneven@10,0.3\",") != NULL;
+            }
+        }
+        fclose(f);
+        CHECK(nrows == (k == 0 ? fs_campaign_ntrials(&c) : fs_campaign_ncells(&c)));
+        CHECK(last_quoted);
+    }
+    free(results);
+    free(rows);
+    char cmd[600];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
+    CHECK(system(cmd) == 0);
     fs_campaign_free(&c);
     /* the same key twice, and sweep2 alone, are refused */
     const char *twice[] = {"campaign.sweep2=springs.scale"};

@@ -48,10 +48,10 @@ static void csv_number(FILE *f, double v)
         fputs(",", f);
 }
 
-/* Free text for CSV: quoted, quotes doubled, line breaks as spaces. */
-static void csv_text(FILE *f, const char *s)
+/* s quoted for CSV: quotes doubled, line breaks as spaces. */
+static void csv_quoted(FILE *f, const char *s)
 {
-    fputs(",\"", f);
+    fputc('"', f);
     for (; *s; s++)
         if (*s == '"')
             fputs("\"\"", f);
@@ -60,9 +60,30 @@ static void csv_text(FILE *f, const char *s)
     fputc('"', f);
 }
 
+/* Free text for CSV: always quoted. */
+static void csv_text(FILE *f, const char *s)
+{
+    fputc(',', f);
+    csv_quoted(f, s);
+}
+
+/* A name for CSV: as it is, or quoted when it holds a comma, a quote or a line break (a point of a
+ * two-key sweep is named "BASE@v1,v2"). */
+static void csv_name(FILE *f, const char *s)
+{
+    if (strpbrk(s, ",\"\r\n"))
+        csv_quoted(f, s);
+    else
+        fputs(s, f);
+}
+
 static void csv_row_key(FILE *f, const fs_campaign *c, int foot, int terrain, int robot)
 {
-    fprintf(f, "%s,%s,%s", c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name);
+    csv_name(f, c->foot[foot].name);
+    fputc(',', f);
+    csv_name(f, c->terrain[terrain].name);
+    fputc(',', f);
+    csv_name(f, c->robot[robot].name);
     for (int w = 0; w < c->nsweep; w++)
         csv_number(f, c->terrain[terrain].sweep_value[w]);
 }
