@@ -85,7 +85,7 @@ static int fill_figure_script(FILE *f, const void *user)
             (FIG_LEFT_PX + g->w + 20) / W, FIG_BOTTOM_PX / H, COLOURBAR_PX / W, g->h / H);
     char title[256];
     snprintf(title, sizeof title, "terrain %s from above: height as colour, shaded with light from the north-west%s",
-             g->name, g->outline ? "; white: the foot's footprint" : "");
+             g->name, g->outline ? "; white: what the foot reaches" : "");
     cli_gp_string(f, title);
     fprintf(f, "\nplot '%s' binary filetype=png dx=%.9g dy=%.9g origin=(%.9g,%.9g) with rgbimage notitle, \\\n"
                "     '+' using (NaN):(NaN):(0) with points lc palette notitle\n",
@@ -127,8 +127,9 @@ static int write_figure(const figure *g, const unsigned char *rgb, const char *p
     return s;
 }
 
-/* The region the summary and the picture show: the scenario's (--scenario: the foot's footprint at
- * its start plus its margin, kept in foot[] and *outline set) or DEFAULT_REGION. 0, or an exit
+/* The region the summary and the picture show: the scenario's (--scenario: what its foot reaches,
+ * its footprint at the start or a walk's path, plus its margin, kept in foot[] and *outline set)
+ * or DEFAULT_REGION. 0, or an exit
  * status (said). */
 static int region_of(const cli_args *a, double region[4], double foot[4], double **outline)
 {
@@ -143,7 +144,7 @@ static int region_of(const cli_args *a, double region[4], double foot[4], double
         return FS_NO_MEMORY;
     fs_status ls = fs_scenario_load(a->scenario, NULL, 0, sc, &err);
     if (ls == FS_OK) {
-        fs_scenario_footprint(sc, foot);
+        fs_scenario_reach(sc, foot);
         double m = sc->def.region_margin_m;
         region[0] = foot[0] - m, region[1] = foot[1] + m, region[2] = foot[2] - m, region[3] = foot[3] + m;
         *outline = foot;
@@ -180,7 +181,7 @@ static int write_map(fs_terrain *t, const cli_args *a)
     if (s > 0)
         return s;
     printf("%s: %s terrain over x %.3f..%.3f m, y %.3f..%.3f m, heights %.4f..%.4f m%s%s\n", a->png, t->name,
-           region[0], region[1], region[2], region[3], z[0], z[1], outline ? "; white: the foot's footprint" : "",
+           region[0], region[1], region[2], region[3], z[0], z[1], outline ? "; white: what the foot reaches" : "",
            s < 0 ? " (the bare map: no axes)" : "; axes and colour bar in mm");
     return 0;
 }
@@ -206,7 +207,7 @@ static int summary(fs_terrain *t, const cli_args *a)
     printf("%s: %s terrain; material mu %.2f, restitution %.2f, stiffness %.3g N/m, damping %.3g N s/m\n"
            "  over x %.3f..%.3f m, y %.3f..%.3f m%s: heights %.4f..%.4f m, mean %.4f m, RMS about the mean %.4f m\n",
            t->path, kinds[t->def.kind], t->def.mu, t->def.restitution, t->def.stiffness_N_per_m,
-           t->def.damping_Ns_per_m, r[0], r[1], r[2], r[3], outline ? " (the scenario's footprint and margin)" : "", lo, hi, mean, sqrt(fmax(0, sum2 / n - mean * mean)));
+           t->def.damping_Ns_per_m, r[0], r[1], r[2], r[3], outline ? " (what the scenario's foot reaches, and its margin)" : "", lo, hi, mean, sqrt(fmax(0, sum2 / n - mean * mean)));
     return 0;
 }
 

@@ -143,8 +143,13 @@ check_that "heat map: one panel, 560x440" [ "$(png_size "$tmp/heat/success.png")
 "$fs" terrain terrains/complex_uneven.ini --scenario scenarios/landing_trial.ini >"$tmp/scen.txt"
 "$fs" terrain terrains/complex_uneven.ini --scenario scenarios/landing_trial.ini --png "$tmp/scen.png" >"$tmp/scen_png.txt"
 region() { grep -o 'over x [-0-9.]*\.\.[-0-9.]* m, y [-0-9.]*\.\.[-0-9.]* m' "$1" | sed 's/^over //'; }
-check_that "terrain --scenario: the summary names the scenario's region" grep -q "the scenario's footprint and margin" "$tmp/scen.txt"
+check_that "terrain --scenario: the summary names the scenario's region" grep -q "what the scenario's foot reaches, and its margin" "$tmp/scen.txt"
 check_that "terrain --scenario: its region is not the default one" [ "$(region "$tmp/scen.txt")" != "$(region "$tmp/plain.txt")" ]
+# a walk reaches along its path: [walk] steps x step_length_m (walking.ini: 8 x 0.06 m) past the start
+"$fs" terrain terrains/stepped.ini --scenario scenarios/walking.ini >"$tmp/walk.txt"
+walk_xmax=$(region "$tmp/walk.txt" | sed 's/^x [-0-9.]*\.\.\([-0-9.]*\) m.*/\1/')
+check_that "terrain --scenario with a walk: the region runs along its path (x to $walk_xmax m)" \
+    awk -v x="$walk_xmax" 'BEGIN { exit !(x > 0.48) }'
 check_that "terrain --scenario: the summary and the picture cover the same region" \
     [ "$(region "$tmp/scen.txt")" = "$(grep -o 'over x [-0-9.]*\.\.[-0-9.]* m, y [-0-9.]*\.\.[-0-9.]* m' "$tmp/scen_png.txt" | sed 's/^over //')" ]
 

@@ -123,10 +123,8 @@ static int override_target(const char *assignment)
 static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
 {
     double box[4];
-    fs_scenario_footprint(sc, box);
+    fs_scenario_reach(sc, box);
     double m = sc->def.region_margin_m;
-    if (sc->def.kind == FS_SCENARIO_WALK) /* the walking machine's path */
-        box[1] += sc->def.walk_steps * sc->def.step_length_m;
     const fs_terrain *t = &sc->terrain;
     double e[4], outside = fs_terrain_outside(t, box, e);
     if (outside > 0 && (box[1] < e[0] || box[0] > e[1] || box[3] < e[2] || box[2] > e[3]))
@@ -322,6 +320,13 @@ const fs_foot_geom *fs_scenario_geometry(const fs_scenario *sc, fs_foot_geom *bi
         return &sc->geom;
     fs_robot_biped_geometry(&sc->def.robot, &sc->geom, biped);
     return biped;
+}
+
+void fs_scenario_reach(const fs_scenario *sc, double box[4])
+{
+    fs_scenario_footprint(sc, box);
+    if (sc->def.kind == FS_SCENARIO_WALK) /* the walking machine's path */
+        box[1] += sc->def.walk_steps * sc->def.step_length_m;
 }
 
 void fs_scenario_footprint(const fs_scenario *sc, double box[4])

@@ -384,7 +384,7 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
         return FS_OK;
     }
     double box[4], m = sim->sc->def.region_margin_m + 0.05;
-    fs_scenario_footprint(sim->sc, box);
+    fs_scenario_reach(sim->sc, box);
     int steps = t->def.kind == FS_TERRAIN_STEPPED;
     double dx = steps ? 0.001 : (box[1] - box[0] + 2 * m); /* steps need their edges sampled */
     int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = 2;

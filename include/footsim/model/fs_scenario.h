@@ -149,4 +149,8 @@ const fs_foot_geom *fs_scenario_geometry(const fs_scenario *sc, fs_foot_geom *bi
 /* The rectangle [xmin, xmax] x [ymin, ymax] the foot (a biped's two) covers at its start pose. */
 void fs_scenario_footprint(const fs_scenario *sc, double box[4]);
 
+/* The rectangle the run's foot can reach: its footprint at the start and, for the walking machine,
+ * the path ahead of it (walk_steps times step_length_m along x). The terrain is sampled over it. */
+void fs_scenario_reach(const fs_scenario *sc, double box[4]);
+
 #endif
