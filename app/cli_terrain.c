@@ -129,8 +129,7 @@ static int write_figure(const figure *g, const unsigned char *rgb, const char *p
 
 /* The region the summary and the picture show: the scenario's (--scenario: what its foot reaches,
  * its footprint at the start or a walk's path, plus its margin, kept in foot[] and *outline set)
- * or DEFAULT_REGION. 0, or an exit
- * status (said). */
+ * or DEFAULT_REGION. 0, or an exit status (said). */
 static int region_of(const cli_args *a, double region[4], double foot[4], double **outline)
 {
     fs_error err;

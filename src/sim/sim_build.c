@@ -31,8 +31,10 @@ static void contact_template(fs_sim *sim)
         ct->surface.bounce = m->restitution;
         ct->surface.bounce_vel = 0.01; /* m/s: slower impacts do not bounce */
     }
-    ct->surface.soft_erp = h * k / (h * k + c);
-    ct->surface.soft_cfm = 1.0 / (h * k + c);
+    double erp, cfm;
+    fs_spring_soft(h, k, c, &erp, &cfm);
+    ct->surface.soft_erp = erp;
+    ct->surface.soft_cfm = cfm;
 }
 
 /* ---- the start pose ------------------------------------------------------------------------ */
@@ -256,13 +258,15 @@ static void grip_directions(fs_sim *sim)
  * with lo = hi, which ODE makes one two-sided row whenever it is met, as it always is (joint.cpp,
  * dxJointLimitMotor::testRotationalLimit and addLimot: angle <= lo or >= hi sets the limit, and
  * lo == hi gives the row -inf .. inf bounds), with the stop's ERP and CFM from k and c by the same
- * implicit-Euler mapping as the contacts and fs_spring.h: ERP = h k / (h k + c), CFM = 1 / (h k + c). */
+ * implicit-Euler mapping as the contacts and the springs (fs_spring_soft). */
 static void angular_spring(dJointID j, double k, double c, double h)
 {
     dJointSetHingeParam(j, dParamLoStop, 0);
     dJointSetHingeParam(j, dParamHiStop, 0);
-    dJointSetHingeParam(j, dParamStopERP, h * k / (h * k + c));
-    dJointSetHingeParam(j, dParamStopCFM, 1.0 / (h * k + c));
+    double erp, cfm;
+    fs_spring_soft(h, k, c, &erp, &cfm);
+    dJointSetHingeParam(j, dParamStopERP, erp);
+    dJointSetHingeParam(j, dParamStopCFM, cfm);
     dJointSetHingeParam(j, dParamBounce, 0);
 }
 

@@ -63,13 +63,21 @@ static double spring_line(const fs_spring *s, double p1[3], double p2[3], double
     return len;
 }
 
+void fs_spring_soft(double h, double k, double c, double *erp, double *cfm)
+{
+    double denom = h * k + c;
+    *erp = h * k / denom;
+    *cfm = 1.0 / denom;
+}
+
 void fs_spring_prepare(fs_spring *s, double h)
 {
     if (s->impl == FS_SPRING_IMPLICIT) {
         if (s->step != h) {
-            double denom = h * s->k + s->c;
-            dJointSetDBallParam(s->joint, dParamERP, h * s->k / denom);
-            dJointSetDBallParam(s->joint, dParamCFM, 1.0 / denom);
+            double erp, cfm;
+            fs_spring_soft(h, s->k, s->c, &erp, &cfm);
+            dJointSetDBallParam(s->joint, dParamERP, erp);
+            dJointSetDBallParam(s->joint, dParamCFM, cfm);
             s->step = h;
         }
         return;

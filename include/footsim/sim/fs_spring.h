@@ -32,6 +32,11 @@ typedef struct fs_spring_state {
 void fs_spring_init(fs_spring *s, dWorldID world, fs_spring_impl impl, dBodyID body1, dBodyID body2,
                     const double p1[3], const double p2[3], double k, double c, double rest);
 
+/* The implicit-Euler spring-damper of stiffness k and damping c over a step h as ODE's soft
+ * constraint: ERP = h k / (h k + c), CFM = 1 / (h k + c). The implicit springs, the contacts and the
+ * biped's angular springs (hinge stops) all take it from here. */
+void fs_spring_soft(double h, double k, double c, double *erp, double *cfm);
+
 /* Before each step of size h: sets ERP and CFM (implicit, when h changed) or adds the forces
  * (explicit). */
 void fs_spring_prepare(fs_spring *s, double h);
