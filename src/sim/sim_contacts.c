@@ -1,8 +1,9 @@
-/* sim_contacts.c: a step's contacts: each foot shape against the ground, the box's lattice
- * vertices on a heightfield, near-duplicates merged and the deepest kept, made into contact joints. */
+/* sim_contacts.c: a step's contacts: each foot shape against the ground (a box on a heightfield by
+ * footsim's own test, sim_lattice.h; everything else by ODE's), near-duplicates merged and the
+ * deepest kept, made into contact joints. */
 #include "sim_internal.h"
 
-#include "sim_ground.h"
+#include "sim_lattice.h"
 
 #include <math.h>
 #include <string.h>
@@ -45,7 +46,7 @@ static int alike_normals(const dContactGeom *a, const dContactGeom *b)
 /* Keeps at most max contacts: the same point found by two heightfield tiles (they share their
  * edges) counts once, then the deepest, then each next the farthest from those kept, so the
  * support the contacts give is spread like the real one. Contacts from index lattice_from on are
- * distinct lattice vertices (box_vertex_contacts), a lattice cell apart: none is another's twin,
+ * distinct lattice vertices (fs_lattice_vertex_contacts), a lattice cell apart: none is another's twin,
  * so they are compared with the others only. A sphere's contacts with alike normals merge into the
  * deepest (sphere: 1). */
 static int select_contacts(gathered *g, int max, double merge_m, int lattice_from, int sphere)
@@ -86,72 +87,6 @@ static int select_contacts(gathered *g, int max, double merge_m, int lattice_fro
         g->c[best] = t;
     }
     return max;
-}
-
-/* Whether every vertex of lattice block (a, b) lies below the box: under its lowest corner zlow,
- * or (the box upright) below the plane of its underside, p[2] < -hz in box_vertex_contacts, by a
- * bound over the block's extent and highest sample with a nanometre to spare. */
-static int block_below(const fs_terrain *t, long a, long b, const dReal *R, const dReal *c, double hz, double zlow)
-{
-    const long B = FS_TERRAIN_BLOCK;
-    double top = t->zblock[(size_t)b * t->bx + a];
-    if (top < zlow)
-        return 1;
-    if (R[10] <= 0)
-        return 0;
-    double xa = t->x0 + a * B * t->dx - c[0], xb = xa + B * t->dx;
-    double ya = t->y0 + b * B * t->dx - c[1], yb = ya + B * t->dx;
-    double bound = fmax(R[2] * xa, R[2] * xb) + fmax(R[6] * ya, R[6] * yb) + R[10] * (top - c[2]);
-    return bound < -hz - 1e-9;
-}
-
-/* ODE's box-heightfield test finds box corners below the surface, not the surface's vertices
- * poking up through the box's faces: a flat sole sliding onto a rock would sink into it. This
- * adds one contact per lattice vertex inside the box, pushing out through the nearer of its top
- * and bottom faces. */
-static void box_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g)
-{
-    dVector3 l;
-    dGeomBoxGetLengths(box, l);
-    const dReal *R = dGeomGetRotation(box), *c = dGeomGetPosition(box);
-    double aabb[6];
-    dGeomGetAABB(box, aabb);
-    double hx = 0.5 * l[0], hy = 0.5 * l[1], hz = 0.5 * l[2];
-    long i0 = (long)floor((aabb[0] - t->x0) / t->dx), i1 = (long)ceil((aabb[1] - t->x0) / t->dx);
-    long j0 = (long)floor((aabb[2] - t->y0) / t->dx), j1 = (long)ceil((aabb[3] - t->y0) / t->dx);
-    const long B = FS_TERRAIN_BLOCK, nx = t->nx, ilo = i0 > 0 ? i0 : 0;
-    const double zlow = aabb[4];
-    for (long j = j0 > 0 ? j0 : 0; j <= j1 && j < t->ny; j++) {
-        const double *row = t->z + (size_t)j * nx;
-        for (long i = ilo; i <= i1 && i < nx; i++) {
-            /* a block wholly below the box: on to the next (the same vertices, in the same order) */
-            if ((i == ilo || i % B == 0) && block_below(t, i / B, j / B, R, c, hz, zlow)) {
-                i = (i / B) * B + B - 1;
-                continue;
-            }
-            double z = row[i];
-            if (z < zlow)
-                continue;
-            double w[3] = {t->x0 + i * t->dx - c[0], t->y0 + j * t->dx - c[1], z - c[2]};
-            /* the vertex in the box's frame: R^T w (ODE's R is row-major, 4 columns) */
-            double p[3];
-            for (int k = 0; k < 3; k++)
-                p[k] = R[k] * w[0] + R[4 + k] * w[1] + R[8 + k] * w[2];
-            if (g->n == FS_MAX_CONTACTS)
-                return;
-            if (fabs(p[0]) > hx || fabs(p[1]) > hy || fabs(p[2]) > hz)
-                continue;
-            int up = p[2] > 0; /* nearer the top face: push the box down over it */
-            dContactGeom *ct = &g->c[g->n++];
-            memset(ct, 0, sizeof *ct);
-            for (int k = 0; k < 3; k++) {
-                ct->pos[k] = w[k] + c[k];
-                ct->normal[k] = (up ? -1 : 1) * R[4 * k + 2];
-            }
-            ct->depth = up ? hz - p[2] : p[2] + hz;
-            ct->g1 = box;
-        }
-    }
 }
 
 /* ---- friction bounds ------------------------------------------------------------------------ */
@@ -277,16 +212,21 @@ void fs_sim_collide(fs_sim *sim)
         g->sim = sim;
         g->n = 0;
         fs_sim_lap(sim, FS_STAGE_CONTACTS);
-        dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, g, gather);
-        fs_sim_lap(sim, FS_STAGE_COLLISION);
-        int from_ode = g->n;
-        if (t->z && dGeomGetClass(sim->shape[s]) == dBoxClass)
-            box_vertex_contacts(t, sim->shape[s], g);
+        int box = dGeomGetClass(sim->shape[s]) == dBoxClass, from_ode;
+        if (t->z && box && !sim->sc->def.heightfield_ode) {
+            fs_lattice_box_contacts(t, sim->shape[s], g);
+            from_ode = g->n; /* footsim's own code: timed as contacts */
+        } else {
+            dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, g, gather);
+            fs_sim_lap(sim, FS_STAGE_COLLISION);
+            from_ode = g->n;
+            if (t->z && box)
+                fs_lattice_vertex_contacts(t, sim->shape[s], g);
+        }
         sim->contacts_found_now += g->n;
         sim->shapes_touching_now += g->n > 0;
         sim->most_found_now = g->n > sim->most_found_now ? g->n : sim->most_found_now;
-        int n = select_contacts(g, sim->sc->def.max_contacts, merge_m, from_ode,
-                                dGeomGetClass(sim->shape[s]) == dSphereClass);
+        int n = select_contacts(g, sim->sc->def.max_contacts, merge_m, from_ode, !box);
         dBodyID body = dGeomGetBody(sim->shape[s]);
         match_contacts(g, s, n, sim->match_m[s]);
         for (int i = 0; i < n && sim->contacts_now < FS_MAX_STEP_CONTACTS; i++) {

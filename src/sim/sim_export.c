@@ -450,19 +450,23 @@ static void hfield_geom(exporter *x)
     end(x);
 }
 
+static int has_hfield(const exporter *x)
+{
+    return x->with_scenario && x->sim->ground && fs_terrain_is_heightfield(&x->sc->terrain) && x->sc->terrain.z;
+}
+
 static void ground(exporter *x)
 {
     const fs_sim *sim = x->sim;
     if (!sim->ground)
         return;
-    int n = dSpaceGetNumGeoms(sim->ground), hfield = 0, planes = 0, boxes = 0;
+    int n = dSpaceGetNumGeoms(sim->ground), planes = 0, boxes = 0;
+    if (has_hfield(x)) /* the lattice, whether or not ODE has it as tiles */
+        hfield_geom(x);
     for (int i = 0; i < n; i++) {
         dGeomID g = dSpaceGetGeom(sim->ground, i);
         int cls = dGeomGetClass(g);
-        if (cls == dHeightfieldClass) {
-            if (!hfield++)
-                hfield_geom(x);
-        } else if (cls == dPlaneClass) {
+        if (cls == dPlaneClass) {
             dVector4 r;
             dGeomPlaneGetParams(g, r);
             double pos[3] = {r[3] * r[0], r[3] * r[1], r[3] * r[2]};
@@ -497,10 +501,6 @@ static void ground(exporter *x)
     }
 }
 
-static int has_hfield(const exporter *x)
-{
-    return x->with_scenario && x->sim->ground && fs_terrain_is_heightfield(&x->sc->terrain) && x->sc->terrain.z;
-}
 
 /* MuJoCo's binary hfield file: int32 rows, int32 columns, then rows x columns float32 samples,
  * row 0 at the smallest y (as footsim's lattice), scaled here to [0, 1] of the height range. */

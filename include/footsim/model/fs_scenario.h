@@ -65,6 +65,7 @@ typedef struct fs_scenario_def {
     int check_energy_every;
     /* what a run may skip (the speed benchmark measures both ways) */
     int collide_all;           /* 0: foot shapes against the ground only; 1: every pair, foot-foot too */
+    int heightfield_ode;       /* 0: footsim's own contacts with a heightfield (sim_lattice.h); 1: ODE's */
     double auto_disable_s;     /* > 0: ODE disables bodies slower than rest_speed_m_per_s for this long */
     double min_inertia_kg_m2;  /* > 0: each foot body's inertia raised so that its smallest principal
                                   moment is at least this (fs_sim_build; for QuickStep); 0: off */
