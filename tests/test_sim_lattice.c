@@ -172,7 +172,8 @@ static void test_contacts_exactly_when_overlapping(void)
 }
 
 /* A box resting level on a flat lattice touches it along its whole underside: its four bottom
- * corners are found at the same depth, straight up, and nothing else sits deeper. */
+ * corners are found at the same depth, straight up, and nothing else (each contact carries the
+ * ground's whole stiffness: the vertices under it too would make it stiffer than on a plane). */
 static void test_level_box_on_flat_lattice(void)
 {
     fs_terrain t;
@@ -192,6 +193,7 @@ static void test_level_box_on_flat_lattice(void)
         corners += fabs(fabs(g->c[i].pos[0] - 0.0123) - 0.1) < 1e-12 && fabs(fabs(g->c[i].pos[1] + 0.0047) - 0.04) < 1e-12;
     }
     CHECK(corners == 4);
+    CHECK(g->n == 4); /* flush: held by its corners alone, as on a plane */
     /* lifted clear: nothing */
     dGeomSetPosition(box, 0.0123, -0.0047, 0.004 + 1e-6);
     CHECK(contacts_of(&t, &p)->n == 0);

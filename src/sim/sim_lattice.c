@@ -48,6 +48,13 @@ static int surface(const fs_terrain *t, double x, double y, double *z, double n[
 enum { PATCHES_X = 4, PATCHES_Y = 2, EDGE_PARTS = 2 };
 /* the patches of the top and bottom faces, then one slot for each side face */
 enum { SIDE_SLOTS = 2 * PATCHES_X * PATCHES_Y, BOX_SLOTS = SIDE_SLOTS + 4 };
+/* A vertex under the underside, or a crossing under one of its edges, is a contact only where it
+ * stands deeper than the underside's corners put the surface there (their heights over or under
+ * it, interpolated) by more than this: a sole flush on a plane of the lattice is held by its corners
+ * alone, as on an ODE plane, not by every vertex under it as well (each contact carries the
+ * ground's whole stiffness, so twenty would make it twenty times stiffer). A bump, a ridge or a
+ * plateau under the sole stands deeper and is kept. */
+static const double FLUSH_M = 1e-6;
 
 typedef struct box_frame {
     const dReal *R, *c; /* ODE's rotation (row-major, 4 columns) and centre */
@@ -81,7 +88,7 @@ static int block_below(const fs_terrain *t, long a, long b, const box_frame *bx,
 
 /* The lattice vertices inside the box, each pushed out through the nearer of its top and bottom
  * faces: every one (patch NULL, until g is full) or the deepest of each patch. */
-static void vertices_inside(const fs_terrain *t, dGeomID box, gathered *g, dContactGeom *patch)
+static void vertices_inside(const fs_terrain *t, dGeomID box, gathered *g, dContactGeom *patch, const double *gap)
 {
     dVector3 l;
     dGeomBoxGetLengths(box, l);
@@ -129,6 +136,13 @@ static void vertices_inside(const fs_terrain *t, dGeomID box, gathered *g, dCont
                 ct = &patch[slot];
                 if (ct->depth >= depth)
                     continue;
+                /* on the underside, no deeper than the corners' support there: they hold it */
+                if (gap && axis == 2 && !up) {
+                    double u = (p[0] + bx.h[0]) / (2 * bx.h[0]), v = (p[1] + bx.h[1]) / (2 * bx.h[1]);
+                    double under = (1 - u) * (1 - v) * gap[0] + u * (1 - v) * gap[1] + (1 - u) * v * gap[2] + u * v * gap[3];
+                    if (depth / R[10] <= under + FLUSH_M)
+                        continue;
+                }
             } else {
                 ct = next_contact(g, box);
             }
@@ -142,7 +156,7 @@ static void vertices_inside(const fs_terrain *t, dGeomID box, gathered *g, dCont
     }
 }
 
-void fs_lattice_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g) { vertices_inside(t, box, g, NULL); }
+void fs_lattice_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g) { vertices_inside(t, box, g, NULL, NULL); }
 
 /* The box's corner k (bit 0: +x, bit 1: +y, bit 2: +z) in the world. */
 static void corner(const box_frame *b, int k, double p[3])
@@ -156,7 +170,7 @@ static void corner(const box_frame *b, int k, double p[3])
  * lattice coordinates u, v, each lattice edge from (i, j) to (i, j) + (du, dv)), keeping for each
  * EDGE_PARTS-th of the edge its deepest crossing in part[]. */
 static void edge_family(const fs_terrain *t, const double A[3], const double B[3], int a, int b, int du, int dv,
-                        dContactGeom *part)
+                        const double *gap, dContactGeom *part)
 {
     double ua = (A[0] - t->x0) / t->dx, va = (A[1] - t->y0) / t->dx;
     double ub = (B[0] - t->x0) / t->dx, vb = (B[1] - t->y0) / t->dx;
@@ -174,7 +188,7 @@ static void edge_family(const fs_terrain *t, const double A[3], const double B[3
             continue;
         double z0 = zat(t, i, j), z1 = zat(t, i + du, j + dv);
         double zt = z0 + f * (z1 - z0), zb = A[2] + s * e[2];
-        if (zb >= zt)
+        if (zb >= zt || (gap && zt - zb <= (1 - s) * gap[0] + s * gap[1] + FLUSH_M))
             continue;
         /* the common normal of the two edges, up: moving the box along it by (zt - zb) n_z parts them */
         double et[3] = {du * t->dx, dv * t->dx, z1 - z0};
@@ -213,11 +227,17 @@ void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g)
     dVector3 l;
     dGeomBoxGetLengths(box, l);
     box_frame bx = {dGeomGetRotation(box), dGeomGetPosition(box), {0.5 * l[0], 0.5 * l[1], 0.5 * l[2]}};
-    double p[8][3];
+    double p[8][3], gap[4]; /* the underside's corners' heights under the surface (vertical) */
+    int flush = bx.R[10] > 0; /* the underside faces down, its corners all over the lattice */
     for (int k = 0; k < 8; k++) {
         corner(&bx, k, p[k]);
         double z, n[3];
-        if (!surface(t, p[k][0], p[k][1], &z, n) || p[k][2] >= z)
+        int over = surface(t, p[k][0], p[k][1], &z, n);
+        if (k < 4) {
+            flush &= over;
+            gap[k] = over ? z - p[k][2] : 0;
+        }
+        if (!over || p[k][2] >= z)
             continue;
         dContactGeom *ct = next_contact(g, box);
         if (!ct)
@@ -236,13 +256,15 @@ void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g)
                 continue;
             dContactGeom part[EDGE_PARTS];
             memset(part, 0, sizeof part);
-            edge_family(t, A, B, 1, 0, 0, 1, part);  /* lines u = i: lattice edges along y */
-            edge_family(t, A, B, 0, 1, 1, 0, part);  /* lines v = j: along x */
-            edge_family(t, A, B, 1, -1, 1, 1, part); /* lines u - v = k: the rising diagonals */
+            double ends[2] = {k < 4 ? gap[k] : 0, k < 4 ? gap[k | bit] : 0};
+            const double *under = flush && (k | bit) < 4 ? ends : NULL; /* an edge of the underside */
+            edge_family(t, A, B, 1, 0, 0, 1, under, part);  /* lines u = i: lattice edges along y */
+            edge_family(t, A, B, 0, 1, 1, 0, under, part);  /* lines v = j: along x */
+            edge_family(t, A, B, 1, -1, 1, 1, under, part); /* lines u - v = k: the rising diagonals */
             keep_deepest(g, box, part, EDGE_PARTS);
         }
     dContactGeom patch[BOX_SLOTS];
     memset(patch, 0, sizeof patch);
-    vertices_inside(t, box, g, patch);
+    vertices_inside(t, box, g, patch, flush ? gap : NULL);
     keep_deepest(g, box, patch, BOX_SLOTS);
 }
