@@ -175,8 +175,8 @@ static void edge_family(const fs_terrain *t, const double A[3], const double B[3
     double ua = (A[0] - t->x0) / t->dx, va = (A[1] - t->y0) / t->dx;
     double ub = (B[0] - t->x0) / t->dx, vb = (B[1] - t->y0) / t->dx;
     double wa = a * ua + b * va, wb = a * ub + b * vb;
-    if (wa == wb)
-        return; /* the edge runs along the family's lines: it crosses none */
+    if (wa == wb || !isfinite(wa) || !isfinite(wb))
+        return; /* the edge runs along the family's lines: it crosses none (or the state is lost) */
     double e[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
     for (long w = (long)ceil(fmin(wa, wb)); w <= (long)floor(fmax(wa, wb)); w++) {
         double s = (w - wa) / (wb - wa), u = ua + s * (ub - ua), v = va + s * (vb - va);
