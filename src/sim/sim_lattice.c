@@ -256,8 +256,9 @@ void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g)
                 continue;
             dContactGeom part[EDGE_PARTS];
             memset(part, 0, sizeof part);
-            double ends[2] = {k < 4 ? gap[k] : 0, k < 4 ? gap[k | bit] : 0};
-            const double *under = flush && (k | bit) < 4 ? ends : NULL; /* an edge of the underside */
+            int underside = (k | bit) < 4; /* both ends on the underside */
+            double ends[2] = {underside ? gap[k] : 0, underside ? gap[k | bit] : 0};
+            const double *under = flush && underside ? ends : NULL;
             edge_family(t, A, B, 1, 0, 0, 1, under, part);  /* lines u = i: lattice edges along y */
             edge_family(t, A, B, 0, 1, 1, 0, under, part);  /* lines v = j: along x */
             edge_family(t, A, B, 1, -1, 1, 1, under, part); /* lines u - v = k: the rising diagonals */
