@@ -221,6 +221,15 @@ static void lattice(const fs_terrain *t, double *ox, double *oy, double *dx)
     *dx = img ? t->def.heightmap_pixel_m : t->def.resolution_m;
 }
 
+double fs_terrain_cell(double z00, double z10, double z01, double z11, double fx, double fy, double slope[2])
+{
+    /* the lower triangle (0,0), (1,0), (1,1) or the upper one (0,0), (1,1), (0,1) */
+    double sx = fx >= fy ? z10 - z00 : z11 - z01, sy = fx >= fy ? z11 - z10 : z01 - z00;
+    if (slope)
+        slope[0] = sx, slope[1] = sy;
+    return fx >= fy ? z00 + sx * fx + sy * fy : z00 + sy * fy + sx * fx;
+}
+
 double fs_terrain_function(const fs_terrain *t, double x, double y)
 {
     double h = smooth_part(t, x, y);
@@ -235,8 +244,7 @@ double fs_terrain_function(const fs_terrain *t, double x, double y)
     if (rough_patch(&t->def, i, j, 2, 2, z, &err) != FS_OK)
         return NAN;
     double fx = (x - ox) / dx - i, fy = (y - oy) / dx - j;
-    double r = fx >= fy ? z[0] + (z[1] - z[0]) * fx + (z[3] - z[1]) * fy : z[0] + (z[2] - z[0]) * fy + (z[3] - z[2]) * fx;
-    return h + r;
+    return h + fs_terrain_cell(z[0], z[1], z[2], z[3], fx, fy, NULL);
 }
 
 double fs_terrain_height(const fs_terrain *t, double x, double y)
@@ -253,11 +261,7 @@ double fs_terrain_height(const fs_terrain *t, double x, double y)
     int i = (int)fmin(floor(fi), t->nx - 2), j = (int)fmin(floor(fj), t->ny - 2);
     double fx = gi - (double)(t->i0 + i), fy = gj - (double)(t->j0 + j);
     const double *z = t->z + (size_t)j * t->nx + i;
-    double z00 = z[0], z10 = z[1], z01 = z[t->nx], z11 = z[t->nx + 1];
-    /* each cell is two triangles split along its rising diagonal, as ODE splits it */
-    if (fx >= fy)
-        return z00 + (z10 - z00) * fx + (z11 - z10) * fy;
-    return z00 + (z01 - z00) * fy + (z11 - z01) * fx;
+    return fs_terrain_cell(z[0], z[1], z[t->nx], z[t->nx + 1], fx, fy, NULL);
 }
 
 /* The highest sample of each block (fs_terrain.h). */

@@ -1,4 +1,4 @@
-/* sim_lattice.c: a sphere's and a box's contacts with a heightfield lattice (sim_lattice.h). */
+/* sim_lattice.c: a box's contacts with a heightfield lattice (sim_lattice.h). */
 #include "sim_lattice.h"
 
 #include <math.h>
@@ -16,25 +16,18 @@ static dContactGeom *next_contact(gathered *g, dGeomID shape)
     return c;
 }
 
-/* The surface at (x, y): its height and unit normal (up); 0 outside the lattice. */
+/* The surface at (x, y) (fs_terrain_cell): its height and unit normal (up); 0 outside the lattice. */
 static int surface(const fs_terrain *t, double x, double y, double *z, double n[3])
 {
     double fi = (x - t->x0) / t->dx, fj = (y - t->y0) / t->dx;
     if (!(fi >= 0 && fj >= 0 && fi <= t->nx - 1 && fj <= t->ny - 1))
         return 0;
     long i = (long)fmin(floor(fi), t->nx - 2), j = (long)fmin(floor(fj), t->ny - 2);
-    double fx = fi - (double)i, fy = fj - (double)j;
-    double z00 = zat(t, i, j), z10 = zat(t, i + 1, j), z01 = zat(t, i, j + 1), z11 = zat(t, i + 1, j + 1);
-    double gx, gy; /* the triangle's slopes, rise per cell */
-    if (fx >= fy) {
-        gx = z10 - z00, gy = z11 - z10;
-        *z = z00 + gx * fx + gy * fy;
-    } else {
-        gx = z11 - z01, gy = z01 - z00;
-        *z = z00 + gx * fx + gy * fy;
-    }
-    double s = t->dx, len = sqrt(gx * gx + gy * gy + s * s);
-    n[0] = -gx / len, n[1] = -gy / len, n[2] = s / len;
+    double g[2]; /* the triangle's rise per cell along x and y */
+    *z = fs_terrain_cell(zat(t, i, j), zat(t, i + 1, j), zat(t, i, j + 1), zat(t, i + 1, j + 1), fi - (double)i,
+                         fj - (double)j, g);
+    double len = sqrt(g[0] * g[0] + g[1] * g[1] + t->dx * t->dx);
+    n[0] = -g[0] / len, n[1] = -g[1] / len, n[2] = t->dx / len;
     return 1;
 }
 
@@ -61,6 +54,13 @@ typedef struct box_frame {
     double h[3];        /* half lengths */
 } box_frame;
 
+static box_frame frame_of(dGeomID box)
+{
+    dVector3 l;
+    dGeomBoxGetLengths(box, l);
+    return (box_frame){dGeomGetRotation(box), dGeomGetPosition(box), {0.5 * l[0], 0.5 * l[1], 0.5 * l[2]}};
+}
+
 /* w (a point relative to the box's centre) in the box's frame: R^T w */
 static void to_box(const box_frame *b, const double w[3], double p[3])
 {
@@ -86,13 +86,14 @@ static int block_below(const fs_terrain *t, long a, long b, const box_frame *bx,
     return bound < -bx->h[2] - 1e-9;
 }
 
-/* The lattice vertices inside the box, each pushed out through the nearer of its top and bottom
- * faces: every one (patch NULL, until g is full) or the deepest of each patch. */
-static void vertices_inside(const fs_terrain *t, dGeomID box, gathered *g, dContactGeom *patch, const double *gap)
+/* The lattice vertices inside the box. patch NULL: every one (until g is full), pushed out
+ * through the nearer of its top and bottom faces; else through its nearest face, the deepest of
+ * each patch (BOX_SLOTS), and with the underside's corner gaps those of the underside only where
+ * they stand deeper than the corners (FLUSH_M). */
+static void vertices_inside(const fs_terrain *t, dGeomID box, const box_frame *frame, gathered *g,
+                            dContactGeom *patch, const double *gap)
 {
-    dVector3 l;
-    dGeomBoxGetLengths(box, l);
-    box_frame bx = {dGeomGetRotation(box), dGeomGetPosition(box), {0.5 * l[0], 0.5 * l[1], 0.5 * l[2]}};
+    const box_frame bx = *frame;
     const dReal *R = bx.R, *c = bx.c;
     double aabb[6];
     dGeomGetAABB(box, aabb);
@@ -156,7 +157,11 @@ static void vertices_inside(const fs_terrain *t, dGeomID box, gathered *g, dCont
     }
 }
 
-void fs_lattice_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g) { vertices_inside(t, box, g, NULL, NULL); }
+void fs_lattice_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g)
+{
+    box_frame bx = frame_of(box);
+    vertices_inside(t, box, &bx, g, NULL, NULL);
+}
 
 /* The box's corner k (bit 0: +x, bit 1: +y, bit 2: +z) in the world. */
 static void corner(const box_frame *b, int k, double p[3])
@@ -224,9 +229,7 @@ static void keep_deepest(gathered *g, dGeomID box, const dContactGeom *found, in
 
 void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g)
 {
-    dVector3 l;
-    dGeomBoxGetLengths(box, l);
-    box_frame bx = {dGeomGetRotation(box), dGeomGetPosition(box), {0.5 * l[0], 0.5 * l[1], 0.5 * l[2]}};
+    box_frame bx = frame_of(box);
     double p[8][3], gap[4]; /* the underside's corners' heights under the surface (vertical) */
     int flush = bx.R[10] > 0; /* the underside faces down, its corners all over the lattice */
     for (int k = 0; k < 8; k++) {
@@ -266,6 +269,6 @@ void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g)
         }
     dContactGeom patch[BOX_SLOTS];
     memset(patch, 0, sizeof patch);
-    vertices_inside(t, box, g, patch, flush ? gap : NULL);
+    vertices_inside(t, box, &bx, g, patch, flush ? gap : NULL);
     keep_deepest(g, box, patch, BOX_SLOTS);
 }

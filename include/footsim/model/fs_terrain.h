@@ -90,6 +90,12 @@ fs_status fs_terrain_redraw(fs_terrain *t, fs_error *err);
  * cannot be had). */
 fs_status fs_terrain_copy(fs_terrain *dst, const fs_terrain *src, fs_error *err);
 
+/* The surface over one lattice cell whose corners stand at z00 (its origin), z10 (+x), z01 (+y)
+ * and z11, at fractions fx and fy (0 to 1) across it: two triangles split along the rising
+ * diagonal, as ODE splits a heightfield's cell. slope, unless NULL, gets the triangle's rise per
+ * cell along x and y. Every evaluation of the lattice's surface goes through this. */
+double fs_terrain_cell(double z00, double z10, double z01, double z11, double fx, double fy, double slope[2]);
+
 /* The surface ODE collides with, at (x, y), m. */
 double fs_terrain_height(const fs_terrain *t, double x, double y);
 
