@@ -25,7 +25,7 @@ static void cross3(const double *a, const double *b, double *c)
 
 /* Whether triangle v[3] meets the box (centre c, unit axes ax[3], half lengths h): no separating
  * axis among the box's three, the triangle's normal and the nine crosses of their edges. */
-static int triangle_meets_box(double v[3][3], const double c[3], double ax[3][3], const double h[3])
+static int triangle_meets_box(double v[3][3], const double c[3], const double ax[3][3], const double h[3])
 {
     double w[3][3], e[3][3], axes[13][3];
     int n = 0;
@@ -113,8 +113,8 @@ static int overlaps(const fs_terrain *t, const pose *p, int *buried)
             double lower[3][3], upper[3][3];
             memcpy(lower[0], a, sizeof a), memcpy(lower[1], b, sizeof b), memcpy(lower[2], cc, sizeof cc);
             memcpy(upper[0], a, sizeof a), memcpy(upper[1], cc, sizeof cc), memcpy(upper[2], e, sizeof e);
-            meets |= triangle_meets_box(lower, p->c, (double(*)[3])p->ax, p->h) ||
-                     triangle_meets_box(upper, p->c, (double(*)[3])p->ax, p->h);
+            meets |= triangle_meets_box(lower, p->c, p->ax, p->h) ||
+                     triangle_meets_box(upper, p->c, p->ax, p->h);
             *buried |= a[2] > top;
         }
     return meets || below;
