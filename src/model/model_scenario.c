@@ -89,9 +89,9 @@ const fs_key fs_scenario_keys[] = {
      "ground: each foot shape against the terrain only; all: every pair of shapes, foot against foot too "
      "(slower; what footsim bench speed compares)"},
     {"run", "heightfield_contacts", FS_KEY_CHOICE, F(heightfield_ode), 0, 0, 0, 0, "footsim|ode", "", "footsim",
-     "a sole (box) against a heightfield: footsim's own test (its corners, edges and the lattice's vertices inside it, "
-     "a few a face and an edge: docs/model.md) or ODE's, with every vertex inside the box added (slower; spheres "
-     "always use ODE's)"},
+     "a foot shape against a heightfield: footsim's own tests (a sole's corners, edges and the lattice's vertices "
+     "inside it, a few a face and an edge; a sphere's nearest points, one a face, edge or corner it rests on: "
+     "docs/model.md) or ODE's, with every vertex inside a box added (slower)"},
     NUM("run", "auto_disable_s", auto_disable_s, 0, 100, 0, "s", "0",
         "0: off; else ODE stops stepping a body slower than rest_speed_m_per_s (turning slower than that "
         "over 1 cm) for this long"),

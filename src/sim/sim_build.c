@@ -462,9 +462,9 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         /* a hash space: a heightfield comes as many tiles */
         sim->ground = dHashSpaceCreate(0);
         int ok = 1;
-        /* a heightfield is ODE geometry only when ODE tests a shape against it: a sphere, or
-           any shape with run.heightfield_contacts = ode (a box's own test: sim_lattice.h) */
-        if (!fs_terrain_is_heightfield(&sc->terrain) || s->heightfield_ode || sim->geom->nspheres > 0)
+        /* a heightfield is ODE geometry only when ODE tests the shapes against it
+           (run.heightfield_contacts = ode; footsim's own tests: sim_lattice.h) */
+        if (!fs_terrain_is_heightfield(&sc->terrain) || s->heightfield_ode)
             sim->heightfield = fs_ground_build(sim->ground, &sc->terrain, s->tile_cells, &ok);
         if (!ok)
             return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the terrain", sc->path);

@@ -1,5 +1,5 @@
-/* sim_contacts.c: a step's contacts: each foot shape against the ground (a box on a heightfield by
- * footsim's own test, sim_lattice.h; everything else by ODE's), near-duplicates merged and the
+/* sim_contacts.c: a step's contacts: each foot shape against the ground (on a heightfield by
+ * footsim's own tests, sim_lattice.h; on a plane or steps by ODE's), near-duplicates merged and the
  * deepest kept, made into contact joints. */
 #include "sim_internal.h"
 
@@ -213,8 +213,11 @@ void fs_sim_collide(fs_sim *sim)
         g->n = 0;
         fs_sim_lap(sim, FS_STAGE_CONTACTS);
         int box = dGeomGetClass(sim->shape[s]) == dBoxClass, from_ode;
-        if (t->z && box && !sim->sc->def.heightfield_ode) {
-            fs_lattice_box_contacts(t, sim->shape[s], g);
+        if (t->z && !sim->sc->def.heightfield_ode) {
+            if (box)
+                fs_lattice_box_contacts(t, sim->shape[s], g);
+            else
+                fs_lattice_sphere_contacts(t, sim->shape[s], g);
             from_ode = g->n; /* footsim's own code: timed as contacts */
         } else {
             dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, g, gather);

@@ -272,3 +272,168 @@ void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g)
     vertices_inside(t, box, &bx, g, patch, flush ? gap : NULL);
     keep_deepest(g, box, patch, BOX_SLOTS);
 }
+
+/* ---- a sphere ------------------------------------------------------------------------------- */
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* The point q of triangle (v[0], v[1], v[2]) nearest p, and which of its corners span the feature q
+ * lies on (bit k: v[k]; 7 the face, two bits an edge, one a corner), by the Voronoi regions of its
+ * corners, edges and face in turn. */
+static int nearest_on_triangle(const double p[3], const double v[3][3], double q[3])
+{
+    double ab[3], ac[3], ap[3], bp[3], cp[3];
+    for (int k = 0; k < 3; k++) {
+        ab[k] = v[1][k] - v[0][k], ac[k] = v[2][k] - v[0][k];
+        ap[k] = p[k] - v[0][k], bp[k] = p[k] - v[1][k], cp[k] = p[k] - v[2][k];
+    }
+    double d1 = dot3(ab, ap), d2 = dot3(ac, ap), d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+    double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+    double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    double s = 0, u = 0; /* q = v0 + s ab + u ac */
+    int mask;
+    if (d1 <= 0 && d2 <= 0)
+        mask = 1;
+    else if (d3 >= 0 && d4 <= d3)
+        mask = 2, s = 1;
+    else if (d6 >= 0 && d5 <= d6)
+        mask = 4, u = 1;
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        mask = 3, s = d1 / (d1 - d3);
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        mask = 5, u = d2 / (d2 - d6);
+    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        mask = 6, u = (d4 - d3) / ((d4 - d3) + (d5 - d6)), s = 1 - u;
+    else
+        mask = 7, s = vb / (va + vb + vc), u = vc / (va + vb + vc);
+    for (int k = 0; k < 3; k++)
+        q[k] = v[0][k] + s * ab[k] + u * ac[k];
+    return mask;
+}
+
+/* A triangle of the lattice near a sphere: the point of it nearest the centre, that point's
+ * squared distance, the triangle's corners (lattice indices) and the feature (corner bits) the
+ * point lies on. */
+typedef struct near_point {
+    double q[3], d2;
+    long corner[3];
+    int feature;
+} near_point;
+
+/* Whether triangle a holds b's nearest point's feature (has every corner that spans it). */
+static int holds(const near_point *a, const near_point *b)
+{
+    for (int k = 0; k < 3; k++) {
+        if (!(b->feature & 1 << k))
+            continue;
+        long id = b->corner[k];
+        if (a->corner[0] != id && a->corner[1] != id && a->corner[2] != id)
+            return 0;
+    }
+    return 1;
+}
+
+/* The lattice indices of the corners spanning p's feature, ascending; how many. */
+static int feature_corners(const near_point *p, long id[3])
+{
+    int m = 0;
+    for (int k = 0; k < 3; k++)
+        if (p->feature & 1 << k) {
+            int at = m++;
+            for (; at > 0 && id[at - 1] > p->corner[k]; at--)
+                id[at] = id[at - 1];
+            id[at] = p->corner[k];
+        }
+    return m;
+}
+
+/* Whether a and b name the same feature, so the same point. */
+static int same_feature(const near_point *a, const near_point *b)
+{
+    long ia[3], ib[3];
+    int m = feature_corners(a, ia);
+    if (m != feature_corners(b, ib))
+        return 0;
+    for (int k = 0; k < m; k++)
+        if (ia[k] != ib[k])
+            return 0;
+    return 1;
+}
+
+enum { SPHERE_NEAR_MAX = 256 };
+
+void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g)
+{
+    const dReal *c = dGeomGetPosition(sphere);
+    const double r = dGeomSphereGetRadius(sphere);
+    if (!(c[2] - r <= t->zmax))
+        return; /* above every sample (or the state is lost) */
+    double zs, ns[3];
+    if (surface(t, c[0], c[1], &zs, ns) && c[2] < zs) {
+        /* The centre under the surface (the sphere went through it in a step): out along the normal
+         * above it, as deep as with the centre on the surface. Deeper, the contact's spring would
+         * hold energy the sphere never gave it (5 mm more: 110 J at the default sole's and
+         * ground's stiffnesses in series, 1e7 and 1e8 N/m) and fling the foot. */
+        dContactGeom *ct = next_contact(g, sphere);
+        if (!ct)
+            return;
+        for (int k = 0; k < 3; k++)
+            ct->normal[k] = ns[k], ct->pos[k] = c[k] - r * ns[k];
+        ct->depth = r;
+        return;
+    }
+    /* each triangle within r of the centre: its nearest point */
+    near_point near[SPHERE_NEAR_MAX];
+    int n = 0;
+    long i0 = (long)floor((c[0] - r - t->x0) / t->dx), i1 = (long)floor((c[0] + r - t->x0) / t->dx);
+    long j0 = (long)floor((c[1] - r - t->y0) / t->dx), j1 = (long)floor((c[1] + r - t->y0) / t->dx);
+    i0 = i0 > 0 ? i0 : 0, j0 = j0 > 0 ? j0 : 0;
+    i1 = i1 < t->nx - 2 ? i1 : t->nx - 2, j1 = j1 < t->ny - 2 ? j1 : t->ny - 2;
+    const double bottom = c[2] - r;
+    for (long j = j0; j <= j1; j++)
+        for (long i = i0; i <= i1; i++) {
+            double z00 = zat(t, i, j), z10 = zat(t, i + 1, j), z01 = zat(t, i, j + 1), z11 = zat(t, i + 1, j + 1);
+            if (fmax(fmax(z00, z10), fmax(z01, z11)) < bottom)
+                continue; /* the cell lies wholly below the sphere */
+            double x = t->x0 + i * t->dx, y = t->y0 + j * t->dx, X = x + t->dx, Y = y + t->dx;
+            long id00 = j * t->nx + i, id10 = id00 + 1, id01 = id00 + t->nx, id11 = id01 + 1;
+            /* the cell's two triangles, as fs_terrain_cell splits it: (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1) */
+            const double tri[2][3][3] = {{{x, y, z00}, {X, y, z10}, {X, Y, z11}}, {{x, y, z00}, {X, Y, z11}, {x, Y, z01}}};
+            const long ids[2][3] = {{id00, id10, id11}, {id00, id11, id01}};
+            for (int h = 0; h < 2 && n < SPHERE_NEAR_MAX; h++) {
+                near_point *p = &near[n];
+                p->feature = nearest_on_triangle(c, tri[h], p->q);
+                double w[3] = {c[0] - p->q[0], c[1] - p->q[1], c[2] - p->q[2]};
+                p->d2 = dot3(w, w);
+                if (!(p->d2 < r * r))
+                    continue;
+                memcpy(p->corner, ids[h], sizeof p->corner);
+                n++;
+            }
+        }
+    /* A contact at each point nearest the centre among the points around it: the distance from the
+     * centre, over the surface, at a local minimum. A triangle's nearest point is one unless a
+     * triangle that holds its feature (the neighbour across its edge, or around its corner) comes
+     * nearer; of the triangles that find the same edge or corner, the first stands for all. So a
+     * sphere resting on a face, an edge or a corner touches once, and one in a hollow once on each
+     * side. The one nearest of all is never passed over. */
+    for (int a = 0; a < n; a++) {
+        int kept = 1;
+        for (int b = 0; b < n && kept; b++)
+            if (b != a && holds(&near[b], &near[a]))
+                kept = !(near[b].d2 < near[a].d2 * (1 - 1e-12) || (b < a && same_feature(&near[a], &near[b])));
+        if (!kept)
+            continue;
+        double d = sqrt(near[a].d2), u[3];
+        for (int k = 0; k < 3; k++)
+            u[k] = (c[k] - near[a].q[k]) / d;
+        if (!(d > 0) || u[2] <= 0)
+            continue; /* touching the centre, or from beneath: no direction out of the ground */
+        dContactGeom *ct = next_contact(g, sphere);
+        if (!ct)
+            return;
+        for (int k = 0; k < 3; k++)
+            ct->normal[k] = u[k], ct->pos[k] = c[k] - r * u[k];
+        ct->depth = r - d;
+    }
+}

@@ -1,6 +1,6 @@
 /* sim_lattice.h (private to the sim layer): footsim's own contacts of a box (a sole) with a
- * heightfield terrain's lattice, in place of ODE's box-heightfield test (run.heightfield_contacts;
- * spheres keep ODE's).
+ * heightfield terrain's lattice, and of a sphere (a toe), in place of ODE's tests
+ * (run.heightfield_contacts).
  *
  * The surface is fs_terrain_height's: each lattice cell split along its rising diagonal into two
  * triangles; outside the cropped lattice there is no ground, as there are no tiles there. Every
@@ -16,6 +16,11 @@
  * few contacts a face and an edge, spread over them, however fine the lattice, where ODE's test
  * returns one for every triangle plane a corner is under.
  *
+ * A sphere gets a contact at each point of the surface nearest its centre among those around it (a
+ * local minimum of the distance over the surface) closer than its radius: one on a face, an edge or
+ * a corner, one on each side of a hollow, where ODE's test returns one for every triangle it
+ * reaches; a centre under the surface is pushed out along the normal above it.
+ *
  * fs_lattice_vertex_contacts is what footsim adds to ODE's box test (run.heightfield_contacts =
  * ode), which misses the lattice's vertices poking up through a box's faces: every vertex inside
  * the box (until g is full), pushed out through the nearer of its top and bottom faces. */
@@ -25,6 +30,7 @@
 #include "sim_internal.h"
 
 void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g);
+void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g);
 void fs_lattice_vertex_contacts(const fs_terrain *t, dGeomID box, gathered *g);
 
 #endif
