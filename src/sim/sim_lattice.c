@@ -2,6 +2,7 @@
 #include "sim_lattice.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 static double zat(const fs_terrain *t, long i, long j) { return t->z[(size_t)j * t->nx + i]; }
@@ -317,6 +318,7 @@ static int nearest_on_triangle(const double p[3], const double v[3][3], double q
 typedef struct near_point {
     double q[3], d2;
     long corner[3];
+    long i, j; /* its cell: triangles that share a corner lie in cells a cell apart at most */
     int feature;
 } near_point;
 
@@ -389,13 +391,25 @@ void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g
     long j0 = (long)floor((c[1] - r - t->y0) / t->dx), j1 = (long)floor((c[1] + r - t->y0) / t->dx);
     i0 = i0 > 0 ? i0 : 0, j0 = j0 > 0 ? j0 : 0;
     i1 = i1 < t->nx - 2 ? i1 : t->nx - 2, j1 = j1 < t->ny - 2 ? j1 : t->ny - 2;
-    const double bottom = c[2] - r;
-    for (long j = j0; j <= j1; j++)
+    for (long j = j0; j <= j1; j++) {
+        double y = t->y0 + j * t->dx, Y = y + t->dx;
+        double gy = c[1] < y ? y - c[1] : c[1] > Y ? c[1] - Y : 0; /* the row's nearest y to the centre's */
         for (long i = i0; i <= i1; i++) {
+            double x = t->x0 + i * t->dx, X = x + t->dx;
+            double gx = c[0] < x ? x - c[0] : c[0] > X ? c[0] - X : 0;
+            /* r^2 - rho^2: rho the cell's nearest horizontal distance from the centre. The sphere's
+               underside there is sqrt(that) below the centre, and lower everywhere else over the
+               cell: a cell under it throughout has no point within r (the same triangles are
+               tried as without this, in the same order) */
+            double reach2 = r * r - gx * gx - gy * gy;
+            if (reach2 <= 0)
+                continue;
             double z00 = zat(t, i, j), z10 = zat(t, i + 1, j), z01 = zat(t, i, j + 1), z11 = zat(t, i + 1, j + 1);
-            if (fmax(fmax(z00, z10), fmax(z01, z11)) < bottom)
-                continue; /* the cell lies wholly below the sphere */
-            double x = t->x0 + i * t->dx, y = t->y0 + j * t->dx, X = x + t->dx, Y = y + t->dx;
+            double top = z00 > z10 ? z00 : z10;
+            top = top > z01 ? top : z01;
+            top = top > z11 ? top : z11;
+            if (top < c[2] && (c[2] - top) * (c[2] - top) > reach2)
+                continue;
             long id00 = j * t->nx + i, id10 = id00 + 1, id01 = id00 + t->nx, id11 = id01 + 1;
             /* the cell's two triangles, as fs_terrain_cell splits it: (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1) */
             const double tri[2][3][3] = {{{x, y, z00}, {X, y, z10}, {X, Y, z11}}, {{x, y, z00}, {X, Y, z11}, {x, Y, z01}}};
@@ -408,9 +422,11 @@ void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g
                 if (!(p->d2 < r * r))
                     continue;
                 memcpy(p->corner, ids[h], sizeof p->corner);
+                p->i = i, p->j = j;
                 n++;
             }
         }
+    }
     /* A contact at each point nearest the centre among the points around it: the distance from the
      * centre, over the surface, at a local minimum. A triangle's nearest point is one unless a
      * triangle that holds its feature (the neighbour across its edge, or around its corner) comes
@@ -420,7 +436,8 @@ void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g
     for (int a = 0; a < n; a++) {
         int kept = 1;
         for (int b = 0; b < n && kept; b++)
-            if (b != a && holds(&near[b], &near[a]))
+            if (b != a && labs(near[b].i - near[a].i) <= 1 && labs(near[b].j - near[a].j) <= 1 &&
+                holds(&near[b], &near[a]))
                 kept = !(near[b].d2 < near[a].d2 * (1 - 1e-12) || (b < a && same_feature(&near[a], &near[b])));
         if (!kept)
             continue;
