@@ -1,6 +1,6 @@
 /* cli_bench_speed.c: 'footsim bench speed': steps per second and real-time factor of each shipped
- * scenario on one core, where a step's time goes (ODE's collision, ODE's step, footsim's own code:
- * fs_observer.h), and what each thing a run skips saves, each measured with and without.
+ * scenario on one core, where a step's time goes (collision, by ODE's tests or footsim's own on a
+ * heightfield; ODE's step; footsim's own code besides: fs_observer.h), and what each thing a run skips saves, each measured with and without.
  *
  * Every time is the wall time of building the world, stepping and measuring (what 'footsim run',
  * 'trial' or 'walk' spends between reading its files and writing its results), the median of
@@ -425,7 +425,7 @@ static double stage_pct(const fs_profile *p, fs_stage s) { return 100 * p->stage
 /* A scene's figures as the tables give them. */
 typedef struct figures {
     double steps_per_s, rtf, us_per_step;
-    double collision_pct, ode_pct, own_pct; /* own: everything but ODE's collision and step */
+    double collision_pct, ode_pct, own_pct; /* own: everything but collision and ODE's step */
 } figures;
 
 static figures figures_of(const timing *t)
@@ -554,7 +554,7 @@ static void speed_gp(FILE *f)
                "plot 'speed.csv' using 8:xtic(1) skip 4 title 'steps/s' lc rgb '#4477aa'\n"
                "unset logscale y\nset title 'share of a step'\nset ylabel '%%'\nset yrange [0:100]\n"
                "set style histogram rowstacked\nset key outside right\n"
-               "plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision (ODE)' lc rgb '#ddaa33', "
+               "plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision' lc rgb '#ddaa33', "
                "'' using 13 skip 4 title 'ODE step' lc rgb '#4477aa', "
                "'' using 14 skip 4 title 'footsim own code' lc rgb '#bb5566'\n"
                "unset multiplot\n");

@@ -218,7 +218,8 @@ void fs_sim_collide(fs_sim *sim)
                 fs_lattice_box_contacts(t, sim->shape[s], g);
             else
                 fs_lattice_sphere_contacts(t, sim->shape[s], g);
-            from_ode = g->n; /* footsim's own code: timed as contacts */
+            fs_sim_lap(sim, FS_STAGE_COLLISION); /* footsim's own test, but collision all the same */
+            from_ode = g->n;
         } else {
             dSpaceCollide2(sim->shape[s], (dGeomID)sim->ground, g, gather);
             fs_sim_lap(sim, FS_STAGE_COLLISION);

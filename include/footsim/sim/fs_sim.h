@@ -118,8 +118,8 @@ double fs_sim_load_now_N(const fs_sim *sim);
 typedef enum fs_stage {
     FS_STAGE_LOADS,     /* the load ramped and applied */
     FS_STAGE_SPRINGS,   /* spring-dampers prepared for the step */
-    FS_STAGE_COLLISION, /* ODE: foot shapes against the ground space */
-    FS_STAGE_CONTACTS,  /* box vertex contacts, merging and selecting, contact joints made */
+    FS_STAGE_COLLISION, /* foot shapes against the ground: ODE's tests, or footsim's own on a heightfield */
+    FS_STAGE_CONTACTS,  /* merging and selecting contacts, contact joints made */
     FS_STAGE_ODE,       /* ODE: the step */
     FS_STAGE_CHECK,     /* the state checks (fs_check.h) */
     FS_STAGE_CALLER,    /* between steps: the caller's own work */
