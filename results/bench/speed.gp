@@ -19,5 +19,5 @@ set ylabel '%'
 set yrange [0:100]
 set style histogram rowstacked
 set key outside right
-plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision (ODE)' lc rgb '#ddaa33', '' using 13 skip 4 title 'ODE step' lc rgb '#4477aa', '' using 14 skip 4 title 'footsim own code' lc rgb '#bb5566'
+plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision' lc rgb '#ddaa33', '' using 13 skip 4 title 'ODE step' lc rgb '#4477aa', '' using 14 skip 4 title 'footsim own code' lc rgb '#bb5566'
 unset multiplot
