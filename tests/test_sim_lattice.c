@@ -429,5 +429,32 @@ static void test_sphere_on_plane_valley_and_ridge(void)
     fs_terrain_free(&t);
 }
 
+/* A sphere sunk to near its centre on a lattice far finer than it: thousands of triangles in reach,
+ * more than the test keeps (the nearest ones are kept), and still the one contact straight up, as
+ * deep as it sank; its centre just on the surface: as deep as its radius. */
+static void test_sphere_on_fine_lattice(void)
+{
+    fs_terrain t;
+    fs_error err;
+    const char *set[] = {"rough.rms_m=0", "rough.resolution_m=0.0002"};
+    REQUIRE(fs_terrain_load("terrains/rough.ini", set, 2, &t, &err) == FS_OK);
+    REQUIRE(fs_terrain_crop(&t, -0.02, 0.02, -0.02, 0.02, &err) == FS_OK);
+    const double r = 0.006, z0 = zat(&t, 0, 0);
+    dGeomID sphere = dCreateSphere(0, r);
+    const double above[] = {1e-4, 0};
+    for (int k = 0; k < 2; k++) {
+        dGeomSetPosition(sphere, 0.00123, -0.00047, z0 + above[k]);
+        const gathered *g = contacts_with(&t, sphere);
+        CHECK(g->n == 1);
+        if (g->n == 1) {
+            CHECK_NEAR(g->c[0].depth, r - above[k], 1e-12);
+            CHECK_NEAR(g->c[0].normal[2], 1, 1e-12);
+        }
+    }
+    dGeomDestroy(sphere);
+    fs_terrain_free(&t);
+}
+
 FS_TEST_MAIN(TEST(test_contacts_exactly_when_overlapping), TEST(test_level_box_on_flat_lattice),
-             TEST(test_sphere_contacts_exactly_when_overlapping), TEST(test_sphere_on_plane_valley_and_ridge))
+             TEST(test_sphere_contacts_exactly_when_overlapping), TEST(test_sphere_on_plane_valley_and_ridge),
+             TEST(test_sphere_on_fine_lattice))

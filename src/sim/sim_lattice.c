@@ -362,16 +362,32 @@ static int same_feature(const near_point *a, const near_point *b)
     return 1;
 }
 
+/* The triangles' nearest points a sphere keeps: past this many (a lattice much finer than the
+ * sphere, or a sphere sunk deep), the nearest this many. Every triangle that could pass a kept
+ * point over is nearer than it, so kept too: the contacts found are the nearest local minima. */
 enum { SPHERE_NEAR_MAX = 256 };
+
+/* A slot for a new nearest point at squared distance d2: the next free one, or when all are taken
+ * the farthest, if it is farther than d2; NULL when d2 would be the farthest. */
+static near_point *near_slot(near_point *near, int *n, double d2)
+{
+    if (*n < SPHERE_NEAR_MAX)
+        return &near[(*n)++];
+    int far = 0;
+    for (int k = 1; k < SPHERE_NEAR_MAX; k++)
+        if (near[k].d2 > near[far].d2)
+            far = k;
+    return near[far].d2 > d2 ? &near[far] : NULL;
+}
 
 void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g)
 {
     const dReal *c = dGeomGetPosition(sphere);
     const double r = dGeomSphereGetRadius(sphere);
-    if (!(c[2] - r <= t->zmax))
+    if (!(c[2] - r <= t->zmax) || !isfinite(c[0]) || !isfinite(c[1]))
         return; /* above every sample (or the state is lost) */
     double zs, ns[3];
-    if (surface(t, c[0], c[1], &zs, ns) && c[2] < zs) {
+    if (surface(t, c[0], c[1], &zs, ns) && c[2] <= zs) {
         /* The centre under the surface (the sphere went through it in a step): out along the normal
          * above it, as deep as with the centre on the surface. Deeper, the contact's spring would
          * hold energy the sphere never gave it (5 mm more: 110 J at the default sole's and
@@ -387,10 +403,12 @@ void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g
     /* each triangle within r of the centre: its nearest point */
     near_point near[SPHERE_NEAR_MAX];
     int n = 0;
-    long i0 = (long)floor((c[0] - r - t->x0) / t->dx), i1 = (long)floor((c[0] + r - t->x0) / t->dx);
-    long j0 = (long)floor((c[1] - r - t->y0) / t->dx), j1 = (long)floor((c[1] + r - t->y0) / t->dx);
-    i0 = i0 > 0 ? i0 : 0, j0 = j0 > 0 ? j0 : 0;
-    i1 = i1 < t->nx - 2 ? i1 : t->nx - 2, j1 = j1 < t->ny - 2 ? j1 : t->ny - 2;
+    /* the cells under the sphere's square, clipped to the lattice before any cast */
+    double fi0 = fmax(0, floor((c[0] - r - t->x0) / t->dx)), fi1 = fmin(t->nx - 2, floor((c[0] + r - t->x0) / t->dx));
+    double fj0 = fmax(0, floor((c[1] - r - t->y0) / t->dx)), fj1 = fmin(t->ny - 2, floor((c[1] + r - t->y0) / t->dx));
+    if (!(fi0 <= fi1 && fj0 <= fj1))
+        return;
+    const long i0 = (long)fi0, i1 = (long)fi1, j0 = (long)fj0, j1 = (long)fj1;
     for (long j = j0; j <= j1; j++) {
         double y = t->y0 + j * t->dx, Y = y + t->dx;
         double gy = c[1] < y ? y - c[1] : c[1] > Y ? c[1] - Y : 0; /* the row's nearest y to the centre's */
@@ -414,16 +432,18 @@ void fs_lattice_sphere_contacts(const fs_terrain *t, dGeomID sphere, gathered *g
             /* the cell's two triangles, as fs_terrain_cell splits it: (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1) */
             const double tri[2][3][3] = {{{x, y, z00}, {X, y, z10}, {X, Y, z11}}, {{x, y, z00}, {X, Y, z11}, {x, Y, z01}}};
             const long ids[2][3] = {{id00, id10, id11}, {id00, id11, id01}};
-            for (int h = 0; h < 2 && n < SPHERE_NEAR_MAX; h++) {
-                near_point *p = &near[n];
-                p->feature = nearest_on_triangle(c, tri[h], p->q);
-                double w[3] = {c[0] - p->q[0], c[1] - p->q[1], c[2] - p->q[2]};
-                p->d2 = dot3(w, w);
-                if (!(p->d2 < r * r))
+            for (int h = 0; h < 2; h++) {
+                near_point found;
+                found.feature = nearest_on_triangle(c, tri[h], found.q);
+                double w[3] = {c[0] - found.q[0], c[1] - found.q[1], c[2] - found.q[2]};
+                found.d2 = dot3(w, w);
+                if (!(found.d2 < r * r))
                     continue;
-                memcpy(p->corner, ids[h], sizeof p->corner);
-                p->i = i, p->j = j;
-                n++;
+                memcpy(found.corner, ids[h], sizeof found.corner);
+                found.i = i, found.j = j;
+                near_point *p = near_slot(near, &n, found.d2);
+                if (p)
+                    *p = found;
             }
         }
     }
