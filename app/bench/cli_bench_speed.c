@@ -1,6 +1,7 @@
 /* cli_bench_speed.c: 'footsim bench speed': steps per second and real-time factor of each shipped
  * scenario on one core, where a step's time goes (collision, by ODE's tests or footsim's own on a
- * heightfield; ODE's step; footsim's own code besides: fs_observer.h), and what each thing a run skips saves, each measured with and without.
+ * heightfield; ODE's step; footsim's own code besides: fs_observer.h), and what each thing a run
+ * skips saves, each measured with and without.
  *
  * Every time is the wall time of building the world, stepping and measuring (what 'footsim run',
  * 'trial' or 'walk' spends between reading its files and writing its results), the median of
