@@ -1,6 +1,7 @@
 /* Determinism: the static-load scenario's whole trajectory hashes to the value committed in
  * tests/determinism_static_load.txt, and a landing trial's state after every step to
- * tests/determinism_landing.txt. A change of the physics, the solver settings, the compiler's
+ * tests/determinism_landing.txt (on a plane: ODE's contacts) and, on rough ground (footsim's own
+ * heightfield contacts, both feet), to tests/determinism_landing_rough.txt. A change of the physics, the solver settings, the compiler's
  * floating-point contraction or the ODE build shows up here; if the change is meant, rewrite the
  * files with FS_HASH_UPDATE=1 build/tests/test_engine_determinism (from the source folder) and say
  * why in the commit. (That the same inputs give the same bits in one build is tested directly in
@@ -90,6 +91,24 @@ static void landing_trial_hashes_to_its_committed_value(void)
     REQUIRE(fs_trial_run("scenarios/landing_trial.ini", NULL, 0, 1, &obs, &r, &err) == FS_OK);
     CHECK(r.steps > 1000);
     check_hash("tests/determinism_landing.txt", "landing trial", h);
+}
+
+/* The same on rough ground, for each foot (seed 4: the biomimetic foot under drop_weight lands,
+ * the flat foot's box rocks on the roughness), their states hashed one after the other into one
+ * value: footsim's own sphere and box contacts with a heightfield (sim_lattice.c). */
+static void rough_landings_hash_to_their_committed_value(void)
+{
+    uint64_t h = 1469598103934665603ULL;
+    fs_run_observer obs = {.interval_s = 1e-12, .fn = hash_state, .user = &h};
+    const char *feet[] = {"scenario.design=feet/biomimetic.ini", "scenario.design=feet/flat.ini"};
+    for (int k = 0; k < 2; k++) {
+        const char *set[] = {"scenario.terrain=../terrains/rough.ini", "robot.design=robots/drop_weight.ini", feet[k]};
+        fs_trial_result r;
+        fs_error err;
+        REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 3, 4, &obs, &r, &err) == FS_OK);
+        CHECK(r.steps > 1000);
+    }
+    check_hash("tests/determinism_landing_rough.txt", "rough-ground landings", h);
 }
 
 /* The end of a quickstep run, which draws on ODE's random generator to order its constraints. */
@@ -203,5 +222,6 @@ static void interleaved_sims_give_the_bits_of_each_alone(void)
 }
 
 FS_TEST_MAIN(TEST(static_load_hashes_to_its_committed_value), TEST(landing_trial_hashes_to_its_committed_value),
+             TEST(rough_landings_hash_to_their_committed_value),
              TEST(quickstep_does_not_depend_on_earlier_runs),
              TEST(interleaved_sims_give_the_bits_of_each_alone))
