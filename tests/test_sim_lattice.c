@@ -147,6 +147,18 @@ static void steep_ground(fs_terrain *t)
     REQUIRE(fs_terrain_crop(t, -0.03, 0.03, -0.03, 0.03, &err) == FS_OK);
 }
 
+/* A flat lattice (rough ground of no roughness) of spacing resolution, cropped to x and y within
+ * +-half_x and +-half_y. */
+static void flat_lattice(fs_terrain *t, const char *resolution, double half_x, double half_y)
+{
+    fs_error err;
+    char res[64];
+    snprintf(res, sizeof res, "rough.resolution_m=%s", resolution);
+    const char *set[] = {"rough.rms_m=0", res};
+    REQUIRE(fs_terrain_load("terrains/rough.ini", set, 2, t, &err) == FS_OK);
+    REQUIRE(fs_terrain_crop(t, -half_x, half_x, -half_y, half_y, &err) == FS_OK);
+}
+
 /* Over rough ground of short correlation (slopes up to about 60 deg: rocks' steep flanks), 4000
  * random poses: contacts exactly when the box overlaps the ground. */
 static void test_contacts_exactly_when_overlapping(void)
@@ -192,10 +204,7 @@ static void test_contacts_exactly_when_overlapping(void)
 static void test_level_box_on_flat_lattice(void)
 {
     fs_terrain t;
-    fs_error err;
-    const char *set[] = {"rough.rms_m=0", "rough.resolution_m=0.001"};
-    REQUIRE(fs_terrain_load("terrains/rough.ini", set, 2, &t, &err) == FS_OK);
-    REQUIRE(fs_terrain_crop(&t, -0.2, 0.2, -0.1, 0.1, &err) == FS_OK);
+    flat_lattice(&t, "0.001", 0.2, 0.1);
     dGeomID box = dCreateBox(0, 0.2, 0.08, 0.008);
     double sink = 1e-4;
     dGeomSetPosition(box, 0.0123, -0.0047, 0.004 - sink);
@@ -380,10 +389,7 @@ static void test_sphere_contacts_exactly_when_overlapping(void)
 static void test_sphere_on_plane_valley_and_ridge(void)
 {
     fs_terrain t;
-    fs_error err;
-    const char *set[] = {"rough.rms_m=0", "rough.resolution_m=0.001"};
-    REQUIRE(fs_terrain_load("terrains/rough.ini", set, 2, &t, &err) == FS_OK);
-    REQUIRE(fs_terrain_crop(&t, -0.05, 0.05, -0.05, 0.05, &err) == FS_OK);
+    flat_lattice(&t, "0.001", 0.05, 0.05);
     dGeomID sphere = dCreateSphere(0, 0.005);
     const double sink = 2e-4, z0 = zat(&t, 0, 0);
     /* a vertex, a lattice edge, the diagonal, the faces either side of it */
@@ -435,10 +441,7 @@ static void test_sphere_on_plane_valley_and_ridge(void)
 static void test_sphere_on_fine_lattice(void)
 {
     fs_terrain t;
-    fs_error err;
-    const char *set[] = {"rough.rms_m=0", "rough.resolution_m=0.0002"};
-    REQUIRE(fs_terrain_load("terrains/rough.ini", set, 2, &t, &err) == FS_OK);
-    REQUIRE(fs_terrain_crop(&t, -0.02, 0.02, -0.02, 0.02, &err) == FS_OK);
+    flat_lattice(&t, "0.0002", 0.02, 0.02);
     const double r = 0.006, z0 = zat(&t, 0, 0);
     dGeomID sphere = dCreateSphere(0, r);
     const double above[] = {1e-4, 0};

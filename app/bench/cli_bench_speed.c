@@ -106,6 +106,10 @@ static const scene SCENES[] = {
 #define NO_EARLY_STOP "run.rest_hold_s=100"
 #define EVERY_PAIR "foot-only collision pairs", "foot shapes against the ground", "every pair (foot-foot too)"
 #define LOGGING "trajectory logging off", "a row every 10 s"
+/* footsim's own heightfield tests against ODE's */
+#define ODE_TESTS "run.heightfield_contacts=ode"
+#define SPHERE_TEST "footsim's sphere-heightfield test", "footsim's", "ODE's"
+#define BOX_TEST "footsim's box-heightfield test", "footsim's", "ODE's, with the vertices inside added"
 
 static const skip SKIPS[] = {
     {"plane instead of a heightfield", "flat plane", "flat heightfield",
@@ -119,20 +123,13 @@ static const skip SKIPS[] = {
      {"start.region_margin_m=0.2"}, 0},
     /* tiles are ODE's heightfield geometry: used only by ODE's tests */
     {"heightfield in tiles (ODE's tests)", "8-cell tiles", "one heightfield",
-     TRIAL("landing biomimetic complex_uneven", "biomimetic", "complex_uneven", FULL | SLOW),
-     {"run.heightfield_contacts=ode"}, {"run.heightfield_contacts=ode", "run.tile_cells=4096"}, 0},
-    {"footsim's sphere-heightfield test", "footsim's", "ODE's",
-     TRIAL("landing biomimetic rough", "biomimetic", "rough", FULL | SLOW), {NULL},
-     {"run.heightfield_contacts=ode"}, 0},
-    {"footsim's sphere-heightfield test", "footsim's", "ODE's",
-     TRIAL("landing biomimetic simply_uneven", "biomimetic", "simply_uneven", QUICK), {NULL},
-     {"run.heightfield_contacts=ode"}, 0},
-    {"footsim's box-heightfield test", "footsim's", "ODE's, with the vertices inside added",
-     TRIAL("landing flat simply_uneven", "flat", "simply_uneven", FULL | SLOW), {NULL},
-     {"run.heightfield_contacts=ode"}, 0},
-    {"footsim's box-heightfield test", "footsim's", "ODE's, with the vertices inside added",
-     TRIAL("landing flat complex_uneven", "flat", "complex_uneven", QUICK), {NULL},
-     {"run.heightfield_contacts=ode"}, 0},
+     TRIAL("landing biomimetic complex_uneven", "biomimetic", "complex_uneven", FULL | SLOW), {ODE_TESTS},
+     {ODE_TESTS, "run.tile_cells=4096"}, 0},
+    {SPHERE_TEST, TRIAL("landing biomimetic rough", "biomimetic", "rough", FULL | SLOW), {NULL}, {ODE_TESTS}, 0},
+    {SPHERE_TEST, TRIAL("landing biomimetic simply_uneven", "biomimetic", "simply_uneven", QUICK), {NULL},
+     {ODE_TESTS}, 0},
+    {BOX_TEST, TRIAL("landing flat simply_uneven", "flat", "simply_uneven", FULL | SLOW), {NULL}, {ODE_TESTS}, 0},
+    {BOX_TEST, TRIAL("landing flat complex_uneven", "flat", "complex_uneven", QUICK), {NULL}, {ODE_TESTS}, 0},
     {EVERY_PAIR, STATIC_LOAD("static_load", NULL), {NULL}, {"run.collide=all"}, 0},
     {EVERY_PAIR, TRIAL("landing biomimetic complex_uneven", "biomimetic", "complex_uneven", FULL), {NULL},
      {"run.collide=all"}, 0},

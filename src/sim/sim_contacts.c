@@ -34,8 +34,9 @@ static int within(const dContactGeom *a, const dContactGeom *b, double r2)
 /* A sphere's contacts whose normals lie within SPHERE_MERGE_DEG of each other are one contact: each
  * pushes along its normal through the sphere's centre, so the two push the same way to within that
  * angle, which the kept one's friction covers for mu >= tan(10 deg) = 0.18 (a force along one
- * normal is, on the other, a normal part and a tangential part at most tan(angle) of it). ODE
- * returns such near-twins from neighbouring triangles of a heightfield under one sphere. */
+ * normal is, on the other, a normal part and a tangential part at most tan(angle) of it). ODE's
+ * heightfield test returns such near-twins from neighbouring triangles under one sphere; footsim's
+ * (sim_lattice.h), one on each flank of a shallow hollow. */
 static const double SPHERE_MERGE_DEG = 10.0;
 static int alike_normals(const dContactGeom *a, const dContactGeom *b)
 {

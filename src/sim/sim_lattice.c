@@ -1,4 +1,4 @@
-/* sim_lattice.c: a box's contacts with a heightfield lattice (sim_lattice.h). */
+/* sim_lattice.c: a box's and a sphere's contacts with a heightfield lattice (sim_lattice.h). */
 #include "sim_lattice.h"
 
 #include <math.h>
@@ -276,6 +276,8 @@ void fs_lattice_box_contacts(const fs_terrain *t, dGeomID box, gathered *g)
 
 /* ---- a sphere ------------------------------------------------------------------------------- */
 
+/* on ODE's arrays, inlined: this runs for every triangle near every sphere every step, where
+ * fs_dot (fs_vec.h) would be a call on fs_vec3 copies into another file */
 static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* The point q of triangle (v[0], v[1], v[2]) nearest p, and which of its corners span the feature q
