@@ -33,6 +33,12 @@ const fs_key fs_scenario_keys[] = {
     NUM("load", "ramp_s", ramp_s, 0, 100, 0, "s", "0.02", "the load rises linearly over this time"),
     NUM("run", "duration_s", duration_s, 0, 1e5, POS, "s", "1.0", "longest simulated time"),
     NUM("run", "step_s", step_s, 1e-7, 0.1, 0, "s", "1e-4", "integration step"),
+    {"run", "impact_substeps", FS_KEY_INTEGER, F(impact_substeps), 1, 1000, 0, 0, NULL, "", "1",
+     "1: off; else a step around a touchdown is taken as this many equal substeps (contacts, springs and checks "
+     "at the substep), so that a large step_s still resolves the impact (docs/bench.md)"},
+    NUM("run", "impact_window_s", impact_window_s, 0, 10, 0, "s", "0.03",
+        "with impact_substeps: substeps from the step in which a foot shape without contact could reach the ground "
+        "(or first touches it) until this long after"),
     {"run", "stepper", FS_KEY_CHOICE, F(stepper), 0, 0, 0, 0, "step|quickstep", "", "step",
      "step: dWorldStep (direct); quickstep: dWorldQuickStep (iterative)"},
     {"run", "iterations", FS_KEY_INTEGER, F(iterations), 1, 10000, 0, 0, NULL, "", "50", "dWorldQuickStep iterations"},
@@ -316,6 +322,10 @@ void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
     size_t used = strlen(buf);
     if (d->min_inertia_kg_m2 > 0 && used < size) /* said only when on: results made without it read as before */
         snprintf(buf + used, size - used, ", min_inertia_kg_m2 %.6g", d->min_inertia_kg_m2);
+    used = strlen(buf);
+    if (d->impact_substeps > 1 && used < size) /* the same */
+        snprintf(buf + used, size - used, ", impact_substeps %d, impact_window_s %.6g", d->impact_substeps,
+                 d->impact_window_s);
 }
 
 const fs_foot_geom *fs_scenario_geometry(const fs_scenario *sc, fs_foot_geom *biped)

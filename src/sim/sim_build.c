@@ -35,6 +35,9 @@ static void contact_template(fs_sim *sim)
     fs_spring_soft(h, k, c, &erp, &cfm);
     ct->surface.soft_erp = erp;
     ct->surface.soft_cfm = cfm;
+    sim->contact_k_N_per_m = k;
+    sim->contact_c_Ns_per_m = c;
+    sim->step_now_s = h;
 }
 
 /* ---- the start pose ------------------------------------------------------------------------ */
@@ -268,6 +271,32 @@ static void angular_spring(dJointID j, double k, double c, double h)
     dJointSetHingeParam(j, dParamStopERP, erp);
     dJointSetHingeParam(j, dParamStopCFM, cfm);
     dJointSetHingeParam(j, dParamBounce, 0);
+}
+
+/* The hinges' angular springs' stops (a biped's leg joints) made as soft as their k and c at step h. */
+static void angular_spring_step(fs_sim *sim, double h)
+{
+    for (int i = 0; i < sim->geom->nhinges; i++) {
+        const fs_hinge_geom *g = &sim->geom->hinge[i];
+        if (g->k_N_m_per_rad > 0 || g->c_N_m_s_per_rad > 0) {
+            double erp, cfm;
+            fs_spring_soft(h, g->k_N_m_per_rad, g->c_N_m_s_per_rad, &erp, &cfm);
+            dJointSetHingeParam(sim->hinge[i], dParamStopERP, erp);
+            dJointSetHingeParam(sim->hinge[i], dParamStopCFM, cfm);
+        }
+    }
+}
+
+void fs_sim_set_step(fs_sim *sim, double h)
+{
+    if (h == sim->step_now_s)
+        return;
+    double erp, cfm;
+    fs_spring_soft(h, sim->contact_k_N_per_m, sim->contact_c_Ns_per_m, &erp, &cfm);
+    sim->contact_template.surface.soft_erp = erp;
+    sim->contact_template.surface.soft_cfm = cfm;
+    angular_spring_step(sim, h);
+    sim->step_now_s = h;
 }
 
 static void build_joints(fs_sim *sim)

@@ -27,9 +27,13 @@ static double carriage_work(void *user, const fs_sim *sim)
         suspension_force(&c->suspension, c->suspension_force_N);
     const dReal *p = dBodyGetPosition(sim->robot), *w = dBodyGetAngularVel(sim->robot);
     const dReal *f = c->slider_feedback.f1, *t = c->slider_feedback.t1;
-    double h = sim->sc->def.step_s, work = 0;
+    double h = sim->step_now_s, work = 0;
     for (int k = 0; k < 3; k++)
         work += (f[k] + c->suspension_force_N[k]) * (p[k] - c->before[k]) + t[k] * w[k] * h;
+    /* the next substep's work, if the step is taken in substeps, from here */
+    memcpy(c->before, p, sizeof c->before);
+    if (explicit_springs(sim))
+        suspension_force(&c->suspension, c->suspension_force_N);
     return work;
 }
 
@@ -51,6 +55,7 @@ void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N
     dJointSetFeedback(c->slider, &c->slider_feedback);
     fs_spring_init(&c->suspension, sim->world, (fs_spring_impl)sim->sc->def.springs, c->body, sim->robot, c->start,
                    robot_at, k_N_per_m, c_Ns_per_m, height_m);
+    sim->suspension = &c->suspension; /* prepared with the sim's springs, at each step and substep */
     fs_check_set_work(sim, carriage_work, c);
 }
 
@@ -60,7 +65,6 @@ void fs_carriage_drive(fs_carriage *c, double dx_m, double dz_m)
     double h = sim->sc->def.step_s;
     const dReal *at = dBodyGetPosition(c->body);
     dBodySetLinearVel(c->body, (c->start[0] + dx_m - at[0]) / h, 0, (c->start[2] + dz_m - at[2]) / h);
-    fs_spring_prepare(&c->suspension, h);
     memcpy(c->before, dBodyGetPosition(sim->robot), sizeof c->before);
     if (explicit_springs(sim))
         suspension_force(&c->suspension, c->suspension_force_N);

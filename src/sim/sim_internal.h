@@ -49,6 +49,14 @@ static inline dBodyID fs_sim_robot_body(const fs_sim *sim)
  * step's friction bounds; call before the contacts of a step are made (sim_contacts.c). */
 void fs_sim_remember_contacts(fs_sim *sim);
 
+/* Sets the contacts' and the hinge stops' softness (ERP, CFM from their k and c) for a step of h
+ * (sim_build.c); nothing when they are set for h already. The springs set theirs as they are
+ * prepared (fs_spring_prepare). */
+void fs_sim_set_step(fs_sim *sim, double h);
+
+/* After one substep of n: adds its ground forces, over n, to step_force (sim_measure.c). */
+void fs_sim_add_step_force(fs_sim *sim, int substep, int n);
+
 /* Adds the time since the last timed stage ended to stage, when sim is profiled (sim_step.c). */
 void fs_sim_lap(fs_sim *sim, fs_stage stage);
 

@@ -194,15 +194,35 @@ int fs_sim_foot_contacts(const fs_sim *sim, int foot)
     return n;
 }
 
-/* The force of the last step's contacts on foot (EVERY_CONTACT: all of them), in their order. */
+/* The force of the last ODE step's contacts on foot (EVERY_CONTACT: all of them), in their order. */
 enum { EVERY_CONTACT = -2 };
-static void contact_force(const fs_sim *sim, int foot, double force[3])
+static void feedback_force(const fs_sim *sim, int foot, double force[3])
 {
     force[0] = force[1] = force[2] = 0;
     for (int i = 0; i < sim->contacts_now; i++)
         if (foot == EVERY_CONTACT || contact_foot(sim, i) == foot)
             for (int k = 0; k < 3; k++)
                 force[k] += sim->feedback[i].f1[k];
+}
+
+void fs_sim_add_step_force(fs_sim *sim, int substep, int n)
+{
+    int nfeet = sim->geom->nfeet > 1 ? sim->geom->nfeet : 1;
+    for (int f = -1; f < nfeet; f++) {
+        double x[3], *sum = sim->step_force[1 + f];
+        feedback_force(sim, f < 0 ? EVERY_CONTACT : f, x);
+        for (int k = 0; k < 3; k++)
+            sum[k] = (substep ? sum[k] : 0) + x[k] / n;
+    }
+}
+
+/* The force of the last step on foot: its ODE step's, or the mean over its substeps. */
+static void contact_force(const fs_sim *sim, int foot, double force[3])
+{
+    if (sim->substeps_now > 1)
+        memcpy(force, sim->step_force[foot == EVERY_CONTACT ? 0 : 1 + foot], 3 * sizeof(double));
+    else
+        feedback_force(sim, foot, force);
 }
 
 void fs_sim_foot_force(const fs_sim *sim, int foot, double force[3]) { contact_force(sim, foot, force); }

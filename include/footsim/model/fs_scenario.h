@@ -39,6 +39,8 @@ typedef struct fs_scenario_def {
                                   tilts the foot toe-up relative to them */
     double ramp_s;             /* the load rises linearly over this time */
     double duration_s, step_s;
+    int impact_substeps;       /* > 1: a step around a touchdown is taken as this many substeps (fs_sim_step) */
+    double impact_window_s;    /* ... from a touchdown foreseen within the step until this long after it */
     int stepper, iterations;
     int springs;               /* fs_spring_impl */
     double gravity_m_per_s2;

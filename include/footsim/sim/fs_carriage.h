@@ -5,10 +5,10 @@
  * vertical slider and a suspension spring-damper (k, c, rest length height_m) of the scenario's
  * spring implementation, and tells the sim's checks its work (fs_check_set_work): the slider's
  * force and torque and the suspension's force times the robot's displacement and turn over each
- * step (explicit springs: the suspension's force from the state before the step, as applied;
- * implicit: after, as backward Euler applies it). Before each step, fs_carriage_drive sets the
- * carriage's velocity so that it reaches start + (dx, 0, dz) at the step's end and prepares the
- * suspension. The carriage lives in the sim's world and goes with fs_sim_destroy; c must stay where
+ * step, or each substep (explicit springs: the suspension's force from the state before it, as
+ * applied; implicit: after, as backward Euler applies it). Before each step, fs_carriage_drive sets
+ * the carriage's velocity so that it reaches start + (dx, 0, dz) at the step's end; fs_sim_step
+ * prepares the suspension with the sim's own springs (fs_sim.suspension). The carriage lives in the sim's world and goes with fs_sim_destroy; c must stay where
  * it is (ODE writes the slider's feedback into it) until then. Nothing here allocates. */
 #ifndef FS_CARRIAGE_H
 #define FS_CARRIAGE_H

@@ -70,12 +70,23 @@ typedef struct fs_sim {
     fs_vec3 com[FS_MAX_BODIES]; /* each ODE body's centre in the design frame: the geometry's, or
                                    the ankle body's and a merged robot's together */
     fs_spring achilles;    /* with robot.joint = achilles */
+    fs_spring *suspension; /* a carriage's (fs_carriage.h), prepared first at each step and substep, or NULL */
     int has_achilles;
     double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
     dVector3 ankle_local;  /* the load's point on the ankle body */
     dVector3 foot_ankle_local[FS_MAX_FEET]; /* each foot's ankle on its ankle body (fs_foot_geom.foot) */
     dVector3 down;         /* unit direction of the load and gravity */
-    dContact contact_template;
+    dContact contact_template;  /* every contact joint's surface, soft for step_now_s */
+    double contact_k_N_per_m, contact_c_Ns_per_m; /* the sole and terrain in series: what that softness is made of */
+    double step_now_s;     /* the step the contacts' and the stops' softness is set for: the scenario's, or
+                              a substep's (fs_sim_set_step) */
+    int substeps_now;      /* the substeps the last step was taken in (1: whole; run.impact_substeps) */
+    double impact_until_s; /* steps are taken in substeps until time_s reaches this */
+    unsigned char touched_before[FS_MAX_SHAPES]; /* with substeps: each shape had contact in the step before */
+    double step_force[FS_MAX_FEET + 1][3]; /* after a step in substeps: the ground's mean force over them on
+                                              every foot (0) and on each (1 + foot), N */
+    struct { int body; double torque_N_m[3]; } torque[4]; /* torques added for the coming step: again in */
+    int ntorques;                                        /* each of its substeps */
     double match_m[FS_MAX_SHAPES]; /* how far a shape's contact may move in a step and still
                                            continue the last step's (its friction bound) */
     int chain_plane_friction;          /* fs_sim_options.chain_plane_friction */
