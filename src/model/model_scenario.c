@@ -38,7 +38,7 @@ const fs_key fs_scenario_keys[] = {
      "at the substep), so that a large step_s still resolves the impact (docs/bench.md)"},
     NUM("run", "impact_window_s", impact_window_s, 0, 10, 0, "s", "0.03",
         "with impact_substeps: substeps from the step in which a foot shape without contact could reach the ground "
-        "(or first touches it) until this long after"),
+        "within the step and this long (or first touches it) until this long after"),
     {"run", "stepper", FS_KEY_CHOICE, F(stepper), 0, 0, 0, 0, "step|quickstep", "", "step",
      "step: dWorldStep (direct); quickstep: dWorldQuickStep (iterative)"},
     {"run", "iterations", FS_KEY_INTEGER, F(iterations), 1, 10000, 0, 0, NULL, "", "50", "dWorldQuickStep iterations"},
