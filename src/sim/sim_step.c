@@ -46,9 +46,18 @@ void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3])
 {
     dBodyAddTorque(fs_sim_body_id(sim, i), torque_N_m[0], torque_N_m[1], torque_N_m[2]);
     /* ODE clears it after its step: kept, for the step's later substeps */
-    if (sim->ntorques < (int)(sizeof sim->torque / sizeof sim->torque[0])) {
-        sim->torque[sim->ntorques].body = i;
-        memcpy(sim->torque[sim->ntorques++].torque_N_m, torque_N_m, sizeof sim->torque[0].torque_N_m);
+    for (int k = 0; k < 3; k++)
+        sim->torque_again[i][k] += torque_N_m[k];
+    sim->torque_added = 1;
+}
+
+/* The torques added for this step, again for a later substep of it. */
+static void add_torques_again(fs_sim *sim)
+{
+    for (int i = 0; sim->torque_added && i < fs_sim_nbodies(sim); i++) {
+        const double *q = sim->torque_again[i];
+        if (q[0] != 0 || q[1] != 0 || q[2] != 0)
+            dBodyAddTorque(fs_sim_body_id(sim, i), q[0], q[1], q[2]);
     }
 }
 
@@ -162,17 +171,18 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
         double t0 = sim->time_s;
         for (int i = 0; i < n && st == FS_OK; i++) {
             sim->time_s = t0 + i * (h / n);
-            for (int k = 0; i > 0 && k < sim->ntorques; k++) {
-                const double *q = sim->torque[k].torque_N_m;
-                dBodyAddTorque(fs_sim_body_id(sim, sim->torque[k].body), q[0], q[1], q[2]);
-            }
+            if (i > 0)
+                add_torques_again(sim);
             st = advance(sim, h / n, err);
             fs_sim_add_step_force(sim, i, n);
         }
         if (st == FS_OK)
             sim->time_s = t0 + h; /* as a whole step ends */
     }
-    sim->ntorques = 0;
+    if (sim->torque_added) {
+        memset(sim->torque_again, 0, sizeof sim->torque_again);
+        sim->torque_added = 0;
+    }
     if (sim->profile)
         sim->profile->steps++;
     return st;

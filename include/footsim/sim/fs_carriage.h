@@ -8,8 +8,9 @@
  * step, or each substep (explicit springs: the suspension's force from the state before it, as
  * applied; implicit: after, as backward Euler applies it). Before each step, fs_carriage_drive sets
  * the carriage's velocity so that it reaches start + (dx, 0, dz) at the step's end; fs_sim_step
- * prepares the suspension with the sim's own springs (fs_sim.suspension). The carriage lives in the sim's world and goes with fs_sim_destroy; c must stay where
- * it is (ODE writes the slider's feedback into it) until then. Nothing here allocates. */
+ * prepares the suspension with the sim's own springs (fs_sim.suspension). The carriage lives in the
+ * sim's world and goes with fs_sim_destroy; c must stay where it is (ODE writes the slider's feedback
+ * into it) until then. Nothing here allocates. */
 #ifndef FS_CARRIAGE_H
 #define FS_CARRIAGE_H
 

@@ -6,7 +6,9 @@
  *
  * One step is a fixed sequence of stages: external loads, springs, collision (foot against
  * ground only), the ODE step, and the state checks of fs_check.h (finite, speed, loop closure,
- * energy). fs_sim_options.profile times them.
+ * energy). fs_sim_options.profile times them. With run.impact_substeps N > 1, a step near a
+ * touchdown runs the sequence N times at h/N (the contacts', stops' and springs' softness set for
+ * h/N, the checks after each); the caller still sees one step of h.
  *
  * Re-entrant: everything a simulation uses lives in its fs_sim (contact scratch, profile, names,
  * its state of ODE's random generator), so simulations may be built and stepped interleaved in one
@@ -85,8 +87,9 @@ typedef struct fs_sim {
     unsigned char touched_before[FS_MAX_SHAPES]; /* with substeps: each shape had contact in the step before */
     double step_force[FS_MAX_FEET + 1][3]; /* after a step in substeps: the ground's mean force over them on
                                               every foot (0) and on each (1 + foot), N */
-    struct { int body; double torque_N_m[3]; } torque[4]; /* torques added for the coming step: again in */
-    int ntorques;                                        /* each of its substeps */
+    double torque_again[FS_MAX_BODIES + 1][3]; /* the torques added for the coming step, per body (the
+                                                 robot's last): added again in each of its substeps */
+    int torque_added;      /* any added since the last step */
     double match_m[FS_MAX_SHAPES]; /* how far a shape's contact may move in a step and still
                                            continue the last step's (its friction bound) */
     int chain_plane_friction;          /* fs_sim_options.chain_plane_friction */
@@ -115,8 +118,10 @@ typedef struct fs_sim {
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err);
 void fs_sim_destroy(fs_sim *sim);
 
-/* Advances by the scenario's step; FS_NUMERICAL (with the body or hinge and the time named) if
- * a check of fs_check.h fails. */
+/* Advances by the scenario's step, whole or, near a touchdown with run.impact_substeps N > 1, in N
+ * equal substeps (from a step in which a foot shape without contact could reach the ground within
+ * the step and run.impact_window_s, or first touches it, until that window after it); FS_NUMERICAL
+ * (with the body or hinge and the time named) if a check of fs_check.h fails. */
 fs_status fs_sim_step(fs_sim *sim, fs_error *err);
 
 /* The load's force now (it rises over ramp_s), N; it acts along down. */
@@ -139,8 +144,9 @@ typedef enum fs_stage {
 
 typedef struct fs_profile {
     double stage_s[FS_NSTAGES]; /* wall time in each stage, summed over every profiled step, s */
-    long laps[FS_NSTAGES];      /* how many timed intervals each sum has (each holds one clock read) */
-    long steps;
+    long laps[FS_NSTAGES];      /* how many timed intervals each sum has (each holds one clock read;
+                                   a step in substeps times each substep's stages) */
+    long steps;                 /* calls of fs_sim_step */
 } fs_profile;
 
 /* Profiling is per simulation and off by default: a sim built with fs_sim_options.profile set
@@ -164,7 +170,7 @@ double fs_sim_max_speed(const fs_sim *sim);
  * com_height_m), m/s. */
 double fs_sim_body_speed(const fs_sim *sim, int i);
 
-/* The ground's total force on the foot during the last step, N. */
+/* The ground's total force on the foot during the last step (the mean over its substeps), N. */
 void fs_sim_ground_force(const fs_sim *sim, double force[3]);
 
 /* Fills scene with the state now (shapes, links, springs with their forces, contacts with their
@@ -189,7 +195,8 @@ void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows);
 void fs_sim_body_pose(const fs_sim *sim, int i, double p[3], double R[9]);
 /* Body i's linear velocity, m/s, and angular velocity, rad/s (world frame), either NULL if not wanted. */
 void fs_sim_body_velocity(const fs_sim *sim, int i, double v[3], double w[3]);
-/* Adds a torque (world frame, N m) to body i for the coming step only (a driver's before_step). */
+/* Adds a torque (world frame, N m) to body i for the coming step only, each of its substeps too (a
+ * driver's before_step). */
 void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3]);
 
 /* The robot body's lean from upright (its z axis against world z), rad; 0 without a robot. A
