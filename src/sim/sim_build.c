@@ -14,14 +14,20 @@
 /* Two materials in contact: friction as the geometric mean, stiffness and damping in series. */
 static double series(double a, double b) { return a > 0 && b > 0 ? a * b / (a + b) : 0; }
 
+/* The contact template's softness for a step of h, from the sole's and terrain's k and c in series. */
+static void soften_contacts(fs_sim *sim, double h)
+{
+    double erp, cfm;
+    fs_spring_soft(h, sim->contact_k_N_per_m, sim->contact_c_Ns_per_m, &erp, &cfm);
+    sim->contact_template.surface.soft_erp = erp;
+    sim->contact_template.surface.soft_cfm = cfm;
+}
+
 static void contact_template(fs_sim *sim)
 {
     const fs_scenario_def *s = &sim->sc->def;
     const fs_design_def *d = &sim->sc->design;
     const fs_terrain_def *m = &sim->sc->terrain.def;
-    double k = series(d->sole_stiffness_N_per_m, m->stiffness_N_per_m);
-    double c = series(d->sole_damping_Ns_per_m, m->damping_Ns_per_m);
-    double h = s->step_s;
     dContact *ct = &sim->contact_template;
     memset(ct, 0, sizeof *ct);
     ct->surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
@@ -31,13 +37,10 @@ static void contact_template(fs_sim *sim)
         ct->surface.bounce = m->restitution;
         ct->surface.bounce_vel = 0.01; /* m/s: slower impacts do not bounce */
     }
-    double erp, cfm;
-    fs_spring_soft(h, k, c, &erp, &cfm);
-    ct->surface.soft_erp = erp;
-    ct->surface.soft_cfm = cfm;
-    sim->contact_k_N_per_m = k;
-    sim->contact_c_Ns_per_m = c;
-    sim->step_now_s = h;
+    sim->contact_k_N_per_m = series(d->sole_stiffness_N_per_m, m->stiffness_N_per_m);
+    sim->contact_c_Ns_per_m = series(d->sole_damping_Ns_per_m, m->damping_Ns_per_m);
+    soften_contacts(sim, s->step_s);
+    sim->step_now_s = s->step_s;
 }
 
 /* ---- the start pose ------------------------------------------------------------------------ */
@@ -257,6 +260,15 @@ static void grip_directions(fs_sim *sim)
     }
 }
 
+/* A hinge stop's ERP and CFM from k and c for a step of h. */
+static void soften_stop(dJointID j, double k, double c, double h)
+{
+    double erp, cfm;
+    fs_spring_soft(h, k, c, &erp, &cfm);
+    dJointSetHingeParam(j, dParamStopERP, erp);
+    dJointSetHingeParam(j, dParamStopCFM, cfm);
+}
+
 /* A passive angular spring-damper toward the hinge's angle now (0: its built pose), implicit: a stop
  * with lo = hi, which ODE makes one two-sided row whenever it is met, as it always is (joint.cpp,
  * dxJointLimitMotor::testRotationalLimit and addLimot: angle <= lo or >= hi sets the limit, and
@@ -266,36 +278,22 @@ static void angular_spring(dJointID j, double k, double c, double h)
 {
     dJointSetHingeParam(j, dParamLoStop, 0);
     dJointSetHingeParam(j, dParamHiStop, 0);
-    double erp, cfm;
-    fs_spring_soft(h, k, c, &erp, &cfm);
-    dJointSetHingeParam(j, dParamStopERP, erp);
-    dJointSetHingeParam(j, dParamStopCFM, cfm);
+    soften_stop(j, k, c, h);
     dJointSetHingeParam(j, dParamBounce, 0);
 }
 
-/* The hinges' angular springs' stops (a biped's leg joints) made as soft as their k and c at step h. */
-static void angular_spring_step(fs_sim *sim, double h)
-{
-    for (int i = 0; i < sim->geom->nhinges; i++) {
-        const fs_hinge_geom *g = &sim->geom->hinge[i];
-        if (g->k_N_m_per_rad > 0 || g->c_N_m_s_per_rad > 0) {
-            double erp, cfm;
-            fs_spring_soft(h, g->k_N_m_per_rad, g->c_N_m_s_per_rad, &erp, &cfm);
-            dJointSetHingeParam(sim->hinge[i], dParamStopERP, erp);
-            dJointSetHingeParam(sim->hinge[i], dParamStopCFM, cfm);
-        }
-    }
-}
+static int has_angular_spring(const fs_hinge_geom *h) { return h->k_N_m_per_rad > 0 || h->c_N_m_s_per_rad > 0; }
 
 void fs_sim_set_step(fs_sim *sim, double h)
 {
     if (h == sim->step_now_s)
         return;
-    double erp, cfm;
-    fs_spring_soft(h, sim->contact_k_N_per_m, sim->contact_c_Ns_per_m, &erp, &cfm);
-    sim->contact_template.surface.soft_erp = erp;
-    sim->contact_template.surface.soft_cfm = cfm;
-    angular_spring_step(sim, h);
+    soften_contacts(sim, h);
+    for (int i = 0; i < sim->geom->nhinges; i++) {
+        const fs_hinge_geom *g = &sim->geom->hinge[i];
+        if (has_angular_spring(g))
+            soften_stop(sim->hinge[i], g->k_N_m_per_rad, g->c_N_m_s_per_rad, h);
+    }
     sim->step_now_s = h;
 }
 
@@ -309,7 +307,7 @@ static void build_joints(fs_sim *sim)
         fs_vec3 a = place(sim, h->anchor), x = turn(sim, h->axis);
         dJointSetHingeAnchor(j, a.x, a.y, a.z);
         dJointSetHingeAxis(j, x.x, x.y, x.z);
-        if (h->k_N_m_per_rad > 0 || h->c_N_m_s_per_rad > 0)
+        if (has_angular_spring(h))
             angular_spring(j, h->k_N_m_per_rad, h->c_N_m_s_per_rad, sim->sc->def.step_s);
         sim->hinge[i] = j;
     }

@@ -501,7 +501,6 @@ static void ground(exporter *x)
     }
 }
 
-
 /* MuJoCo's binary hfield file: int32 rows, int32 columns, then rows x columns float32 samples,
  * row 0 at the smallest y (as footsim's lattice), scaled here to [0, 1] of the height range. */
 static unsigned char *hfield_data(const fs_terrain *t, size_t *len)
