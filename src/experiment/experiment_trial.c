@@ -41,6 +41,7 @@ void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw)
 typedef struct watch {
     int touched;
     int arrested;       /* the descent after touchdown has been stopped */
+    double descent_m_per_s; /* the robot's vertical speed after the step before (while it descends) */
     double touch_ankle[3];
     double contact_sum;
     long contact_steps;
@@ -55,10 +56,11 @@ static void observe_feet(const fs_sim *sim, watch *w, fs_trial_result *out)
 {
     for (int f = 0; f < sim->geom->nfeet; f++) {
         int n = fs_sim_foot_contacts(sim, f);
-        if (!w->foot_touched[f] && n > 0) {
+        const fs_touch *t = fs_sim_first_touch(sim, f);
+        if (!w->foot_touched[f] && t) {
             w->foot_touched[f] = 1;
-            out->foot[f].touchdown_s = sim->time_s;
-            fs_sim_foot_ankle(sim, f, w->foot_touch_ankle[f]);
+            out->foot[f].touchdown_s = t->time_s;
+            memcpy(w->foot_touch_ankle[f], t->ankle_m, sizeof t->ankle_m);
         }
         if (w->touched)
             w->foot_contact_sum[f] += n;
@@ -74,12 +76,26 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     double tilt = fs_sim_robot_tilt(sim) / DEG;
     out->peak_tilt_deg = fmax(out->peak_tilt_deg, tilt);
     if (!w->touched && sim->contacts_now > 0) {
+        /* the first touch of any foot, at the instant its lowest point met the surface (fs_touch) */
+        const fs_touch *first = NULL;
+        for (int f = 0; f < (sim->geom->nfeet > 1 ? sim->geom->nfeet : 1); f++) {
+            const fs_touch *t = fs_sim_first_touch(sim, f);
+            if (t && (!first || t->time_s < first->time_s))
+                first = t;
+        }
         w->touched = 1;
-        out->touchdown_s = sim->time_s;
-        fs_sim_ankle(sim, w->touch_ankle);
+        out->touchdown_s = first ? first->time_s : sim->time_s;
+        if (first && sim->geom->nfeet <= 1)
+            memcpy(w->touch_ankle, first->ankle_m, sizeof first->ankle_m);
+        else
+            fs_sim_ankle(sim, w->touch_ankle);
     }
-    if (!w->touched)
+    if (!w->touched) {
+        double v[3];
+        fs_sim_robot_com(sim, NULL, v);
+        w->descent_m_per_s = v[2];
         return;
+    }
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
     w->contact_sum += sim->contacts_now;
     w->contact_steps++;
@@ -87,8 +103,12 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     if (!w->arrested) {
         double v[3];
         fs_sim_robot_com(sim, NULL, v);
-        out->impact_impulse_Ns += f[2] * h;
         w->arrested = v[2] >= 0;
+        /* the step in which the descent stops counts up to the instant it stopped (its speed taken
+         * as linear over the step), so that the impulse does not grow with the step */
+        double part = w->arrested && w->descent_m_per_s < 0 ? -w->descent_m_per_s / (v[2] - w->descent_m_per_s) : 1;
+        out->impact_impulse_Ns += f[2] * h * part;
+        w->descent_m_per_s = v[2];
     }
 }
 

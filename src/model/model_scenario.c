@@ -44,6 +44,9 @@ const fs_key fs_scenario_keys[] = {
     {"run", "iterations", FS_KEY_INTEGER, F(iterations), 1, 10000, 0, 0, NULL, "", "50", "dWorldQuickStep iterations"},
     {"run", "springs", FS_KEY_CHOICE, F(springs), 0, 0, 0, 0, "implicit|explicit", "", "implicit",
      "spring-damper implementation: implicit (soft DBall rows) or explicit (forces)"},
+    {"run", "damping_correction", FS_KEY_INTEGER, F(damping_correction), 0, 1, 0, 0, NULL, "", "1",
+     "1: an implicit spring-damper's damping (tendons, contacts, hinge springs) is its c whatever the step, where "
+     "k step_s <= c; 0: plain implicit Euler, which damps by c + k step_s (docs/model.md)"},
     NUM("run", "gravity_m_per_s2", gravity_m_per_s2, 0, 100, 0, "m/s^2", "9.81", "gravitational acceleration"),
     NUM("run", "log_interval_s", log_interval_s, 0, 10, POS, "s", "1e-3", "time between trajectory rows"),
     NUM("run", "rest_speed_m_per_s", rest_speed_m_per_s, 0, 10, 0, "m/s", "1e-4", "the run stops once every body is slower than this ..."),
@@ -322,6 +325,9 @@ void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
     size_t used = strlen(buf);
     if (d->min_inertia_kg_m2 > 0 && used < size) /* said only when on: results made without it read as before */
         snprintf(buf + used, size - used, ", min_inertia_kg_m2 %.6g", d->min_inertia_kg_m2);
+    used = strlen(buf);
+    if (!d->damping_correction && used < size) /* the same */
+        snprintf(buf + used, size - used, ", damping_correction 0");
     used = strlen(buf);
     if (d->impact_substeps > 1 && used < size) /* the same */
         snprintf(buf + used, size - used, ", impact_substeps %d, impact_window_s %.6g", d->impact_substeps,

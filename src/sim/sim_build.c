@@ -18,7 +18,7 @@ static double series(double a, double b) { return a > 0 && b > 0 ? a * b / (a + 
 static void soften_contacts(fs_sim *sim, double h)
 {
     double erp, cfm;
-    fs_spring_soft(h, sim->contact_k_N_per_m, sim->contact_c_Ns_per_m, &erp, &cfm);
+    fs_spring_soft(h, sim->contact_k_N_per_m, sim->contact_c_Ns_per_m, sim->sc->def.damping_correction, &erp, &cfm);
     sim->contact_template.surface.soft_erp = erp;
     sim->contact_template.surface.soft_cfm = cfm;
 }
@@ -261,10 +261,10 @@ static void grip_directions(fs_sim *sim)
 }
 
 /* A hinge stop's ERP and CFM from k and c for a step of h. */
-static void soften_stop(dJointID j, double k, double c, double h)
+static void soften_stop(const fs_sim *sim, dJointID j, double k, double c, double h)
 {
     double erp, cfm;
-    fs_spring_soft(h, k, c, &erp, &cfm);
+    fs_spring_soft(h, k, c, sim->sc->def.damping_correction, &erp, &cfm);
     dJointSetHingeParam(j, dParamStopERP, erp);
     dJointSetHingeParam(j, dParamStopCFM, cfm);
 }
@@ -273,12 +273,12 @@ static void soften_stop(dJointID j, double k, double c, double h)
  * with lo = hi, which ODE makes one two-sided row whenever it is met, as it always is (joint.cpp,
  * dxJointLimitMotor::testRotationalLimit and addLimot: angle <= lo or >= hi sets the limit, and
  * lo == hi gives the row -inf .. inf bounds), with the stop's ERP and CFM from k and c by the same
- * implicit-Euler mapping as the contacts and the springs (fs_spring_soft). */
-static void angular_spring(dJointID j, double k, double c, double h)
+ * mapping as the contacts and the springs (fs_spring_soft). */
+static void angular_spring(const fs_sim *sim, dJointID j, double k, double c, double h)
 {
     dJointSetHingeParam(j, dParamLoStop, 0);
     dJointSetHingeParam(j, dParamHiStop, 0);
-    soften_stop(j, k, c, h);
+    soften_stop(sim, j, k, c, h);
     dJointSetHingeParam(j, dParamBounce, 0);
 }
 
@@ -292,7 +292,7 @@ void fs_sim_set_step(fs_sim *sim, double h)
     for (int i = 0; i < sim->geom->nhinges; i++) {
         const fs_hinge_geom *g = &sim->geom->hinge[i];
         if (has_angular_spring(g))
-            soften_stop(sim->hinge[i], g->k_N_m_per_rad, g->c_N_m_s_per_rad, h);
+            soften_stop(sim, sim->hinge[i], g->k_N_m_per_rad, g->c_N_m_s_per_rad, h);
     }
     sim->step_now_s = h;
 }
@@ -308,7 +308,7 @@ static void build_joints(fs_sim *sim)
         dJointSetHingeAnchor(j, a.x, a.y, a.z);
         dJointSetHingeAxis(j, x.x, x.y, x.z);
         if (has_angular_spring(h))
-            angular_spring(j, h->k_N_m_per_rad, h->c_N_m_s_per_rad, sim->sc->def.step_s);
+            angular_spring(sim, j, h->k_N_m_per_rad, h->c_N_m_s_per_rad, sim->sc->def.step_s);
         sim->hinge[i] = j;
     }
     for (int i = 0; i < g->npins; i++) {
@@ -325,6 +325,7 @@ static void build_joints(fs_sim *sim)
         double p1[3] = {a.x, a.y, a.z}, p2[3] = {b.x, b.y, b.z};
         fs_spring_init(&sim->spring[i], sim->world, (fs_spring_impl)sim->sc->def.springs, sim->body[s->body1],
                        sim->body[s->body2], p1, p2, s->k_N_per_m, s->c_Ns_per_m, s->rest_length_m);
+        sim->spring[i].damping_correction = sim->sc->def.damping_correction;
     }
 }
 
@@ -371,6 +372,7 @@ static void build_robot(fs_sim *sim)
     double p1[3] = {heel.x, heel.y, heel.z}, p2[3] = {leg.x, leg.y, leg.z};
     fs_spring_init(&sim->achilles, sim->world, (fs_spring_impl)s->springs, ankle_body, sim->robot, p1, p2,
                    s->robot.achilles_k_N_per_m, s->robot.achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
+    sim->achilles.damping_correction = s->damping_correction;
     sim->has_achilles = 1;
 }
 

@@ -55,6 +55,7 @@ void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N
     dJointSetFeedback(c->slider, &c->slider_feedback);
     fs_spring_init(&c->suspension, sim->world, (fs_spring_impl)sim->sc->def.springs, c->body, sim->robot, c->start,
                    robot_at, k_N_per_m, c_Ns_per_m, height_m);
+    c->suspension.damping_correction = sim->sc->def.damping_correction;
     sim->suspension = &c->suspension; /* prepared with the sim's springs, at each step and substep */
     fs_check_set_work(sim, carriage_work, c);
 }

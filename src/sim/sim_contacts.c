@@ -181,6 +181,7 @@ static void add_contact(fs_sim *sim, const dContact *ct, dBodyID b1, dBodyID b2,
     dJointSetFeedback(j, &sim->feedback[sim->contacts_now]);
     g->shape[sim->contacts_now] = (short)shape;
     memcpy(g->normal[sim->contacts_now], ct->geom.normal, 3 * sizeof(double));
+    sim->contact_depth_m[sim->contacts_now] = ct->geom.depth;
     memcpy(sim->contact_pos[sim->contacts_now++], ct->geom.pos, 3 * sizeof(double));
 }
 

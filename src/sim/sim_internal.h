@@ -49,6 +49,10 @@ static inline dBodyID fs_sim_robot_body(const fs_sim *sim)
  * step's friction bounds; call before the contacts of a step are made (sim_contacts.c). */
 void fs_sim_remember_contacts(fs_sim *sim);
 
+/* After a step's (or substep's) collision at the state before it moves, with h the step it takes:
+ * each foot's first contact, if this is it, recorded in sim->touch (fs_touch). */
+void fs_sim_note_touch(fs_sim *sim, double h);
+
 /* Sets the contacts' and the hinge stops' softness (ERP, CFM from their k and c) for a step of h
  * (sim_build.c); nothing when they are set for h already. The springs set theirs as they are
  * prepared (fs_spring_prepare). */

@@ -186,6 +186,37 @@ static int contact_foot(const fs_sim *sim, int i)
     return shape < 0 ? -1 : sim->shape_foot[shape];
 }
 
+void fs_sim_note_touch(fs_sim *sim, double h)
+{
+    int nfeet = sim->geom->nfeet > 1 ? sim->geom->nfeet : 1;
+    for (int f = 0; f < nfeet; f++) {
+        fs_touch *t = &sim->touch[f];
+        int deepest = -1;
+        for (int i = 0; i < sim->contacts_now && !t->touched; i++)
+            if (contact_foot(sim, i) == f && (deepest < 0 || sim->contact_depth_m[i] > sim->contact_depth_m[deepest]))
+                deepest = i;
+        if (deepest < 0)
+            continue;
+        /* how long the deepest point has been sinking at its speed along the normal (at most h) */
+        const double *n = sim->scratch->normal[deepest], *p = sim->contact_pos[deepest];
+        dBodyID b = dGeomGetBody(sim->shape[sim->scratch->shape[deepest]]);
+        dVector3 v;
+        dBodyGetPointVel(b, p[0], p[1], p[2], v);
+        double sink = v[0] * n[0] + v[1] * n[1] + v[2] * n[2]; /* n points out of the ground */
+        double d = sim->contact_depth_m[deepest], back = sink < 0 ? fmin(h, d / -sink) : 0;
+        double a[3];
+        dVector3 va;
+        fs_sim_foot_ankle(sim, f, a);
+        dBodyGetPointVel(sim->body[nfeet > 1 ? sim->geom->foot[f].ankle_body : sim->geom->ankle_body], a[0], a[1], a[2], va);
+        t->touched = 1;
+        t->time_s = sim->time_s - back;
+        for (int k = 0; k < 3; k++)
+            t->ankle_m[k] = a[k] - back * va[k];
+    }
+}
+
+const fs_touch *fs_sim_first_touch(const fs_sim *sim, int foot) { return sim->touch[foot].touched ? &sim->touch[foot] : NULL; }
+
 int fs_sim_foot_contacts(const fs_sim *sim, int foot)
 {
     int n = 0;

@@ -14,6 +14,7 @@ void fs_spring_init(fs_spring *s, dWorldID world, fs_spring_impl impl, dBodyID b
     s->k = k;
     s->c = c;
     s->rest = rest;
+    s->damping_correction = 1;
     dBodyGetPosRelPoint(body1, p1[0], p1[1], p1[2], s->local1);
     if (body2)
         dBodyGetPosRelPoint(body2, p2[0], p2[1], p2[2], s->local2);
@@ -63,9 +64,9 @@ static double spring_line(const fs_spring *s, double p1[3], double p2[3], double
     return len;
 }
 
-void fs_spring_soft(double h, double k, double c, double *erp, double *cfm)
+void fs_spring_soft(double h, double k, double c, int correct, double *erp, double *cfm)
 {
-    double denom = h * k + c;
+    double denom = h * k + (correct ? fmax(c - h * k, 0) : c);
     *erp = h * k / denom;
     *cfm = 1.0 / denom;
 }
@@ -75,7 +76,7 @@ void fs_spring_prepare(fs_spring *s, double h)
     if (s->impl == FS_SPRING_IMPLICIT) {
         if (s->step != h) {
             double erp, cfm;
-            fs_spring_soft(h, s->k, s->c, &erp, &cfm);
+            fs_spring_soft(h, s->k, s->c, s->damping_correction, &erp, &cfm);
             dJointSetDBallParam(s->joint, dParamERP, erp);
             dJointSetDBallParam(s->joint, dParamCFM, cfm);
             s->step = h;

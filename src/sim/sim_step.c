@@ -83,6 +83,8 @@ static fs_status advance(fs_sim *sim, double h, fs_error *err)
     if (sim->ground)
         fs_sim_collide(sim);
     sim->contacts_total += sim->contacts_now;
+    if (sim->contacts_now > 0)
+        fs_sim_note_touch(sim, h);
     fs_sim_lap(sim, FS_STAGE_CONTACTS);
     /* the ODE step, with this sim's own state of ODE's one random generator (QuickStep draws on
      * it to order its constraints), so that other sims stepped between leave it alone */

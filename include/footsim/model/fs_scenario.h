@@ -43,6 +43,7 @@ typedef struct fs_scenario_def {
     double impact_window_s;    /* ... from a touchdown foreseen within the step until this long after it */
     int stepper, iterations;
     int springs;               /* fs_spring_impl */
+    int damping_correction;    /* 1: soft rows' dampers less k h (fs_spring_soft), 0: plain implicit Euler */
     double gravity_m_per_s2;
     double log_interval_s;
     double rest_speed_m_per_s; /* at rest once every body is slower than this ... */

@@ -48,6 +48,18 @@ typedef struct fs_sim_options {
                                (fs_pitch_stiffness_measure) */
 } fs_sim_options;
 
+/* A foot's first touch of the ground, read at the collision that found it (in the substep that
+ * found it, when a step is divided): the time and the ankle taken back along their motion by the
+ * time the deepest contact's point took to sink that deep at its speed then, at most the step.
+ * A step finds a touch between its start and one step later; this finds it at the instant the
+ * lowest point met the surface, to first order, so what is read from a touchdown does not move
+ * with the step. */
+typedef struct fs_touch {
+    int touched;
+    double time_s;
+    double ankle_m[3];
+} fs_touch;
+
 typedef struct fs_sim {
     const fs_scenario *sc;
     const fs_foot_geom *geom; /* the scenario's, or own_geom for a pinned chain */
@@ -99,6 +111,8 @@ typedef struct fs_sim {
     int contacts_now;      /* contact points in the last step */
     dJointFeedback *feedback; /* FS_MAX_STEP_CONTACTS, filled by the last step */
     double contact_pos[FS_MAX_STEP_CONTACTS][3];
+    double contact_depth_m[FS_MAX_STEP_CONTACTS];
+    fs_touch touch[FS_MAX_FEET]; /* each foot's first touch of the ground (fs_sim_first_touch) */
     struct fs_ground_grid *ground_grid; /* planes and steps sampled for fs_sim_scene on its first
                                            call (heightfields use theirs), or NULL */
     fs_scene_ground scene_ground;
@@ -213,6 +227,9 @@ void fs_sim_robot_com(const fs_sim *sim, double p[3], double v[3]);
 void fs_sim_foot_ankle(const fs_sim *sim, int foot, double p[3]);
 int fs_sim_foot_contacts(const fs_sim *sim, int foot);
 void fs_sim_foot_force(const fs_sim *sim, int foot, double force[3]);
+
+/* The foot's first touch of the ground (fs_touch), or NULL when it has not touched it yet. */
+const fs_touch *fs_sim_first_touch(const fs_sim *sim, int foot);
 
 /* How far the foot's contact shapes reach below the terrain surface now, m (negative: above). */
 double fs_sim_penetration(const fs_sim *sim);

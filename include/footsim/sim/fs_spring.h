@@ -2,9 +2,8 @@
  *
  * Force along the line between the anchors: f = k (d - rest) + c dd/dt, tension positive,
  * pulling the anchors together. Two implementations behind this one interface:
- * - FS_SPRING_IMPLICIT: an ODE DBall row made soft, ERP = hk/(hk + c), CFM = 1/(hk + c), which is
- *   the implicit-Euler spring-damper; stable at any step. fs_spring_prepare resets ERP and CFM
- *   whenever the step h changes.
+ * - FS_SPRING_IMPLICIT: an ODE DBall row made soft (fs_spring_soft), stable at any step.
+ *   fs_spring_prepare resets its ERP and CFM whenever the step h changes.
  * - FS_SPRING_EXPLICIT: the force from the current state, added to both bodies each step;
  *   stable only for steps below about 2m/c of the lightest body it acts on.
  * body2 may be NULL: its anchor is then fixed in the world. Nothing here allocates. */
@@ -20,6 +19,7 @@ typedef struct fs_spring {
     dBodyID body1, body2;
     dVector3 local1, local2; /* anchors in body frames (local2 is a world point when body2 is NULL) */
     double k, c, rest;
+    int damping_correction;  /* implicit only: fs_spring_soft's correct; fs_spring_init sets 1 */
     dJointID joint;          /* implicit only */
     double step;             /* the h its ERP and CFM were set for */
 } fs_spring;
@@ -32,10 +32,17 @@ typedef struct fs_spring_state {
 void fs_spring_init(fs_spring *s, dWorldID world, fs_spring_impl impl, dBodyID body1, dBodyID body2,
                     const double p1[3], const double p2[3], double k, double c, double rest);
 
-/* The implicit-Euler spring-damper of stiffness k and damping c over a step h as ODE's soft
- * constraint: ERP = h k / (h k + c), CFM = 1 / (h k + c). The implicit springs, the contacts and the
- * biped's angular springs (hinge stops) all take it from here. */
-void fs_spring_soft(double h, double k, double c, double *erp, double *cfm);
+/* A spring-damper of stiffness k and damping c over a step h as ODE's soft constraint: ERP = h k /
+ * (h k + C), CFM = 1 / (h k + C), which makes the row's force f = k x' + C v' at the step's end
+ * (x' its stretch, v' its rate), the implicit-Euler spring-damper of k and C. The spring taken at the
+ * step's end is the spring at its start less k h v', so this damps by C + k h: implicit Euler's own
+ * damping grows with the step. With correct = 0, C = c (plain implicit Euler). With correct = 1,
+ * C = max(c - k h, 0): the damping is c whatever the step as long as k h <= c, and k h beyond, never
+ * less than implicit Euler's with no damper, so that a mass on the row is stable at any step
+ * (h^2 k < 4 m + 2 h (k h)); at rest the force is k x either way. The implicit springs, the contacts
+ * and the biped's angular springs (hinge stops) all take it from here ([run] damping_correction,
+ * docs/model.md). */
+void fs_spring_soft(double h, double k, double c, int correct, double *erp, double *cfm);
 
 /* Before each step of size h: sets ERP and CFM (implicit, when h changed) or adds the forces
  * (explicit). */
