@@ -76,7 +76,8 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     double tilt = fs_sim_robot_tilt(sim) / DEG;
     out->peak_tilt_deg = fmax(out->peak_tilt_deg, tilt);
     if (!w->touched && sim->contacts_now > 0) {
-        /* the first touch of any foot, at the instant its lowest point met the surface (fs_touch) */
+        /* the first touch of any foot, at the instant its lowest point met the surface (fs_touch);
+         * a biped's ankle drop and slip are each foot's, from its own touch (finish) */
         const fs_touch *first = NULL;
         for (int f = 0; f < (sim->geom->nfeet > 1 ? sim->geom->nfeet : 1); f++) {
             const fs_touch *t = fs_sim_first_touch(sim, f);
@@ -85,7 +86,7 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
         }
         w->touched = 1;
         out->touchdown_s = first ? first->time_s : sim->time_s;
-        if (first && sim->geom->nfeet <= 1)
+        if (first)
             memcpy(w->touch_ankle, first->ankle_m, sizeof first->ankle_m);
         else
             fs_sim_ankle(sim, w->touch_ankle);

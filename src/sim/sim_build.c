@@ -297,6 +297,13 @@ void fs_sim_set_step(fs_sim *sim, double h)
     sim->step_now_s = h;
 }
 
+void fs_sim_spring_init(const fs_sim *sim, fs_spring *s, dBodyID body1, dBodyID body2, const double p1[3],
+                        const double p2[3], double k, double c, double rest)
+{
+    fs_spring_init(s, sim->world, (fs_spring_impl)sim->sc->def.springs, body1, body2, p1, p2, k, c, rest);
+    s->damping_correction = sim->sc->def.damping_correction;
+}
+
 static void build_joints(fs_sim *sim)
 {
     const fs_foot_geom *g = sim->geom;
@@ -323,9 +330,8 @@ static void build_joints(fs_sim *sim)
         const fs_spring_geom *s = &g->spring[i];
         fs_vec3 a = place(sim, s->p1), b = place(sim, s->p2);
         double p1[3] = {a.x, a.y, a.z}, p2[3] = {b.x, b.y, b.z};
-        fs_spring_init(&sim->spring[i], sim->world, (fs_spring_impl)sim->sc->def.springs, sim->body[s->body1],
-                       sim->body[s->body2], p1, p2, s->k_N_per_m, s->c_Ns_per_m, s->rest_length_m);
-        sim->spring[i].damping_correction = sim->sc->def.damping_correction;
+        fs_sim_spring_init(sim, &sim->spring[i], sim->body[s->body1], sim->body[s->body2], p1, p2, s->k_N_per_m,
+                           s->c_Ns_per_m, s->rest_length_m);
     }
 }
 
@@ -370,9 +376,8 @@ static void build_robot(fs_sim *sim)
     fs_vec3 heel = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, -0.01)));
     fs_vec3 leg = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, s->robot.achilles_leg_anchor_m)));
     double p1[3] = {heel.x, heel.y, heel.z}, p2[3] = {leg.x, leg.y, leg.z};
-    fs_spring_init(&sim->achilles, sim->world, (fs_spring_impl)s->springs, ankle_body, sim->robot, p1, p2,
-                   s->robot.achilles_k_N_per_m, s->robot.achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
-    sim->achilles.damping_correction = s->damping_correction;
+    fs_sim_spring_init(sim, &sim->achilles, ankle_body, sim->robot, p1, p2, s->robot.achilles_k_N_per_m,
+                       s->robot.achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
     sim->has_achilles = 1;
 }
 

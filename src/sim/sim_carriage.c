@@ -1,6 +1,8 @@
 /* sim_carriage.c: the kinematic carriage on a robot body, its drive and its work (fs_carriage.h). */
 #include "footsim/sim/fs_carriage.h"
 
+#include "sim_internal.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -53,9 +55,7 @@ void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N
     dJointAttach(c->slider, sim->robot, c->body);
     dJointSetSliderAxis(c->slider, 0, 0, 1);
     dJointSetFeedback(c->slider, &c->slider_feedback);
-    fs_spring_init(&c->suspension, sim->world, (fs_spring_impl)sim->sc->def.springs, c->body, sim->robot, c->start,
-                   robot_at, k_N_per_m, c_Ns_per_m, height_m);
-    c->suspension.damping_correction = sim->sc->def.damping_correction;
+    fs_sim_spring_init(sim, &c->suspension, c->body, sim->robot, c->start, robot_at, k_N_per_m, c_Ns_per_m, height_m);
     sim->suspension = &c->suspension; /* prepared with the sim's springs, at each step and substep */
     fs_check_set_work(sim, carriage_work, c);
 }

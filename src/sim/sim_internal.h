@@ -49,6 +49,11 @@ static inline dBodyID fs_sim_robot_body(const fs_sim *sim)
  * step's friction bounds; call before the contacts of a step are made (sim_contacts.c). */
 void fs_sim_remember_contacts(fs_sim *sim);
 
+/* A spring-damper of sim's (fs_spring_init) as its scenario's [run] springs and damping_correction
+ * make it. */
+void fs_sim_spring_init(const fs_sim *sim, fs_spring *s, dBodyID body1, dBodyID body2, const double p1[3],
+                        const double p2[3], double k, double c, double rest);
+
 /* After a step's (or substep's) collision at the state before it moves, with h the step it takes:
  * each foot's first contact, if this is it, recorded in sim->touch (fs_touch). */
 void fs_sim_note_touch(fs_sim *sim, double h);

@@ -191,8 +191,10 @@ void fs_sim_note_touch(fs_sim *sim, double h)
     int nfeet = sim->geom->nfeet > 1 ? sim->geom->nfeet : 1;
     for (int f = 0; f < nfeet; f++) {
         fs_touch *t = &sim->touch[f];
+        if (t->touched)
+            continue;
         int deepest = -1;
-        for (int i = 0; i < sim->contacts_now && !t->touched; i++)
+        for (int i = 0; i < sim->contacts_now; i++)
             if (contact_foot(sim, i) == f && (deepest < 0 || sim->contact_depth_m[i] > sim->contact_depth_m[deepest]))
                 deepest = i;
         if (deepest < 0)
