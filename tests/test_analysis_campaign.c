@@ -283,8 +283,8 @@ static void test_load(void)
     CHECK(c.nexpect == 1 && c.expect[0].foot == 1 && c.expect[0].terrain == 0 && c.expect[0].robot == 1 &&
           c.expect[0].min_success == 0);
     CHECK(c.tolerance[4][0] == 0.2 && c.tolerance[4][1] == 3);
-    char buf[5][FS_PATH_MAX + 32];
-    const char *ov[FS_CAMPAIGN_MAX_SET + 5];
+    char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32];
+    const char *ov[FS_CAMPAIGN_MAX_SET + FS_CAMPAIGN_CELL_SETS];
     CHECK(fs_campaign_overrides(&c, 10, buf, ov) == 4);
     CHECK(!strncmp(ov[0], "scenario.design=/", 17) && strstr(ov[0], "/scenarios/feet/flat.ini"));
     CHECK(strstr(ov[1], "/terrains/complex_uneven.ini") && strstr(ov[2], "robots/single_tall.ini") &&
@@ -302,6 +302,23 @@ static void test_load(void)
     CHECK(fs_campaign_pair(&c, 15)->def.robot.com_height_m == 0.02 && fs_campaign_pair(&c, 14)->def.robot.com_height_m == 0.3);
     CHECK(fs_campaign_overrides(&c, 15, buf, ov) == 3 && strstr(ov[2], "robot.design=/") && strstr(ov[2], "drop_weight.ini"));
     fs_campaign_free(&c);
+    /* a robot's own step: its cells only, said in the settings; a --set run.step_s still wins */
+    const char *stepped[] = {"robot.tall.file=robots/single_tall.ini", "robot.low.file=robots/drop_weight.ini",
+                             "robot.low.step_s=5e-4", "expect.e.foot=flat", "expect.e.terrain=flat",
+                             "expect.e.robot=low", "run.step_s=2e-4"};
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", stepped, 6, &c, &err) == FS_OK);
+    CHECK(fs_campaign_pair(&c, 15)->def.step_s == 5e-4 && fs_campaign_pair(&c, 14)->def.step_s == 1e-4);
+    CHECK(fs_campaign_overrides(&c, 15, buf, ov) == 4 && !strcmp(ov[3], "run.step_s=0.00050000000000000001"));
+    CHECK(strstr(c.provenance.settings, "; robot low: step_s 0.0005") != NULL &&
+          strstr(c.provenance.settings, "robot tall") == NULL);
+    fs_campaign_free(&c);
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", stepped, 7, &c, &err) == FS_OK);
+    CHECK(fs_campaign_pair(&c, 15)->def.step_s == 2e-4 && fs_campaign_pair(&c, 14)->def.step_s == 2e-4);
+    CHECK(strstr(c.provenance.settings, "; robot") == NULL);
+    fs_campaign_free(&c);
+    stepped[2] = "robot.low.step_s=1e-9"; /* below run.step_s's least; 0 would be the trial's step */
+    CHECK(fs_campaign_load("scenarios/landing_ci.ini", stepped, 6, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "step_s = 1e-09 is below") && strstr(err.message, "give 0 for the trial's own step"));
     /* with several robots an expectation must name its robot */
     const char *unnamed[] = {"robot.tall.file=robots/single_tall.ini", "robot.low.file=robots/drop_weight.ini",
                              "expect.e.foot=flat", "expect.e.terrain=flat"};
@@ -425,8 +442,8 @@ static void test_sweep_typed(void)
     for (int cell = 0; cell < fs_campaign_ncells(&c); cell++) {
         int f, t, r;
         fs_campaign_cell_of(&c, cell, &f, &t, &r);
-        char buf[5][FS_PATH_MAX + 32];
-        const char *ov[FS_CAMPAIGN_MAX_SET + 5];
+        char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32];
+        const char *ov[FS_CAMPAIGN_MAX_SET + FS_CAMPAIGN_CELL_SETS];
         int n = fs_campaign_overrides(&c, cell, buf, ov); /* the point's value among them, as --set */
         CHECK(!strcmp(ov[n - 1], t ? "rough.rms_m=0.0040000000000000001" : "rough.rms_m=0.001"));
         REQUIRE(fs_scenario_load(c.trial_path, ov, n, &loaded, &err) == FS_OK);

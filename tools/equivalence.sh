@@ -6,12 +6,14 @@
 # differ, wall time of the campaign and its speed-up on the reference's).
 # Usage: tools/equivalence.sh [CAMPAIGN] [OUT] [REFERENCE_STEP] [STEP...]
 # Default: scenarios/equivalence_flat.ini into build/equivalence, reference 1e-5 s, steps 1e-4 s
-# (the default) to 1e-2 s. Runs with -j 1 so that wall times compare.
+# (the default) to 1e-2 s. Every campaign runs with the same workers, FS_JOBS (default 1), so that
+# wall times compare.
 set -eu
 fs=${FOOTSIM:-build/footsim}
 campaign=${1:-scenarios/equivalence_flat.ini}
 out=${2:-build/equivalence}
 ref=${3:-1e-5}
+jobs=${FS_JOBS:-1}
 [ $# -gt 3 ] && shift 3 || set -- 1e-4 2e-4 5e-4 1e-3 2e-3 5e-3 1e-2
 mkdir -p "$out"
 tmp=$(mktemp -d)
@@ -19,7 +21,7 @@ trap 'rm -rf "$tmp"' EXIT
 now() { date +%s.%N; }
 run() { # STEP DIR: the campaign at STEP into DIR; prints its wall time in seconds
     t0=$(now)
-    "$fs" campaign "$campaign" --set run.step_s="$1" --out "$2" --replace -j 1 >/dev/null 2>"$tmp/err" || {
+    "$fs" campaign "$campaign" --set run.step_s="$1" --out "$2" --replace -j "$jobs" >/dev/null 2>"$tmp/err" || {
         st=$?; [ $st -eq 1 ] || { cat "$tmp/err" >&2; exit $st; }; } # 1: an expectation of the file failed
     t1=$(now)
     echo "$t0 $t1" | awk '{ printf "%.1f", $2 - $1 }'
@@ -31,7 +33,7 @@ cp -r "$tmp/reference" "$out/reference"
 {
     echo "# Campaign equivalence: \`$campaign\`"
     echo
-    echo "\`tools/equivalence.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC'); $(uname -m), $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at the start; one worker (-j 1). Reference: h = $ref s, $ref_wall s of wall time. A step is *equivalent* when every cell's success intervals overlap the reference's and its medians of impulse, final lean, ankle drop, settle time and contacts lie within 5 % or a floor (\`footsim compare --equivalence\`; each step's table in \`h<STEP>.md\`)."
+    echo "\`tools/equivalence.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC'); $(uname -m), $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at the start; $jobs worker(s) (-j $jobs). Reference: h = $ref s, $ref_wall s of wall time. A step is *equivalent* when every cell's success intervals overlap the reference's and its medians of impulse, final lean, ankle drop, settle time and contacts lie within 5 % or a floor (\`footsim compare --equivalence\`; each step's table in \`h<STEP>.md\`)."
     echo
     echo "| step h (s) | verdict | quantities that differ | wall time (s) | speed-up on the reference |"
     echo "|--:|---|--:|--:|--:|"

@@ -239,6 +239,11 @@ static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_
         snprintf(c->robot[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
         append_choice(b->robot_choices, sizeof b->robot_choices, c->robot[i].name);
         add_key(b, sec, "file", FS_KEY_PATH, C(robot[i].path))->help = "the robot file";
+        fs_key *k = add_key(b, sec, "step_s", FS_KEY_NUMBER, C(robot[i].step_s));
+        k->max = FS_STEP_MAX_S; /* run.step_s's range (check_relations), or 0 */
+        k->unit = "s";
+        k->fallback = "0";
+        k->help = "the step of this robot's trials (0: the trial's run.step_s); a --set run.step_s overrides it";
     }
     for (int i = 0; i < c->nexpect; i++) {
         const char *sec = b->sections[group_first(GROUP_EXPECT) + i];
@@ -397,10 +402,18 @@ static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_
         if (!c->terrain[i].path[0])
             return fs_fail(err, FS_BAD_INPUT, "%s: [terrain.%s] has no file; give file = the terrain", cfg->path,
                            c->terrain[i].name);
-    for (int i = 0; i < c->nrobots; i++)
+    for (int i = 0; i < c->nrobots; i++) {
+        char sec[FS_NAME_MAX + 8];
+        snprintf(sec, sizeof sec, "robot.%s", c->robot[i].name);
         if (!c->robot[i].path[0])
             return fs_fail(err, FS_BAD_INPUT, "%s: [robot.%s] has no file; give file = the robot, e.g. "
                            "robots/drop_weight.ini", cfg->path, c->robot[i].name);
+        if (c->robot[i].step_s > 0 && c->robot[i].step_s < FS_STEP_MIN_S)
+            return fs_fail(err, FS_BAD_INPUT, "%s: step_s = %g is below run.step_s's least, %g s; give 0 for the "
+                           "trial's own step, or a step of at least %g s",
+                           fs_config_where(cfg, sec, "step_s", where, sizeof where), c->robot[i].step_s,
+                           FS_STEP_MIN_S, FS_STEP_MIN_S);
+    }
     for (int i = 0; i < c->nexpect; i++) {
         char sec[FS_NAME_MAX + 8];
         snprintf(sec, sizeof sec, "expect.%s", c->expect[i].name);
@@ -475,8 +488,8 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
         fs_scenario *sc = &c->pair[cell];
         fs_error e;
         if (!from) { /* read from the files, the first point with its values as --set would give them */
-            char buf[5][FS_PATH_MAX + 32];
-            const char *ov[FS_CAMPAIGN_MAX_SET + 5];
+            char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32];
+            const char *ov[FS_CAMPAIGN_MAX_SET + FS_CAMPAIGN_CELL_SETS];
             int n = fs_campaign_overrides(c, cell, buf, ov);
             s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
         } else { /* a later point: the first one's definitions, its values set in them, compiled */
@@ -577,6 +590,12 @@ static fs_status provenance(fs_campaign *c, const char *const *sets, int nsets, 
     for (int i = 0; s == FS_OK && i < fs_campaign_ncells(c); i++)
         s = fs_scenario_inputs(&c->pair[i], p, err);
     fs_scenario_settings(&c->pair[0], p->settings, sizeof p->settings);
+    for (int r = 1; r < c->nrobots; r++) { /* a robot whose trials take another step (cell r: the first foot and terrain) */
+        size_t used = strlen(p->settings);
+        if (c->pair[r].def.step_s != c->pair[0].def.step_s)
+            snprintf(p->settings + used, sizeof p->settings - used, "; robot %s: step_s %.6g", c->robot[r].name,
+                     c->pair[r].def.step_s);
+    }
     p->first_seed = c->first_seed;
     p->nseeds = c->seeds;
     return s;
@@ -627,7 +646,8 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
     return s;
 }
 
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out)
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32],
+                          const char **out)
 {
     int foot, terrain, robot, n = 0;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
@@ -639,13 +659,17 @@ int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MA
         snprintf(buf[2], sizeof buf[2], "robot.design=%s", c->robot[robot].path);
         out[n++] = buf[2];
     }
+    if (c->robot[robot].step_s > 0) { /* 17 digits: the same double read back */
+        snprintf(buf[3], sizeof buf[3], "run.step_s=%.17g", c->robot[robot].step_s);
+        out[n++] = buf[3];
+    }
     for (int w = 0; w < c->nsweep; w++) { /* the swept values, exactly (17 digits read back the same double) */
         double v = c->terrain[terrain].sweep_value[w];
         if (fs_campaign_sweepable(c->sweep_choice[w])->type == FS_KEY_INTEGER)
-            snprintf(buf[3 + w], sizeof buf[3 + w], "%s=%d", c->sweep[w], (int)v);
+            snprintf(buf[4 + w], sizeof buf[4 + w], "%s=%d", c->sweep[w], (int)v);
         else
-            snprintf(buf[3 + w], sizeof buf[3 + w], "%s=%.17g", c->sweep[w], v);
-        out[n++] = buf[3 + w];
+            snprintf(buf[4 + w], sizeof buf[4 + w], "%s=%.17g", c->sweep[w], v);
+        out[n++] = buf[4 + w];
     }
     for (int i = 0; i < c->nset; i++)
         out[n++] = c->set[i];

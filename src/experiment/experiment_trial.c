@@ -41,6 +41,7 @@ void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw)
 typedef struct watch {
     int touched;
     int arrested;       /* the descent after touchdown has been stopped */
+    double arrest_m_per_s;  /* stopped: sinking slower than this ([run] rest_speed_m_per_s) */
     double descent_m_per_s; /* the robot's vertical speed after the step before (while it descends) */
     double touch_ankle[3];
     double contact_sum;
@@ -100,14 +101,17 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
     w->contact_sum += sim->contacts_now;
     w->contact_steps++;
-    /* the impact: the vertical impulse until the robot (or the foot) stops going down */
+    /* the impact: the vertical impulse until the robot (or the foot) stops going down, that is
+     * sinks slower than the rest speed: a body that topples after its impact keeps sinking, and
+     * waiting for it to rise would count its weight over the fall whenever no rebound came first */
     if (!w->arrested) {
-        double v[3];
+        double v[3], stop = -w->arrest_m_per_s;
         fs_sim_robot_com(sim, NULL, v);
-        w->arrested = v[2] >= 0;
+        w->arrested = v[2] >= stop;
         /* the step in which the descent stops counts up to the instant it stopped (its speed taken
          * as linear over the step), so that the impulse does not grow with the step */
-        double part = w->arrested && w->descent_m_per_s < 0 ? -w->descent_m_per_s / (v[2] - w->descent_m_per_s) : 1;
+        double part = w->arrested && w->descent_m_per_s < stop
+                          ? (stop - w->descent_m_per_s) / (v[2] - w->descent_m_per_s) : 1;
         out->impact_impulse_Ns += f[2] * h * part;
         w->descent_m_per_s = v[2];
     }
@@ -225,7 +229,7 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     if (log)
         fs_log_row(log, &sim);
     fs_run_logger logger = {log, log ? log->every : 1, 0};
-    trial_run t = {.d = d, .w = {.rest_since = -1}, .out = out};
+    trial_run t = {.d = d, .w = {.rest_since = -1, .arrest_m_per_s = d->rest_speed_m_per_s}, .out = out};
     fs_outcome_rules rules;
     rules_of(sc, &sim, &rules);
     out->robot_mass_kg = d->robot.mass_kg;

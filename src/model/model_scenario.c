@@ -32,7 +32,7 @@ const fs_key fs_scenario_keys[] = {
     NUM("load", "tilt_deg", tilt_deg, -45, 45, 0, "deg", "0", "the foot tilted against the load: load and gravity turned about the lateral axis"),
     NUM("load", "ramp_s", ramp_s, 0, 100, 0, "s", "0.02", "the load rises linearly over this time"),
     NUM("run", "duration_s", duration_s, 0, 1e5, POS, "s", "1.0", "longest simulated time"),
-    NUM("run", "step_s", step_s, 1e-7, 0.1, 0, "s", "1e-4", "integration step"),
+    NUM("run", "step_s", step_s, FS_STEP_MIN_S, FS_STEP_MAX_S, 0, "s", "1e-4", "integration step"),
     {"run", "impact_substeps", FS_KEY_INTEGER, F(impact_substeps), 1, 1000, 0, 0, NULL, "", "1",
      "1: off; else a step around a touchdown is taken as this many equal substeps (contacts, springs and checks "
      "at the substep), so that a large step_s still resolves the impact (docs/bench.md)"},

@@ -50,6 +50,7 @@ typedef struct fs_campaign_item {
     double sweep_value[2];   /* the swept values (0 without a sweep) */
     int base;                /* a sweep's point: the index of the terrain it is a point of ... */
     int point[2];            /* ... and of its value of each key */
+    double step_s;           /* [robot.NAME] step_s: the step its trials take; 0: the trial's run.step_s */
 } fs_campaign_item;
 
 /* [expect.NAME]: the success rate of foot on terrain under robot must lie in [min_success, max_success]. */
@@ -108,11 +109,14 @@ void fs_campaign_cell_of(const fs_campaign *c, int cell, int *foot, int *terrain
 const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell);
 
 /* The overrides a cell's trial scenario reads its files with: scenario.design, scenario.terrain,
- * robot.design (when the campaign names robots), the sweep's values at the cell's point (to 17
+ * robot.design (when the campaign names robots), run.step_s (when the robot's section gives one:
+ * its own step, see docs/campaign.md), the sweep's values at the cell's point (to 17
  * digits: the same double read back), then c->set. fs_campaign_load reads the first point of each
  * (foot, terrain, robot) so and makes the later points by typed edits of it. buf holds their text;
- * out gets up to FS_CAMPAIGN_MAX_SET + 5 pointers; returns the count. */
-int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[5][FS_PATH_MAX + 32], const char **out);
+ * out gets up to FS_CAMPAIGN_MAX_SET + FS_CAMPAIGN_CELL_SETS pointers; returns the count. */
+enum { FS_CAMPAIGN_CELL_SETS = 6 };
+int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32],
+                          const char **out);
 
 /* Trials are numbered cell-major: index = cell * seeds + seed - first_seed. */
 int fs_campaign_ntrials(const fs_campaign *c);

@@ -18,6 +18,9 @@
 
 /* The most steps one run, trial or walk may take (docs/keys.md): refused before it starts. */
 enum { FS_MAX_STEPS = 1000000000 };
+/* run.step_s's range (a campaign's [robot.NAME] step_s is checked against it too). */
+#define FS_STEP_MIN_S 1e-7
+#define FS_STEP_MAX_S 0.1
 /* The most contacts one foot shape finds against the terrain in a step: run.max_contacts keeps up
  * to this many (all of them: the reference its default is checked against). */
 enum { FS_MAX_SHAPE_CONTACTS = 256 };
