@@ -20,7 +20,7 @@
 
 #include <stdio.h>
 
-enum { FS_PROVENANCE_SETTINGS_MAX = 512 };
+enum { FS_PROVENANCE_SETTINGS_MAX = 1024 }; /* a campaign's: the first cell's and up to 7 robots' own steps */
 
 typedef struct fs_provenance_input {
     char *path;              /* relative to the record's folder */
