@@ -167,15 +167,17 @@ double fs_sim_penetration(const fs_sim *sim)
     return worst;
 }
 
+/* The body a foot's ankle is on (the ankle body of a one-foot sim). */
+static dBodyID foot_ankle_body(const fs_sim *sim, int foot)
+{
+    return sim->body[sim->geom->nfeet > 1 ? sim->geom->foot[foot].ankle_body : sim->geom->ankle_body];
+}
+
 void fs_sim_foot_ankle(const fs_sim *sim, int foot, double p[3])
 {
-    if (sim->geom->nfeet <= 1) {
-        fs_sim_ankle(sim, p);
-        return;
-    }
-    const double *l = sim->foot_ankle_local[foot];
+    const double *l = sim->geom->nfeet > 1 ? sim->foot_ankle_local[foot] : sim->ankle_local;
     dVector3 w;
-    dBodyGetRelPointPos(sim->body[sim->geom->foot[foot].ankle_body], l[0], l[1], l[2], w);
+    dBodyGetRelPointPos(foot_ankle_body(sim, foot), l[0], l[1], l[2], w);
     memcpy(p, w, 3 * sizeof(double));
 }
 
@@ -209,7 +211,7 @@ void fs_sim_note_touch(fs_sim *sim, double h)
         double a[3];
         dVector3 va;
         fs_sim_foot_ankle(sim, f, a);
-        dBodyGetPointVel(sim->body[nfeet > 1 ? sim->geom->foot[f].ankle_body : sim->geom->ankle_body], a[0], a[1], a[2], va);
+        dBodyGetPointVel(foot_ankle_body(sim, f), a[0], a[1], a[2], va);
         t->touched = 1;
         t->time_s = sim->time_s - back;
         for (int k = 0; k < 3; k++)
