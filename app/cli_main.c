@@ -88,7 +88,7 @@ static const command commands[] = {
      "  differs is only reported). --equivalence judges RESULT, run at another setting (--set\n"
      "  run.step_s=...), against BASELINE as a reference campaign of the same seeds and inputs: exit 1\n"
      "  unless every cell's success intervals overlap and its medians of impulse, final lean, ankle\n"
-     "  drop, settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
+     "  drop at rest, settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
     {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out --replace",
      "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
      "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"

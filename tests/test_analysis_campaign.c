@@ -73,6 +73,7 @@ static void small_results(fs_trial_result r[8])
         r[i].peak_force_N = 100.0 * (i + 1);
         r[i].steps = 10 * (i + 1);
         r[i].impact_impulse_Ns = 10.0 + i; /* bio's medians: 11 N s */
+        r[i].ankle_drop_m = 1e-3 * (i + 1);
     }
     r[3].outcome = FS_FAILED_NUMERICS;
     r[3].peak_force_N = NAN; /* left out of the medians */
@@ -100,6 +101,11 @@ static void test_summarize(void)
     CHECK(rows[0].median[11] == 20); /* steps 10, 20, 30 */
     CHECK(rows[1].landed == 1 && rows[1].fell == 3);
     CHECK(rows[1].median[4] == 650); /* 500, 600, 700, 800 */
+    /* the ankle drop over every trial measured; at rest, over those that landed (flat: seed 2) */
+    CHECK_NEAR(rows[1].median[9], 6.5e-3, 1e-15);
+    CHECK_NEAR(rows[1].median[12], 6e-3, 1e-15);
+    CHECK_NEAR(rows[0].median[9], 2e-3, 1e-15);
+    CHECK_NEAR(rows[0].median[12], 2e-3, 1e-15);
     int cell, foot, terrain, robot, seed;
     fs_campaign_trial_of(&c, 5, &cell, &seed);
     fs_campaign_cell_of(&c, cell, &foot, &terrain, &robot);
@@ -115,6 +121,10 @@ static void test_summarize(void)
     CHECK(rows[0].hung == 1 && rows[0].failed_numerics == 1 && rows[0].landed == 2 && rows[0].nmetric == 2);
     CHECK(rows[0].median[4] == 150); /* peak_force_N of 100, 200 */
     CHECK(rows[1].hung == 0);
+    r[5].outcome = FS_FELL; /* no trial of flat's landed: no ankle drop at rest */
+    fs_campaign_summarize(&c, r, rows);
+    CHECK(isnan(rows[1].median[12]));
+    CHECK_NEAR(rows[1].median[9], 6.5e-3, 1e-15);
     CHECK(!strcmp(fs_outcome_name(FS_HUNG), "hung") && !strcmp(fs_rule_name(FS_RULE_WATCHDOG), "watchdog"));
 }
 
@@ -215,8 +225,10 @@ static void lean_in_floor(fs_campaign_row *rows) { rows[0].median[3] += 0.49; } 
 static void lean_past_floor(fs_campaign_row *rows) { rows[0].median[3] += 0.51; }
 static void impulse_in(fs_campaign_row *rows) { rows[0].median[5] = 11 * 1.049; } /* 5 % of 11 N s */
 static void impulse_out(fs_campaign_row *rows) { rows[0].median[5] = 11 * 1.051; }
-static void drop_in_floor(fs_campaign_row *rows) { rows[0].median[9] += 0.99e-4; } /* ankle_drop_m: 0.1 mm */
-static void drop_past_floor(fs_campaign_row *rows) { rows[0].median[9] += 1.01e-4; }
+/* rest_ankle_drop_m (2 mm): its floor 0.1 mm; a fall's ankle drop (ankle_drop_m) is not judged */
+static void drop_in_floor(fs_campaign_row *rows) { rows[0].median[12] += 0.99e-4; }
+static void drop_past_floor(fs_campaign_row *rows) { rows[0].median[12] += 1.01e-4; }
+static void fall_drop_moved(fs_campaign_row *rows) { rows[1].median[9] *= 2; }
 static void force_doubled(fs_campaign_row *rows) { rows[0].median[4] *= 2; } /* reported, not judged */
 static void no_contacts(fs_campaign_row *rows) { rows[0].median[7] = NAN; }
 
@@ -250,6 +262,7 @@ static void test_equivalence(void)
     CHECK(equivalent_to(tmp, "impulse_out", impulse_out) == FS_EXPECTATION_FAILED);
     CHECK(equivalent_to(tmp, "drop_in", drop_in_floor) == FS_OK);
     CHECK(equivalent_to(tmp, "drop_out", drop_past_floor) == FS_EXPECTATION_FAILED);
+    CHECK(equivalent_to(tmp, "fall_drop", fall_drop_moved) == FS_OK);
     CHECK(equivalent_to(tmp, "force", force_doubled) == FS_OK);
     CHECK(equivalent_to(tmp, "no_contacts", no_contacts) == FS_EXPECTATION_FAILED);
     /* a trial more left undecided, or hung, is not equivalent */

@@ -16,6 +16,7 @@ const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS] = {
     {"final_tilt_deg", "0.1, 1"},   {"peak_force_N", "0.1, 10"},       {"impact_impulse_Ns", "0.1, 0.5"},
     {"settle_time_s", "0.1, 0.005"}, {"mean_contacts", "0.1, 1"},      {"final_contacts", "0.1, 1"},
     {"ankle_drop_m", "0.1, 0.001"}, {"slip_m", "0.1, 0.001"},          {"steps", "0.1, 100"},
+    {"rest_ankle_drop_m", "0.1, 0.001"},
 };
 
 double fs_metric_value(const fs_trial_result *r, int m)
@@ -23,7 +24,9 @@ double fs_metric_value(const fs_trial_result *r, int m)
     const double v[FS_CAMPAIGN_NMETRICS] = {r->end_time_s,    r->touchdown_s,       r->peak_tilt_deg,
                                             r->final_tilt_deg, r->peak_force_N,      r->impact_impulse_Ns,
                                             r->settle_time_s,  r->mean_contacts,     r->final_contacts,
-                                            r->ankle_drop_m,   r->slip_m,            (double)r->steps};
+                                            r->ankle_drop_m,   r->slip_m,            (double)r->steps,
+                                            /* the ankle's drop at rest: a trial that fell never rested */
+                                            r->outcome == FS_LANDED ? r->ankle_drop_m : NAN};
     return v[m];
 }
 
@@ -90,7 +93,12 @@ void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results,
                 if (r[s].outcome != FS_FAILED_NUMERICS && r[s].outcome != FS_HUNG) /* no measurements */
                     v[n++] = fs_metric_value(&r[s], m);
             row->nmetric = n;
-            row->median[m] = fs_median(v, n);
+            /* a metric a trial does not have (NAN: the rest ankle drop of a fall) is left out */
+            int k = 0;
+            for (int i = 0; i < n; i++)
+                if (!isnan(v[i]))
+                    v[k++] = v[i];
+            row->median[m] = fs_median(v, k);
         }
         if (c->pair)
             law_of(fs_campaign_pair(c, cell), row);

@@ -40,9 +40,9 @@ void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw)
 /* What a trial watches while it runs. */
 typedef struct watch {
     int touched;
-    int arrested;       /* the descent after touchdown has been stopped */
-    double arrest_m_per_s;  /* stopped: sinking slower than this ([run] rest_speed_m_per_s) */
-    double descent_m_per_s; /* the robot's vertical speed after the step before (while it descends) */
+    double weight_N;    /* of everything that moves: what the ground carries at rest */
+    double impulse_window_s; /* [landing] impulse_window_s */
+    double momentum_Ns; /* the ground's vertical impulse beyond the weight since touchdown */
     double touch_ankle[3];
     double contact_sum;
     long contact_steps;
@@ -92,28 +92,23 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
         else
             fs_sim_ankle(sim, w->touch_ankle);
     }
-    if (!w->touched) {
-        double v[3];
-        fs_sim_robot_com(sim, NULL, v);
-        w->descent_m_per_s = v[2];
+    if (!w->touched)
         return;
-    }
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
     w->contact_sum += sim->contacts_now;
     w->contact_steps++;
-    /* the impact: the vertical impulse until the robot (or the foot) stops going down, that is
-     * sinks slower than the rest speed: a body that topples after its impact keeps sinking, and
-     * waiting for it to rise would count its weight over the fall whenever no rebound came first */
-    if (!w->arrested) {
-        double v[3], stop = -w->arrest_m_per_s;
-        fs_sim_robot_com(sim, NULL, v);
-        w->arrested = v[2] >= stop;
-        /* the step in which the descent stops counts up to the instant it stopped (its speed taken
-         * as linear over the step), so that the impulse does not grow with the step */
-        double part = w->arrested && w->descent_m_per_s < stop
-                          ? (stop - w->descent_m_per_s) / (v[2] - w->descent_m_per_s) : 1;
-        out->impact_impulse_Ns += f[2] * h * part;
-        w->descent_m_per_s = v[2];
+    /* the impact: the ground's vertical impulse beyond the weight since touchdown, which is the
+     * momentum it has taken out of the fall, at its largest within the window after touchdown. A
+     * landing reads its mass times its touchdown speed (and any rebound); a robot that sinks on or
+     * topples after its impact loses momentum to gravity again and is read where its impact ended.
+     * No threshold decides when to stop counting: the largest value over a fixed time moves as
+     * little as the motion does, whatever the step. The step's force is taken as even over the part
+     * of the step after touchdown; the step that ends the window counts up to its end. */
+    double start = fmax(sim->time_s - h, out->touchdown_s), end = out->touchdown_s + w->impulse_window_s;
+    if (start < end && sim->time_s > start) {
+        double in = fmin(sim->time_s, end) - start;
+        w->momentum_Ns += (f[2] * h / (sim->time_s - start) - w->weight_N) * in;
+        out->impact_impulse_Ns = fmax(out->impact_impulse_Ns, w->momentum_Ns);
     }
 }
 
@@ -161,14 +156,19 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
 }
 
 /* The rules of fs_outcome.h from the scenario's [landing] and [run] keys and the terrain's bound. */
+/* The mass of every body: the foot's, and the robot (a biped's legs are among the geometry's bodies). */
+static double moving_mass_kg(const fs_sim *sim, const fs_scenario_def *d)
+{
+    double mass = 0;
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        mass += sim->geom->body[i].mass_kg;
+    return sim->geom->biped ? mass : mass + d->robot.mass_kg;
+}
+
 static void rules_of(const fs_scenario *sc, const fs_sim *sim, fs_outcome_rules *r)
 {
     const fs_scenario_def *d = &sc->def;
-    double mass = 0; /* every body: the foot's, and the robot (a biped's legs are among the geometry's bodies) */
-    for (int i = 0; i < sim->geom->nbodies; i++)
-        mass += sim->geom->body[i].mass_kg;
-    if (!sim->geom->biped)
-        mass += d->robot.mass_kg;
+    double mass = moving_mass_kg(sim, d);
     *r = (fs_outcome_rules){.fall_lean_rad = d->fall_tilt_deg * DEG,
                             .landed_lean_rad = d->landed_tilt_deg * DEG,
                             .lost_ground_s = d->lost_ground_s,
@@ -229,7 +229,10 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     if (log)
         fs_log_row(log, &sim);
     fs_run_logger logger = {log, log ? log->every : 1, 0};
-    trial_run t = {.d = d, .w = {.rest_since = -1, .arrest_m_per_s = d->rest_speed_m_per_s}, .out = out};
+    /* the weight along world z, gravity turned by the tilt about the lateral axis */
+    double weight_N = moving_mass_kg(&sim, d) * d->gravity_m_per_s2 * cos(d->tilt_deg * DEG);
+    trial_run t = {.d = d, .w = {.rest_since = -1, .weight_N = weight_N, .impulse_window_s = d->impulse_window_s},
+                   .out = out};
     fs_outcome_rules rules;
     rules_of(sc, &sim, &rules);
     out->robot_mass_kg = d->robot.mass_kg;

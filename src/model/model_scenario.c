@@ -73,6 +73,9 @@ const fs_key fs_scenario_keys[] = {
         "landed at the end of the window: the mean kinetic energy over its last this-long span ..."),
     NUM("landing", "motion_decay", motion_decay, 0, 1, POS, "", "0.9",
         "... is at most this times the mean over the span before (the motion is dying out)"),
+    NUM("landing", "impulse_window_s", impulse_window_s, 0, 10, POS, "s", "0.05",
+        "the impact impulse is the most momentum the ground takes out of the fall within this long after touchdown "
+        "(docs/landing.md)"),
     {"walk", "steps", FS_KEY_INTEGER, F(walk_steps), 1, 1000, 0, 0, NULL, "", "8", "walking machine: steps to take"},
     NUM("walk", "step_length_m", step_length_m, 0, 10, POS, "m", "0.06", "forward travel of the foot each step"),
     NUM("walk", "period_s", walk_period_s, 0, 100, POS, "s", "1.0", "one step: stance then swing"),

@@ -29,11 +29,12 @@ enum {
     FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x robots x seeds (docs/keys.md) */
     FS_SUMMARY_MAX_BYTES = 64 * 1024 * 1024, /* a summary.json compare reads */
     FS_CAMPAIGN_MAX_SET = 256,
-    FS_CAMPAIGN_NMETRICS = 12
+    FS_CAMPAIGN_NMETRICS = 13
 };
 
-/* The metrics of a trial (the numeric fields of fs_trial_result but the draw), named with units;
- * summaries give their medians, the comparison their tolerances. */
+/* The metrics of a trial (the numeric fields of fs_trial_result but the draw; last, the ankle drop
+ * at rest, which a trial that did not land lacks: NAN), named with units; summaries give their
+ * medians, the comparison their tolerances. */
 typedef struct fs_metric {
     const char *name;      /* "peak_force_N" */
     const char *tolerance; /* default "relative, absolute" */
@@ -133,7 +134,7 @@ typedef struct fs_campaign_row {
     int hung;                              /* trials whose worker the watchdog killed (not physics) */
     double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
     int nmetric;                           /* trials the medians are over (all but failed_numerics, hung) */
-    double median[FS_CAMPAIGN_NMETRICS];   /* NAN when nmetric is 0 */
+    double median[FS_CAMPAIGN_NMETRICS];   /* over those that have the metric; NAN when none has */
     /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
     int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */
     double law_K, law_critical_m;          /* N m/rad with any tendon in series; K / (m g), m */
@@ -183,7 +184,7 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
  * tells what a reference campaign of the same seeds and inputs tells. Provenance as in
  * fs_campaign_compare, but overrides may differ (they carry the setting). Per cell: the two success
  * rates' 95 % Wilson intervals overlap, and the medians of the well-posed metrics (impact impulse,
- * final lean, ankle drop, settle time, mean and final contacts) lie within 5 % of the reference's or
+ * final lean, ankle drop at rest, settle time, mean and final contacts) lie within 5 % of the reference's or
  * an absolute floor (0.5 deg, 0.1 mm, 5 ms, 1 contact), whichever is larger; peak force is reported,
  * not judged. FS_OK when every cell is equivalent, FS_EXPECTATION_FAILED when not or a row is
  * missing, FS_BAD_INPUT as fs_campaign_compare. */

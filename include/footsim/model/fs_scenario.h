@@ -62,6 +62,7 @@ typedef struct fs_scenario_def {
     double land_x_range_m, land_y_range_m, land_yaw_range_deg, land_tilt_range_deg;
     double landed_tilt_deg, fall_tilt_deg;
     double lost_ground_s, motion_window_s, motion_decay; /* the rules of fs_outcome.h */
+    double impulse_window_s;   /* the impact impulse is read within this long after touchdown */
     /* [walk]: the walking machine (Fig. 16) */
     int walk_steps;
     double step_length_m, walk_period_s, stance_fraction, lift_m, press_m;
