@@ -115,7 +115,7 @@ int cli_bench_speed(const cli_args *a, const char *dir);
 int cli_bench_equivalence(const cli_args *a);
 
 /* Campaign equivalence (app/bench/cli_bench_equivalence.c, docs/bench.md), for bench equivalence
- * and any command that runs it: the campaign at the reference step and at each step (every
+ * and bench precision's last stage: the campaign at the reference step and at each step (every
  * cell's run.step_s set after the spec's overrides), with the same seeds and workers, each step
  * judged against the reference (fs_campaign_equivalence). Into DIR: equivalence.md (a row a step),
  * h<STEP>.md (each comparison), reference/ (the reference campaign's files). cli_equivalence_open

@@ -105,6 +105,7 @@ static const command commands[] = {
      "  refreshed only with --out results/bench):\n"
      "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
      "             against the planar reference model, and a landing trial against its finest run;\n"
+     "             last, campaign equivalence of scenarios/equivalence_flat.ini (DIR/precision_equivalence/);\n"
      "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height;\n"
      "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves;\n"
      "  equivalence  a campaign (default scenarios/equivalence_flat.ini) at the --reference step (1e-5)\n"

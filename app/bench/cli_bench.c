@@ -1,6 +1,7 @@
 /* cli_bench.c: 'footsim bench WHAT': checks the output folder and the options and picks the
  * benchmark. What the benchmarks share (the machine, the load) is cli_bench_machine.c, below them;
- * campaign equivalence (bench equivalence) is cli_bench_equivalence.c. */
+ * campaign equivalence (bench equivalence, and bench precision's last stage) is
+ * cli_bench_equivalence.c. */
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
@@ -10,8 +11,8 @@
 #include <string.h>
 
 /* What benches write into their shared folder (never replaced as a folder; file by file). */
-static const char *const bench_files[] = {"precision.*", "stability*", "speed.*", "skips.csv", "render.csv",
-                                          "own_code_before_after.csv", NULL};
+static const char *const bench_files[] = {"precision.*", "precision_equivalence", "stability*", "speed.*", "skips.csv",
+                                          "render.csv", "own_code_before_after.csv", NULL};
 
 int cli_bench(const cli_args *a)
 {

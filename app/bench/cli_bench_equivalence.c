@@ -1,5 +1,5 @@
 /* cli_bench_equivalence.c: campaign equivalence (docs/bench.md, issue 12), for 'footsim bench
- * equivalence' (and other commands: the functions of cli.h).
+ * equivalence' and the last stage of 'footsim bench precision'.
  *
  * A campaign runs once at a reference step and once at each step to judge (every cell's run.step_s
  * set last, over any robot's own step), all with the same seeds and the same workers so that wall
