@@ -26,6 +26,8 @@ typedef struct cli_args {
     const char *scenario;           /* --scenario FILE */
     const char *seed;               /* --seed N */
     const char *jobs;               /* -j N: worker processes (campaign) */
+    const char *reference;          /* --reference S: the reference step (bench equivalence) */
+    const char *steps;              /* --steps S1,S2,...: the steps to judge (bench equivalence) */
     const char *data;               /* --data DIR: where relative data files are looked for first */
     int quick;                      /* --quick: a smaller sweep (bench) */
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
@@ -104,11 +106,42 @@ int cli_export(const cli_args *a);    /* app/cli_export.c */
 int cli_merge(const cli_args *a);     /* app/cli_campaign.c: shard folders into one campaign's results */
 
 /* bench precision|stability|speed (app/bench/cli_bench*.c). Each writes its CSVs, charts and a Markdown
- * table to --out DIR (default results/bench/), whole or not at all. */
+ * table to --out DIR (default build/bench/), whole or not at all. bench equivalence [CAMPAIGN]
+ * (app/bench/cli_bench_equivalence.c) writes its own folder (default build/equivalence/<name>/). */
 int cli_bench(const cli_args *a);
 int cli_bench_precision(const cli_args *a, const char *dir);
 int cli_bench_stability(const cli_args *a, const char *dir);
 int cli_bench_speed(const cli_args *a, const char *dir);
+int cli_bench_equivalence(const cli_args *a);
+
+/* Campaign equivalence (app/bench/cli_bench_equivalence.c, docs/bench.md), for bench equivalence
+ * and bench precision's last stage: the campaign at the reference step and at each step (every
+ * cell's run.step_s set after the spec's overrides), with the same seeds and workers, each step
+ * judged against the reference (fs_campaign_equivalence). Into DIR: equivalence.md (a row a step),
+ * h<STEP>.md (each comparison), reference/ (the reference campaign's files). cli_equivalence_open
+ * checks everything before anything runs (the steps, the campaign loaded at every step, DIR; exit 2
+ * and nothing written for a bad step or campaign) and prepares DIR; cli_equivalence_run runs the
+ * campaigns and writes the files (0, or the exit status of what failed: 4 when a file cannot be
+ * written; verdicts are results, not failures); cli_equivalence_table prints the verdict table
+ * (Markdown); cli_equivalence_close releases e (NULL allowed) and removes what was not put in
+ * place. Messages go to stderr. */
+typedef struct cli_equivalence_spec {
+    const char *campaign;             /* the campaign file, found */
+    const char *shown;                /* how equivalence.md names it */
+    const char *const *set;           /* overrides ("section.key=value"), before the step */
+    int nset;
+    const char *reference;            /* the reference step, s, as text */
+    const char *steps;                /* the steps to judge, s, separated by commas */
+    int jobs;                         /* worker processes of every campaign */
+    const char *command;              /* what equivalence.md says made it */
+    const char *who;                  /* names the command in messages ("footsim bench equivalence") */
+    const char *option;               /* names DIR in messages ("--out") */
+} cli_equivalence_spec;
+typedef struct cli_equivalence cli_equivalence;
+int cli_equivalence_open(cli_equivalence **e, const cli_equivalence_spec *spec, const char *dir, int replace);
+int cli_equivalence_run(cli_equivalence *e);
+void cli_equivalence_table(FILE *f, const cli_equivalence *e);
+void cli_equivalence_close(cli_equivalence *e);
 
 /* -j N: worker processes, default all cores online (1 to 1024; exit 2 otherwise). */
 int cli_parse_jobs(const cli_args *a, int *jobs);

@@ -99,15 +99,25 @@ static const command commands[] = {
      "  toe contact points on the rough section and off it, peak ground force. With --frames (or\n"
      "  --out DIR) it also writes DIR/walk.json and the frames of the walk (default DIR:\n"
      "  results/walks/<scenario>/), whole."},
-    {"bench", cli_bench, "precision|stability|speed", "-j --quick --out --replace --data",
+    {"bench", cli_bench, "precision|stability|speed|equivalence [CAMPAIGN]",
+     "-j --quick --out --replace --set --reference --steps --data",
      "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
      "  refreshed only with --out results/bench):\n"
      "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
      "             against the planar reference model, and a landing trial against its finest run;\n"
+     "             last, campaign equivalence of scenarios/equivalence_flat.ini (DIR/precision_equivalence/);\n"
      "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height;\n"
-     "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves.\n"
+     "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves;\n"
+     "  equivalence  a campaign (default scenarios/equivalence_flat.ini) at the --reference step (1e-5)\n"
+     "             and at each of --steps (1e-4,2e-4,5e-4,1e-3,2e-3,5e-3,1e-2), with the same seeds and\n"
+     "             workers, each judged against the reference as 'footsim compare --equivalence' does;\n"
+     "             --set goes to the campaign (before the step). Writes DIR/equivalence.md (a row a step:\n"
+     "             verdict, quantities that differ, wall time, speed-up on the reference), DIR/h<STEP>.md\n"
+     "             (each comparison) and DIR/reference/ (default DIR: build/equivalence/<campaign name>/).\n"
+     "             Exit 0 whatever the verdicts.\n"
      "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
-     "  worker processes (default: the CPUs it may use; the results do not depend on N)."},
+     "  worker processes (default: the CPUs it may use; the results do not depend on N), and each\n"
+     "  campaign of equivalence in N (default 1, so that wall times compare)."},
     {"export", cli_export, "DESIGN", "--mjcf --scenario --out --replace --set --data",
      "Writes the foot as MuJoCo MJCF (docs/export.md) to --out FILE (default results/export/<design>.xml;\n"
      "  a file there that footsim did not export is kept unless --replace):\n"
@@ -155,6 +165,8 @@ static void command_help(const command *c)
         printf(" [--equivalence]");
     if (strstr(c->options, "--shard"))
         printf(" [--shard I/N] [--fresh]");
+    if (strstr(c->options, "--steps"))
+        printf(" [--reference S] [--steps S1,S2,...]");
     if (strstr(c->options, "--height"))
         printf(" [--height X Y] [--png FILE [--replace]] [--scenario SCENARIO]");
     if (strstr(c->options, "--frames "))
@@ -212,7 +224,7 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
                           !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
                           !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
                           !strcmp(arg, "--seed") || !strcmp(arg, "--exaggerate") || !strcmp(arg, "--frames-of") ||
-                          !strcmp(arg, "--shard");
+                          !strcmp(arg, "--shard") || !strcmp(arg, "--reference") || !strcmp(arg, "--steps");
         if (!strcmp(arg, "-j") && !strstr(c->options, "-j ")) {
             fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
             return 2;
@@ -253,6 +265,10 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->jobs = arg + 2;
         else if (!strcmp(arg, "--shard"))
             a->shard = argv[++i];
+        else if (!strcmp(arg, "--reference"))
+            a->reference = argv[++i];
+        else if (!strcmp(arg, "--steps"))
+            a->steps = argv[++i];
         else if (!strcmp(arg, "--fresh"))
             a->fresh = 1;
         else if (!strcmp(arg, "--replace"))

@@ -1,7 +1,8 @@
 #!/bin/sh
 # footsim bench precision --quick writes its table, summary and chart, marks each scene's default
 # and Pareto front, and ODE's error on the pinned chain falls as the step does (first order: ten
-# times smaller step, about ten times smaller error). Usage: cli_bench_precision.sh path/to/footsim
+# times smaller step, about ten times smaller error); its campaign-equivalence stage writes its
+# verdicts. Usage: cli_bench_precision.sh path/to/footsim
 . "$(dirname "$0")/cli_check.sh"
 "$fs" bench precision --quick --out "$tmp/bench" >/dev/null 2>"$tmp/err.txt"
 status=$?
@@ -36,6 +37,22 @@ ratio=$(awk -F, '$1 == "landing_biomimetic" && $2 == "step" && $4 == "implicit" 
                  END { print b / a }' "$csv")
 check 'awk -v r="$ratio" "BEGIN { exit !(r < 0.5) }"'
 check 'grep -q "Goal" "$tmp/bench/precision.md"'
+# the campaign-equivalence stage (--quick: equivalence_flat.ini on 2 seeds against 5e-5 s at 1e-4 and
+# 1e-3 s): its files, a row per step with its verdict in its folder and in precision.md
+eq="$tmp/bench/precision_equivalence"
+for f in equivalence.md h1e-4.md h1e-3.md reference/summary.json reference/summary.md reference/summary.csv \
+         reference/trials.csv; do
+  check '[ -s "$eq/$f" ]'
+done
+check 'grep -q "^\`footsim bench precision --quick\` on .*; 1 worker (-j 1). Reference: h = 5e-5 s" "$eq/equivalence.md"'
+for md in "$eq/equivalence.md" "$tmp/bench/precision.md"; do
+  check '[ "$(grep -c "^| [0-9]" "$md")" -eq 2 ]'
+  check 'grep -Eq "^\| 1e-4 \| (equivalent|\*\*not equivalent\*\*) \| [0-9]+ \| " "$md"'
+  check 'grep -Eq "^\| 1e-3 \| (equivalent|\*\*not equivalent\*\*) \| [0-9]+ \| " "$md"'
+done
+check 'grep -q "^### Campaign equivalence" "$tmp/bench/precision.md"'
+check 'grep -q "against the reference $tmp/bench/precision_equivalence/reference/summary.json" "$eq/h1e-3.md"'
+check '[ -z "$(ls -A "$eq" | grep -e partial -e lock)" ]'
 if command -v gnuplot >/dev/null 2>&1; then check '[ -s "$tmp/bench/precision.png" ]'; fi
 "$fs" bench nonsense 2>/dev/null
 status=$?

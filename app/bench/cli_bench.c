@@ -1,5 +1,7 @@
-/* cli_bench.c: 'footsim bench WHAT': checks the output folder and picks the benchmark. What the
- * benchmarks share (the machine, the load) is cli_bench_machine.c, below them. */
+/* cli_bench.c: 'footsim bench WHAT': checks the output folder and the options and picks the
+ * benchmark. What the benchmarks share (the machine, the load) is cli_bench_machine.c, below them;
+ * campaign equivalence (bench equivalence, and bench precision's last stage) is
+ * cli_bench_equivalence.c. */
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
@@ -9,24 +11,36 @@
 #include <string.h>
 
 /* What benches write into their shared folder (never replaced as a folder; file by file). */
-static const char *const bench_files[] = {"precision.*", "stability*", "speed.*", "skips.csv", "render.csv",
-                                          "own_code_before_after.csv", NULL};
+static const char *const bench_files[] = {"precision.*", "precision_equivalence", "stability*", "speed.*", "skips.csv",
+                                          "render.csv", "own_code_before_after.csv", NULL};
 
 int cli_bench(const cli_args *a)
 {
+    if (!strcmp(a->input, "equivalence"))
+        return cli_bench_equivalence(a);
     /* build/bench by default: the committed results/bench/ changes only on purpose (--out results/bench) */
     const char *dir = a->out ? a->out : "build/bench";
     int known = !strcmp(a->input, "precision") || !strcmp(a->input, "stability") || !strcmp(a->input, "speed");
+    if (!known) {
+        fprintf(stderr, "footsim bench: unknown benchmark '%s'; give precision, stability, speed or equivalence\n",
+                a->input);
+        return FS_BAD_INPUT;
+    }
+    /* what only bench equivalence takes */
+    const char *only = a->nset ? "--set" : a->reference ? "--reference" : a->steps ? "--steps" : NULL;
+    if (a->input2 || only) {
+        fprintf(stderr, "footsim bench %s: %s%s%s is for bench equivalence only; bench %s takes -j, --quick, --out, "
+                "--replace and --data\n", a->input, a->input2 ? "a campaign ('" : "", a->input2 ? a->input2 : only,
+                a->input2 ? "')" : "", a->input);
+        return FS_BAD_INPUT;
+    }
     fs_error err;
     /* the folder must be one footsim writes into (marked, or only bench files), before measuring */
-    if (known && fs_outdir_shared(dir, bench_files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_shared(dir, bench_files, a->replace, "--out", &err) != FS_OK)
         return cli_report(err.status, err.message);
     if (!strcmp(a->input, "precision"))
         return cli_bench_precision(a, dir);
     if (!strcmp(a->input, "stability"))
         return cli_bench_stability(a, dir);
-    if (!strcmp(a->input, "speed"))
-        return cli_bench_speed(a, dir);
-    fprintf(stderr, "footsim bench: unknown benchmark '%s'; give precision, stability or speed\n", a->input);
-    return FS_BAD_INPUT;
+    return cli_bench_speed(a, dir);
 }

@@ -9,8 +9,10 @@
  *   foot under the rig on each other shipped terrain (seed 1), each against its own run at 1e-5 s
  *   with dWorldStep, where the landing converges (docs/model.md, friction).
  * Error is the ankle's distance (and the hinge angles' difference) from the reference, largest and
- * RMS over the run; cost is the median wall time of the steps over repeated runs. Writes
- * DIR/precision.csv, precision.md and precision.png (gnuplot). */
+ * RMS over the run; cost is the median wall time of the steps over repeated runs. Last, campaign
+ * equivalence (cli_bench_equivalence.c) of scenarios/equivalence_flat.ini on one worker, into
+ * DIR/precision_equivalence/ (its folder checked before anything runs). Writes DIR/precision.csv,
+ * precision.md (with the equivalence verdicts) and precision.png (gnuplot). */
 #include "cli.h"
 
 #include "footsim/base/fs_stats.h"
@@ -63,6 +65,14 @@ static const double SUBSTEP_STEPS_FULL[] = {5e-4, 8e-4, 1e-3, 2e-3, 5e-3, 1e-2};
 static const double SUBSTEP_STEPS_QUICK[] = {1e-3, 1e-2};
 static const int SUBSTEPS_FULL[] = {2, 4, 8};
 static const int SUBSTEPS_QUICK[] = {8};
+/* the campaign-equivalence stage: the flat campaign (40 trials) against 1e-5 s, where the landing
+ * converges, at each step of the sweep; --quick on 2 seeds (8 trials) against 5e-5 s, two steps,
+ * one on each side of the verdict (about 4 s) */
+static const char *const EQUIVALENCE_CAMPAIGN = "scenarios/equivalence_flat.ini";
+static const char *const EQUIVALENCE_SET_QUICK[] = {"campaign.seeds=2"};
+static const char *const EQUIVALENCE_REFERENCE_FULL = "1e-5", *const EQUIVALENCE_REFERENCE_QUICK = "5e-5";
+static const char *const EQUIVALENCE_STEPS_FULL = "2e-5,5e-5,1e-4,2e-4,5e-4,1e-3,2e-3,5e-3,1e-2";
+static const char *const EQUIVALENCE_STEPS_QUICK = "1e-4,1e-3";
 
 /* A scene: its scenario (loaded and placed once; each row edits only its run settings, as fields),
  * how it is run, and its reference path. */
@@ -310,6 +320,7 @@ typedef struct report {
     const char *machine;
     int quick;
     const fs_provenance *prov;
+    const cli_equivalence *eq;  /* the campaign-equivalence stage */
 } report;
 
 static int fill_csv(FILE *f, const void *user)
@@ -452,6 +463,14 @@ static int fill_md(FILE *f, const void *user)
     fprintf(f, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
             "from nowhere: `status` in the CSV; neither is put on a front); `footsim bench stability` maps where.\n",
         blown, n, drifting);
+    fprintf(f, "\n### Campaign equivalence\n\n`%s`%s at each step against its own run at h = %s s with the same "
+            "seeds, on one worker, as `footsim bench equivalence` runs it: every cell's success intervals must "
+            "overlap the reference's and its medians lie within 5 %% or a floor (docs/bench.md). The header, "
+            "machine and provenance are in `precision_equivalence/equivalence.md`, each step's comparison in "
+            "`precision_equivalence/h<STEP>.md`, the reference campaign in `precision_equivalence/reference/`.\n\n",
+        EQUIVALENCE_CAMPAIGN, quick ? " on 2 seeds" : "",
+        quick ? EQUIVALENCE_REFERENCE_QUICK : EQUIVALENCE_REFERENCE_FULL);
+    cli_equivalence_table(f, x->eq);
     fputs("\nProvenance: ", f);
     fs_provenance_print(x->prov, f);
     fputs(".\n", f);
@@ -531,6 +550,23 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     int nrows = 0;
     char machine[512];
     cli_machine(machine, sizeof machine);
+    /* the equivalence stage's folder and campaign checked before anything is measured */
+    char eq_dir[FS_OUT_PATH + 32];
+    snprintf(eq_dir, sizeof eq_dir, "%s/precision_equivalence", dir);
+    cli_equivalence_spec spec = {.campaign = cli_data_path(EQUIVALENCE_CAMPAIGN), .shown = EQUIVALENCE_CAMPAIGN,
+                                 .set = a->quick ? EQUIVALENCE_SET_QUICK : NULL, .nset = a->quick,
+                                 .reference = a->quick ? EQUIVALENCE_REFERENCE_QUICK : EQUIVALENCE_REFERENCE_FULL,
+                                 .steps = a->quick ? EQUIVALENCE_STEPS_QUICK : EQUIVALENCE_STEPS_FULL, .jobs = 1,
+                                 .command = a->quick ? "footsim bench precision --quick" : "footsim bench precision",
+                                 .who = "footsim bench precision", .option = "--out"};
+    cli_equivalence *eq;
+    int eq_status = cli_equivalence_open(&eq, &spec, eq_dir, a->replace);
+    if (eq_status) {
+        cli_equivalence_close(eq);
+        free(scenes);
+        free(rows);
+        return eq_status;
+    }
     fs_status s = fs_make_dirs(dir, &err);
     /* touchdown at about 35 ms, the impact over by 0.1 s; --quick stops soon after */
     double landing_s = a->quick ? 0.2 : 0.5;
@@ -572,7 +608,9 @@ int cli_bench_precision(const cli_args *a, const char *dir)
                                  &err);
     if (s == FS_OK)
         s = sweep(scenes, nscenes, a->quick, rows, &nrows, &err);
-    const report x = {rows, nrows, scenes, nscenes, machine, a->quick, &prov};
+    if (s == FS_OK && (eq_status = cli_equivalence_run(eq)) != 0) /* said already */
+        s = fs_fail(&err, (fs_status)eq_status, "bench precision: the campaign-equivalence stage failed (above)");
+    const report x = {rows, nrows, scenes, nscenes, machine, a->quick, &prov, eq};
     if (s == FS_OK)
         s = fs_write_in(dir, "precision.csv", fill_csv, &x, &err);
     if (s == FS_OK)
@@ -582,6 +620,7 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     if (s == FS_OK)
         cli_gnuplot(dir, "precision.gp", "precision.png", "bench precision");
     fs_provenance_free(&prov);
+    cli_equivalence_close(eq);
     for (int c = 0; c < NSCENES; c++) { /* calloc'd: the scenes not loaded free nothing */
         fs_track_free(&scenes[c].ref);
         fs_scenario_free(&scenes[c].base);
@@ -590,6 +629,7 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     free(rows);
     if (s != FS_OK)
         return cli_report(s, err.message);
-    printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}\n", nrows, dir);
+    printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}; campaign equivalence "
+           "in %s/\n", nrows, dir, eq_dir);
     return 0;
 }
