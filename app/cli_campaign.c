@@ -768,7 +768,7 @@ int cli_compare(const cli_args *a)
     if (!a->input2)
         return cli_report(FS_BAD_INPUT, "compare: give two summary.json files: RESULT BASELINE");
     fs_error err;
-    fs_status s = a->equivalence ? fs_campaign_equivalence(a->input, a->input2, a->force, stdout, &err)
+    fs_status s = a->equivalence ? fs_campaign_equivalence(a->input, NULL, a->input2, a->force, stdout, NULL, &err)
                                  : fs_campaign_compare(a->input, a->input2, a->force, stdout, &err);
     return s == FS_BAD_INPUT ? fail(&err) : (int)s;
 }

@@ -33,8 +33,11 @@ check '[ "$(grep -c "^| [0-9]" "$md")" -eq 1 ]'
 check 'grep -Eq "^\| 1e-3 \| (equivalent|\*\*not equivalent\*\*) \| [0-9]+ \| [0-9.e+-]+ \| [0-9.]+ \|$" "$md"'
 check 'grep -q "^Provenance (of the reference): footsim .*; seeds 1 to 2; .*overrides .run.step_s=1e-4.\.$" "$md"'
 # the comparison, judged against the reference put in place
-check 'grep -q "against the reference $tmp/eq/reference/summary.json" "$tmp/eq/h1e-3.md"'
-check 'grep -q "^| flat | flat | drop_weight | median_ankle_drop_m |" "$tmp/eq/h1e-3.md"'
+check 'grep -q "^The campaign at h = 1e-3 s against the reference $tmp/eq/reference/summary.json" "$tmp/eq/h1e-3.md"'
+# the count of the row is the comparison's own
+n=$(grep -c "\*\*differs\*\*" "$tmp/eq/h1e-3.md")
+check 'grep -q "^| 1e-3 | [^|]* | $n |" "$md"'
+check 'grep -q "^| flat | flat | drop_weight | median_rest_ankle_drop_m |" "$tmp/eq/h1e-3.md"'
 for f in summary.json summary.md summary.csv trials.csv; do
     check '[ -s "$tmp/eq/reference/$f" ]'
 done

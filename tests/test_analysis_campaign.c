@@ -241,7 +241,9 @@ static fs_status equivalent_to(const char *tmp, const char *name, void (*change)
     snprintf(reference, sizeof reference, "%s/base/summary.json", tmp);
     FILE *null = fopen("/dev/null", "w");
     fs_error err;
-    fs_status s = fs_campaign_equivalence(result, reference, 0, null, &err);
+    int differ = -1;
+    fs_status s = fs_campaign_equivalence(result, NULL, reference, 0, null, &differ, &err);
+    CHECK(differ >= 0 && (differ > 0) == (s == FS_EXPECTATION_FAILED));
     fclose(null);
     return s;
 }

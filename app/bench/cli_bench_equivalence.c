@@ -209,7 +209,9 @@ static fs_status run_one(cli_equivalence *e, eq_run *r, int reference, const cha
 static fs_status judge(cli_equivalence *e, eq_run *r, fs_error *err)
 {
     char result[FS_OUT_PATH + 128], reference[FS_OUT_PATH + 32], path[FS_OUT_PATH + STEP_TEXT + 8];
+    char name[STEP_TEXT + 64];
     snprintf(result, sizeof result, "%s/h%s/summary.json", e->scratch.partial, r->text);
+    snprintf(name, sizeof name, "The campaign at h = %s s", r->text);
     snprintf(reference, sizeof reference, "%s/summary.json", e->reference.path);
     snprintf(path, sizeof path, "%s/h%s.md", e->dir, r->text);
     char *buf = NULL;
@@ -217,14 +219,11 @@ static fs_status judge(cli_equivalence *e, eq_run *r, fs_error *err)
     FILE *f = open_memstream(&buf, &len);
     if (!f)
         return fs_fail(err, FS_NO_MEMORY, "out of memory");
-    fs_status s = fs_campaign_equivalence(result, reference, 0, f, err);
+    fs_status s = fs_campaign_equivalence(result, name, reference, 0, f, &r->differ, err);
     if (fclose(f) != 0 && s <= FS_EXPECTATION_FAILED)
         s = fs_fail(err, FS_NO_MEMORY, "out of memory");
     if (s <= FS_EXPECTATION_FAILED) {
         r->equivalent = s == FS_OK;
-        r->differ = 0;
-        for (const char *p = strstr(buf, "**differs**"); p; p = strstr(p + 1, "**differs**"))
-            r->differ++;
         s = fs_write_atomic(path, buf, len, err);
     }
     free(buf);
@@ -237,7 +236,7 @@ static int fill_equivalence(FILE *f, const void *user)
     const cli_equivalence_spec *sp = &e->spec;
     fprintf(f, "# Campaign equivalence: `%s`\n\n`%s` on %s; %s; load average %.2f at the start; %d worker%s (-j %d). "
             "Reference: h = %s s, %.3g s of wall time (the trials alone). A step is *equivalent* when every cell's "
-            "success intervals overlap the reference's and its medians of impulse, final lean, ankle drop, settle "
+            "success intervals overlap the reference's and its medians of impulse, final lean, ankle drop at rest, settle "
             "time and contacts lie within 5 %% or a floor (`footsim compare --equivalence`; each step's table in "
             "`h<STEP>.md`, the reference campaign's files in `reference/`).\n\n",
             sp->shown, sp->command, e->date, e->machine, e->load, sp->jobs, sp->jobs > 1 ? "s" : "", sp->jobs,

@@ -144,8 +144,8 @@ static void compare_provenance(const cJSON *result, const cJSON *baseline, int e
     fprintf(out, differ ? "\n" : "provenance: the same seeds, overrides and inputs\n\n");
 }
 
-static fs_status compare_mode(const char *result_path, const char *baseline_path, int force, int equivalence,
-                              FILE *out, fs_error *err);
+static fs_status compare_mode(const char *result_path, const char *result_name, const char *baseline_path,
+                              int force, int equivalence, FILE *out, int *nbad, fs_error *err);
 
 /* ---- equivalence ------------------------------------------------------------------------- */
 
@@ -209,22 +209,24 @@ static int equivalence_row(FILE *out, const cJSON *ref, const cJSON *r)
     return bad;
 }
 
-fs_status fs_campaign_equivalence(const char *result_path, const char *reference_path, int force, FILE *out,
-                                  fs_error *err)
+fs_status fs_campaign_equivalence(const char *result_path, const char *result_name, const char *reference_path,
+                                  int force, FILE *out, int *ndiffer, fs_error *err)
 {
-    return compare_mode(result_path, reference_path, force, 1, out, err);
+    return compare_mode(result_path, result_name, reference_path, force, 1, out, ndiffer, err);
 }
 
 fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, int force, FILE *out, fs_error *err)
 {
-    return compare_mode(result_path, baseline_path, force, 0, out, err);
+    return compare_mode(result_path, NULL, baseline_path, force, 0, out, NULL, err);
 }
 
 /* The two comparisons share reading, provenance and the pairing of rows; `equivalence` picks the
  * rule a pair of rows is judged by. */
-static fs_status compare_mode(const char *result_path, const char *baseline_path, int force, int equivalence,
-                              FILE *out, fs_error *err)
+static fs_status compare_mode(const char *result_path, const char *result_name, const char *baseline_path,
+                              int force, int equivalence, FILE *out, int *nbad, fs_error *err)
 {
+    if (nbad)
+        *nbad = 0;
     cJSON *result = campaign_read_summary(result_path, err);
     cJSON *baseline = result ? campaign_read_summary(baseline_path, err) : NULL;
     if (!baseline) {
@@ -243,7 +245,7 @@ static fs_status compare_mode(const char *result_path, const char *baseline_path
     const cJSON *rrows = cJSON_GetObjectItemCaseSensitive(result, "rows");
     const cJSON *brows = cJSON_GetObjectItemCaseSensitive(baseline, "rows");
     fprintf(out, "%s against the %s %s\n\n| foot | terrain | robot | quantity | %s | result | allowed | "
-                 "verdict |\n|---|---|---|---|--:|--:|---|---|\n", result_path,
+                 "verdict |\n|---|---|---|---|--:|--:|---|---|\n", result_name ? result_name : result_path,
             equivalence ? "reference" : "baseline", baseline_path, equivalence ? "reference" : "baseline");
     int bad = 0, changed = 0;
     const cJSON *b, *r;
@@ -273,5 +275,7 @@ static fs_status compare_mode(const char *result_path, const char *baseline_path
                 cJSON_GetArraySize(brows), changed, bad, bad ? "CHANGED" : changed ? "within tolerance" : "identical");
     cJSON_Delete(result);
     cJSON_Delete(baseline);
+    if (nbad)
+        *nbad = bad;
     return bad ? FS_EXPECTATION_FAILED : FS_OK;
 }

@@ -187,9 +187,10 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
  * final lean, ankle drop at rest, settle time, mean and final contacts) lie within 5 % of the reference's or
  * an absolute floor (0.5 deg, 0.1 mm, 5 ms, 1 contact), whichever is larger; peak force is reported,
  * not judged. FS_OK when every cell is equivalent, FS_EXPECTATION_FAILED when not or a row is
- * missing, FS_BAD_INPUT as fs_campaign_compare. */
-fs_status fs_campaign_equivalence(const char *result_path, const char *reference_path, int force, FILE *out,
-                                  fs_error *err);
+ * missing (*ndiffer, unless NULL: how many quantities differ), FS_BAD_INPUT as fs_campaign_compare.
+ * result_name names the result in the table's heading (NULL: result_path). */
+fs_status fs_campaign_equivalence(const char *result_path, const char *result_name, const char *reference_path,
+                                  int force, FILE *out, int *ndiffer, fs_error *err);
 
 /* ---- provenance and the journal (campaign_journal.c) -------------------------------------- */
 
