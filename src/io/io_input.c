@@ -19,7 +19,8 @@ FILE *fs_open_regular(const char *path, long max_bytes, const char *what, fs_err
     /* O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused just after */
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0) {
-        fs_fail(err, FS_BAD_INPUT, "%s: cannot open %s (%s)", path, what, strerror(errno));
+        fs_fail(err, FS_BAD_INPUT, "%s: cannot open %s (%s); give the path of %s that can be read", path, what,
+                strerror(errno), what);
         return NULL;
     }
     struct stat st;

@@ -628,8 +628,9 @@ static int fill_marker(FILE *f, const void *user)
 {
     (void)user;
     fprintf(f, "footsim results folder, format %d\n"
-               "footsim replaces this folder whole when asked to write here again; a folder without this file\n"
-               "is never replaced unless --replace is given.\n", FS_MARKER_FORMAT);
+               "footsim replaces this folder whole (a folder several commands share, such as a bench's: only\n"
+               "the files it writes) when asked to write here again; a folder without this file is never\n"
+               "written into unless --replace is given.\n", FS_MARKER_FORMAT);
     return 1;
 }
 
