@@ -99,7 +99,7 @@ static void impulse_counts_the_impact_not_the_fall(void)
 static void impulse_does_not_move_with_the_step(void)
 {
     /* the slab's seeds whose count, when it ended at the rest speed, moved 9 % between 1e-5 and
-       2e-4 s; the two bipeds at the campaign's step for them (5e-4 s) and at twice it */
+       2e-4 s; the two bipeds at the campaign's step for them (1e-3 s, landing.ini) and at half it */
     for (int seed = 5; seed <= 7; seed += 2) {
         fs_trial_result fine = land("run.step_s=1e-5", seed), coarse = land("run.step_s=2e-4", seed);
         REQUIRE(fine.outcome == FS_LANDED && coarse.outcome == FS_LANDED);
