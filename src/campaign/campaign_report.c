@@ -193,7 +193,7 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
     fs_path_stem(c->trial_path, trial, sizeof trial);
     fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot, terrain and robot)%s%s. Success: the "
                "trial landed; undecided trials (the window ended first) count as not landed and are shown apart; "
-               "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically or hang (hung: the worker killed by the watchdog).\n\n",
+               "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically or hang (hung: the worker killed by the watchdog); the ankle drop at rest's over the trials that landed.\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
             c->nsweep ? "; each terrain swept over " : "", c->sweep[0]);
     if (c->nsweep == 2)

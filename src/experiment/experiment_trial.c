@@ -40,9 +40,10 @@ void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw)
 /* What a trial watches while it runs. */
 typedef struct watch {
     int touched;
-    double weight_N;    /* of everything that moves: what the ground carries at rest */
+    double mass_kg;     /* of everything that moves */
     double impulse_window_s; /* [landing] impulse_window_s */
-    double momentum_Ns; /* the ground's vertical impulse beyond the weight since touchdown */
+    double force_from_s; /* the start of the (sub)step in which the ground first pushed */
+    double momentum_Ns; /* the ground's vertical impulse beyond the weight (and load) since then */
     double touch_ankle[3];
     double contact_sum;
     long contact_steps;
@@ -87,6 +88,7 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
         }
         w->touched = 1;
         out->touchdown_s = first ? first->time_s : sim->time_s;
+        w->force_from_s = first ? first->found_s : sim->time_s - h;
         if (first)
             memcpy(w->touch_ankle, first->ankle_m, sizeof first->ankle_m);
         else
@@ -97,17 +99,22 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
     w->contact_sum += sim->contacts_now;
     w->contact_steps++;
-    /* the impact: the ground's vertical impulse beyond the weight since touchdown, which is the
-     * momentum it has taken out of the fall, at its largest within the window after touchdown. A
-     * landing reads its mass times its touchdown speed (and any rebound); a robot that sinks on or
-     * topples after its impact loses momentum to gravity again and is read where its impact ended.
-     * No threshold decides when to stop counting: the largest value over a fixed time moves as
-     * little as the motion does, whatever the step. The step's force is taken as even over the part
-     * of the step after touchdown; the step that ends the window counts up to its end. */
-    double start = fmax(sim->time_s - h, out->touchdown_s), end = out->touchdown_s + w->impulse_window_s;
+    /* the impact: the ground's vertical impulse beyond the weight (and any load) since it first
+     * pushed, which is the momentum it has taken out of the fall, at its largest within the window
+     * after touchdown. A landing reads its mass times its speed at the start of the (sub)step whose
+     * collision found the contact (and any rebound); a robot that sinks on or topples after its
+     * impact loses momentum to gravity again and is read where its impact ended. No threshold
+     * decides when to stop counting: the largest value over a fixed time moves as little as the
+     * motion does. The count starts with the (sub)step in which the contact force first acts (a
+     * whole step after the touchdown's instant, or the substep that found it), so that whole steps
+     * and substeps count alike; the speed then is the touchdown's plus g times up to that step, a
+     * bias of at most the weight times the step (0.3 % of a landing's impulse at 1e-4 s). The step
+     * that ends the window counts up to its end, its force taken as even over its pushing part. */
+    double start = fmax(sim->time_s - h, w->force_from_s), end = out->touchdown_s + w->impulse_window_s;
     if (start < end && sim->time_s > start) {
         double in = fmin(sim->time_s, end) - start;
-        w->momentum_Ns += (f[2] * h / (sim->time_s - start) - w->weight_N) * in;
+        double weight_N = -(w->mass_kg * sim->sc->def.gravity_m_per_s2 + fs_sim_load_now_N(sim)) * sim->down[2];
+        w->momentum_Ns += (f[2] * h / (sim->time_s - start) - weight_N) * in;
         out->impact_impulse_Ns = fmax(out->impact_impulse_Ns, w->momentum_Ns);
     }
 }
@@ -229,9 +236,8 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     if (log)
         fs_log_row(log, &sim);
     fs_run_logger logger = {log, log ? log->every : 1, 0};
-    /* the weight along world z, gravity turned by the tilt about the lateral axis */
-    double weight_N = moving_mass_kg(&sim, d) * d->gravity_m_per_s2 * cos(d->tilt_deg * DEG);
-    trial_run t = {.d = d, .w = {.rest_since = -1, .weight_N = weight_N, .impulse_window_s = d->impulse_window_s},
+    trial_run t = {.d = d, .w = {.rest_since = -1, .mass_kg = moving_mass_kg(&sim, d),
+                                 .impulse_window_s = d->impulse_window_s},
                    .out = out};
     fs_outcome_rules rules;
     rules_of(sc, &sim, &rules);

@@ -213,6 +213,7 @@ void fs_sim_note_touch(fs_sim *sim, double h)
         fs_sim_foot_ankle(sim, f, a);
         dBodyGetPointVel(foot_ankle_body(sim, f), a[0], a[1], a[2], va);
         t->touched = 1;
+        t->found_s = sim->time_s;
         t->time_s = sim->time_s - back;
         for (int k = 0; k < 3; k++)
             t->ankle_m[k] = a[k] - back * va[k];

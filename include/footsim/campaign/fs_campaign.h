@@ -133,7 +133,8 @@ typedef struct fs_campaign_row {
     int trials, landed, fell, undecided, failed_numerics;
     int hung;                              /* trials whose worker the watchdog killed (not physics) */
     double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
-    int nmetric;                           /* trials the medians are over (all but failed_numerics, hung) */
+    int nmetric;                           /* trials the medians are over (all but failed_numerics, hung;
+                                              the ankle drop at rest's: the landed among them) */
     double median[FS_CAMPAIGN_NMETRICS];   /* over those that have the metric; NAN when none has */
     /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
     int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */

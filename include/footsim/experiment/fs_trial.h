@@ -33,7 +33,9 @@ typedef struct fs_trial_result {
     double touchdown_s;          /* first contact */
     double peak_tilt_deg, final_tilt_deg;   /* the body's lean from upright */
     double peak_force_N;         /* peak vertical ground force on the foot */
-    double impact_impulse_Ns;    /* vertical ground impulse from touchdown until the fall is arrested */
+    double impact_impulse_Ns;    /* momentum the ground took out of the fall: the largest vertical
+                                    ground impulse beyond the weight, from the step it first pushed,
+                                    within landing.impulse_window_s of touchdown (docs/landing.md) */
     double settle_time_s;        /* from touchdown until at rest (until the end when it never was) */
     double mean_contacts, final_contacts;   /* foot-terrain contact points, mean after touchdown */
     double ankle_drop_m;         /* ankle height at touchdown minus at the end */

@@ -58,6 +58,7 @@ typedef struct fs_touch {
     int touched;
     double time_s;
     double ankle_m[3];
+    double found_s; /* the start of the (sub)step whose collision found it: its contact force acts from then */
 } fs_touch;
 
 typedef struct fs_sim {
