@@ -21,6 +21,7 @@
 #include "footsim/model/fs_scenario.h"
 #include "footsim/sim/fs_sim.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -84,7 +85,8 @@ static int parse_steps(cli_equivalence *e)
     for (const char *p = sp->steps; !s;) {
         size_t len = strcspn(p, ",");
         if (e->nsteps == MAX_STEPS) {
-            fprintf(stderr, "%s: --steps: at most %d steps\n", sp->who, MAX_STEPS);
+            fprintf(stderr, "%s: --steps: at most %d steps; run the rest in a second command with another --out\n",
+                    sp->who, MAX_STEPS);
             return FS_BAD_INPUT;
         }
         eq_run *r = &e->step[e->nsteps];
@@ -195,7 +197,8 @@ static fs_status run_one(cli_equivalence *e, eq_run *r, int reference, const cha
         if (g)
             s = fs_fail(err, (fs_status)g, "%s/success.png: the chart could not be written", dir);
     } else if (s == FS_OK && mkdir(dir, 0777) != 0) {
-        s = fs_fail(err, FS_IO, "%s: cannot make the folder", dir);
+        s = fs_fail(err, FS_IO, "%s: cannot make the folder (%s); give --out a folder that can be written", dir,
+                    strerror(errno));
     }
     if (s == FS_OK)
         s = fs_campaign_write_summary(c, rows, dir, err);
