@@ -266,6 +266,8 @@ static void impulse_out(fs_campaign_row *rows) { rows[0].median[5] = 11 * 1.051;
 static void drop_in_floor(fs_campaign_row *rows) { rows[0].median[12] += 0.99e-4; }
 static void drop_past_floor(fs_campaign_row *rows) { rows[0].median[12] += 1.01e-4; }
 static void fall_drop_moved(fs_campaign_row *rows) { rows[1].median[9] *= 2; }
+/* flat's one landed trial gone: no ankle drop at rest; said, not judged (the success rate is) */
+static void none_landed(fs_campaign_row *rows) { rows[1].median[12] = NAN; }
 static void force_doubled(fs_campaign_row *rows) { rows[0].median[4] *= 2; } /* reported, not judged */
 static void no_contacts(fs_campaign_row *rows) { rows[0].median[7] = NAN; }
 
@@ -302,6 +304,8 @@ static void test_equivalence(void)
     CHECK(equivalent_to(tmp, "drop_in", drop_in_floor) == FS_OK);
     CHECK(equivalent_to(tmp, "drop_out", drop_past_floor) == FS_EXPECTATION_FAILED);
     CHECK(equivalent_to(tmp, "fall_drop", fall_drop_moved) == FS_OK);
+    CHECK(equivalent_to(tmp, "none_landed", none_landed) == FS_OK);
+    CHECK(compare_with(tmp, "none_landed_vs_base", none_landed) == FS_OK);
     CHECK(equivalent_to(tmp, "force", force_doubled) == FS_OK);
     CHECK(equivalent_to(tmp, "no_contacts", no_contacts) == FS_EXPECTATION_FAILED);
     /* a trial more left undecided, or hung, is not equivalent */

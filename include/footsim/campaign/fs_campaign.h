@@ -38,6 +38,7 @@ enum {
 typedef struct fs_metric {
     const char *name;      /* "peak_force_N" */
     const char *tolerance; /* default "relative, absolute" */
+    int over_landed;       /* 1: only a trial that landed has it (its median is over those) */
 } fs_metric;
 extern const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS];
 
