@@ -4,7 +4,8 @@
 # equivalence.md with the step's row, h<STEP>.md and the reference campaign's files, exit 0, and
 # leaves no scratch behind; a bad step is refused (exit 2) before anything is written; a folder of
 # the user's is refused without --replace and kept with it; a run again into its own folder
-# replaces its files. Usage: cli_bench_equivalence.sh path/to/footsim (run from the source folder).
+# replaces its files, and a run at other steps removes the earlier steps' comparisons.
+# Usage: cli_bench_equivalence.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
 src=$PWD
 cat >"$tmp/tiny.ini" <<END
@@ -67,4 +68,11 @@ check '[ "$status" -eq 0 ] && [ -n "$(find "$md" "$tmp/eq/h1e-3.md" -newermt 200
 check '[ "$(find "$md" "$tmp/eq/h1e-3.md" -newermt 2001-01-01 | wc -l)" -eq 2 ]'
 check 'grep -q "; 2 workers (-j 2)" "$md" && [ "$(grep -c "^| 1e-3 | " "$md")" -eq 1 ]'
 check '[ -z "$(ls -A "$tmp" | grep -e partial -e lock)" ]'
+# another step: the earlier step's comparison goes (said on stderr), a file not named for a step stays
+echo notes >"$tmp/eq/hello.md"
+eq --steps 2e-3 --out "$tmp/eq" >/dev/null 2>"$tmp/err3"
+status=$?
+check '[ "$status" -eq 0 ] && [ -s "$tmp/eq/h2e-3.md" ] && [ ! -e "$tmp/eq/h1e-3.md" ] && [ -s "$tmp/eq/hello.md" ]'
+check 'grep -q "removed $tmp/eq/h1e-3.md, a comparison from an earlier run at another step" "$tmp/err3"'
+check '[ "$(grep -c "^| [0-9]" "$md")" -eq 1 ] && grep -q "^| 2e-3 | " "$md"'
 finish

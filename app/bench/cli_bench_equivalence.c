@@ -9,6 +9,8 @@
  * DIR/equivalence.md (one row a step: verdict, quantities that differ, wall time, speed-up on the
  * reference). The steps' own campaigns go to a scratch folder beside reference/ that is removed on
  * every path footsim controls; DIR/reference/ is put in place only once every campaign has run.
+ * Comparisons an earlier run at other steps left (DIR/h<STEP>.md, STEP a step) are removed last,
+ * so that the folder holds the run equivalence.md describes.
  *
  * Everything is checked before any trial runs (exit 2, nothing written for a bad step or
  * campaign): the steps (numbers in run.step_s's range, none given twice), the campaign loaded at
@@ -26,8 +28,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 enum { MAX_STEPS = 32, STEP_TEXT = 32 };
 
@@ -261,6 +265,33 @@ void cli_equivalence_table(FILE *f, const cli_equivalence *e)
     }
 }
 
+/* Removes DIR/h<STEP>.md files an earlier run of other steps left (footsim's: named for a step in
+ * run.step_s's range), so that the folder holds one run's comparisons, those equivalence.md lists;
+ * says each on stderr. */
+static void remove_stale(const cli_equivalence *e)
+{
+    DIR *d = opendir(e->dir);
+    const struct dirent *ent;
+    while (d && (ent = readdir(d))) {
+        const char *n = ent->d_name;
+        size_t len = strlen(n);
+        if (len < 5 || n[0] != 'h' || strcmp(n + len - 3, ".md") || len - 4 >= STEP_TEXT)
+            continue;
+        char text[STEP_TEXT], *end;
+        snprintf(text, sizeof text, "%.*s", (int)(len - 4), n + 1);
+        double h = strtod(text, &end);
+        int ours = *end == 0 && end != text && h >= FS_STEP_MIN_S && h <= FS_STEP_MAX_S;
+        for (int i = 0; ours && i < e->nsteps; i++)
+            ours = strcmp(text, e->step[i].text) != 0;
+        char path[FS_OUT_PATH + STEP_TEXT + 8];
+        snprintf(path, sizeof path, "%s/%s", e->dir, n);
+        if (ours && unlink(path) == 0)
+            fprintf(stderr, "%s: removed %s, a comparison from an earlier run at another step\n", e->spec.who, path);
+    }
+    if (d)
+        closedir(d);
+}
+
 int cli_equivalence_run(cli_equivalence *e)
 {
     const cli_equivalence_spec *sp = &e->spec;
@@ -288,6 +319,8 @@ int cli_equivalence_run(cli_equivalence *e)
         s = judge(e, &e->step[i], &err);
     if (s == FS_OK)
         s = fs_write_in(e->dir, "equivalence.md", fill_equivalence, e, &err);
+    if (s == FS_OK)
+        remove_stale(e);
     fs_outdir_abort(&e->scratch);
     return s == FS_OK ? 0 : cli_report(s, err.message);
 }
