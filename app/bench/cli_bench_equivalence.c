@@ -284,7 +284,7 @@ static void remove_stale(const cli_equivalence *e)
         for (int i = 0; ours && i < e->nsteps; i++)
             ours = strcmp(text, e->step[i].text) != 0;
         char path[FS_OUT_PATH + STEP_TEXT + 8];
-        snprintf(path, sizeof path, "%s/%s", e->dir, n);
+        snprintf(path, sizeof path, "%s/h%s.md", e->dir, text);
         if (ours && unlink(path) == 0)
             fprintf(stderr, "%s: removed %s, a comparison from an earlier run at another step\n", e->spec.who, path);
     }
