@@ -63,14 +63,24 @@ struct cli_equivalence {
 
 /* ---- checks --------------------------------------------------------------------------------- */
 
+/* Whether text is a number (*step_s), and (*in_range) one in run.step_s's range. */
+static int step_of(const char *text, double *step_s, int *in_range)
+{
+    char *end;
+    size_t len = strlen(text);
+    *step_s = strtod(text, &end);
+    int number = len > 0 && strspn(text, "0123456789.eE+-") == len && *end == 0;
+    *in_range = number && *step_s >= FS_STEP_MIN_S && *step_s <= FS_STEP_MAX_S;
+    return number;
+}
+
 /* One step as given (len characters of text) into r: a number of seconds in run.step_s's range. */
 static int parse_step(const cli_equivalence_spec *sp, const char *option, const char *text, size_t len, eq_run *r)
 {
-    char *end;
+    int in_range;
     snprintf(r->text, sizeof r->text, "%.*s", (int)(len < STEP_TEXT ? len : STEP_TEXT - 1), text);
-    r->step_s = strtod(r->text, &end);
-    int number = len > 0 && len < STEP_TEXT && strspn(r->text, "0123456789.eE+-") == len && *end == 0;
-    if (!number || !(r->step_s >= FS_STEP_MIN_S && r->step_s <= FS_STEP_MAX_S)) {
+    int number = len < STEP_TEXT && step_of(r->text, &r->step_s, &in_range);
+    if (!number || !in_range) {
         int many = !strcmp(option, "--steps");
         fprintf(stderr, "%s: %s: '%.*s' is %s; give %s in seconds from %g to %g (run.step_s's range), e.g. %s\n",
                 sp->who, option, (int)len, text, number ? "out of range" : "not a number of seconds",
@@ -277,10 +287,11 @@ static void remove_stale(const cli_equivalence *e)
         size_t len = strlen(n);
         if (len < 5 || n[0] != 'h' || strcmp(n + len - 3, ".md") || len - 4 >= STEP_TEXT)
             continue;
-        char text[STEP_TEXT], *end;
+        char text[STEP_TEXT];
         snprintf(text, sizeof text, "%.*s", (int)(len - 4), n + 1);
-        double h = strtod(text, &end);
-        int ours = *end == 0 && end != text && h >= FS_STEP_MIN_S && h <= FS_STEP_MAX_S;
+        double h;
+        int ours;
+        step_of(text, &h, &ours);
         for (int i = 0; ours && i < e->nsteps; i++)
             ours = strcmp(text, e->step[i].text) != 0;
         char path[FS_OUT_PATH + STEP_TEXT + 8];

@@ -56,6 +56,12 @@ static void tolerance_of(const cJSON *baseline, int m, double tol[2])
 
 static int same_number(double a, double b) { return (isnan(a) && isnan(b)) || a == b; }
 
+/* A table row's first cells: the cell it is about. */
+static void put_cell(FILE *out, const cJSON *row)
+{
+    fprintf(out, "| %s | %s | %s | ", text_of(row, "foot"), text_of(row, "terrain"), text_of(row, "robot"));
+}
+
 /* A median over the landed trials that one of two cells has and the other does not (no trial of
  * it landed) is said, not judged: the success rates judge that change, and it would count twice.
  * Returns 1 then. */
@@ -63,9 +69,9 @@ static int landed_in_one(FILE *out, const cJSON *r, const char *key, int over_la
 {
     if (!over_landed || isnan(base) == isnan(now))
         return 0;
-    fprintf(out, "| %s | %s | %s | %s | %.6g | %.6g | | not judged: no trial landed in one of the two (the success "
-                 "rate judges that) |\n",
-            text_of(r, "foot"), text_of(r, "terrain"), text_of(r, "robot"), key, base, now);
+    put_cell(out, r);
+    fprintf(out, "%s | %.6g | %.6g | | not judged: no trial landed in one of the two (the success rate judges that) "
+                 "|\n", key, base, now);
     return 1;
 }
 
@@ -75,9 +81,9 @@ static int not_in(FILE *out, const cJSON *older, const cJSON *r, const char *key
 {
     if (cJSON_GetObjectItemCaseSensitive(older, key))
         return 0;
-    fprintf(out, "| %s | %s | %s | %s | (not in the %s) | %.6g | | not compared: the %s was written before "
-                 "footsim had it |\n",
-            text_of(r, "foot"), text_of(r, "terrain"), text_of(r, "robot"), key, which, number_of(r, key), which);
+    put_cell(out, r);
+    fprintf(out, "%s | (not in the %s) | %.6g | | not compared: the %s was written before footsim had it |\n", key,
+            which, number_of(r, key), which);
     return 1;
 }
 
@@ -85,8 +91,8 @@ static int not_in(FILE *out, const cJSON *older, const cJSON *r, const char *key
 static int report_change(FILE *out, const cJSON *row, const char *what, double base, double now, double lo, double hi)
 {
     int bad = !(now >= lo && now <= hi) && !(isnan(base) && isnan(now));
-    fprintf(out, "| %s | %s | %s | %s | %.6g | %.6g | [%.6g, %.6g] | %s |\n", text_of(row, "foot"),
-            text_of(row, "terrain"), text_of(row, "robot"), what, base, now, lo, hi, bad ? "**outside**" : "within");
+    put_cell(out, row);
+    fprintf(out, "%s | %.6g | %.6g | [%.6g, %.6g] | %s |\n", what, base, now, lo, hi, bad ? "**outside**" : "within");
     return bad;
 }
 
@@ -205,8 +211,8 @@ static int report_equivalence(FILE *out, const cJSON *row, const char *what, dou
                               double hi, int judged)
 {
     int bad = judged && !(now >= lo && now <= hi) && !(isnan(ref) && isnan(now));
-    fprintf(out, "| %s | %s | %s | %s | %.6g | %.6g | ", text_of(row, "foot"), text_of(row, "terrain"),
-            text_of(row, "robot"), what, ref, now);
+    put_cell(out, row);
+    fprintf(out, "%s | %.6g | %.6g | ", what, ref, now);
     if (judged)
         fprintf(out, "[%.6g, %.6g] | %s |\n", lo, hi, bad ? "**differs**" : "equivalent");
     else
@@ -221,9 +227,10 @@ static int equivalence_row(FILE *out, const cJSON *ref, const cJSON *r)
     double lo = number_of(ref, "ci_low"), hi = number_of(ref, "ci_high");
     double rlo = number_of(r, "ci_low"), rhi = number_of(r, "ci_high");
     int overlap = rlo <= hi && lo <= rhi;
-    fprintf(out, "| %s | %s | %s | success_rate | %.6g [%.3g, %.3g] | %.6g [%.3g, %.3g] | intervals overlap | %s |\n",
-            text_of(r, "foot"), text_of(r, "terrain"), text_of(r, "robot"), number_of(ref, "success_rate"), lo, hi,
-            number_of(r, "success_rate"), rlo, rhi, overlap ? "equivalent" : "**differs**");
+    put_cell(out, r);
+    fprintf(out, "success_rate | %.6g [%.3g, %.3g] | %.6g [%.3g, %.3g] | intervals overlap | %s |\n",
+            number_of(ref, "success_rate"), lo, hi, number_of(r, "success_rate"), rlo, rhi,
+            overlap ? "equivalent" : "**differs**");
     int bad = !overlap;
     for (int i = 0; i < N_EQUIVALENCE; i++) {
         char key[FS_NAME_MAX + 8];
@@ -292,8 +299,8 @@ static fs_status compare_mode(const char *result_path, const char *result_name, 
     cJSON_ArrayForEach(b, brows) {
         r = find_row(rrows, b);
         if (!r) {
-            fprintf(out, "| %s | %s | %s | (row) | present | **missing** | | **outside** |\n", text_of(b, "foot"),
-                    text_of(b, "terrain"), text_of(b, "robot"));
+            put_cell(out, b);
+            fputs("(row) | present | **missing** | | **outside** |\n", out);
             bad++, changed++;
         } else if (equivalence) {
             bad += equivalence_row(out, b, r);
@@ -303,8 +310,8 @@ static fs_status compare_mode(const char *result_path, const char *result_name, 
     }
     cJSON_ArrayForEach(r, rrows)
         if (!find_row(brows, r)) {
-            fprintf(out, "| %s | %s | %s | (row) | **missing** | present | | **outside** |\n", text_of(r, "foot"),
-                    text_of(r, "terrain"), text_of(r, "robot"));
+            put_cell(out, r);
+            fputs("(row) | **missing** | present | | **outside** |\n", out);
             bad++, changed++;
         }
     if (equivalence)

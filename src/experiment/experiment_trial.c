@@ -172,10 +172,10 @@ static double moving_mass_kg(const fs_sim *sim, const fs_scenario_def *d)
     return sim->geom->biped ? mass : mass + d->robot.mass_kg;
 }
 
-static void rules_of(const fs_scenario *sc, const fs_sim *sim, fs_outcome_rules *r)
+/* The judge's rules; mass: of everything that moves (moving_mass_kg). */
+static void rules_of(const fs_scenario *sc, double mass, fs_outcome_rules *r)
 {
     const fs_scenario_def *d = &sc->def;
-    double mass = moving_mass_kg(sim, d);
     *r = (fs_outcome_rules){.fall_lean_rad = d->fall_tilt_deg * DEG,
                             .landed_lean_rad = d->landed_tilt_deg * DEG,
                             .lost_ground_s = d->lost_ground_s,
@@ -240,7 +240,7 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
                                  .impulse_window_s = d->impulse_window_s},
                    .out = out};
     fs_outcome_rules rules;
-    rules_of(sc, &sim, &rules);
+    rules_of(sc, t.w.mass_kg, &rules);
     out->robot_mass_kg = d->robot.mass_kg;
     fs_judge_init(&t.judge, &rules);
     /* the logger last and only when asked: it never stops the trial, so the judge's stop is the same */
