@@ -33,6 +33,14 @@ typedef struct run_work {
     fs_outdir out;
 } run_work;
 
+/* FOOTSIM_TEST_ODE_ERROR: what an ODE internal error does, inside ODE's guard as in a step. */
+static fs_status ode_test_failure(void *arg, fs_error *err)
+{
+    (void)arg, (void)err;
+    fs_ode_fail("FOOTSIM_TEST_ODE_ERROR");
+    return FS_OK; /* not reached: the guard returns FS_NUMERICAL */
+}
+
 static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
 {
     fs_scenario *sc = &w->sc;
@@ -64,10 +72,10 @@ static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
         }
         obs = &observer;
     }
-    if (getenv("FOOTSIM_TEST_ODE_ERROR"))
-        fs_ode_fail("FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
     fs_provenance prov; /* what made the results: the files, the --set, the settings */
     fs_status rs = fs_scenario_provenance(sc, a->set, a->nset, &prov, &err);
+    if (rs == FS_OK && getenv("FOOTSIM_TEST_ODE_ERROR")) /* tests: an ODE internal error comes back as exit 3 */
+        rs = fs_ode_guard(ode_test_failure, NULL, NULL, &err);
     if (rs == FS_OK)
         rs = fs_run(sc, obs, res, &err);
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;

@@ -78,7 +78,7 @@ fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
     if (width < 1 || height < 1 || width > FS_RENDER_MAX_SIZE || height > FS_RENDER_MAX_SIZE)
         return fs_fail(err, FS_BAD_INPUT, "frame size %dx%d; allowed: WxH with each from 1 to %d", width, height,
                        FS_RENDER_MAX_SIZE);
-    if (render_gl_load(err) != FS_OK)
+    if (fs_render_gl_load(err) != FS_OK)
         return FS_BAD_INPUT;
     fs_render *r = calloc(1, sizeof *r);
     if (r)
@@ -448,8 +448,8 @@ static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, in
     if (fit >= 0 && (size_t)fit < strlen(text))
         text[fit] = 0; /* cut at the tile's edge, not into its neighbour */
     int bw = (int)strlen(text) * 6 * scale + 2 * pad - scale, bh = 7 * scale + 2 * pad;
-    render_shade_box(r, x0, y0, bw < w ? bw : w, bh < h ? bh : h, 0.45);
-    render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
+    fs_render_shade_box(r, x0, y0, bw < w ? bw : w, bh < h ? bh : h, 0.45);
+    fs_render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
 }
 
 /* A bar of a round length (1, 2 or 5 times a power of ten, mm) about a fifth of the viewport wide
@@ -472,10 +472,10 @@ static void draw_scale_bar(fs_render *r, int x0, int y0, int w, int h, double vi
         return;
     char label[32];
     snprintf(label, sizeof label, "%g MM", len_m * 1e3);
-    render_fill_box(r, bx, by, len, th, bar);
-    render_fill_box(r, bx, by - 3 * scale, scale, 3 * scale, bar);
-    render_fill_box(r, bx + len - scale, by - 3 * scale, scale, 3 * scale, bar);
-    render_text_gl(r, bx + len + 3 * scale, by - 5 * scale, scale, label, ink);
+    fs_render_fill_box(r, bx, by, len, th, bar);
+    fs_render_fill_box(r, bx, by - 3 * scale, scale, 3 * scale, bar);
+    fs_render_fill_box(r, bx + len - scale, by - 3 * scale, scale, 3 * scale, bar);
+    fs_render_text_gl(r, bx + len + 3 * scale, by - 5 * scale, scale, label, ink);
 }
 
 int fs_render_legend(fs_render *r, int x0, int y0, int w, int h)
@@ -486,9 +486,9 @@ int fs_render_legend(fs_render *r, int x0, int y0, int w, int h)
     int scale = (int)fmax(1, fmin(h / 12, w / 340)), x = x0 + 3 * scale, cy = y0 + h / 2;
     for (int i = 0; i < 4; i++) {
         int sw = 8 * scale;
-        render_fill_box(r, x, cy - 2 * scale, sw, 4 * scale, colour[i]);
+        fs_render_fill_box(r, x, cy - 2 * scale, sw, 4 * scale, colour[i]);
         x += sw + 3 * scale;
-        x += render_text_gl(r, x, cy - 3 * scale - scale / 2, scale, words[i], ink) + 5 * scale;
+        x += fs_render_text_gl(r, x, cy - 3 * scale - scale / 2, scale, words[i], ink) + 5 * scale;
     }
     gl.Finish();
     return x - x0;
