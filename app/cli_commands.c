@@ -477,6 +477,9 @@ typedef struct folder_job {
     const fs_provenance *provenance; /* what made the result, put into the JSON (NULL: none) */
     /* more files beside the JSON (a trial's trajectory.csv), written into dir; NULL: none */
     fs_status (*write_more)(void *user, const char *dir, fs_error *err);
+    /* what every frame says (a trial's seed), and the last once the run ended (and its outcome);
+       NULL: nothing */
+    void (*frame_label)(const void *user, const void *result, int ended, char *label, size_t size);
 } folder_job;
 
 /* out: the caller's results folder (on the heap with the rest of its work), aborted here when it
@@ -489,10 +492,23 @@ static int in_folder(const cli_args *a, const folder_job *j, fs_outdir *out, cha
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     int s = 0;
+    char label[128] = "";
     if (a->frames && !(s = cli_frames_open(a, j->framed, out->partial, &frames, &observer)))
         obs = &observer;
+    if (frames && j->frame_label) {
+        j->frame_label(j->user, j->result, 0, label, sizeof label);
+        cli_frames_label(frames, label);
+    }
     fs_status rs = s ? FS_OK : j->run(j->user, obs, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
+    int fstatus = 0;
+    if (frames && j->frame_label && rs == FS_OK) {
+        j->frame_label(j->user, j->result, 1, label, sizeof label);
+        fstatus = cli_frames_finish(frames, label);
+    }
+    if (frames) {
+        int closed = cli_frames_close(frames, rs == FS_OK && !fstatus, out->path);
+        fstatus = fstatus ? fstatus : closed;
+    }
     if (!s && rs == FS_OK && !fstatus) {
         cJSON *o = j->to_json(j->result);
         if (j->provenance)
@@ -534,6 +550,17 @@ static fs_status write_trial_log(void *user, const char *dir, fs_error *err)
 
 static cJSON *trial_json_of(const void *r) { return trial_json(r); }
 
+/* A trial's frames say its seed, and the last its outcome and the rule that decided it. */
+static void trial_frame_label(const void *user, const void *result, int ended, char *label, size_t size)
+{
+    const trial_job *t = user;
+    const fs_trial_result *r = result;
+    if (ended)
+        snprintf(label, size, "SEED %d  %s (%s)", t->seed, fs_outcome_name(r->outcome), fs_rule_name(r->rule));
+    else
+        snprintf(label, size, "SEED %d", t->seed);
+}
+
 /* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
  * trial.json, its time series trajectory.csv (footsim plot draws it) and the frames, swapped in
  * whole at the end. The frames are framed on the pose the
@@ -565,7 +592,7 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     prov.first_seed = seed, prov.nseeds = 1;
     trial_job t = {base, seed, r, &w->log};
     folder_job j = {dir, cli_trial_files, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov,
-                    write_trial_log};
+                    write_trial_log, trial_frame_label};
     if (!s)
         s = in_folder(a, &j, &w->out, dir_out, size);
     fs_provenance_free(&prov);
@@ -686,7 +713,7 @@ int cli_walk(const cli_args *a)
         fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
         if (fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
             s = fail(&err);
-        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL};
+        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL, NULL};
         if (!s)
             s = in_folder(a, &j, &w->out, shown, sizeof shown);
         fs_provenance_free(&prov);

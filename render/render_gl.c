@@ -434,16 +434,17 @@ static void set_lighting(void)
 /* Text scale for a viewport: 1 up to 720 px tall (or 1280 wide), then a step per 360 px. */
 static int text_scale(int w, int h) { return (int)fmax(1, fmin(h / 360, w / 640)); }
 
-/* Time, the note, scenario, foot and terrain, one line along the viewport's top on a thin strip. */
+/* Time, the note, then what is drawn: the design file, the terrain, the robot (when there is one)
+ * and the scenario, one line along the viewport's top on a thin strip. */
 static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, int w, int h)
 {
     static const unsigned char white[3] = {255, 255, 255};
     int scale = text_scale(w, h);
-    char text[256];
-    /* the note (an exaggeration) before the names: cut off last on a narrow tile */
-    snprintf(text, sizeof text, "T %.3f S  %s%s%s  %s  %s", scene->time_s, r->note, r->note[0] ? "  " : "",
-             scene->scenario ? scene->scenario : "-", scene->foot ? scene->foot : "-",
-             scene->terrain ? scene->terrain : "-");
+    char text[512];
+    /* the note (the seed, the outcome, an exaggeration) before the names: cut off last on a narrow tile */
+    snprintf(text, sizeof text, "T %.3f S  %s%s%s  ON %s%s%s  (%s)", scene->time_s, r->note, r->note[0] ? "  " : "",
+             scene->design[0] ? scene->design : scene->foot ? scene->foot : "-", scene->terrain ? scene->terrain : "-",
+             scene->robot_file[0] ? "  UNDER " : "", scene->robot_file, scene->scenario ? scene->scenario : "-");
     int pad = 2 * scale, fit = (w - 2 * pad) / (6 * scale);
     if (fit >= 0 && (size_t)fit < strlen(text))
         text[fit] = 0; /* cut at the tile's edge, not into its neighbour */

@@ -12,7 +12,7 @@ struct fs_render {
     unsigned char *rgba;     /* w x h RGBA, rows bottom-up as GL writes them */
     GLuint sphere, cube;     /* display lists: unit sphere (radius 1), unit cube (edges 1) */
     GLuint cylinder;         /* display list: radius 1 about z, from z = 0 to 1, open ends */
-    char note[64];           /* said on every frame's overlay (fs_render_set_note), or "" */
+    char note[128];          /* said on every frame's overlay (fs_render_set_note), or "" */
     double spring_ref_N;     /* the largest spring force seen: full colour */
     double contact_ref_N;    /* the largest contact force seen: the longest arrow */
 };
