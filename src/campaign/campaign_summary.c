@@ -1,5 +1,5 @@
-/* campaign_summary.c: the metrics of a trial and the statistics of a campaign's cells (success
- * rates with Wilson intervals, medians). */
+/* campaign_summary.c: the statistics of a campaign's cells (success rates with Wilson intervals,
+ * medians of the metrics of campaign_metric.c) and the law's prediction for each. */
 #include "campaign_internal.h"
 
 #include "footsim/analysis/fs_analysis.h"
@@ -8,35 +8,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* ---- metrics ------------------------------------------------------------------------------ */
-
-const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS] = {
-    {.name = "end_time_s", .tolerance = "0.1, 0.005"},
-    {.name = "touchdown_s", .tolerance = "0.1, 0.005"},
-    {.name = "peak_tilt_deg", .tolerance = "0.1, 1"},
-    {.name = "final_tilt_deg", .tolerance = "0.1, 1"},
-    {.name = "peak_force_N", .tolerance = "0.1, 10"},
-    {.name = "impact_impulse_Ns", .tolerance = "0.1, 0.5"},
-    {.name = "settle_time_s", .tolerance = "0.1, 0.005"},
-    {.name = "mean_contacts", .tolerance = "0.1, 1"},
-    {.name = "final_contacts", .tolerance = "0.1, 1"},
-    {.name = "ankle_drop_m", .tolerance = "0.1, 0.001"},
-    {.name = "slip_m", .tolerance = "0.1, 0.001"},
-    {.name = "steps", .tolerance = "0.1, 100"},
-    {.name = "rest_ankle_drop_m", .tolerance = "0.1, 0.001", .over_landed = 1},
-};
-
-double fs_metric_value(const fs_trial_result *r, int m)
-{
-    const double v[FS_CAMPAIGN_NMETRICS] = {r->end_time_s,    r->touchdown_s,       r->peak_tilt_deg,
-                                            r->final_tilt_deg, r->peak_force_N,      r->impact_impulse_Ns,
-                                            r->settle_time_s,  r->mean_contacts,     r->final_contacts,
-                                            r->ankle_drop_m,   r->slip_m,            (double)r->steps,
-                                            /* the ankle's drop at rest: a trial that fell never rested */
-                                            r->outcome == FS_LANDED ? r->ankle_drop_m : NAN};
-    return v[m];
-}
 
 /* ---- statistics --------------------------------------------------------------------------- */
 

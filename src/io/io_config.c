@@ -2,7 +2,7 @@
 #include "footsim/io/fs_config.h"
 
 #include "footsim/io/fs_input.h"
-#include "footsim/io/fs_provenance.h"
+#include "footsim/base/fs_hash.h"
 
 #include <ini.h>
 #include <errno.h>

@@ -4,6 +4,7 @@
 
 #include "footsim/io/fs_output.h"
 
+#include "footsim/base/fs_hash.h"
 #include "footsim/base/fs_path.h"
 #include "footsim/base/fs_version.h"
 #include "footsim/io/fs_input.h"
@@ -17,14 +18,6 @@
 
 /* The largest data file hashed (a heightmap is refused by its reader well below). */
 #define DATA_MAX_BYTES (1L << 30)
-
-unsigned long long fs_hash_bytes(unsigned long long h, const void *data, size_t n)
-{
-    const unsigned char *s = data;
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ s[i]) * 0x100000001b3ULL;
-    return h;
-}
 
 fs_status fs_provenance_init(fs_provenance *p, const char *relative_to, fs_error *err)
 {

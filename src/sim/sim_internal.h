@@ -66,7 +66,7 @@ void fs_sim_set_step(fs_sim *sim, double h);
 /* After one substep of n: adds its ground forces, over n, to step_force (sim_measure.c). */
 void fs_sim_add_step_force(fs_sim *sim, int substep, int n);
 
-/* Adds the time since the last timed stage ended to stage, when sim is profiled (sim_step.c). */
+/* Adds the time since the last timed stage ended to stage, when sim is profiled (sim_profile.c). */
 void fs_sim_lap(fs_sim *sim, fs_stage stage);
 
 /* Body i's ODE body: 0 .. nbodies - 1 the foot's, nbodies the robot (sim_measure.c). */

@@ -1,11 +1,17 @@
 /* sim_measure.c: what a simulation's state measures now (energy, speeds, lean, penetration,
- * ground force, hinge angles, the ankle): read from ODE, never changing it. */
+ * ground force, hinge angles, the ankle, the load): read from ODE, never changing it. */
 #include "sim_internal.h"
 
 #include "sim_ground.h"
 
 #include <math.h>
 #include <string.h>
+
+double fs_sim_load_now_N(const fs_sim *sim)
+{
+    const fs_scenario_def *s = &sim->sc->def;
+    return sim->load_N * (s->ramp_s > 0 && sim->time_s < s->ramp_s ? sim->time_s / s->ramp_s : 1.0);
+}
 
 void fs_sim_ankle(const fs_sim *sim, double p[3])
 {

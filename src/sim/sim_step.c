@@ -3,35 +3,6 @@
 
 #include <math.h>
 #include <string.h>
-#include <time.h>
-
-/* ---- profiling ---------------------------------------------------------------------------- */
-
-double fs_clock_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-/* Adds the time since the last stage ended to stage, when profiling. */
-void fs_sim_lap(fs_sim *sim, fs_stage stage)
-{
-    if (!sim->profile)
-        return;
-    double t = fs_clock_s();
-    if (sim->profile_mark > 0) {
-        sim->profile->stage_s[stage] += t - sim->profile_mark;
-        sim->profile->laps[stage]++;
-    }
-    sim->profile_mark = t;
-}
-
-double fs_sim_load_now_N(const fs_sim *sim)
-{
-    const fs_scenario_def *s = &sim->sc->def;
-    return sim->load_N * (s->ramp_s > 0 && sim->time_s < s->ramp_s ? sim->time_s / s->ramp_s : 1.0);
-}
 
 static void apply_load(fs_sim *sim)
 {

@@ -76,8 +76,4 @@ fs_status fs_provenance_from_json(const struct cJSON *o, fs_provenance *p, fs_er
 /* Whether a and b record the same version, overrides, inputs, settings and seeds. */
 int fs_provenance_equal(const fs_provenance *a, const fs_provenance *b);
 
-/* FNV-1a over n bytes, continuing from h (start with FS_HASH_START). */
-#define FS_HASH_START 0xcbf29ce484222325ULL
-unsigned long long fs_hash_bytes(unsigned long long h, const void *data, size_t n);
-
 #endif

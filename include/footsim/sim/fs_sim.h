@@ -21,6 +21,7 @@
 #ifndef FS_SIM_H
 #define FS_SIM_H
 
+#include "footsim/base/fs_clock.h"
 #include "footsim/sim/fs_check.h"
 #include "footsim/model/fs_scenario.h"
 #include "footsim/sim/fs_ode.h"
@@ -171,9 +172,6 @@ typedef struct fs_profile {
  * adds the time of each of its steps' stages to that fs_profile (CLOCK_MONOTONIC; the caller
  * zeroes it first). Off, each stage costs one untaken branch. Timing never changes a result. */
 
-/* Seconds on the monotonic clock (CLOCK_MONOTONIC): what profiling, fs_track_run and the
- * benchmarks time with. */
-double fs_clock_s(void);
 
 /* The load's point (the ankle) in world coordinates now. */
 void fs_sim_ankle(const fs_sim *sim, double p[3]);
