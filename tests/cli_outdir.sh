@@ -208,6 +208,14 @@ else
     echo "skipped: root writes a chmod a-w folder (the read-only-folder case of issue 33 item 13 for a user)"
 fi
 
+# issue 33 item 14: a campaign journal that is a folder, or a symbolic link (not followed), is named
+# as such (exit 2), not "the header ends early" or "Too many levels of symbolic links" (exit 4)
+mkdir -p "$tmp/jf.journal/journal"
+expect 2 "jf.journal/journal: is a folder, not a campaign journal.*--fresh" -- campaign scenarios/landing_ci.ini --set campaign.seeds=1 --out "$tmp/jf"
+mkdir "$tmp/jl.journal" && echo "elsewhere" >"$tmp/elsewhere" && ln -s "$tmp/elsewhere" "$tmp/jl.journal/journal"
+expect 2 "jl.journal/journal: is a symbolic link; footsim does not follow links for a campaign journal" -- campaign scenarios/landing_ci.ini --set campaign.seeds=1 --out "$tmp/jl"
+check '[ "$(cat "$tmp/elsewhere")" = elsewhere ] && [ ! -e "$tmp/jf" ] && [ ! -e "$tmp/jl" ]'
+
 # the committed results folders carry the marker
 for d in results/landing results/roughness results/baseline results/bench; do
     check "[ -f $d/.footsim-results ]"

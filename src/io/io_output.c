@@ -289,6 +289,18 @@ fs_status fs_check_file_target(const char *path, const char *what, const unsigne
     return FS_OK;
 }
 
+fs_status fs_check_own_file(const char *path, const char *what, const char *fix, fs_error *err)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || S_ISREG(st.st_mode))
+        return FS_OK;
+    if (S_ISLNK(st.st_mode))
+        return fs_fail(err, FS_BAD_INPUT, "%s: is a symbolic link; footsim does not follow links for %s (it reads back "
+                       "and appends to only the file it wrote there itself): %s", path, what, fix);
+    return fs_fail(err, FS_BAD_INPUT, "%s: is %s, not %s (a regular file footsim writes): %s", path,
+                   type_name(st.st_mode), what, fix);
+}
+
 fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
 {
     if (snprintf(temp, size, "%s.tmp.%ld", path, (long)getpid()) >= (int)size)

@@ -57,6 +57,12 @@ fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_err
 fs_status fs_check_file_target(const char *path, const char *what, const unsigned char *signature, size_t nsig,
                                const char *kind, int replace, fs_error *err);
 
+/* Refuses (FS_BAD_INPUT) what footsim must not read back or append to as a file of its own (a
+ * campaign journal): a symbolic link (never followed: its target is not footsim's to append to), a
+ * folder, FIFO, socket or device, each named, then `fix` (what to do). Absent or a regular file:
+ * FS_OK. `what` names the file ("a campaign journal"). */
+fs_status fs_check_own_file(const char *path, const char *what, const char *fix, fs_error *err);
+
 /* A temporary name for path beside it ("path.tmp.<pid>"), removed at exit unless committed. */
 fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err);
 
