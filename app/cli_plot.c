@@ -84,6 +84,9 @@ int cli_gnuplot_to(const char *dir, const char *script, const char *png, const c
             ;
     if (!(pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
         remove(temp);
+        char shown_png[FS_OUT_PATH + 64], shown_dir[FS_OUT_PATH + 64]; /* not a partial folder that will be gone */
+        png = fs_output_shown(png, shown_png, sizeof shown_png);
+        dir = fs_output_shown(dir, shown_dir, sizeof shown_dir);
         if (pid > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
             fprintf(stderr, "footsim %s: gnuplot stopped by %s: no chart %s\n", who,
                     WTERMSIG(status) == SIGINT ? "SIGINT" : "SIGTERM", png); /* Ctrl-C reaches the group */

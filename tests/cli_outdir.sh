@@ -216,6 +216,13 @@ mkdir "$tmp/jl.journal" && echo "elsewhere" >"$tmp/elsewhere" && ln -s "$tmp/els
 expect 2 "jl.journal/journal: is a symbolic link; footsim does not follow links for a campaign journal" -- campaign scenarios/landing_ci.ini --set campaign.seeds=1 --out "$tmp/jl"
 check '[ "$(cat "$tmp/elsewhere")" = elsewhere ] && [ ! -e "$tmp/jf" ] && [ ! -e "$tmp/jl" ]'
 
+# issue 33 item 14: gnuplot failing on a campaign's chart names the folder the data end up in, not
+# the partial folder that is gone by then
+. tests/small_campaign.sh
+mkdir "$tmp/bin" && printf '#!/bin/sh\nexit 1\n' >"$tmp/bin/gnuplot" && chmod +x "$tmp/bin/gnuplot"
+PATH="$tmp/bin:$PATH" camp -j 2 --out "$tmp/gp" >/dev/null 2>"$tmp/gp.err"
+check 'grep -q "gnuplot failed: no chart $tmp/gp/success.png (the data and script chart.gp are in $tmp/gp)" "$tmp/gp.err" && ! grep -q partial "$tmp/gp.err" && [ -f "$tmp/gp/chart.gp" ]'
+
 # the committed results folders carry the marker
 for d in results/landing results/roughness results/baseline results/bench; do
     check "[ -f $d/.footsim-results ]"

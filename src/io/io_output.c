@@ -216,9 +216,7 @@ static int fsync_path(const char *path)
     return r;
 }
 
-/* path as the user knows it: a file in a partial folder of this process (DIR.partial.<pid>/NAME,
- * gone once the write failed) named as DIR/NAME, where it was to be. */
-static const char *as_shown(const char *path, char *buf, size_t size)
+const char *fs_output_shown(const char *path, char *buf, size_t size)
 {
     for (int i = 0; i < npend; i++) {
         const char *p = pend[i].path, *mark = strstr(p, ".partial.");
@@ -235,7 +233,7 @@ static const char *as_shown(const char *path, char *buf, size_t size)
 static fs_status write_error(fs_error *err, const char *path, int e)
 {
     char b[FS_OUT_PATH + 64];
-    path = as_shown(path, b, sizeof b);
+    path = fs_output_shown(path, b, sizeof b);
     if (e == ENOSPC)
         return fs_fail(err, FS_IO, "%s: cannot write: No space left on device; free some space and run again", path);
     if (e == EFBIG)
@@ -332,7 +330,7 @@ static fs_status commit(const char *temp, const char *path, int synced, fs_error
         s = write_error(err, path, errno);
     else if (rename(temp, path) != 0) {
         char b[FS_OUT_PATH + 64];
-        s = fs_fail(err, FS_IO, "%s: cannot replace (%s)", as_shown(path, b, sizeof b), strerror(errno));
+        s = fs_fail(err, FS_IO, "%s: cannot replace (%s)", fs_output_shown(path, b, sizeof b), strerror(errno));
     }
     if (s != FS_OK) {
         unlink(temp);

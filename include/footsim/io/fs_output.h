@@ -57,6 +57,11 @@ fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_err
 fs_status fs_check_file_target(const char *path, const char *what, const unsigned char *signature, size_t nsig,
                                const char *kind, int replace, fs_error *err);
 
+/* path as the user will find it: one in a partial results folder of this process
+ * (DIR.partial.<pid>/NAME, renamed or removed when the command ends) as DIR/NAME; any other as it
+ * is. Returns buf or path. For messages. */
+const char *fs_output_shown(const char *path, char *buf, size_t size);
+
 /* Refuses (FS_BAD_INPUT) what footsim must not read back or append to as a file of its own (a
  * campaign journal): a symbolic link (never followed: its target is not footsim's to append to), a
  * folder, FIFO, socket or device, each named, then `fix` (what to do). Absent or a regular file:
