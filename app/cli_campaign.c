@@ -631,10 +631,14 @@ int cli_campaign(const cli_args *a)
 /* The journal file of a shard folder (DIR/trials.journal) or of a journal folder (DIR/journal). */
 static int journal_in(const char *dir, char *path, size_t size)
 {
-    snprintf(path, size, "%s/trials.journal", dir);
+    fs_error err;
+    if (fs_path_format(path, size, "merge", &err, "%s/trials.journal", dir) != FS_OK) {
+        cli_report(err.status, err.message);
+        return 0;
+    }
     if (access(path, F_OK) == 0)
         return 1;
-    snprintf(path, size, "%s/journal", dir);
+    snprintf(path, size, "%s/journal", dir); /* shorter */
     if (access(path, F_OK) == 0)
         return 1;
     fprintf(stderr, "footsim merge: %s: holds no trials.journal; give the folders 'footsim campaign --shard I/N "

@@ -204,11 +204,11 @@ static int by_name(const void *a, const void *b) { return strcmp(*(char *const *
 /* The robot files beside the design's folder (scenarios/robots/ for scenarios/feet/X.ini), sorted. */
 static void shipped_robots(const char *design, double K, double g, pitch_report *p, fs_error *err)
 {
-    char dir[FS_PATH_MAX];
-    snprintf(dir, sizeof dir, "%s", design);
-    char *slash = strrchr(dir, '/');
-    snprintf(slash ? slash + 1 : dir, sizeof dir - (size_t)(slash ? slash + 1 - dir : 0), "../robots");
-    DIR *d = opendir(dir);
+    char dir[FS_OUT_PATH];
+    const char *slash = strrchr(design, '/');
+    int fits = fs_path_format(dir, sizeof dir, "", NULL, "%.*s../robots", slash ? (int)(slash + 1 - design) : 0,
+                              design) == FS_OK;
+    DIR *d = fits ? opendir(dir) : NULL; /* none found: the report says so */
     char *names[MAX_ROBOTS];
     int n = 0;
     for (struct dirent *e; d && (e = readdir(d)) && n < MAX_ROBOTS;) {
@@ -220,9 +220,9 @@ static void shipped_robots(const char *design, double K, double g, pitch_report 
         closedir(d);
     qsort(names, (size_t)n, sizeof names[0], by_name);
     for (int i = 0; i < n; i++) {
-        char path[2 * FS_PATH_MAX];
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        if (names[i] && fs_robot_load(path, NULL, 0, &p->def[p->nrobots], err) == FS_OK) {
+        char path[FS_OUT_PATH];
+        if (names[i] && fs_path_format(path, sizeof path, "", NULL, "%s/%s", dir, names[i]) == FS_OK &&
+            fs_robot_load(path, NULL, 0, &p->def[p->nrobots], err) == FS_OK) {
             fs_path_stem(path, p->robot[p->nrobots], FS_NAME_MAX);
             fs_pitch_law_apply(K, &p->def[p->nrobots], g, LAW_LEAN_DEG * M_PI / 180, &p->law[p->nrobots]);
             p->nrobots++;

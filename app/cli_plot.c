@@ -24,12 +24,12 @@
 int cli_have_program(const char *name)
 {
     const char *path = getenv("PATH");
-    char dir[FS_PATH_MAX], full[FS_PATH_MAX + 64];
+    char full[FS_OUT_PATH];
     for (const char *p = path ? path : "/usr/bin:/bin"; *p;) {
         size_t n = strcspn(p, ":");
-        snprintf(dir, sizeof dir, "%.*s", (int)n, p);
-        snprintf(full, sizeof full, "%s/%s", n ? dir : ".", name);
-        if (access(full, X_OK) == 0)
+        /* an entry too long is skipped, never cut short to another folder */
+        if (fs_path_format(full, sizeof full, "", NULL, "%.*s/%s", n ? (int)n : 1, n ? p : ".", name) == FS_OK &&
+            access(full, X_OK) == 0)
             return 1;
         p += n + (p[n] == ':');
     }
