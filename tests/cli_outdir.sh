@@ -181,6 +181,8 @@ for target in "$L" "$N"; do
     check "[ \$? -eq 2 ]"
     check '[ ! -e "$tmp/gggg" ] && [ -z "$(ls "$tmp" | grep -e "^g" -e "^hhh")" ]'
 done
+# an input file's path too long to keep whole is refused so, not cut short to another file
+expect 2 "x.ini: the path is [0-9]* characters long; footsim takes at most [0-9]* here: give a shorter path" -- run "$N/${N##*/}/${N##*/}/${N##*/}/${N##*/}/x.ini"
 # issue 33 item 14: an empty path is refused as such (exit 2), not "footsim: : cannot replace"
 expect 2 "--png '': an empty path; give a path" -- terrain terrains/flat.ini --png ""
 
