@@ -77,11 +77,6 @@ int cli_frames_of_write(cli_frames_of *f, const fs_campaign *c, const fs_trial_r
  * (app/cli_compare.c; app/cli_render.c without the renderer: exit 2). */
 int cli_render_compare(const cli_args *a);
 
-/* What each command writes in its results folder (NULL-terminated): an earlier version's folder,
- * without the marker, is recognised by these (fs_outdir_open). */
-extern const char *const cli_run_files[], *const cli_campaign_files[], *const cli_compare_files[];
-extern const char *const cli_optimize_files[]; /* app/cli_optimize.c */
-extern const char *const cli_trial_files[], *const cli_walk_files[];
 
 int cli_run(const cli_args *a);
 int cli_model(const cli_args *a);
@@ -220,6 +215,10 @@ const char *cli_data_installed(void);
 
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);
+
+/* A command's results folder into dir: --out as given, or results/KIND/NAME. 0, or exit 2 after
+ * saying so when it would not fit whole (fs_path_format): never cut short. */
+int cli_results_dir(const cli_args *a, const char *kind, const char *name, char *dir, size_t size);
 
 /* A zeroed block for a command's large working state (a scenario, a campaign, a results folder's
  * paths): on the heap, owned and freed by the command, never a function-static, so that nothing

@@ -348,10 +348,10 @@ static int journal_folder(const char *journal)
 
 /* Whether dir already holds this campaign's finished results: summary.json, and a trials.csv
  * whose provenance line is h's (the whole campaign), or a trials.journal with h's head (a shard). */
-static int finished_already(const char *dir, const fs_journal_head *h)
+static int finished_already(const char *dir, const fs_journal_head *h, int sharded)
 {
     char path[FS_OUT_PATH + 32];
-    if (h->nshards > 1) {
+    if (sharded) {
         snprintf(path, sizeof path, "%s/trials.journal", dir);
         fs_journal_head old;
         fs_trial_result *results;
@@ -488,7 +488,7 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
         fs_remove_tree(jdir);
         kind = 0;
     }
-    if (!a->fresh && kind == 0 && finished_already(out->path, h)) {
+    if (!a->fresh && kind == 0 && finished_already(out->path, h, a->shard != NULL)) {
         printf("footsim campaign: %s already holds this campaign's finished results (the same inputs, overrides and "
                "version); nothing to do (--fresh runs it again)\n", out->path);
         return 0;
@@ -542,7 +542,7 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
             *frames_of = NULL; /* cli_frames_of_write releases it */
             s = cli_frames_of_write(f, c, results, out->partial, out->path);
             if (!s)
-                s = h->nshards > 1 ? finish_shard(c, h, results, out) : finish(c, results, out);
+                s = a->shard ? finish_shard(c, h, results, out) : finish(c, results, out); /* 1/1 too: a shard */
             if (!out->open) /* the results are in place: the journal has served */
                 fs_remove_tree(jdir);
             else if (interrupted) /* while the results were written (--frames-of, the chart) */
@@ -586,18 +586,20 @@ static int campaign_work_run(const cli_args *a, int jobs, int shard, int nshards
         return fail(&err);
     }
     cli_frames_of *frames_of = NULL; /* --frames-of (app/cli_frames_of.c): checked before any trial */
-    if (a->frames_of && nshards > 1)
+    if (a->frames_of && a->shard)
         s = cli_report(FS_BAD_INPUT, "--frames-of with --shard: a shard holds only some trials; draw them from "
                                      "the merged campaign, or run without --shard");
     if (!s)
         s = cli_frames_of_open(a, &w->c, &frames_of);
     if (!s) {
-        char dir[FS_PATH_MAX + 64];
-        snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : w->c.name);
+        char dir[FS_OUT_PATH];
+        s = cli_results_dir(a, "campaigns", w->c.name, dir, sizeof dir);
         /* SIGINT and SIGTERM stop the trials and keep the journal (a signal ignored stays ignored) */
         fs_catch_signal(SIGINT, on_signal);
         fs_catch_signal(SIGTERM, on_signal);
-        if (fs_outdir_open(&w->out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK) {
+        if (s) {
+            cli_frames_of_free(frames_of);
+        } else if (fs_outdir_open(&w->out, dir, a->replace, "--out", &err) != FS_OK) {
             cli_frames_of_free(frames_of);
             s = fail(&err);
         } else {
@@ -629,15 +631,32 @@ int cli_campaign(const cli_args *a)
 /* The journal file of a shard folder (DIR/trials.journal) or of a journal folder (DIR/journal). */
 static int journal_in(const char *dir, char *path, size_t size)
 {
-    snprintf(path, size, "%s/trials.journal", dir);
+    fs_error err;
+    if (fs_path_format(path, size, "merge", &err, "%s/trials.journal", dir) != FS_OK) {
+        cli_report(err.status, err.message);
+        return 0;
+    }
     if (access(path, F_OK) == 0)
         return 1;
-    snprintf(path, size, "%s/journal", dir);
+    snprintf(path, size, "%s/journal", dir); /* shorter */
     if (access(path, F_OK) == 0)
         return 1;
     fprintf(stderr, "footsim merge: %s: holds no trials.journal; give the folders 'footsim campaign --shard I/N "
             "--out DIR' wrote\n", dir);
     return 0;
+}
+
+/* The index of the folder among dirs[n] that dir is (the same device and inode, whatever either is
+ * called: "s1", "./s1/", a link to it), or -1. */
+static int same_folder(const char *dir, const char *const *dirs, int n)
+{
+    struct stat out, in;
+    if (stat(dir, &out) != 0)
+        return -1; /* not there yet: none of the inputs */
+    for (int k = 0; k < n; k++)
+        if (stat(dirs[k], &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino)
+            return k;
+    return -1;
 }
 
 /* What merge works on, too large for the stack: on the heap, one per command. */
@@ -745,9 +764,17 @@ int cli_merge(const cli_args *a)
         s = FS_BAD_INPUT;
     }
     if (!s) {
-        char dir[FS_PATH_MAX + 64];
-        snprintf(dir, sizeof dir, a->out ? "%s" : "results/campaigns/%s", a->out ? a->out : c->name);
-        if (fs_outdir_open(&w->out, dir, cli_campaign_files, a->replace, "--out", &err) != FS_OK)
+        char dir[FS_OUT_PATH];
+        int input = -1;
+        s = cli_results_dir(a, "campaigns", c->name, dir, sizeof dir);
+        if (!s && (input = same_folder(dir, dirs, n)) >= 0) {
+            fprintf(stderr, "footsim merge: --out %s: is the shard folder %s given to merge (the same folder); "
+                    "replacing it would destroy its journal: give another --out\n", dir, dirs[input]);
+            s = FS_BAD_INPUT;
+        }
+        if (s)
+            ; /* said */
+        else if (fs_outdir_open(&w->out, dir, a->replace, "--out", &err) != FS_OK)
             s = fail(&err);
         else
             s = finish(c, results, &w->out);

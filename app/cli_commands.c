@@ -51,16 +51,15 @@ static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
     if (!a->frames && (a->fps || a->size || a->camera || a->exaggerate))
         fprintf(stderr, "footsim run: warning: %s is unused without --frames; add --frames to draw frames\n",
                 a->fps ? "--fps" : a->size ? "--size" : a->camera ? "--camera" : "--exaggerate");
-    char dir[FS_PATH_MAX + 64];
-    if (a->out)
-        snprintf(dir, sizeof dir, "%s", a->out);
-    else if (!strcmp(sc->name, ".") || !strcmp(sc->name, "..") || !sc->name[0])
+    char dir[FS_OUT_PATH];
+    if (!a->out && (!strcmp(sc->name, ".") || !strcmp(sc->name, "..") || !sc->name[0]))
         return cli_report(FS_BAD_INPUT, "run: the scenario's name cannot name a results folder; give --out DIR");
-    else
-        snprintf(dir, sizeof dir, "results/runs/%s", sc->name);
+    int bad = cli_results_dir(a, "runs", sc->name, dir, sizeof dir);
+    if (bad)
+        return bad;
     /* the folder must be one footsim may replace, and the frame options right, before anything is
      * simulated; everything goes to a partial folder beside it, swapped in whole at the end */
-    if (fs_outdir_open(out, dir, cli_run_files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_open(out, dir, a->replace, "--out", &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
@@ -213,11 +212,11 @@ static int by_name(const void *a, const void *b) { return strcmp(*(char *const *
 /* The robot files beside the design's folder (scenarios/robots/ for scenarios/feet/X.ini), sorted. */
 static void shipped_robots(const char *design, double K, double g, pitch_report *p, fs_error *err)
 {
-    char dir[FS_PATH_MAX];
-    snprintf(dir, sizeof dir, "%s", design);
-    char *slash = strrchr(dir, '/');
-    snprintf(slash ? slash + 1 : dir, sizeof dir - (size_t)(slash ? slash + 1 - dir : 0), "../robots");
-    DIR *d = opendir(dir);
+    char dir[FS_OUT_PATH];
+    const char *slash = strrchr(design, '/');
+    int fits = fs_path_format(dir, sizeof dir, "", NULL, "%.*s../robots", slash ? (int)(slash + 1 - design) : 0,
+                              design) == FS_OK;
+    DIR *d = fits ? opendir(dir) : NULL; /* none found: the report says so */
     char *names[MAX_ROBOTS];
     int n = 0;
     for (struct dirent *e; d && (e = readdir(d)) && n < MAX_ROBOTS;) {
@@ -229,9 +228,9 @@ static void shipped_robots(const char *design, double K, double g, pitch_report 
         closedir(d);
     qsort(names, (size_t)n, sizeof names[0], by_name);
     for (int i = 0; i < n; i++) {
-        char path[2 * FS_PATH_MAX];
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        if (names[i] && fs_robot_load(path, NULL, 0, &p->def[p->nrobots], err) == FS_OK) {
+        char path[FS_OUT_PATH];
+        if (names[i] && fs_path_format(path, sizeof path, "", NULL, "%s/%s", dir, names[i]) == FS_OK &&
+            fs_robot_load(path, NULL, 0, &p->def[p->nrobots], err) == FS_OK) {
             fs_path_stem(path, p->robot[p->nrobots], FS_NAME_MAX);
             fs_pitch_law_apply(K, &p->def[p->nrobots], g, LAW_LEAN_DEG * M_PI / 180, &p->law[p->nrobots]);
             p->nrobots++;
@@ -467,7 +466,6 @@ static int fill_json(FILE *f, const void *user)
  * end; dir_out gets the folder as shown. */
 typedef struct folder_job {
     const char *dir;                 /* the folder asked for */
-    const char *const *files;        /* what the command writes there (fs_outdir_open) */
     const fs_scenario *framed;       /* the scenario the frames are framed on */
     fs_status (*run)(void *user, const fs_run_observer *obs, fs_error *err);
     void *user;
@@ -487,7 +485,7 @@ typedef struct folder_job {
 static int in_folder(const cli_args *a, const folder_job *j, fs_outdir *out, char *dir_out, size_t size)
 {
     fs_error err;
-    if (fs_outdir_open(out, j->dir, j->files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_open(out, j->dir, a->replace, "--out", &err) != FS_OK)
         return fail(&err);
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
@@ -578,12 +576,9 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     fs_error err;
     if (fs_scenario_load(a->input, a->set, a->nset, base, &err) != FS_OK || fs_scenario_require(base, "trial", &err) != FS_OK)
         return fail(&err);
-    char dir[FS_PATH_MAX + 64];
-    if (a->out)
-        snprintf(dir, sizeof dir, "%s", a->out);
-    else
-        snprintf(dir, sizeof dir, "results/trials/%s-seed%d", base->name, seed);
-    int s = 0;
+    char dir[FS_OUT_PATH], name[FS_NAME_MAX + 16];
+    snprintf(name, sizeof name, "%s-seed%d", base->name, seed); /* room for both */
+    int s = cli_results_dir(a, "trials", name, dir, sizeof dir);
     if (a->frames && (fs_scenario_copy(placed, base, &err) != FS_OK || fs_trial_place(placed, seed, NULL, &err) != FS_OK))
         s = fail(&err);
     fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings, the seed */
@@ -591,7 +586,7 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
         s = fail(&err);
     prov.first_seed = seed, prov.nseeds = 1;
     trial_job t = {base, seed, r, &w->log};
-    folder_job j = {dir, cli_trial_files, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov,
+    folder_job j = {dir, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov,
                     write_trial_log, trial_frame_label};
     if (!s)
         s = in_folder(a, &j, &w->out, dir_out, size);
@@ -621,7 +616,7 @@ int cli_trial(const cli_args *a)
         return cli_report(FS_BAD_INPUT, "--seed: give a whole number from 0 to 2147483647");
     fs_trial_result r;
     fs_error err;
-    char dir[4 * FS_PATH_MAX + 64] = "";
+    char dir[FS_OUT_PATH] = "";
     if (a->frames || a->out) {
         int s = trial_in_folder(a, (int)seed, &r, dir, sizeof dir);
         if (s)
@@ -698,22 +693,19 @@ int cli_walk(const cli_args *a)
     fs_scenario *sc = &w->sc;
     fs_error err;
     fs_walk_result r;
-    char dir[FS_PATH_MAX + 64], shown[4 * FS_PATH_MAX + 64] = "";
+    char dir[FS_OUT_PATH], shown[FS_OUT_PATH] = "";
     int s = 0;
     if (fs_scenario_load(a->input, a->set, a->nset, sc, &err) != FS_OK || fs_scenario_require(sc, "walk", &err) != FS_OK)
         s = fail(&err);
     const char *foot = sc->geom.kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
     if (!s && (a->frames || a->out)) {
         /* a folder of its own (default results/walks/NAME/): walk.json and the frames, whole */
-        if (a->out)
-            snprintf(dir, sizeof dir, "%s", a->out);
-        else
-            snprintf(dir, sizeof dir, "results/walks/%s", sc->name);
+        s = cli_results_dir(a, "walks", sc->name, dir, sizeof dir);
         walk_job job = {sc, &r};
         fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
-        if (fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
+        if (!s && fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
             s = fail(&err);
-        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL, NULL};
+        folder_job j = {dir, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL, NULL};
         if (!s)
             s = in_folder(a, &j, &w->out, shown, sizeof shown);
         fs_provenance_free(&prov);

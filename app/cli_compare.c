@@ -249,7 +249,7 @@ int cli_render_compare(const cli_args *a)
     int s = load_pair(a, sc, dir, sizeof w->dir);
     /* the folder must be one footsim may replace before anything is simulated; everything goes to
      * a partial folder beside it, swapped in whole at the end: a failure leaves the old one */
-    if (!s && fs_outdir_open(out, dir, cli_compare_files, a->replace, "--out", &err) != FS_OK)
+    if (!s && fs_outdir_open(out, dir, a->replace, "--out", &err) != FS_OK)
         s = cli_report(err.status, err.message);
     if (!s)
         s = prepare(a, sc, out->partial, &o, frames_dir, r);

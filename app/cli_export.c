@@ -7,13 +7,14 @@
 
 #include <errno.h>
 #include <stdio.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
 /* What an export works on, too large for the stack: on the heap, one per command. */
 typedef struct export_work {
     fs_scenario sc;
-    char design[FS_PATH_MAX + 32], full[FS_PATH_MAX];
+    char design[PATH_MAX + 32], full[PATH_MAX]; /* realpath fills up to PATH_MAX */
 } export_work;
 
 static int export_mjcf(const cli_args *a, export_work *w)
@@ -30,7 +31,8 @@ static int export_mjcf(const cli_args *a, export_work *w)
             fprintf(stderr, "footsim: export: %s: %s; give an existing design file\n", a->input, strerror(errno));
             return FS_BAD_INPUT;
         }
-        snprintf(design, sizeof w->design, "scenario.design=%s", full);
+        if (fs_path_format(design, sizeof w->design, a->input, &err, "scenario.design=%s", full) != FS_OK)
+            return cli_report(err.status, err.message);
         over[0] = design;
         for (int i = 0; i < a->nset; i++)
             over[i + 1] = a->set[i];
@@ -42,7 +44,10 @@ static int export_mjcf(const cli_args *a, export_work *w)
         return cli_report(err.status, err.message);
     char out[FS_OUT_PATH];
     if (a->out) {
-        snprintf(out, sizeof out, "%s", a->out);
+        if (fs_path_format(out, sizeof out, "--out", &err, "%s", a->out) != FS_OK) {
+            fs_scenario_free(sc);
+            return cli_report(err.status, err.message);
+        }
     } else {
         char stem[FS_NAME_MAX];
         fs_path_stem(a->input, stem, sizeof stem);

@@ -164,13 +164,14 @@ static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int i, const
        trials' progress line */
     fprintf(stderr, "footsim campaign: --frames-of: drawing %d of %d: %s on %s under %s, seed %d\n", i + 1, f->n,
             c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed);
-    char path[FS_PATH_MAX * 2], shown[FS_PATH_MAX * 2];
-    if (snprintf(path, sizeof path, "%s/frames/%s-%s-%s-seed%d", dir, c->foot[foot].name, c->terrain[terrain].name,
-                 c->robot[robot].name, seed) >= (int)sizeof path ||
-        snprintf(shown, sizeof shown, "%s/frames/%s-%s-%s-seed%d", shown_dir, c->foot[foot].name,
-                 c->terrain[terrain].name, c->robot[robot].name, seed) >= (int)sizeof shown)
-        return cli_report(FS_BAD_INPUT, "--out: path too long");
+    /* fits: a results folder leaves FS_DIR_ROOM for this (fs_normalise_dir, before any trial) */
+    char path[FS_OUT_PATH], shown[FS_OUT_PATH];
     fs_error err;
+    if (fs_path_format(path, sizeof path, "--out", &err, "%s/frames/%s-%s-%s-seed%d", dir, c->foot[foot].name,
+                       c->terrain[terrain].name, c->robot[robot].name, seed) != FS_OK ||
+        fs_path_format(shown, sizeof shown, "--out", &err, "%s/frames/%s-%s-%s-seed%d", shown_dir, c->foot[foot].name,
+                       c->terrain[terrain].name, c->robot[robot].name, seed) != FS_OK)
+        return cli_report(err.status, err.message);
     if (fs_make_dirs(path, &err) != FS_OK)
         return cli_report(err.status, err.message);
     /* the pose the seed draws, to frame the camera on: on the heap, freed on every path */

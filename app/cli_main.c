@@ -2,11 +2,13 @@
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
+#include "footsim/base/fs_path.h"
 #include "footsim/base/fs_version.h"
 #include "footsim/io/fs_config.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/sim/fs_ode.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,13 +20,6 @@ typedef struct command {
     const char *options; /* the options it takes, for checks and --help */
     const char *help;
 } command;
-
-const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames", "video.mp4", NULL};
-const char *const cli_trial_files[] = {"trial.json", "trajectory.csv", "frames", "video.mp4", NULL};
-const char *const cli_walk_files[] = {"walk.json", "frames", "video.mp4", NULL};
-const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
-                                          "chart.dat", "chart.gp", "trials.journal", NULL};
-const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
 
 static const command commands[] = {
     {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --exaggerate --video --data",
@@ -339,6 +334,14 @@ int cli_report(int status, const char *message)
     return status;
 }
 
+int cli_results_dir(const cli_args *a, const char *kind, const char *name, char *dir, size_t size)
+{
+    fs_error err;
+    fs_status s = a->out ? fs_path_format(dir, size, "--out", &err, "%s", a->out)
+                         : fs_path_format(dir, size, "--out", &err, "results/%s/%s", kind, name);
+    return s == FS_OK ? 0 : cli_report(s, err.message);
+}
+
 void *cli_zalloc(size_t size)
 {
     void *p = calloc(1, size);
@@ -357,6 +360,11 @@ static void print_warning(const char *text, void *user)
 int main(int argc, char **argv)
 {
     fs_warning_handler(print_warning, NULL);
+    /* the command's process policy (the library sets none): what it leaves half written is
+     * removed at exit and on SIGINT, SIGTERM and SIGHUP; a file-size limit (ulimit -f) is a write
+     * error (exit 4, said, nothing half written left), not SIGXFSZ's silent death */
+    signal(SIGXFSZ, SIG_IGN);
+    fs_output_install_cleanup();
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? FS_BAD_INPUT : 0;

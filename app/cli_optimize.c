@@ -11,8 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-const char *const cli_optimize_files[] = {"evaluations.csv", "result.md", NULL};
-
 enum { MAX_EVALUATIONS_KEPT = 100000 };
 
 /* One evaluation, for evaluations.csv. */
@@ -182,9 +180,14 @@ int cli_optimize(const cli_args *a)
         free(w); /* fs_optimize_load freed what it read */
         return cli_report(err.status, err.message);
     }
-    char dir[FS_PATH_MAX + 64];
-    snprintf(dir, sizeof dir, a->out ? "%s" : "results/optimize/%s", a->out ? a->out : o->name);
-    if (fs_outdir_open(out, dir, cli_optimize_files, a->replace, "--out", &err) != FS_OK) {
+    char dir[FS_OUT_PATH];
+    int bad = cli_results_dir(a, "optimize", o->name, dir, sizeof dir);
+    if (bad) {
+        fs_optimize_free(o);
+        free(w);
+        return bad;
+    }
+    if (fs_outdir_open(out, dir, a->replace, "--out", &err) != FS_OK) {
         fs_optimize_free(o);
         free(w);
         return cli_report(err.status, err.message);

@@ -24,12 +24,12 @@
 int cli_have_program(const char *name)
 {
     const char *path = getenv("PATH");
-    char dir[FS_PATH_MAX], full[FS_PATH_MAX + 64];
+    char full[FS_OUT_PATH];
     for (const char *p = path ? path : "/usr/bin:/bin"; *p;) {
         size_t n = strcspn(p, ":");
-        snprintf(dir, sizeof dir, "%.*s", (int)n, p);
-        snprintf(full, sizeof full, "%s/%s", n ? dir : ".", name);
-        if (access(full, X_OK) == 0)
+        /* an entry too long is skipped, never cut short to another folder */
+        if (fs_path_format(full, sizeof full, "", NULL, "%.*s/%s", n ? (int)n : 1, n ? p : ".", name) == FS_OK &&
+            access(full, X_OK) == 0)
             return 1;
         p += n + (p[n] == ':');
     }
@@ -47,7 +47,7 @@ void cli_gp_string(FILE *f, const char *s)
 
 int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who)
 {
-    char temp[2 * FS_PATH_MAX + 64], abs_temp[PATH_MAX + 2 * FS_PATH_MAX + 64], cwd[PATH_MAX];
+    char temp[FS_OUT_PATH + 64], abs_temp[PATH_MAX + FS_OUT_PATH + 64], cwd[PATH_MAX];
     char var[2 * sizeof abs_temp + 16];
     if (!cli_have_program("gnuplot")) {
         fprintf(stderr, "footsim %s: gnuplot is not installed: no chart %s (apt-get install gnuplot-nox "
@@ -84,6 +84,9 @@ int cli_gnuplot_to(const char *dir, const char *script, const char *png, const c
             ;
     if (!(pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
         remove(temp);
+        char shown_png[FS_OUT_PATH + 64], shown_dir[FS_OUT_PATH + 64]; /* not a partial folder that will be gone */
+        png = fs_output_shown(png, shown_png, sizeof shown_png);
+        dir = fs_output_shown(dir, shown_dir, sizeof shown_dir);
         if (pid > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
             fprintf(stderr, "footsim %s: gnuplot stopped by %s: no chart %s\n", who,
                     WTERMSIG(status) == SIGINT ? "SIGINT" : "SIGTERM", png); /* Ctrl-C reaches the group */
@@ -103,23 +106,22 @@ int cli_gnuplot_to(const char *dir, const char *script, const char *png, const c
 
 int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who)
 {
-    char png[2 * FS_PATH_MAX];
-    snprintf(png, sizeof png, "%s/%s", dir, png_name);
+    char png[FS_OUT_PATH];
+    fs_error err;
+    if (fs_path_format(png, sizeof png, "the chart", &err, "%s/%s", dir, png_name) != FS_OK)
+        return cli_report(err.status, err.message);
     int s = cli_gnuplot_to(dir, script, png, who);
     return s < 0 ? 0 : s;
 }
 
 /* ---- footsim plot ----------------------------------------------------------------------------- */
 
-/* What plot writes in --out DIR (and may find there from an earlier plot). */
-static const char *const plot_files[] = {"plot.png", "plot.gp", "success.png", "chart.dat", "chart.gp", NULL};
-
 static int is_file(const char *dir, const char *name)
 {
-    char path[2 * FS_PATH_MAX];
+    char path[FS_OUT_PATH];
     struct stat st;
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+    return fs_path_format(path, sizeof path, "", NULL, "%s/%s", dir, name) == FS_OK && stat(path, &st) == 0 &&
+           S_ISREG(st.st_mode);
 }
 
 /* A run's trajectory: its columns (by kind) and the ankle's first height. */
@@ -160,10 +162,10 @@ static int trailing_number(const char *name)
 /* Reads the header and the first row of dir/trajectory.csv. Exit status (2: not a trajectory). */
 static int read_trajectory(const char *dir, trajectory *t)
 {
-    char path[2 * FS_PATH_MAX], row[16384];
-    snprintf(path, sizeof path, "%s/trajectory.csv", dir);
+    char path[FS_OUT_PATH], row[16384];
     fs_error err;
-    FILE *f = fs_open_regular(path, 1L << 40, "a trajectory.csv written by footsim run", &err);
+    FILE *f = fs_path_format(path, sizeof path, "plot", &err, "%s/trajectory.csv", dir) != FS_OK ? NULL
+            : fs_open_regular(path, 1L << 40, "a trajectory.csv written by footsim run", &err);
     if (!f)
         return cli_report(err.status, err.message);
     int ok = fgets(t->names, sizeof t->names, f) && strchr(t->names, '\n') && fgets(row, sizeof row, f);
@@ -190,11 +192,10 @@ static int read_trajectory(const char *dir, trajectory *t)
 /* The title: what metrics.json says of the run, else the folder. */
 static void run_title(const char *dir, trajectory *t)
 {
-    char path[2 * FS_PATH_MAX], *text = NULL;
+    char path[FS_OUT_PATH], *text = NULL;
     size_t len;
     fs_error err;
-    snprintf(path, sizeof path, "%s/metrics.json", dir);
-    cJSON *m = fs_read_regular(path, 1 << 20, "metrics.json", &text, &len, &err) == FS_OK ? cJSON_Parse(text) : NULL;
+    cJSON *m = fs_path_format(path, sizeof path, "plot", &err, "%s/metrics.json", dir) != FS_OK ? NULL : fs_read_regular(path, 1 << 20, "metrics.json", &text, &len, &err) == FS_OK ? cJSON_Parse(text) : NULL;
     free(text);
     const char *sc = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(m, "scenario"));
     const char *foot = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(m, "foot"));
@@ -312,8 +313,9 @@ static int plot_run_into(const char *dir, const char *out, trajectory *t)
     fs_error err;
     if (fs_write_in(out, "plot.gp", fill_run_script, t, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    char png[FS_PATH_MAX + 16];
-    snprintf(png, sizeof png, "%s/plot.png", out);
+    char png[FS_OUT_PATH];
+    if (fs_path_format(png, sizeof png, "--out", &err, "%s/plot.png", out) != FS_OK)
+        return cli_report(err.status, err.message);
     s = cli_gnuplot_to(out, "plot.gp", png, "plot");
     if (!s)
         printf("%s: %s (script %s/plot.gp)\n", png, t->title, out);
@@ -334,12 +336,12 @@ static int plot_run(const char *dir, const char *out)
 /* A campaign's folder: its chart drawn again from dir/summary.json into out/success.png. */
 static int plot_campaign_into(const char *dir, const char *out, fs_campaign *c, fs_campaign_row *rows)
 {
-    char path[2 * FS_PATH_MAX];
-    snprintf(path, sizeof path, "%s/summary.json", dir);
+    char path[FS_OUT_PATH];
     fs_error err;
-    if (fs_campaign_reload(path, c, rows, &err) != FS_OK || fs_campaign_write_chart(c, rows, out, &err) != FS_OK)
+    if (fs_path_format(path, sizeof path, "plot", &err, "%s/summary.json", dir) != FS_OK ||
+        fs_campaign_reload(path, c, rows, &err) != FS_OK || fs_campaign_write_chart(c, rows, out, &err) != FS_OK ||
+        fs_path_format(path, sizeof path, "--out", &err, "%s/success.png", out) != FS_OK)
         return cli_report(err.status, err.message);
-    snprintf(path, sizeof path, "%s/success.png", out);
     int s = cli_gnuplot_to(out, "chart.gp", path, "plot");
     if (!s)
         printf("%s/success.png: campaign %s, %d cells (feet x terrains x robots: %d x %d x %d; data %s/chart.dat)\n",
@@ -384,7 +386,7 @@ int cli_plot(const cli_args *a)
     }
     const char *out = a->out ? a->out : dir;
     fs_error err;
-    if (a->out && fs_outdir_shared(a->out, plot_files, a->replace, "--out", &err) != FS_OK)
+    if (a->out && fs_outdir_shared(a->out, a->replace, "--out", &err) != FS_OK)
         return cli_report(err.status, err.message);
     return campaign ? plot_campaign(dir, out) : plot_run(dir, out);
 }

@@ -98,11 +98,17 @@ static int fill_figure_script(FILE *f, const void *user)
 static int write_figure(const figure *g, const unsigned char *rgb, const char *png)
 {
     const char *tmp = getenv("TMPDIR");
-    char dir[FS_PATH_MAX];
-    snprintf(dir, sizeof dir, "%s/footsim-terrain-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    char dir[FS_OUT_PATH];
+    fs_error err;
     if (!cli_have_program("gnuplot")) {
         fprintf(stderr, "footsim terrain: gnuplot is not installed: %s is the bare map, without axes or colour "
                         "bar (apt-get install gnuplot-nox draws them)\n", png);
+        return -1;
+    }
+    if (fs_path_format(dir, sizeof dir, "TMPDIR", &err, "%s/footsim-terrain-XXXXXX", tmp && *tmp ? tmp : "/tmp") !=
+        FS_OK) {
+        fprintf(stderr, "footsim terrain: no scratch folder for the figure (%s): %s is the bare map\n", err.message,
+                png);
         return -1;
     }
     if (!mkdtemp(dir)) {
@@ -110,8 +116,7 @@ static int write_figure(const figure *g, const unsigned char *rgb, const char *p
                 strerror(errno), png);
         return -1;
     }
-    fs_error err;
-    char map[FS_PATH_MAX + 16];
+    char map[FS_OUT_PATH + 16];
     snprintf(map, sizeof map, "%s/map.png", dir);
     if (fs_png_write_rgb(map, g->w, g->h, rgb, &err) != FS_OK ||
         fs_write_in(dir, "terrain.gp", fill_figure_script, g, &err) != FS_OK) {

@@ -3,7 +3,8 @@
 # resumed) merged give the files of the campaign run on one machine, byte for byte, as do 2
 # shards; a merge is refused (exit 2, saying which) for a shard missing, a shard given twice, a
 # shard of other overrides, a campaign changed since the shards ran, a folder that is no shard;
-# --shard takes only I/N with 1 <= I <= N. Usage: cli_campaign_shards.sh path/to/footsim (run from
+# --shard takes only I/N with 1 <= I <= N; --shard 1/1 is a shard too (a one-task Slurm array); a
+# merge into one of its own shards is refused (issue 33, items 9 and 11). Usage: cli_campaign_shards.sh path/to/footsim (run from
 # the source folder).
 . "$(dirname "$0")/cli_check.sh"
 
@@ -55,6 +56,32 @@ check_that "a shard of other overrides: says what differs" grep -q "s3other and 
 "$fs" merge "$tmp/s1" "$tmp/ref" --out "$tmp/bad" >/dev/null 2>"$tmp/noshard.err"
 check_that "a folder that is no shard: exit 2" [ $? -eq 2 ]
 check_that "a folder that is no shard: said so" grep -q "ref: holds no trials.journal" "$tmp/noshard.err"
+# issue 33 item 9: --out one of merge's inputs (by device and inode, whatever the name) is refused,
+# before anything is written: the shard's journal stays
+cp "$tmp/s1/trials.journal" "$tmp/s1.journal.before"
+"$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$tmp/s1" >/dev/null 2>"$tmp/self.err"
+check_that "merge --out a shard it reads: exit 2" [ $? -eq 2 ]
+check_that "merge --out a shard it reads: said so" grep -q "is the shard folder .*s1 given to merge" "$tmp/self.err"
+check_that "merge --out a shard it reads: its journal untouched" cmp -s "$tmp/s1.journal.before" "$tmp/s1/trials.journal"
+"$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$tmp//./s3/" >/dev/null 2>"$tmp/self.err"
+check_that "merge --out a shard by another name: exit 2" [ $? -eq 2 ]
+check_that "merge --out a shard by another name: its journal kept" [ -f "$tmp/s3/trials.journal" ]
+
+# issue 33 item 11: --shard 1/1 writes a shard (a one-task Slurm array), which merge accepts
+camp -j 2 --shard 1/1 --out "$tmp/one" >"$tmp/one.out" 2>&1
+check_that "--shard 1/1: exit 0" [ $? -eq 0 ]
+check_that "--shard 1/1: a shard folder (its trials.journal only)" [ "$(ls -A "$tmp/one" | tr '\n' ' ')" = ".footsim-results trials.journal " ]
+"$fs" merge "$tmp/one" --out "$tmp/m1" >/dev/null 2>"$tmp/m1.err"
+check_that "merge of the one shard exits 0" [ $? -eq 0 ]
+check_that "the one shard merged: summary.json the single run's" cmp -s "$tmp/ref/summary.json" "$tmp/m1/summary.json"
+# the Slurm script as a one-task array runs it (the task's environment as Slurm sets it)
+case $fs in /*) ;; *) fs=$PWD/$fs ;; esac
+(cd "$tmp" && SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=1 FOOTSIM="$fs" sh "$OLDPWD/tools/slurm/campaign.sbatch" \
+    small.ini arr --set run.duration_s=0.15 -j 2 >/dev/null 2>&1 &&
+    FOOTSIM="$fs" sh "$OLDPWD/tools/slurm/campaign.sbatch" --merge small.ini arr >/dev/null 2>"$tmp/arr.err")
+check_that "a one-task Slurm array, then its merge: exit 0" [ $? -eq 0 ]
+check_that "a one-task Slurm array merged: trials.csv the single run's" cmp -s "$tmp/ref/trials.csv" "$tmp/arr/trials.csv"
+
 sed -i "s/^landed_tilt_deg = 15/landed_tilt_deg = 14/" "$tmp/trial.ini"
 "$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$tmp/bad" >/dev/null 2>"$tmp/changed.err"
 check_that "the campaign changed since: exit 2" [ $? -eq 2 ]

@@ -1,7 +1,7 @@
 #!/bin/sh
-# Issue 16, findings 1, 5 and 10: footsim replaces only results folders it made, refuses anything
-# else at --out before simulating (exit 2), normalises the path, holds a lock while writing, and
-# swaps safely where renameat2(RENAME_EXCHANGE) is refused. Every target is made here, in $tmp.
+# Issue 16, findings 1, 5 and 10: footsim replaces only results folders it made (its marker, issue 33
+# item 3), refuses anything else at --out before simulating (exit 2), normalises the path, holds a
+# lock while writing, and swaps safely where renameat2(RENAME_EXCHANGE) is refused. Every target is made here, in $tmp.
 # Usage: cli_outdir.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
 src=$PWD
@@ -31,23 +31,22 @@ check '[ "$sb" -eq 2 ] && grep -q "writes into only its own results folders" "$t
 mkdir "$tmp/mine" && echo x >"$tmp/mine/notes.txt"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/mine" --replace >/dev/null
 check '[ -f "$tmp/mine/metrics.json" ] && [ ! -e "$tmp/mine/notes.txt" ] && [ -f "$tmp/mine/.footsim-results" ]'
-# a folder an earlier version made (its files, no marker) is recognised and replaced
-mkdir "$tmp/old" && echo '{}' >"$tmp/old/metrics.json" && echo t >"$tmp/old/trajectory.csv"
-"$fs" run scenarios/static_load.ini $short --out "$tmp/old" >/dev/null
+# issue 33 item 3: a folder is footsim's by its marker only, never by its files' names: a folder
+# holding files named as footsim names its own (a user's draft summary.md, metrics.json,
+# trajectory.csv; an earlier version's folder without the marker) is read, not replaced: exit 2,
+# every file kept, nothing written beside it; --replace replaces it on purpose
+mkdir "$tmp/named" && echo draft >"$tmp/named/summary.md"
+expect 2 "a folder footsim did not make (it has no .footsim-results marker, whatever its files are called).*--replace" \
+    -- campaign scenarios/landing_ci.ini --set campaign.seeds=1 -j 1 --out "$tmp/named"
+check '[ "$(cat "$tmp/named/summary.md")" = draft ] && [ "$(ls -A "$tmp/named")" = summary.md ]'
+mkdir "$tmp/old" && echo '{"mine": 1}' >"$tmp/old/metrics.json" && echo t >"$tmp/old/trajectory.csv"
+expect 2 "a folder footsim did not make" -- run scenarios/static_load.ini $short --out "$tmp/old"
+check '[ "$(cat "$tmp/old/metrics.json")" = "{\"mine\": 1}" ] && [ "$(cat "$tmp/old/trajectory.csv")" = t ] && [ ! -e "$tmp/old/.footsim-results" ]'
+mkdir -p "$tmp/oldf/frames" && echo '{}' >"$tmp/oldf/trial.json" && echo p >"$tmp/oldf/frames/000000.png"
+expect 2 "a folder footsim did not make" -- trial scenarios/landing_trial.ini --set run.duration_s=0.05 --out "$tmp/oldf"
+check '[ -f "$tmp/oldf/frames/000000.png" ] && [ -z "$(ls -a "$tmp" | grep -e "partial" -e "lock")" ]'
+"$fs" run scenarios/static_load.ini $short --out "$tmp/old" --replace >/dev/null
 check '[ -f "$tmp/old/.footsim-results" ] && grep -q ankle_drop_m "$tmp/old/metrics.json"'
-# ... but not with a file of the user's that merely looks temporary
-mkdir "$tmp/oldt" && echo '{}' >"$tmp/oldt/metrics.json" && echo mine >"$tmp/oldt/draft.tmp.txt"
-"$fs" run scenarios/static_load.ini $short --out "$tmp/oldt" >/dev/null 2>/dev/null
-st=$?
-check '[ "$st" -eq 2 ] && [ -f "$tmp/oldt/draft.tmp.txt" ]'
-# ... frames too, but not a file of the user's hidden among them
-mkdir -p "$tmp/oldf/frames" && echo '{}' >"$tmp/oldf/metrics.json" && echo p >"$tmp/oldf/frames/000000.png"
-"$fs" run scenarios/static_load.ini $short --out "$tmp/oldf" >/dev/null
-check '[ -f "$tmp/oldf/.footsim-results" ] && [ ! -e "$tmp/oldf/frames" ]'
-mkdir -p "$tmp/oldg/frames" && echo '{}' >"$tmp/oldg/metrics.json" && echo mine >"$tmp/oldg/frames/notes.txt"
-"$fs" run scenarios/static_load.ini $short --out "$tmp/oldg" >/dev/null 2>"$tmp/errg"
-sg=$?
-check '[ "$sg" -eq 2 ] && grep -q "frames/notes.txt" "$tmp/errg" && [ -f "$tmp/oldg/frames/notes.txt" ]'
 # an empty folder is fine
 mkdir "$tmp/empty"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/empty" >/dev/null
@@ -132,6 +131,100 @@ echo "my notes" >"$tmp/.lk.footsim-lock"
 "$fs" run scenarios/static_load.ini $short --out "$tmp/lk" >/dev/null 2>"$tmp/errl"
 sl=$?
 check '[ "$sl" -eq 2 ] && grep -q "is not footsim.s lock file" "$tmp/errl" && [ "$(cat "$tmp/.lk.footsim-lock")" = "my notes" ]'
+# issue 33 item 3 for plot --out: files named as plot names its own (plot.gp, chart.dat) are the user's
+"$fs" run scenarios/static_load.ini $short --out "$tmp/r" >/dev/null
+mkdir "$tmp/charts" && echo mine >"$tmp/charts/plot.gp" && echo data >"$tmp/charts/chart.dat"
+expect 2 "a folder footsim did not make" -- plot "$tmp/r" --out "$tmp/charts"
+check '[ "$(cat "$tmp/charts/plot.gp")" = mine ] && [ "$(cat "$tmp/charts/chart.dat")" = data ]'
+
+# issue 33 item 1: a path is never cut short. long_dir LEN LETTER: a folder path under $tmp of LEN
+# characters (components of 200 LETTERs, then one shorter)
+long_dir() {
+    p=$tmp
+    while [ $(($1 - ${#p})) -gt 201 ]; do p=$p/$(printf "%0200d" 0 | tr 0 "$2"); done
+    echo "$p/$(printf "%0$(($1 - ${#p} - 1))d" 0 | tr 0 "$2")"
+}
+# the issue's case: a 1083-character folder D; --out D/res, then --out D/res_v2_experiment (which an
+# unchecked 1088-byte buffer cut to D/res) leaves D/res as it was
+D=$(long_dir 1083 d)
+mkdir -p "$D"
+check '[ ${#D} -eq 1083 ]'
+"$fs" run scenarios/static_load.ini $short --out "$D/res" >/dev/null
+"$fs" run scenarios/static_load.ini $short --set load.mass_kg=5 --out "$D/res_v2_experiment" >/dev/null
+check 'grep -q "\"load_kg\":[[:space:]]*5" "$D/res_v2_experiment/metrics.json" && ! grep -q "\"load_kg\":[[:space:]]*5" "$D/res/metrics.json"'
+# a path that fits within PATH_MAX with room for .partial.<pid> and the rest (3500 characters) works
+F=$(long_dir 3500 f)
+"$fs" run scenarios/static_load.ini $short --out "$F" >/dev/null
+check '[ -f "$F/metrics.json" ] && [ -z "$(ls -a "${F%/*}" | grep -e partial -e lock)" ]'
+"$fs" trial scenarios/landing_trial.ini --set run.duration_s=0.05 --out "$F.t" >/dev/null
+check '[ -f "$F.t/trial.json" ]'
+"$fs" walk scenarios/walking.ini --set walk.steps=1 --out "$F.w" >/dev/null
+check '[ -f "$F.w/walk.json" ]'
+"$fs" terrain terrains/flat.ini --png "$F.png" >/dev/null
+check '[ -f "$F.png" ]'
+"$fs" plot "$tmp/r" --out "$F.p" >/dev/null 2>&1
+check '[ -f "$F.p/.footsim-results" ]'
+# one too long (4080 characters), or with a name longer than NAME_MAX, is refused before anything
+# runs (exit 2, what is wrong and what would be right), nothing written, by every command that writes
+L=$(long_dir 4080 g)
+N=$tmp/$(printf "%0240d" 0 | tr 0 h)
+for target in "$L" "$N"; do
+    expect 2 "--out .*: the .* is [0-9]* characters long; .* at most [0-9]*.*give a shorter" -- run scenarios/static_load.ini $short --out "$target"
+    expect 2 "--out .*characters long" -- trial scenarios/landing_trial.ini --out "$target"
+    expect 2 "--out .*characters long" -- walk scenarios/walking.ini --out "$target"
+    expect 2 "--out .*characters long" -- campaign scenarios/landing_ci.ini --out "$target"
+    expect 2 "--out .*characters long" -- optimize scenarios/optimize_single_tall.ini --out "$target"
+    expect 2 "--out .*characters long" -- plot "$tmp/r" --out "$target"
+    expect 2 "--png .*characters long" -- terrain terrains/flat.ini --png "$target"
+    expect 2 "--out .*characters long" -- export scenarios/feet/biomimetic.ini --mjcf --out "$target"
+    "$fs" render-compare scenarios/static_load.ini scenarios/tilt10.ini --out "$target" >/dev/null 2>&1
+    check "[ \$? -eq 2 ]"
+    check '[ ! -e "$tmp/gggg" ] && [ -z "$(ls "$tmp" | grep -e "^g" -e "^hhh")" ]'
+done
+# an input file's path too long to keep whole is refused so, not cut short to another file
+expect 2 "x.ini: the path is [0-9]* characters long; footsim takes at most [0-9]* here: give a shorter path" -- run "$N/${N##*/}/${N##*/}/${N##*/}/${N##*/}/x.ini"
+# issue 33 item 14: an empty path is refused as such (exit 2), not "footsim: : cannot replace"
+expect 2 "--png '': an empty path; give a path" -- terrain terrains/flat.ini --png ""
+
+# issue 33 item 13: a results folder footsim made that cannot be removed whole (immutable, which
+# even root cannot remove; read-only for a user) is refused before anything runs: exit 4, the folder
+# named and what to do, the old results and nothing else left
+"$fs" run scenarios/static_load.ini $short --out "$tmp/ro" >/dev/null
+cp "$tmp/ro/metrics.json" "$tmp/ro.before"
+trap 'chattr -R -i "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
+if chattr +i "$tmp/ro/metrics.json" 2>/dev/null; then
+    expect 4 "--out .*ro: cannot be replaced: .*ro/metrics.json is immutable (chattr +i); make it writable" -- run scenarios/static_load.ini $short --out "$tmp/ro"
+    check 'cmp -s "$tmp/ro.before" "$tmp/ro/metrics.json" && [ -z "$(ls -a "$tmp" | grep -e "ro\.partial" -e "ro\.old" -e "\.ro\.footsim-lock")" ]'
+    chattr -i "$tmp/ro/metrics.json" && chattr +i "$tmp/ro"
+    expect 4 "--out .*ro: cannot be replaced: .*ro is immutable" -- run scenarios/static_load.ini $short --out "$tmp/ro"
+    check '[ -z "$(ls -a "$tmp" | grep -e "ro\.partial" -e "ro\.old" -e "\.ro\.footsim-lock")" ]'
+    chattr -i "$tmp/ro"
+else
+    echo "skipped: chattr +i is refused here (the immutable-folder case of issue 33 item 13)"
+fi
+if [ "$(id -u)" -ne 0 ]; then
+    chmod a-w "$tmp/ro"
+    expect 4 "--out .*ro: cannot be replaced: .*ro cannot be written" -- run scenarios/static_load.ini $short --out "$tmp/ro"
+    chmod u+w "$tmp/ro"
+else
+    echo "skipped: root writes a chmod a-w folder (the read-only-folder case of issue 33 item 13 for a user)"
+fi
+
+# issue 33 item 14: a campaign journal that is a folder, or a symbolic link (not followed), is named
+# as such (exit 2), not "the header ends early" or "Too many levels of symbolic links" (exit 4)
+mkdir -p "$tmp/jf.journal/journal"
+expect 2 "jf.journal/journal: is a folder, not a campaign journal.*--fresh" -- campaign scenarios/landing_ci.ini --set campaign.seeds=1 --out "$tmp/jf"
+mkdir "$tmp/jl.journal" && echo "elsewhere" >"$tmp/elsewhere" && ln -s "$tmp/elsewhere" "$tmp/jl.journal/journal"
+expect 2 "jl.journal/journal: is a symbolic link; footsim does not follow links for a campaign journal" -- campaign scenarios/landing_ci.ini --set campaign.seeds=1 --out "$tmp/jl"
+check '[ "$(cat "$tmp/elsewhere")" = elsewhere ] && [ ! -e "$tmp/jf" ] && [ ! -e "$tmp/jl" ]'
+
+# issue 33 item 14: gnuplot failing on a campaign's chart names the folder the data end up in, not
+# the partial folder that is gone by then
+. tests/small_campaign.sh
+mkdir "$tmp/bin" && printf '#!/bin/sh\nexit 1\n' >"$tmp/bin/gnuplot" && chmod +x "$tmp/bin/gnuplot"
+PATH="$tmp/bin:$PATH" camp -j 2 --out "$tmp/gp" >/dev/null 2>"$tmp/gp.err"
+check 'grep -q "gnuplot failed: no chart $tmp/gp/success.png (the data and script chart.gp are in $tmp/gp)" "$tmp/gp.err" && ! grep -q partial "$tmp/gp.err" && [ -f "$tmp/gp/chart.gp" ]'
+
 # the committed results folders carry the marker
 for d in results/landing results/roughness results/baseline results/bench; do
     check "[ -f $d/.footsim-results ]"

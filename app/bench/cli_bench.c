@@ -10,10 +10,6 @@
 #include <stdio.h>
 #include <string.h>
 
-/* What benches write into their shared folder (never replaced as a folder; file by file). */
-static const char *const bench_files[] = {"precision.*", "precision_equivalence", "stability*", "speed.*", "skips.csv",
-                                          "render.csv", "own_code_before_after.csv", NULL};
-
 int cli_bench(const cli_args *a)
 {
     if (!strcmp(a->input, "equivalence"))
@@ -36,7 +32,7 @@ int cli_bench(const cli_args *a)
     }
     fs_error err;
     /* the folder must be one footsim writes into (marked, or only bench files), before measuring */
-    if (fs_outdir_shared(dir, bench_files, a->replace, "--out", &err) != FS_OK)
+    if (fs_outdir_shared(dir, a->replace, "--out", &err) != FS_OK)
         return cli_report(err.status, err.message);
     if (!strcmp(a->input, "precision"))
         return cli_bench_precision(a, dir);

@@ -35,8 +35,6 @@
 
 enum { MAX_STEPS = 32, STEP_TEXT = 32 };
 
-/* What an equivalence folder holds (fs_outdir_shared: an unmarked folder of only these is ours). */
-static const char *const equivalence_files[] = {"equivalence.md", "h*", "reference", NULL};
 
 /* One campaign: the reference or a step to judge. */
 typedef struct eq_run {
@@ -159,13 +157,13 @@ int cli_equivalence_open(cli_equivalence **out, const cli_equivalence_spec *spec
     /* the folders last: nothing is made for a bad step or campaign */
     fs_error err;
     char path[FS_OUT_PATH + 32];
-    if (!s && fs_outdir_shared(dir, equivalence_files, replace, spec->option, &err) != FS_OK)
+    if (!s && fs_outdir_shared(dir, replace, spec->option, &err) != FS_OK)
         s = cli_report(err.status, err.message);
     snprintf(path, sizeof path, "%s/reference", dir);
-    if (!s && fs_outdir_open(&e->reference, path, cli_campaign_files, replace, spec->option, &err) != FS_OK)
+    if (!s && fs_outdir_open(&e->reference, path, replace, spec->option, &err) != FS_OK)
         s = cli_report(err.status, err.message);
     snprintf(path, sizeof path, "%s/steps", dir);
-    if (!s && fs_outdir_open(&e->scratch, path, NULL, 0, spec->option, &err) != FS_OK)
+    if (!s && fs_outdir_open(&e->scratch, path, 0, spec->option, &err) != FS_OK)
         s = cli_report(err.status, err.message);
     return s;
 }

@@ -280,7 +280,7 @@ static int value_column(int s) { return 6 + s; }
 static fs_status write_script(const char *dir, int s, fs_error *err)
 {
     const slice *sl = &SLICES[s];
-    char path[FS_PATH_MAX + 64], text[6000];
+    char path[FS_OUT_PATH], text[6000];
     int n = snprintf(text, sizeof text,
                      "# footsim bench stability: %s against step size (run from this folder: gnuplot -e \"out='x.png'\" %s)\n"
                      "set terminal pngcairo size 1200,900 noenhanced font 'sans,10'\nset output out\n"
@@ -302,7 +302,8 @@ static fs_status write_script(const char *dir, int s, fs_error *err)
                       sp, st, sl->name, st, sp, value_column(s), sp, value_column(s));
     }
     n += snprintf(text + n, sizeof text - (size_t)n, "unset multiplot\n");
-    snprintf(path, sizeof path, "%s/stability_%s.gp", dir, sl->name);
+    if (fs_path_format(path, sizeof path, "--out", err, "%s/stability_%s.gp", dir, sl->name) != FS_OK)
+        return FS_BAD_INPUT;
     return fs_write_atomic(path, text, strlen(text), err);
 }
 

@@ -174,7 +174,9 @@ fs_status fs_journal_open(fs_journal *j, const char *path, const fs_journal_head
     j->fd = -1;
     snprintf(j->path, sizeof j->path, "%s", path);
     struct stat st;
-    fs_status s = FS_OK;
+    fs_status s = fs_check_own_file(path, "a campaign journal", "move it away, or start over with --fresh", err);
+    if (s != FS_OK)
+        return s;
     if (lstat(path, &st) != 0 && (s = fs_write_file(path, fill_head, h, err)) != FS_OK)
         return s;
     j->fd = open(path, O_WRONLY | O_APPEND | O_CLOEXEC | O_NOFOLLOW);
@@ -319,6 +321,8 @@ fs_status fs_journal_read(const char *path, fs_journal_head *h, fs_trial_result 
 {
     memset(h, 0, sizeof *h);
     *results = NULL, *done = NULL, *ndone = 0;
+    if (fs_check_own_file(path, "a campaign journal", "move it away (a campaign starts over with --fresh)", err) != FS_OK)
+        return FS_BAD_INPUT;
     FILE *f = fopen(path, "r");
     if (!f)
         return fs_fail(err, FS_BAD_INPUT, "%s: cannot read (%s)", path, strerror(errno));

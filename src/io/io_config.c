@@ -1,6 +1,8 @@
 /* io_config.c: INI files read with inih into entries with line numbers, bound through a schema. */
 #include "footsim/io/fs_config.h"
 
+#include "footsim/base/fs_path.h"
+
 #include "footsim/io/fs_input.h"
 #include "footsim/base/fs_hash.h"
 
@@ -223,8 +225,9 @@ static fs_status check_text(const char *path, const char *text, size_t len, fs_e
 fs_status fs_config_load(fs_config *cfg, const char *path, fs_error *err)
 {
     memset(cfg, 0, sizeof *cfg);
-    if (!copy_text(cfg->path, sizeof cfg->path, path))
-        return fs_fail(err, FS_BAD_INPUT, "%.64s...: path too long", path);
+    fs_status fits = fs_path_format(cfg->path, sizeof cfg->path, "", err, "%s", path);
+    if (fits != FS_OK) /* "PATH: the path is N characters long; footsim takes at most M here: ..." */
+        return fits;
     char *text;
     size_t len;
     fs_status s = fs_read_regular(path, FS_CONFIG_MAX_BYTES, "an .ini file", &text, &len, err);

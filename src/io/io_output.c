@@ -19,9 +19,10 @@
 
 /* ---- what to remove at exit --------------------------------------------------------------------- */
 
-/* Temporary files and partial folders of this process, removed by an atexit handler (ODE's error
- * handler ends the process with exit()) and by a handler of SIGINT, SIGTERM and SIGHUP unless
- * they were committed. A forked worker inherits the list but never removes its parent's entries
+/* Temporary files and partial folders of this process, removed (unless they were committed) by
+ * fs_output_cleanup, which the command calls at exit (ODE's error handler ends the process with
+ * exit()) and on SIGINT, SIGTERM and SIGHUP through fs_output_install_cleanup; the library itself
+ * installs no handler. A forked worker inherits the list but never removes its parent's entries
  * (owner). */
 enum { PENDING_MAX = 32 };
 typedef struct pending {
@@ -32,7 +33,7 @@ typedef struct pending {
 /* Static on purpose: the atexit and signal handlers that remove these take no argument, so the list
  * they read must be the process's own (filled and read with no allocation: safe in a handler). */
 static pending pend[PENDING_MAX];
-static int npend, atexit_set;
+static int npend;
 
 static void cleanup_at_exit(void)
 {
@@ -72,9 +73,7 @@ static void remove_tree_raw(int parent, const char *name, int depth)
     unlinkat(parent, name, AT_REMOVEDIR);
 }
 
-/* SIGINT, SIGTERM, SIGHUP: what this process left half done is removed, then the signal ends it
- * as it would have. */
-static void cleanup_on_signal(int sig)
+void fs_output_cleanup(void)
 {
     for (int i = 0; i < npend; i++) {
         if (!pend[i].path[0] || pend[i].owner != getpid())
@@ -84,6 +83,13 @@ static void cleanup_on_signal(int sig)
         else
             unlink(pend[i].path);
     }
+}
+
+/* SIGINT, SIGTERM, SIGHUP: what this process left half done is removed, then the signal ends it
+ * as it would have. */
+static void cleanup_on_signal(int sig)
+{
+    fs_output_cleanup();
     signal(sig, SIG_DFL);
     raise(sig);
 }
@@ -94,24 +100,21 @@ void fs_catch_signal(int sig, void (*handler)(int))
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = handler;
     sigemptyset(&sa.sa_mask);
-    /* a signal the caller ignores (or handles) stays so */
-    if (sigaction(sig, NULL, &old) == 0 && old.sa_handler == SIG_DFL)
+    /* a signal the user's shell ignores (nohup) stays ignored */
+    if (sigaction(sig, NULL, &old) == 0 && old.sa_handler != SIG_IGN)
         sigaction(sig, &sa, NULL);
 }
 
-static void catch_signals(void)
+int fs_output_install_cleanup(void)
 {
     static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
     for (int i = 0; i < 3; i++)
         fs_catch_signal(sigs[i], cleanup_on_signal);
+    return atexit(cleanup_at_exit) == 0 ? 0 : -1;
 }
 
 static void remember(const char *path, int tree)
 {
-    if (!atexit_set) {
-        atexit_set = atexit(cleanup_at_exit) == 0;
-        catch_signals();
-    }
     int slot = -1;
     for (int i = 0; i < npend && slot < 0; i++)
         if (!pend[i].path[0])
@@ -213,10 +216,29 @@ static int fsync_path(const char *path)
     return r;
 }
 
+const char *fs_output_shown(const char *path, char *buf, size_t size)
+{
+    for (int i = 0; i < npend; i++) {
+        const char *p = pend[i].path, *mark = strstr(p, ".partial.");
+        size_t n = strlen(p);
+        if (pend[i].tree && pend[i].owner == getpid() && mark && n && !strncmp(path, p, n) &&
+            (path[n] == '/' || !path[n])) {
+            snprintf(buf, size, "%.*s%s", (int)(mark - p), p, path + n);
+            return buf;
+        }
+    }
+    return path;
+}
+
 static fs_status write_error(fs_error *err, const char *path, int e)
 {
+    char b[FS_OUT_PATH + 64];
+    path = fs_output_shown(path, b, sizeof b);
     if (e == ENOSPC)
         return fs_fail(err, FS_IO, "%s: cannot write: No space left on device; free some space and run again", path);
+    if (e == EFBIG)
+        return fs_fail(err, FS_IO, "%s: cannot write: File too large (a file-size limit, ulimit -f, is reached); raise "
+                       "the limit or write less, and run again", path);
     return fs_fail(err, FS_IO, "%s: cannot write (%s)", path, strerror(e ? e : EIO));
 }
 
@@ -240,6 +262,9 @@ static int begins_with(const char *path, const unsigned char *sig, size_t n)
 fs_status fs_check_file_target(const char *path, const char *what, const unsigned char *signature, size_t nsig,
                                const char *kind, int replace, fs_error *err)
 {
+    fs_status fits = fs_path_fits(path, FS_FILE_ROOM, FS_FILE_ROOM, what, err);
+    if (fits != FS_OK)
+        return fits;
     struct stat st;
     int exists = lstat(path, &st) == 0;
     if (exists && !S_ISREG(st.st_mode))
@@ -260,6 +285,18 @@ fs_status fs_check_file_target(const char *path, const char *what, const unsigne
         return fs_fail(err, FS_BAD_INPUT, "%s %s: folder %s cannot be written (%s); give a writable place", what, path,
                        dir, strerror(errno));
     return FS_OK;
+}
+
+fs_status fs_check_own_file(const char *path, const char *what, const char *fix, fs_error *err)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || S_ISREG(st.st_mode))
+        return FS_OK;
+    if (S_ISLNK(st.st_mode))
+        return fs_fail(err, FS_BAD_INPUT, "%s: is a symbolic link; footsim does not follow links for %s (it reads back "
+                       "and appends to only the file it wrote there itself): %s", path, what, fix);
+    return fs_fail(err, FS_BAD_INPUT, "%s: is %s, not %s (a regular file footsim writes): %s", path,
+                   type_name(st.st_mode), what, fix);
 }
 
 fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
@@ -291,8 +328,10 @@ static fs_status commit(const char *temp, const char *path, int synced, fs_error
         s = fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, type_name(st.st_mode));
     else if (!synced && fsync_path(temp) != 0)
         s = write_error(err, path, errno);
-    else if (rename(temp, path) != 0)
-        s = fs_fail(err, FS_IO, "%s: cannot replace (%s)", path, strerror(errno));
+    else if (rename(temp, path) != 0) {
+        char b[FS_OUT_PATH + 64];
+        s = fs_fail(err, FS_IO, "%s: cannot replace (%s)", fs_output_shown(path, b, sizeof b), strerror(errno));
+    }
     if (s != FS_OK) {
         unlink(temp);
         forget(temp);
@@ -379,8 +418,9 @@ fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *
     size_t n = strlen(dir);
     if (n == 0)
         return fs_fail(err, FS_BAD_INPUT, "%s '': give a folder's path", option);
-    if (n >= size || n >= FS_OUT_PATH - 64)
-        return fs_fail(err, FS_BAD_INPUT, "%s %.64s...: path too long", option, dir);
+    fs_status fits = fs_path_fits(dir, FS_DIR_ROOM, 0, option, err);
+    if (fits != FS_OK)
+        return fits;
     /* drop repeated slashes and "." components */
     char buf[FS_OUT_PATH];
     size_t k = 0;
@@ -417,76 +457,60 @@ fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *
     if (!strcmp(buf, "/"))
         return fs_fail(err, FS_BAD_INPUT, "%s %s: the root folder cannot be a results folder; give a folder of its own",
                        option, dir);
-    if (snprintf(out, size, "%s", buf) >= (int)size)
-        return fs_fail(err, FS_BAD_INPUT, "%s %.64s...: path too long", option, dir);
-    return FS_OK;
+    if ((fits = fs_path_fits(buf, FS_DIR_ROOM, FS_NAME_ROOM, option, err)) != FS_OK)
+        return fits;
+    return fs_path_format(out, size, option, err, "%s", buf);
 }
 
-/* A temporary file of footsim's: NAME.tmp.<pid>, or video.tmp.<pid>.mp4 (ffmpeg's). */
-static int is_temp_name(const char *name)
-{
-    const char *t = strstr(name, ".tmp.");
-    if (!t || t == name)
-        return 0;
-    size_t digits = strspn(t + 5, "0123456789");
-    return digits > 0 && (!t[5 + digits] || !strcmp(t + 5 + digits, ".mp4"));
-}
-
-/* A name an earlier footsim wrote in a results folder: one of `known`, a frame, or a leftover
- * temporary file of its own. */
-static int known_name(const char *name, const char *const *known)
-{
-    for (int i = 0; known && known[i]; i++) {
-        size_t n = strlen(known[i]);
-        if (n && known[i][n - 1] == '*' ? !strncmp(name, known[i], n - 1) : !strcmp(name, known[i]))
-            return 1;
-    }
-    return is_temp_name(name);
-}
-
-/* Whether path/frames holds only frames (NNNNNN.png) and footsim's temporary files; fills odd with
- * the first other name. */
-static int only_frames(const char *path, char *odd, size_t size)
-{
-    char frames[FS_OUT_PATH + 16];
-    snprintf(frames, sizeof frames, "%s/frames", path);
-    DIR *d = opendir(frames);
-    if (!d)
-        return 0;
-    int ok = 1;
-    for (struct dirent *e; ok && (e = readdir(d));) {
-        const char *n = e->d_name;
-        if (!strcmp(n, ".") || !strcmp(n, "..") || is_temp_name(n))
-            continue;
-        ok = strlen(n) == 10 && strspn(n, "0123456789") == 6 && !strcmp(n + 6, ".png");
-        if (!ok)
-            snprintf(odd, size, "frames/%.200s", n);
-    }
-    closedir(d);
-    return ok;
-}
-
-/* Whether folder `path` holds only what footsim writes (frames/ only NNNNNN.png). Fills `odd`
- * with the first name that is not. Returns -1 when it cannot be read. */
-static int only_footsim_files(const char *path, const char *const *known, int *count, char *odd, size_t size)
+/* Whether folder path holds nothing; -1 when it cannot be read. */
+static int is_empty(const char *path)
 {
     DIR *d = opendir(path);
     if (!d)
         return -1;
+    int empty = 1;
+    for (struct dirent *e; empty && (e = readdir(d));)
+        empty = !strcmp(e->d_name, ".") || !strcmp(e->d_name, "..");
+    closedir(d);
+    return empty;
+}
+
+/* Whether the folder at path, and everything in it, can be removed: no entry immutable or
+ * append-only (what even root cannot remove), and every folder writable. Fills why with the first
+ * that cannot be. */
+static int removable(const char *path, int depth, char *why, size_t size)
+{
+    struct statx sx;
+    if (statx(AT_FDCWD, path, AT_SYMLINK_NOFOLLOW, STATX_TYPE, &sx) != 0)
+        return 1; /* gone: nothing to remove */
+    unsigned long long fixed = sx.stx_attributes & sx.stx_attributes_mask & (STATX_ATTR_IMMUTABLE | STATX_ATTR_APPEND);
+    if (fixed) {
+        snprintf(why, size, "%.3900s is %s", path, fixed & STATX_ATTR_IMMUTABLE ? "immutable (chattr +i)"
+                                                                             : "append-only (chattr +a)");
+        return 0;
+    }
+    if (!S_ISDIR(sx.stx_mode) || depth == 0)
+        return 1;
+    if (access(path, W_OK | X_OK) != 0) {
+        snprintf(why, size, "%.3900s cannot be written (%s)", path, strerror(errno));
+        return 0;
+    }
+    DIR *d = opendir(path);
+    if (!d) {
+        snprintf(why, size, "%.3900s cannot be read (%s)", path, strerror(errno));
+        return 0;
+    }
     int ok = 1;
-    *count = 0;
-    odd[0] = 0;
-    for (struct dirent *e; (e = readdir(d));) {
+    char child[FS_OUT_PATH];
+    for (struct dirent *e; ok && (e = readdir(d));) {
         if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
             continue;
-        (*count)++;
-        if (!strcmp(e->d_name, FS_MARKER))
-            continue;
-        if (known_name(e->d_name, known) && (strcmp(e->d_name, "frames") || only_frames(path, odd, size)))
-            continue;
-        if (ok && (strcmp(e->d_name, "frames") || !odd[0]))
-            snprintf(odd, size, "%s", e->d_name);
-        ok = 0;
+        if (fs_path_format(child, sizeof child, "", NULL, "%s/%s", path, e->d_name) != FS_OK) {
+            snprintf(why, size, "%.3000s/%.255s: the path is too long to remove", path, e->d_name);
+            ok = 0;
+        } else {
+            ok = removable(child, depth - 1, why, size);
+        }
     }
     closedir(d);
     return ok;
@@ -536,12 +560,9 @@ static void sweep_leftovers(const char *path)
         if (!*pid || strspn(pid, "0123456789") != strlen(pid))
             continue;
         snprintf(prefix, sizeof prefix, "%s/%s", dir, e->d_name);
-        int count;
-        char odd[8];
         struct stat ps;
         /* only a folder footsim made: its marker, or nothing in it (a user's "data.old.2024" stays) */
-        if (lstat(prefix, &ps) != 0 || !S_ISDIR(ps.st_mode) ||
-            (!has_marker(prefix) && !(only_footsim_files(prefix, NULL, &count, odd, sizeof odd) >= 0 && count == 0)))
+        if (lstat(prefix, &ps) != 0 || !S_ISDIR(ps.st_mode) || (!has_marker(prefix) && is_empty(prefix) != 1))
             continue;
         if (kind[0] == 'o' && missing && rename(prefix, path) == 0) {
             missing = 0;
@@ -635,10 +656,10 @@ static int fill_marker(FILE *f, const void *user)
 }
 
 /* Refuses a target footsim must not replace or write into: a symbolic link, not a folder, a
- * non-empty folder without the marker and not an earlier version's (unless replace). Makes its
- * parent. `path` is normalised, `dir` as given. */
-static fs_status check_target(const char *path, const char *dir, const char *const *known, int replace,
-                              const char *option, int shared, fs_error *err)
+ * non-empty folder without the marker (unless replace); one it would replace (not shared) that
+ * cannot be removed whole. Makes its parent. `path` is normalised, `dir` as given. */
+static fs_status check_target(const char *path, const char *dir, int replace, const char *option, int shared,
+                              fs_error *err)
 {
     char parent[FS_OUT_PATH];
     parent_of(path, parent, sizeof parent);
@@ -653,42 +674,49 @@ static fs_status check_target(const char *path, const char *dir, const char *con
         if (!S_ISDIR(st.st_mode))
             return fs_fail(err, FS_BAD_INPUT, "%s %s: is %s, not a results folder; choose another %s", option, dir,
                            type_name(st.st_mode), option);
-        int count;
-        char odd[256];
-        int mine = only_footsim_files(path, known, &count, odd, sizeof odd);
-        if (mine < 0)
+        int empty = is_empty(path);
+        if (empty < 0)
             return fs_fail(err, FS_BAD_INPUT, "%s %s: cannot read the folder (%s); choose another %s", option, dir,
                            strerror(errno), option);
-        if (count > 0 && !has_marker(path) && !mine && !replace)
+        /* footsim's by its marker only: files that merely carry footsim's names are the user's */
+        if (!empty && !has_marker(path) && !replace)
             return fs_fail(err, FS_BAD_INPUT,
-                           "%s %s: a folder footsim did not make (it holds '%s' and no %s marker); footsim %s "
-                           "only its own results folders: choose another %s, or add --replace to %s", option, dir,
-                           odd, FS_MARKER, shared ? "writes into" : "replaces, whole,", option,
+                           "%s %s: a folder footsim did not make (it has no %s marker, whatever its files are "
+                           "called); footsim %s only its own results folders: choose another %s, or add --replace to %s",
+                           option, dir, FS_MARKER, shared ? "writes into" : "replaces, whole,", option,
                            shared ? "write its files into it anyway" : "replace it and everything in it");
+        char why[FS_OUT_PATH + 64];
+        if (!shared && !removable(path, 16, why, sizeof why))
+            return fs_fail(err, FS_IO, "%s %s: cannot be replaced: %s; make it writable (chattr -i, chmod -R u+w) "
+                           "or choose another %s (nothing was written)", option, dir, why, option);
     }
     return FS_OK;
 }
 
-fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
-                         fs_error *err)
+fs_status fs_outdir_open(fs_outdir *o, const char *dir, int replace, const char *option, fs_error *err)
 {
     memset(o, 0, sizeof *o);
     o->lock_fd = -1;
     fs_status s = fs_normalise_dir(dir, o->path, sizeof o->path, option, err);
     if (s != FS_OK)
         return s;
-    if ((s = check_target(o->path, dir, known, replace, option, 0, err)) != FS_OK)
+    if ((s = check_target(o->path, dir, replace, option, 0, err)) != FS_OK)
         return s;
     {
         char parent[FS_OUT_PATH];
         parent_of(o->path, parent, sizeof parent);
         const char *base = strrchr(o->path, '/');
-        snprintf(o->lock, sizeof o->lock, "%s/.%s.footsim-lock", parent, base ? base + 1 : o->path);
+        s = fs_path_format(o->lock, sizeof o->lock, option, err, "%s/.%s.footsim-lock", parent, base ? base + 1 : o->path);
     }
+    if (s != FS_OK)
+        return s;
     if ((s = take_lock(o, option, err)) != FS_OK)
         return s;
     sweep_leftovers(o->path);
-    snprintf(o->partial, sizeof o->partial, "%s.partial.%ld", o->path, (long)getpid());
+    if (fs_path_format(o->partial, sizeof o->partial, option, err, "%s.partial.%ld", o->path, (long)getpid()) != FS_OK) {
+        release_lock(o);
+        return FS_BAD_INPUT;
+    }
     if (mkdir(o->partial, 0777) != 0) {
         s = fs_fail(err, FS_BAD_INPUT, "%s %s: cannot create %s (%s); choose a writable %s", option, dir, o->partial,
                     strerror(errno), option);
@@ -768,21 +796,26 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err)
         fs_outdir_abort(o);
         return s;
     }
-    if (old[0])
+    struct stat st;
+    if (old[0]) {
         fs_remove_tree(old);
+        if (lstat(old, &st) == 0) /* what the check before the run could not foresee */
+            s = fs_fail(err, FS_IO, "%s: the new results are in place, but the old ones could not all be removed: "
+                        "they are left in %s; make it writable and remove it", o->path, old);
+    }
     forget(o->partial);
     forget(o->lock);
     release_lock(o);
     o->open = 0;
-    return FS_OK;
+    return s;
 }
 
-fs_status fs_outdir_shared(const char *dir, const char *const *known, int replace, const char *option, fs_error *err)
+fs_status fs_outdir_shared(const char *dir, int replace, const char *option, fs_error *err)
 {
     char path[FS_OUT_PATH], marker[FS_OUT_PATH + 32];
     fs_status s = fs_normalise_dir(dir, path, sizeof path, option, err);
     if (s == FS_OK)
-        s = check_target(path, dir, known, replace, option, 1, err);
+        s = check_target(path, dir, replace, option, 1, err);
     if (s == FS_OK)
         s = fs_make_dirs(path, err);
     snprintf(marker, sizeof marker, "%s/%s", path, FS_MARKER);

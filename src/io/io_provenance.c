@@ -90,12 +90,15 @@ static fs_status hash_file(const char *path, unsigned long long *hash, fs_error 
 /* Notes path once: hashed by how (0 bytes, 1 INI), or with *known's hash when known is given. */
 static fs_status add(fs_provenance *p, const char *path, int ini, const unsigned long long *known, fs_error *err)
 {
-    char full[PATH_MAX], rel[FS_PATH_MAX];
+    char full[PATH_MAX], rel[2 * PATH_MAX];
     if (!path || !*path)
         return FS_OK;
     if (!realpath(path, full))
         return fs_fail(err, FS_BAD_INPUT, "%s: %s", path, strerror(errno));
     fs_path_relative(full, p->dir, rel, sizeof rel);
+    if (strlen(rel) >= sizeof rel - 1) /* perhaps cut short: a provenance names every input whole */
+        return fs_fail(err, FS_BAD_INPUT, "%.64s...: too far from %.64s... to record relative to it; move the files "
+                       "closer", full, p->dir);
     for (int i = 0; i < p->ninputs; i++)
         if (!strcmp(p->inputs[i].path, rel))
             return FS_OK;
@@ -124,9 +127,10 @@ fs_status fs_provenance_include(fs_provenance *p, const fs_provenance *from, fs_
 {
     fs_status s = FS_OK;
     for (int i = 0; s == FS_OK && i < from->ninputs; i++) {
-        char full[2 * FS_PATH_MAX + 2];
-        snprintf(full, sizeof full, "%s/%s", from->dir, from->inputs[i].path);
-        s = add(p, full, 0, &from->inputs[i].hash, err);
+        char full[3 * PATH_MAX];
+        s = fs_path_format(full, sizeof full, from->inputs[i].path, err, "%s/%s", from->dir, from->inputs[i].path);
+        if (s == FS_OK)
+            s = add(p, full, 0, &from->inputs[i].hash, err);
     }
     if (!p->settings[0])
         memcpy(p->settings, from->settings, sizeof p->settings);

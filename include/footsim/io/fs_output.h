@@ -4,22 +4,27 @@
  * through a callback, is flushed and fsync'd, and is renamed over path, whose folder is then
  * fsync'd; a reader, or a run killed at any moment, sees the old complete file or the new one.
  * The target must be absent or a regular file: a device, FIFO, folder or symbolic link is never
- * replaced. A temporary file is removed on every exit path footsim controls: an error, exit()
- * (ODE's error handler) included; one left by a kill -9 is removed by the next write of the same
- * path. A full disk is reported as "No space left on device" (FS_IO). fs_commit_temp installs a
+ * replaced. A temporary file is removed on every error path; at exit() (ODE's error handler) and
+ * on SIGINT, SIGTERM and SIGHUP by fs_output_cleanup, which a program installs with
+ * fs_output_install_cleanup (the library installs no handler of its own); one left by a kill -9 is
+ * removed by the next write of the same path. A full disk is reported as "No space left on device" (FS_IO). fs_commit_temp installs a
  * file another program wrote (gnuplot, ffmpeg) the same way.
  *
  * Folders. A results folder (run, campaign, render-compare) is replaced whole: fs_outdir_open
- * checks the target before anything is simulated (FS_BAD_INPUT: a symbolic link, not a folder, a
- * non-empty folder footsim did not make, another footsim writing it), takes a lock on it, and makes
+ * checks the target before anything is simulated (FS_BAD_INPUT: a path too long to use whole
+ * (fs_path_fits with FS_DIR_ROOM), a symbolic link, not a folder, a non-empty folder footsim did
+ * not make, another footsim writing it; FS_IO: a folder footsim made that cannot be removed, as it
+ * or something in it is read-only or immutable), takes a lock on it, and makes
  * a partial folder beside it holding the marker file FS_MARKER; fs_outdir_commit swaps the partial
  * folder in, in one step (renameat2 RENAME_EXCHANGE; where the filesystem refuses that, EINVAL,
  * two renames that never lose the old folder), and removes the old one. A folder footsim made is
- * one with the marker, or one an earlier version made (no marker, only the files of `known`). */
+ * one with the marker, whatever its files are named: a folder without it (a user's, or one an
+ * earlier footsim made before the marker) is read, never replaced, unless `replace` (--replace). */
 #ifndef FS_OUTPUT_H
 #define FS_OUTPUT_H
 
 #include "footsim/base/fs_error.h"
+#include "footsim/base/fs_path.h"
 
 #include <stddef.h>
 #include <stdio.h>
@@ -52,6 +57,17 @@ fs_status fs_write_atomic(const char *path, const char *data, size_t len, fs_err
 fs_status fs_check_file_target(const char *path, const char *what, const unsigned char *signature, size_t nsig,
                                const char *kind, int replace, fs_error *err);
 
+/* path as the user will find it: one in a partial results folder of this process
+ * (DIR.partial.<pid>/NAME, renamed or removed when the command ends) as DIR/NAME; any other as it
+ * is. Returns buf or path. For messages. */
+const char *fs_output_shown(const char *path, char *buf, size_t size);
+
+/* Refuses (FS_BAD_INPUT) what footsim must not read back or append to as a file of its own (a
+ * campaign journal): a symbolic link (never followed: its target is not footsim's to append to), a
+ * folder, FIFO, socket or device, each named, then `fix` (what to do). Absent or a regular file:
+ * FS_OK. `what` names the file ("a campaign journal"). */
+fs_status fs_check_own_file(const char *path, const char *what, const char *fix, fs_error *err);
+
 /* A temporary name for path beside it ("path.tmp.<pid>"), removed at exit unless committed. */
 fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err);
 
@@ -59,10 +75,18 @@ fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
  * failure temp is removed. */
 fs_status fs_commit_temp(const char *temp, const char *path, fs_error *err);
 
-/* Installs handler for sig (no SA_RESTART) unless sig is already ignored or handled. The
- * results-folder functions install their own cleanup for SIGINT, SIGTERM and SIGHUP this way, so
- * a caller that handles one itself (a campaign keeping its journal) installs its handler first. */
+/* Installs handler for sig (no SA_RESTART) unless sig is ignored (nohup: it stays ignored). */
 void fs_catch_signal(int sig, void (*handler)(int));
+
+/* Removes the temporary files and partial folders this process has not committed, with system
+ * calls only: safe in a signal handler. */
+void fs_output_cleanup(void);
+
+/* For a program (the footsim command) that wants them: fs_output_cleanup at exit, and on SIGINT,
+ * SIGTERM and SIGHUP (unless ignored; the signal then ends the process as it would have). A
+ * handler installed after it (fs_catch_signal) replaces it for its signal. 0, or -1 when atexit
+ * refused. */
+int fs_output_install_cleanup(void);
 
 /* Removes a folder and everything in it (best effort; never follows symbolic links). */
 void fs_remove_tree(const char *dir);
@@ -70,16 +94,15 @@ void fs_remove_tree(const char *dir);
 typedef struct fs_outdir {
     char path[FS_OUT_PATH];        /* the results folder, normalised */
     char partial[FS_OUT_PATH + 48];/* where everything is written: path.partial.<pid> */
-    char lock[2 * FS_OUT_PATH + 32]; /* .<name>.footsim-lock beside it, held while writing */
+    char lock[FS_OUT_PATH + 48];   /* .<name>.footsim-lock beside it, held while writing */
     int lock_fd;
     int open;
 } fs_outdir;
 
-/* Checks and prepares the results folder dir (see above); `known` (NULL-terminated) names the
- * files and folders an earlier footsim wrote there, `replace` lets a non-empty folder without the
- * marker be replaced on purpose (--replace). `option` names the option in messages ("--out"). */
-fs_status fs_outdir_open(fs_outdir *o, const char *dir, const char *const *known, int replace, const char *option,
-                         fs_error *err);
+/* Checks and prepares the results folder dir (see above); `replace` lets a non-empty folder
+ * without the marker be replaced on purpose (--replace). `option` names the option in messages
+ * ("--out"). */
+fs_status fs_outdir_open(fs_outdir *o, const char *dir, int replace, const char *option, fs_error *err);
 
 /* Puts the partial folder in place of the results folder, whole (see above); on failure the old
  * folder stays and the partial one is removed. */
@@ -88,14 +111,14 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err);
 /* Gives up: removes the partial folder, releases the lock. Safe to call twice. */
 void fs_outdir_abort(fs_outdir *o);
 
-/* A folder footsim writes file by file and never replaces (results/bench/): refused as
- * fs_outdir_open refuses a results folder (a symbolic link, not a folder, a non-empty folder
- * neither marked nor holding only `known` names, unless replace); made when missing; given the
- * marker when it has none. `known` names ending in '*' stand for every name they begin. */
-fs_status fs_outdir_shared(const char *dir, const char *const *known, int replace, const char *option, fs_error *err);
+/* A folder footsim writes file by file and never replaces (results/bench/, plot --out): refused
+ * as fs_outdir_open refuses a results folder (a symbolic link, not a folder, a non-empty folder
+ * without the marker, unless replace); made when missing; given the marker when it has none. */
+fs_status fs_outdir_shared(const char *dir, int replace, const char *option, fs_error *err);
 
 /* Normalises a folder path: no trailing slash, no "." components or repeated slashes; a final
- * ".." is resolved. Refuses the root and the empty path. */
+ * ".." is resolved. Refuses the root, the empty path and one fs_path_fits refuses with
+ * FS_DIR_ROOM and FS_NAME_ROOM. */
 fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *option, fs_error *err);
 
 /* Puts item into a JSON tree being built for a result: into parent under name (an object), or at
