@@ -40,6 +40,12 @@ expect 2 "$tmp/heavy_biped.ini:3: 'mass_kg' is a single body's key and this robo
 expect 2 "--set robot.hip_width_m: 'hip_width_m' is a biped's key and this robot is one body" -- trial scenarios/landing_trial.ini --set robot.hip_width_m=0.3
 expect 2 "--set robot.design: .*robots/biped.ini is a biped, and the walking machine carries one body" -- walk scenarios/walking.ini --set robot.design=robots/biped.ini
 expect 2 "scenarios/robots/biped.ini: kind = biped: the biped is not exported" -- export scenarios/feet/biomimetic.ini --mjcf --scenario scenarios/landing_trial.ini --set robot.design=robots/biped.ini --out "$tmp/biped.xml"
+# moments of inertia no body has (one above the other two together): refused where they are given
+expect 2 "--set robot.inertia_kgm2: inertia_kgm2 = 0.01, 0.01, 1 is no rigid body's: the moment about z (1 kg m^2) is more than those about x and y together (0.02).*give the moment about z at most 0.02" -- trial scenarios/landing_trial.ini --set robot.inertia_kgm2=0.01,0.01,1
+printf '[robot]\nmass_kg = 26\ninertia_kgm2 = 0.1, 0.5, 0.3\n' >"$tmp/rod_robot.ini"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign = rod_robot.ini\n' "$PWD" >"$tmp/uses_rod.ini"
+expect 2 "$tmp/rod_robot.ini:3: inertia_kgm2 = 0.1, 0.5, 0.3 is no rigid body's: the moment about y" -- trial "$tmp/uses_rod.ini"
+expect 2 "--set robot.pelvis_inertia_kgm2: pelvis_inertia_kgm2 = 1, 0.2, 0.2 is no rigid body's" -- trial scenarios/landing_trial.ini --set robot.design=robots/biped.ini --set robot.pelvis_inertia_kgm2=1,0.2,0.2
 printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[landing]\nlanded_tilt_deg = 15\n' "$PWD" >"$tmp/norobot.ini"
 expect 2 "$tmp/norobot.ini: a landing trial drops a robot and this scenario has none" -- trial "$tmp/norobot.ini"
 
