@@ -1,5 +1,7 @@
 /* cli_plot.c: charts drawn by gnuplot from a script footsim writes beside its data, and the plot
- * command: a run's time series (trajectory.csv) or a campaign's chart again (summary.json). */
+ * command: a run's time series (trajectory.csv) or a campaign's chart again (summary.json), with the
+ * folder read (and --out's) locked as a run or campaign locks it. FOOTSIM_TEST_PLOT_DELAY=S makes
+ * plot hold its locks S seconds before it reads (tests). */
 #include "cli.h"
 
 #include "footsim/campaign/fs_campaign.h"
@@ -495,5 +497,22 @@ int cli_plot(const cli_args *a)
     fs_error err;
     if (a->out && fs_outdir_shared(a->out, plot_files, a->replace, "--out", &err) != FS_OK)
         return cli_report(err.status, err.message);
-    return campaign ? plot_campaign(dir, out) : plot_run(dir, out);
+    /* the folder read and the one written held as a campaign or run holds them: none replaces
+     * either between the summary read and the chart written */
+    fs_outdir held[2];
+    struct stat out_st;
+    int two = a->out && !(stat(a->out, &out_st) == 0 && out_st.st_dev == st.st_dev && out_st.st_ino == st.st_ino);
+    if (fs_outdir_lock(&held[0], dir, "plot", &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    if (two && fs_outdir_lock(&held[1], a->out, "--out", &err) != FS_OK) {
+        fs_outdir_unlock(&held[0]);
+        return cli_report(err.status, err.message);
+    }
+    if (getenv("FOOTSIM_TEST_PLOT_DELAY")) /* tests: a plot holding its folders */
+        sleep((unsigned)atoi(getenv("FOOTSIM_TEST_PLOT_DELAY")));
+    int s = campaign ? plot_campaign(dir, out) : plot_run(dir, out);
+    if (two)
+        fs_outdir_unlock(&held[1]);
+    fs_outdir_unlock(&held[0]);
+    return s;
 }

@@ -9,7 +9,8 @@
 # checks are skipped, said. Names reach gnuplot as data (issue 33): campaign files and a received
 # summary.json or trajectory.csv named with quotes, line ends and gnuplot commands are drawn and run
 # nothing; a gnuplot that fails is said and no success.png listed; SIGTERM, SIGHUP or SIGINT to plot
-# leaves no gnuplot drawing. Usage: cli_plot.sh path/to/footsim (run from the source folder).
+# leaves no gnuplot drawing. plot holds the folder's lock (and --out's)
+# against a campaign replacing it. Usage: cli_plot.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
 
 # png_ok FILE: a PNG signature first, an IHDR chunk, the IEND chunk last
@@ -200,6 +201,33 @@ check_that "gnuplot failing: said, naming the results folder, not a partial one"
     grep -q "gnuplot failed: no chart $tmp/nochart/success.png (the data and script chart.gp are in $tmp/nochart)" "$tmp/err.txt"
 PATH="$tmp/badgp:$PATH" "$fs" plot "$tmp/camp" --out "$tmp/nochart_plot" >"$tmp/out.txt" 2>"$tmp/err.txt"
 check_that "gnuplot failing: plot exits 4, lists nothing" [ $? -eq 4 ] && [ ! -s "$tmp/out.txt" ] && [ ! -e "$tmp/nochart_plot/success.png" ]
+
+# ---- plot holds the folders it reads and writes (issue 33, item 7) ----------------------------------
+# another footsim's lock on the folder (as a campaign replacing it holds): plot refuses, writes nothing
+rm -f "$tmp/camp/success.png"
+echo $$ >"$tmp/.camp.footsim-lock"
+flock "$tmp/.camp.footsim-lock" sleep 30 &
+holder=$!
+sleep 1
+"$fs" plot "$tmp/camp" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check_that "a held folder: plot exits 2" [ $? -eq 2 ]
+check_that "a held folder: said" grep -q "plot $tmp/camp: another footsim (process $$) is writing this folder" "$tmp/err.txt"
+check_that "a held folder: no chart" [ ! -e "$tmp/camp/success.png" ]
+kill $holder
+wait $holder 2>/dev/null
+# a plot holding its folder (delayed between taking the lock and reading): a campaign for that
+# folder started meanwhile is refused, and the plot completes
+"$fs" campaign "$tmp/small.ini" --set campaign.seeds=1 --set run.duration_s=0.1 --out "$tmp/held" >/dev/null 2>&1
+FOOTSIM_TEST_PLOT_DELAY=3 "$fs" plot "$tmp/held" >"$tmp/plot_held.txt" 2>&1 &
+plotter=$!
+sleep 1
+"$fs" campaign "$tmp/small.ini" --set campaign.seeds=2 --set run.duration_s=0.1 --out "$tmp/held" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check_that "a campaign on a folder plot holds: exit 2" [ $? -eq 2 ]
+check_that "a campaign on a folder plot holds: said" grep -q "another footsim (process $plotter) is writing this folder" "$tmp/err.txt"
+wait $plotter
+check_that "the plot holding it: exit 0, a whole chart" [ $? -eq 0 ] && png_ok "$tmp/held/success.png"
+check_that "the plot holding it: the folder still the first campaign's" grep -q '"seeds":	1' "$tmp/held/summary.json"
+check_that "the plot's lock released" [ ! -e "$tmp/.held.footsim-lock" ]
 
 # ---- killing plot takes gnuplot with it (issue 33, item 10) -----------------------------------------
 # a trajectory of 20000 rows (the short run's rows repeated): gnuplot draws it for seconds; plot is
