@@ -191,10 +191,15 @@ int cli_have_program(const char *name);
  * (naming `who`) and returns 0; a damaged chart (a full disk) is FS_IO, said. */
 int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who);
 /* The same, the chart going to png (any path; whole or not at all): 0 drawn, -1 not drawn (no
- * gnuplot, or it failed: said), else the exit status of a damaged chart (FS_IO). */
+ * gnuplot, or it failed: said), else the exit status of a damaged chart (FS_IO). While gnuplot
+ * draws, SIGINT, SIGTERM and SIGHUP kill it before they do what they did (the caller's handler,
+ * or the default), and a footsim killed outright takes it along (Linux: PR_SET_PDEATHSIG): no
+ * gnuplot outlives the command. Names reach a script only as data (fs_gnuplot.h). */
 int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who);
-/* Writes s to f as a gnuplot single-quoted string. */
-void cli_gp_string(FILE *f, const char *s);
+/* cli_gnuplot_to of dir/png_name, the messages naming shown_dir (where the chart will be: a
+ * campaign draws in its partial folder) instead of dir. */
+int cli_gnuplot_shown(const char *dir, const char *shown_dir, const char *script, const char *png_name,
+                      const char *who);
 
 /* Data files (app/cli_data.c). A design, scenario, terrain or campaign path given on the command
  * line that exists as given (or is absolute, or starts with ./ or ../) is used as is; a relative one

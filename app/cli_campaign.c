@@ -237,7 +237,9 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdi
         raise(SIGKILL); /* tests: a kill in the middle of writing the results */
     if (s == FS_OK)
         s = fs_campaign_write_chart(c, rows, out->partial, &err);
-    int g = s == FS_OK ? cli_gnuplot(out->partial, "chart.gp", "success.png", "campaign") : 0;
+    int g = s == FS_OK ? cli_gnuplot_shown(out->partial, out->path, "chart.gp", "success.png", "campaign") : 0;
+    int drawn = g == 0; /* else not drawn (said), or a damaged chart */
+    g = g < 0 ? 0 : g;
     if (s == FS_OK && !g && interrupted) { /* stopped while writing: the old folder stays, whole */
         free(rows);
         return 128 + interrupted;
@@ -260,7 +262,8 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdi
         printf(failed ? "%d of %d expectations FAILED\n" : "all %d expectations met\n", failed ? failed : c->nexpect,
                c->nexpect);
     }
-    printf("results: %s/summary.md, summary.csv, summary.json, trials.csv, success.png\n", dir);
+    printf("results: %s/summary.md, summary.csv, summary.json, trials.csv, %s\n", dir,
+           drawn ? "success.png" : "chart.dat and chart.gp (no success.png: see above)");
     free(rows);
     return failed ? FS_EXPECTATION_FAILED : 0;
 }

@@ -1,9 +1,12 @@
 /* cli_plot.c: charts drawn by gnuplot from a script footsim writes beside its data, and the plot
- * command: a run's time series (trajectory.csv) or a campaign's chart again (summary.json). */
+ * command: a run's time series (trajectory.csv) or a campaign's chart again (summary.json), with the
+ * folder read (and --out's) locked as a run or campaign locks it. FOOTSIM_TEST_PLOT_DELAY=S makes
+ * plot hold its locks S seconds before it reads (tests). */
 #include "cli.h"
 
 #include "footsim/campaign/fs_campaign.h"
 #include "footsim/io/fs_config.h"
+#include "footsim/io/fs_gnuplot.h"
 #include "footsim/io/fs_input.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/io/fs_png.h"
@@ -18,6 +21,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -36,22 +42,100 @@ int cli_have_program(const char *name)
     return 0;
 }
 
-/* A gnuplot single-quoted string: a quote doubled. */
-void cli_gp_string(FILE *f, const char *s)
+/* gnuplot while it draws: the signals that stop footsim (SIGINT, SIGTERM, SIGHUP) are passed to it
+ * first, so that it is never left drawing without the command that started it. Static on purpose:
+ * a handler takes no argument, and one child draws at a time. */
+static volatile sig_atomic_t gnuplot_pid, gnuplot_stopped;
+static const int stop_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+static struct sigaction before_gnuplot[3];
+
+/* Kills gnuplot (it cannot be asked to stop: it would finish its plot), then does what the signal
+ * did before: the caller's handler (a campaign keeping its journal, the results' cleanup, which
+ * ends the process), or the default. */
+static void stop_gnuplot(int sig)
 {
-    fputc('\'', f);
-    for (; *s; s++)
-        fputs(*s == '\'' ? "''" : (char[2]){*s, 0}, f);
-    fputc('\'', f);
+    if (gnuplot_pid > 0)
+        kill((pid_t)gnuplot_pid, SIGKILL);
+    gnuplot_stopped = sig;
+    for (int i = 0; i < 3; i++) {
+        if (stop_signals[i] != sig)
+            continue;
+        const struct sigaction *old = &before_gnuplot[i];
+        if (!(old->sa_flags & SA_SIGINFO) && old->sa_handler != SIG_DFL && old->sa_handler != SIG_IGN) {
+            old->sa_handler(sig);
+        } else if (!(old->sa_flags & SA_SIGINFO) && old->sa_handler == SIG_DFL) {
+            signal(sig, SIG_DFL);
+            raise(sig);
+        }
+    }
 }
 
-int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who)
+/* Runs gnuplot -e VAR SCRIPT in dir; returns its wait status, or -1 when it could not start. A
+ * signal that stops footsim meanwhile stops it (stop_gnuplot); a signal ignored stays ignored. */
+static int run_gnuplot(const char *dir, const char *var, const char *script)
+{
+    struct sigaction forward;
+    memset(&forward, 0, sizeof forward);
+    forward.sa_handler = stop_gnuplot;
+    sigemptyset(&forward.sa_mask);
+    for (int i = 0; i < 3; i++)
+        sigaddset(&forward.sa_mask, stop_signals[i]);
+    sigset_t block, was;
+    sigemptyset(&block);
+    for (int i = 0; i < 3; i++)
+        sigaddset(&block, stop_signals[i]);
+    fflush(stdout);
+    fflush(stderr);
+    /* blocked until gnuplot_pid is set: a signal in between would find no child to stop */
+    sigprocmask(SIG_BLOCK, &block, &was);
+    gnuplot_stopped = 0;
+    int caught[3] = {0};
+    for (int i = 0; i < 3; i++)
+        if (sigaction(stop_signals[i], NULL, &before_gnuplot[i]) == 0 && before_gnuplot[i].sa_handler != SIG_IGN)
+            caught[i] = sigaction(stop_signals[i], &forward, NULL) == 0;
+    pid_t parent = getpid(), pid = fork();
+    if (pid == 0) {
+        for (int i = 0; i < 3; i++) /* the child's own signals as they were */
+            if (caught[i])
+                sigaction(stop_signals[i], &before_gnuplot[i], NULL);
+        sigprocmask(SIG_SETMASK, &was, NULL);
+#ifdef __linux__
+        /* a footsim killed outright (SIGKILL) cannot pass it on: the kernel does */
+        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent)
+            _exit(127);
+#else
+        (void)parent;
+#endif
+        if (chdir(dir) == 0)
+            execlp("gnuplot", "gnuplot", "-e", var, script, (char *)NULL);
+        _exit(127);
+    }
+    gnuplot_pid = pid > 0 ? pid : 0;
+    sigprocmask(SIG_SETMASK, &was, NULL);
+    int status = -1;
+    /* a signal the caller handles (a campaign's SIGINT, SIGTERM) must not end the wait: gnuplot,
+     * killed, is reaped here */
+    if (pid > 0)
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            ;
+    sigprocmask(SIG_BLOCK, &block, NULL);
+    gnuplot_pid = 0;
+    for (int i = 0; i < 3; i++)
+        if (caught[i])
+            sigaction(stop_signals[i], &before_gnuplot[i], NULL);
+    sigprocmask(SIG_SETMASK, &was, NULL);
+    return pid > 0 ? status : -1;
+}
+
+/* The chart drawn in dir into png; shown_png and shown_dir name them in messages (where the user
+ * will find them: a campaign draws in its partial folder). */
+static int draw(const char *dir, const char *script, const char *png, const char *shown_dir, const char *shown_png,
+                const char *who)
 {
     char temp[FS_OUT_PATH + 64], abs_temp[PATH_MAX + FS_OUT_PATH + 64], cwd[PATH_MAX];
-    char var[2 * sizeof abs_temp + 16];
     if (!cli_have_program("gnuplot")) {
         fprintf(stderr, "footsim %s: gnuplot is not installed: no chart %s (apt-get install gnuplot-nox "
-                        "draws it; or run 'gnuplot %s' in %s later)\n", who, png, script, dir);
+                        "draws it; or run 'gnuplot %s' in %s later)\n", who, shown_png, script, shown_dir);
         return -1;
     }
     fs_error err;
@@ -62,37 +146,30 @@ int cli_gnuplot_to(const char *dir, const char *script, const char *png, const c
         snprintf(abs_temp, sizeof abs_temp, "%s", temp);
     else
         snprintf(abs_temp, sizeof abs_temp, "%s/%s", cwd, temp);
-    FILE *v = fmemopen(var, sizeof var, "w");
+    char *var = NULL;
+    size_t len = 0;
+    FILE *v = open_memstream(&var, &len);
     if (!v)
         return cli_report(FS_NO_MEMORY, "out of memory");
-    fputs("out=", v);
-    cli_gp_string(v, abs_temp);
-    fclose(v);
-    fflush(stdout);
-    fflush(stderr);
-    pid_t pid = fork();
-    if (pid == 0) {
-        if (chdir(dir) == 0)
-            execlp("gnuplot", "gnuplot", "-e", var, script, (char *)NULL);
-        _exit(127);
+    fputs("out = ", v);
+    fs_gp_string(v, abs_temp);
+    if (fclose(v) != 0) {
+        free(var);
+        return cli_report(FS_NO_MEMORY, "out of memory");
     }
-    int status = -1;
-    /* a signal the caller handles (a campaign's SIGINT, SIGTERM) must not end the wait: gnuplot
-     * would go on writing the temporary file after it was given up */
-    if (pid > 0)
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-            ;
-    if (!(pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
+    int status = run_gnuplot(dir, var, script);
+    free(var);
+    if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
         remove(temp);
-        char shown_png[FS_OUT_PATH + 64], shown_dir[FS_OUT_PATH + 64]; /* not a partial folder that will be gone */
-        png = fs_output_shown(png, shown_png, sizeof shown_png);
-        dir = fs_output_shown(dir, shown_dir, sizeof shown_dir);
-        if (pid > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
+        if (gnuplot_stopped)
             fprintf(stderr, "footsim %s: gnuplot stopped by %s: no chart %s\n", who,
-                    WTERMSIG(status) == SIGINT ? "SIGINT" : "SIGTERM", png); /* Ctrl-C reaches the group */
+                    gnuplot_stopped == SIGINT ? "SIGINT" : gnuplot_stopped == SIGTERM ? "SIGTERM" : "SIGHUP", shown_png);
+        else if (status != -1 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
+            fprintf(stderr, "footsim %s: gnuplot stopped by %s: no chart %s\n", who,
+                    WTERMSIG(status) == SIGINT ? "SIGINT" : "SIGTERM", shown_png); /* Ctrl-C reaches the group */
         else
             fprintf(stderr, "footsim %s: gnuplot failed: no chart %s (the data and script %s are in %s)\n", who,
-                    png, script, dir);
+                    shown_png, script, shown_dir);
         return -1;
     }
     /* gnuplot says nothing when it could not write all of it (a full disk): the file must be a
@@ -104,13 +181,27 @@ int cli_gnuplot_to(const char *dir, const char *script, const char *png, const c
     return 0;
 }
 
+int cli_gnuplot_to(const char *dir, const char *script, const char *png, const char *who)
+{
+    return draw(dir, script, png, dir, png, who);
+}
+
+int cli_gnuplot_shown(const char *dir, const char *shown_dir, const char *script, const char *png_name,
+                      const char *who)
+{
+    char png[2 * FS_PATH_MAX], shown_png[2 * FS_PATH_MAX];
+    snprintf(png, sizeof png, "%s/%s", dir, png_name);
+    snprintf(shown_png, sizeof shown_png, "%s/%s", shown_dir, png_name);
+    return draw(dir, script, png, shown_dir, shown_png, who);
+}
+
 int cli_gnuplot(const char *dir, const char *script, const char *png_name, const char *who)
 {
     char png[FS_OUT_PATH];
     fs_error err;
     if (fs_path_format(png, sizeof png, "the chart", &err, "%s/%s", dir, png_name) != FS_OK)
         return cli_report(err.status, err.message);
-    int s = cli_gnuplot_to(dir, script, png, who);
+    int s = cli_gnuplot_shown(dir, dir, script, png_name, who);
     return s < 0 ? 0 : s;
 }
 
@@ -212,6 +303,17 @@ static void run_title(const char *dir, trajectory *t)
 static void plot_columns(FILE *f, const trajectory *t, const char *title, const char *ylabel, const char *scale,
                          int (*pick)(const char *name, int *dash, int *keyed))
 {
+    /* a column's name (the file's: anyone's text) keys it through a variable, as data */
+    for (int c = 0; c < t->ncols; c++) {
+        int dash = 1, keyed = 1;
+        if (!pick(t->col[c], &dash, &keyed) || !keyed || dash > 1 || ends_with(t->col[c], "_N"))
+            continue;
+        char key[sizeof t->names];
+        snprintf(key, sizeof key, "%.*s", (int)(strrchr(t->col[c], '_') - t->col[c]), t->col[c]);
+        fprintf(f, "column%d = ", c + 1);
+        fs_gp_string(f, key);
+        fputc('\n', f);
+    }
     fprintf(f, "set title '%s'\nset ylabel '%s'\nplot ", title, ylabel);
     int n = 0;
     for (int c = 0; c < t->ncols; c++) {
@@ -226,7 +328,7 @@ static void plot_columns(FILE *f, const trajectory *t, const char *title, const 
         else if (dash > 1 || ends_with(t->col[c], "_N")) /* one entry per chain for the springs */
             snprintf(key, sizeof key, "title 'chain %d'", chain);
         else
-            snprintf(key, sizeof key, "title '%.*s'", (int)(strrchr(t->col[c], '_') - t->col[c]), t->col[c]);
+            snprintf(key, sizeof key, "title column%d", c + 1);
         fprintf(f, "%sdata using 1:(column(%d)%s) with lines lw 1.5 dt %d lc %s %s", n++ ? ", \\\n     " : "", c + 1,
                 scale, dash, colour, key);
     }
@@ -264,15 +366,16 @@ static int fill_run_script(FILE *f, const void *user)
         hinges += ends_with(t->col[c], "_rad"), springs += ends_with(t->col[c], "_N");
     int panels = 2 + (hinges > 0) * 2 + (springs > 0) + (t->lean > 0), rows = (panels + 1) / 2;
     fputs("# A run's time series: 'gnuplot plot.gp' in this folder draws plot.png.\n"
-          "if (!exists(\"out\")) out = 'plot.png'\ndata = ",
+          "if (!exists(\"out\")) out = 'plot.png'\n# the names shown, as gnuplot strings: data, never code\ndata = ",
           f);
-    cli_gp_string(f, t->path);
+    fs_gp_string(f, t->path);
+    fputs("\nrun_title = ", f);
+    fs_gp_string(f, t->title);
     fprintf(f, "\nset terminal pngcairo size 1200,%d noenhanced font 'sans,10'\nset output out\n"
                "set datafile separator ','\nset datafile columnheaders\n"
-               "set multiplot layout %d,2 title ",
+               "set multiplot layout %d,2 title run_title",
             60 + 330 * rows, rows);
-    cli_gp_string(f, t->title);
-    fprintf(f, "\nset grid\nset autoscale xfix\nset xlabel 'time (s)'\nset key outside right top samplen 2\n"
+    fprintf(f, "\nset grid\nset autoscale xfix\nset xlabel 'time (s)'\nset key outside right top samplen 2 noenhanced\n"
                "set title 'ankle drop: first height minus height (mm)'\nset ylabel 'ankle drop (mm)'\n"
                "plot data using 1:((%.17g - column(%d)) * 1000) with lines lw 2 lc rgb '#1f5fa0' notitle\n"
                "set title 'contact points with the ground'\nset ylabel 'contact points'\nset yrange [0:*]\n"
@@ -293,6 +396,13 @@ static int fill_run_script(FILE *f, const void *user)
                    "plot data using 1:%d with lines lw 2 lc rgb '#a02020' notitle\n", t->lean);
     fputs("unset multiplot\n", f);
     return 1;
+}
+
+/* plot's exit status for cli_gnuplot_to's s: no gnuplot installed is said and not an error (the
+ * script is there for later); gnuplot failing is: the chart, plot's one result, was not written. */
+static int not_drawn(int s)
+{
+    return s >= 0 ? s : cli_have_program("gnuplot") ? FS_IO : 0;
 }
 
 /* A run's folder: dir/trajectory.csv drawn into out/plot.png, read into t (zeroed). */
@@ -319,7 +429,7 @@ static int plot_run_into(const char *dir, const char *out, trajectory *t)
     s = cli_gnuplot_to(out, "plot.gp", png, "plot");
     if (!s)
         printf("%s: %s (script %s/plot.gp)\n", png, t->title, out);
-    return s < 0 ? 0 : s;
+    return not_drawn(s);
 }
 
 /* plot_run_into with its trajectory on the heap (large), for this command only. */
@@ -346,7 +456,7 @@ static int plot_campaign_into(const char *dir, const char *out, fs_campaign *c, 
     if (!s)
         printf("%s/success.png: campaign %s, %d cells (feet x terrains x robots: %d x %d x %d; data %s/chart.dat)\n",
                out, c->name, fs_campaign_ncells(c), c->nfeet, c->nterrains, c->nrobots, out);
-    return s < 0 ? 0 : s;
+    return not_drawn(s);
 }
 
 /* plot_campaign_into with the campaign and its rows on the heap (large), for this command only. */
@@ -388,5 +498,22 @@ int cli_plot(const cli_args *a)
     fs_error err;
     if (a->out && fs_outdir_shared(a->out, a->replace, "--out", &err) != FS_OK)
         return cli_report(err.status, err.message);
-    return campaign ? plot_campaign(dir, out) : plot_run(dir, out);
+    /* the folder read and the one written held as a campaign or run holds them: none replaces
+     * either between the summary read and the chart written */
+    fs_outdir held[2];
+    struct stat out_st;
+    int two = a->out && !(stat(a->out, &out_st) == 0 && out_st.st_dev == st.st_dev && out_st.st_ino == st.st_ino);
+    if (fs_outdir_lock(&held[0], dir, "plot", &err) != FS_OK)
+        return cli_report(err.status, err.message);
+    if (two && fs_outdir_lock(&held[1], a->out, "--out", &err) != FS_OK) {
+        fs_outdir_unlock(&held[0]);
+        return cli_report(err.status, err.message);
+    }
+    if (getenv("FOOTSIM_TEST_PLOT_DELAY")) /* tests: a plot holding its folders */
+        sleep((unsigned)atoi(getenv("FOOTSIM_TEST_PLOT_DELAY")));
+    int s = campaign ? plot_campaign(dir, out) : plot_run(dir, out);
+    if (two)
+        fs_outdir_unlock(&held[1]);
+    fs_outdir_unlock(&held[0]);
+    return s;
 }

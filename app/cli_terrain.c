@@ -1,6 +1,7 @@
 /* cli_terrain.c: the terrain subcommand: heights, a picture, a summary. */
 #include "cli.h"
 
+#include "footsim/io/fs_gnuplot.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/io/fs_png.h"
 #include "footsim/model/fs_scenario.h"
@@ -81,15 +82,19 @@ static int fill_figure_script(FILE *f, const void *user)
         fs_terrain_map_colour(k / 3.0, c);
         fprintf(f, "%s%d '#%02x%02x%02x'", k ? ", " : "", k, (int)lround(c[0]), (int)lround(c[1]), (int)lround(c[2]));
     }
-    fprintf(f, ")\nset colorbox user origin screen %.6f, screen %.6f size screen %.6f, screen %.6f\nset title ",
+    fprintf(f, ")\nset colorbox user origin screen %.6f, screen %.6f size screen %.6f, screen %.6f\n",
             (FIG_LEFT_PX + g->w + 20) / W, FIG_BOTTOM_PX / H, COLOURBAR_PX / W, g->h / H);
+    /* the terrain's name and the map's path as data, never code (fs_gnuplot.h) */
     char title[256];
     snprintf(title, sizeof title, "terrain %s from above: height as colour, shaded with light from the north-west%s",
              g->name, g->outline ? "; white: what the foot reaches" : "");
-    cli_gp_string(f, title);
-    fprintf(f, "\nplot '%s' binary filetype=png dx=%.9g dy=%.9g origin=(%.9g,%.9g) with rgbimage notitle, \\\n"
+    fputs("map_title = ", f);
+    fs_gp_string(f, title);
+    fputs("\nmap_file = ", f);
+    fs_gp_string(f, g->map);
+    fprintf(f, "\nset title map_title\nplot map_file binary filetype=png dx=%.9g dy=%.9g origin=(%.9g,%.9g) with rgbimage notitle, \\\n"
                "     '+' using (NaN):(NaN):(0) with points lc palette notitle\n",
-            g->map, sx, sy, r[0] * 1e3, r[2] * 1e3);
+            sx, sy, r[0] * 1e3, r[2] * 1e3);
     return 1;
 }
 

@@ -40,6 +40,12 @@ expect 2 "$tmp/heavy_biped.ini:3: 'mass_kg' is a single body's key and this robo
 expect 2 "--set robot.hip_width_m: 'hip_width_m' is a biped's key and this robot is one body" -- trial scenarios/landing_trial.ini --set robot.hip_width_m=0.3
 expect 2 "--set robot.design: .*robots/biped.ini is a biped, and the walking machine carries one body" -- walk scenarios/walking.ini --set robot.design=robots/biped.ini
 expect 2 "scenarios/robots/biped.ini: kind = biped: the biped is not exported" -- export scenarios/feet/biomimetic.ini --mjcf --scenario scenarios/landing_trial.ini --set robot.design=robots/biped.ini --out "$tmp/biped.xml"
+# moments of inertia no body has (one above the other two together): refused where they are given
+expect 2 "--set robot.inertia_kgm2: inertia_kgm2 = 0.01, 0.01, 1 is no rigid body's: the moment about z (1 kg m^2) is more than those about x and y together (0.02).*give the moment about z at most 0.02" -- trial scenarios/landing_trial.ini --set robot.inertia_kgm2=0.01,0.01,1
+printf '[robot]\nmass_kg = 26\ninertia_kgm2 = 0.1, 0.5, 0.3\n' >"$tmp/rod_robot.ini"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign = rod_robot.ini\n' "$PWD" >"$tmp/uses_rod.ini"
+expect 2 "$tmp/rod_robot.ini:3: inertia_kgm2 = 0.1, 0.5, 0.3 is no rigid body's: the moment about y" -- trial "$tmp/uses_rod.ini"
+expect 2 "--set robot.pelvis_inertia_kgm2: pelvis_inertia_kgm2 = 1, 0.2, 0.2 is no rigid body's" -- trial scenarios/landing_trial.ini --set robot.design=robots/biped.ini --set robot.pelvis_inertia_kgm2=1,0.2,0.2
 printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[landing]\nlanded_tilt_deg = 15\n' "$PWD" >"$tmp/norobot.ini"
 expect 2 "$tmp/norobot.ini: a landing trial drops a robot and this scenario has none" -- trial "$tmp/norobot.ini"
 
@@ -64,6 +70,28 @@ expect 2 "$tmp/noterrain.ini:6: terrain = 'rocks' is not one of the choices; all
 expect 2 "$tmp/minmax.ini:7: min_success = 0.8 is above max_success = 0.5" -- campaign "$tmp/minmax.ini" --out "$tmp/c6"
 expect 2 "$tmp/sweep.ini:5: sweep_values: 'abc' is not a finite number" -- campaign "$tmp/sweep.ini" --out "$tmp/c7"
 expect 2 "$tmp/nosweep.ini:4: sweep_values without sweep" -- campaign "$tmp/nosweep.ini" --out "$tmp/c8"
+# a value given twice (equal as numbers) would make two points of one name; an empty value (two
+# commas, a comma first or last) is a slip, refused in every list (a sweep's, a list key's)
+camp twice 'seeds = 3\nsweep = rough.rms_m\nsweep_values = 0, 0.001, 0.001'
+camp twice_e 'seeds = 3\nsweep = rough.rms_m\nsweep_values = 0.001, 1e-3, 0.00100'
+camp twice2 'seeds = 3\nsweep = rough.rms_m\nsweep_values = 0, 0.001\nsweep2 = robot.com_height_m\nsweep2_values = 0.3, 0.2, 3e-1'
+camp commas 'seeds = 3\nsweep = rough.rms_m\nsweep_values = 0,,0.001'
+camp trailing 'seeds = 3\nsweep = rough.rms_m\nsweep_values = 0, 0.001,'
+camp leading 'seeds = 3\nsweep = rough.rms_m\nsweep_values = , 0, 0.001'
+expect 2 "$tmp/twice.ini:5: sweep_values: '0.001' is '0.001' again.*give each value once" -- campaign "$tmp/twice.ini" --out "$tmp/c10"
+expect 2 "$tmp/twice_e.ini:5: sweep_values: '1e-3' is '0.001' again" -- campaign "$tmp/twice_e.ini" --out "$tmp/c10"
+expect 2 "$tmp/twice2.ini:7: sweep2_values: '3e-1' is '0.3' again" -- campaign "$tmp/twice2.ini" --out "$tmp/c10"
+expect 2 "$tmp/commas.ini:5: sweep_values: value 2 is empty" -- campaign "$tmp/commas.ini" --out "$tmp/c10"
+expect 2 "$tmp/trailing.ini:5: sweep_values: value 3 is empty" -- campaign "$tmp/trailing.ini" --out "$tmp/c10"
+expect 2 "$tmp/leading.ini:5: sweep_values: value 1 is empty" -- campaign "$tmp/leading.ini" --out "$tmp/c10"
+expect 2 "--set campaign.sweep_values: sweep_values: '1.0' is '1' again" -- campaign scenarios/envelope.ini --set campaign.sweep_values=1,1.0 --out "$tmp/c10"
+check '[ ! -e "$tmp/c10" ]'
+printf '[robot]\nmass_kg = 26\ninertia_kgm2 = 1.4,,1.4, 0.1\n' >"$tmp/commas_robot.ini"
+printf '[robot]\nmass_kg = 26\ninertia_kgm2 = 1.4, 1.4, 0.1,\n' >"$tmp/trailing_robot.ini"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign = %s\n' "$PWD" commas_robot.ini >"$tmp/uses_commas.ini"
+printf '[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\n[robot]\ndesign = %s\n' "$PWD" trailing_robot.ini >"$tmp/uses_trailing.ini"
+expect 2 "$tmp/commas_robot.ini:3: inertia_kgm2 = '1.4,,1.4, 0.1' has an empty value (value 2" -- trial "$tmp/uses_commas.ini"
+expect 2 "$tmp/trailing_robot.ini:3: inertia_kgm2 = '1.4, 1.4, 0.1,' has an empty value (value 4" -- trial "$tmp/uses_trailing.ini"
 expect 2 "--set mud.depth: unknown section \[mud\].*(campaign scenarios/landing_ci.ini: foot biomimetic on terrain flat under robot single_tall)" -- campaign scenarios/landing_ci.ini --set mud.depth=3 --out "$tmp/c9"
 expect 2 "no such file" -- campaign scenarios/landing_ci.ini --set terrain.flat.file=../terrains/lava.ini --out "$tmp/c9"
 expect 2 "\-j 0: not a number of workers; allowed: a whole number from 1 to 1024" -- campaign scenarios/landing_ci.ini -j 0 --out "$tmp/c9"

@@ -6,7 +6,11 @@
 # small campaign folder (a summary.json: bars with a zero rate, a one-key sweep, a two-key heat map)
 # and a trial's folder give whole PNGs of the stated size (the trial's with its lean panel); terrain --png is the bare map grown by the figure's margins,
 # its colour bar's pixels brightening from the lowest height to the highest. Without gnuplot those
-# checks are skipped, said. Usage: cli_plot.sh path/to/footsim (run from the source folder).
+# checks are skipped, said. Names reach gnuplot as data (issue 33): campaign files and a received
+# summary.json or trajectory.csv named with quotes, line ends and gnuplot commands are drawn and run
+# nothing; a gnuplot that fails is said and no success.png listed; SIGTERM, SIGHUP or SIGINT to plot
+# leaves no gnuplot drawing. plot holds the folder's lock (and --out's)
+# against a campaign replacing it. Usage: cli_plot.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
 
 # png_ok FILE: a PNG signature first, an IHDR chunk, the IEND chunk last
@@ -137,6 +141,130 @@ check_that "bars: 960x540 (got $(png_size "$tmp/camp/success.png"))" [ "$(png_si
 check_that "bars: a rate of zero drawn under the zero line" grep -q '== 0 ? -0.025' "$tmp/camp/chart.gp"
 check_that "bars: every cell's rate in the data" [ "$(grep -c '^"' "$tmp/camp/chart.dat")" -eq 2 ]
 check_that "heat map: one panel, 560x440" [ "$(png_size "$tmp/heat/success.png")" = 560x440 ]
+
+# ---- names reach gnuplot as data, never as code (issue 33, item 4) --------------------------------------
+# campaign files named with a quote, a gnuplot command and a newline: each drawn, nothing run
+. "$(dirname "$0")/small_campaign.sh"
+mkdir -p "$tmp/names"
+nl='
+'
+i=0
+for name in "bob's campaign" "x'; system('touch INJECTED'); y='" "two${nl}lines" 'back\slash`touch INJECTED`@x'; do
+    i=$((i + 1))
+    cp "$tmp/small.ini" "$tmp/$name.ini"
+    (cd "$tmp" && "$fs" campaign "$name.ini" --set campaign.seeds=1 --set run.duration_s=0.1 --out "$tmp/names/out$i") \
+        >"$tmp/out.txt" 2>"$tmp/err.txt"
+    check_that "campaign file '$name': exit 0" [ $? -eq 0 ]
+    check_that "campaign file '$name': a whole success.png" png_ok "$tmp/names/out$i/success.png"
+    check_that "campaign file '$name': nothing run" [ -z "$(find "$tmp" -name INJECTED)" ]
+    check_that "campaign file '$name': gnuplot said nothing" [ -z "$(grep -v 'trials done' "$tmp/err.txt")" ]
+done
+# a received summary.json whose every name is hostile: drawn, nothing run
+mkdir -p "$tmp/hostile_bars" "$tmp/hostile_sweep"
+# (printf, not echo: dash's echo would read the backslashes)
+evil='\u0027; system(\"touch INJECTED\"); x=\u0027 \n `touch INJECTED` @x \\'
+{
+    printf '%s\n' "{\"campaign\": \"'; system(\\\"touch INJECTED\\\")\", \"seeds\": 4, \"first_seed\": 1, \"sweep\": null, \"sweep2\": null, \"rows\": ["
+    printf '%s\n' "$(row "bio$evil" "flat$evil" 4), $(row "bio$evil" 'rou\"gh' 0), $(row flat "flat$evil" 3), $(row flat 'rou\"gh' 1)]}"
+} >"$tmp/hostile_bars/summary.json"
+{
+    printf '%s\n' "{\"campaign\": \"s$evil\", \"seeds\": 4, \"first_seed\": 1, \"sweep\": \"rough.rms_m$evil\", \"sweep2\": null, \"rows\": ["
+    printf '%s\n' "$(row "bio$evil" rough@0 4 ', "sweep_value": 0'), $(row "bio$evil" rough@0.005 2 ', "sweep_value": 0.005')]}"
+} >"$tmp/hostile_sweep/summary.json"
+for d in hostile_bars hostile_sweep heat; do
+    "$fs" plot "$tmp/$d" >"$tmp/out.txt" 2>"$tmp/err.txt"
+    check_that "plot of $d: exit 0" [ $? -eq 0 ]
+    check_that "plot of $d: a whole success.png" png_ok "$tmp/$d/success.png"
+    # (a name ending in a backslash draws a warning from gnuplot's measure of a rotated tic label)
+    check_that "plot of $d: gnuplot found no error" [ -z "$(grep -v 'warning: enhanced text parser' "$tmp/err.txt")" ]
+done
+check_that "hostile summaries: nothing run" [ -z "$(find "$tmp" -name INJECTED)" ]
+check_that "hostile summaries: chart.dat keeps its columns (5 fields a terrain)" \
+    [ "$(grep -v '^#' "$tmp/hostile_bars/chart.dat" | awk -F'"' '{ print NF }' | sort -u)" = 3 ]
+# a trajectory.csv whose columns are named to run a command
+mkdir -p "$tmp/hostile_run"
+sed "1s/mtp1_rad/mtp'.system(\"touch INJECTED\").'_rad/; 1s/ankle_x_m/x'; system('touch INJECTED'); y='_rad/" \
+    "$tmp/run/trajectory.csv" >"$tmp/hostile_run/trajectory.csv"
+"$fs" plot "$tmp/hostile_run" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check_that "plot of a hostile trajectory: exit 0, a whole PNG" png_ok "$tmp/hostile_run/plot.png"
+check_that "plot of a hostile trajectory: nothing run" [ -z "$(find "$tmp" -name INJECTED)" ]
+
+# gnuplot failing: no success.png listed, the message naming the folder the results are in
+mkdir -p "$tmp/badgp"
+printf '#!/bin/sh\necho "gnuplot broke" >&2\nexit 1\n' >"$tmp/badgp/gnuplot"
+chmod +x "$tmp/badgp/gnuplot"
+PATH="$tmp/badgp:$PATH" "$fs" campaign "$tmp/small.ini" --set campaign.seeds=1 --set run.duration_s=0.1 --out "$tmp/nochart" \
+    >"$tmp/out.txt" 2>"$tmp/err.txt"
+check_that "gnuplot failing: the campaign's results still written" [ -s "$tmp/nochart/summary.json" ] && [ ! -e "$tmp/nochart/success.png" ]
+check_that "gnuplot failing: success.png not listed" sh -c "! grep -q 'success.png\$' '$tmp/out.txt'"
+check_that "gnuplot failing: said, naming the results folder, not a partial one" \
+    grep -q "gnuplot failed: no chart $tmp/nochart/success.png (the data and script chart.gp are in $tmp/nochart)" "$tmp/err.txt"
+PATH="$tmp/badgp:$PATH" "$fs" plot "$tmp/camp" --out "$tmp/nochart_plot" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check_that "gnuplot failing: plot exits 4, lists nothing" [ $? -eq 4 ] && [ ! -s "$tmp/out.txt" ] && [ ! -e "$tmp/nochart_plot/success.png" ]
+
+# ---- plot holds the folders it reads and writes (issue 33, item 7) ----------------------------------
+# another footsim's lock on the folder (as a campaign replacing it holds): plot refuses, writes nothing
+rm -f "$tmp/camp/success.png"
+echo $$ >"$tmp/.camp.footsim-lock"
+flock "$tmp/.camp.footsim-lock" sleep 30 &
+holder=$!
+sleep 1
+"$fs" plot "$tmp/camp" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check_that "a held folder: plot exits 2" [ $? -eq 2 ]
+check_that "a held folder: said" grep -q "plot $tmp/camp: another footsim (process $$) is writing this folder" "$tmp/err.txt"
+check_that "a held folder: no chart" [ ! -e "$tmp/camp/success.png" ]
+kill $holder
+wait $holder 2>/dev/null
+# a plot holding its folder (delayed between taking the lock and reading): a campaign for that
+# folder started meanwhile is refused, and the plot completes
+"$fs" campaign "$tmp/small.ini" --set campaign.seeds=1 --set run.duration_s=0.1 --out "$tmp/held" >/dev/null 2>&1
+FOOTSIM_TEST_PLOT_DELAY=3 "$fs" plot "$tmp/held" >"$tmp/plot_held.txt" 2>&1 &
+plotter=$!
+sleep 1
+"$fs" campaign "$tmp/small.ini" --set campaign.seeds=2 --set run.duration_s=0.1 --out "$tmp/held" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check_that "a campaign on a folder plot holds: exit 2" [ $? -eq 2 ]
+check_that "a campaign on a folder plot holds: said" grep -q "another footsim (process $plotter) is writing this folder" "$tmp/err.txt"
+wait $plotter
+check_that "the plot holding it: exit 0, a whole chart" [ $? -eq 0 ] && png_ok "$tmp/held/success.png"
+check_that "the plot holding it: the folder still the first campaign's" grep -q '"seeds":	1' "$tmp/held/summary.json"
+check_that "the plot's lock released" [ ! -e "$tmp/.held.footsim-lock" ]
+
+# ---- killing plot takes gnuplot with it (issue 33, item 10) -----------------------------------------
+# a trajectory of 20000 rows (the short run's rows repeated): gnuplot draws it for seconds; plot is
+# killed by SIGTERM, SIGHUP and SIGINT while it does; gnuplot must be gone (or a zombie of init's)
+# and no temporary chart left
+mkdir -p "$tmp/big"
+awk -F, 'NR == 1 { print; next } { row[++n] = $0 }
+    END { for (i = 0; i < 20000; i++) { r = row[1 + i % n]; sub(/^[^,]*/, i * 1e-4, r); print r } }' \
+    "$tmp/run/trajectory.csv" >"$tmp/big/trajectory.csv"
+alive() { s=$(ps -o stat= -p "$1" 2>/dev/null); [ -n "$s" ] && [ "${s#Z}" = "$s" ]; }
+# a background job of a script has SIGINT ignored (and footsim keeps it so): env restores it
+default_int=
+env --default-signal=INT true 2>/dev/null && default_int="env --default-signal=INT"
+for sig in TERM:15 HUP:1 INT:2; do
+    num=${sig#*:} sig=${sig%:*}
+    [ $sig = INT ] && [ -z "$default_int" ] && { echo "env --default-signal is missing: SIGINT not tried"; continue; }
+    $default_int "$fs" plot "$tmp/big" >/dev/null 2>"$tmp/kill_$sig.err" &
+    plotter=$!
+    gp=
+    for i in $(seq 150); do
+        gp=$(pgrep -P $plotter -x gnuplot) && break
+        sleep 0.1
+    done
+    check_that "SIG$sig: gnuplot was drawing" [ -n "$gp" ]
+    kill -$sig $plotter
+    wait $plotter
+    status=$?
+    check_that "SIG$sig: plot ended by it (status $status)" [ $status -eq $((128 + num)) ]
+    for i in $(seq 50); do
+        alive "$gp" || break
+        sleep 0.1
+    done
+    check_that "SIG$sig: no gnuplot left drawing" sh -c "! { ps -o stat= -p '$gp' | grep -qv '^Z'; }"
+    [ -n "$gp" ] && kill -9 "$gp" 2>/dev/null
+    check_that "SIG$sig: no temporary chart left" [ -z "$(ls -A "$tmp/big" | grep tmp)" ]
+    check_that "SIG$sig: no half chart" [ ! -e "$tmp/big/plot.png" ]
+done
 
 # ---- terrain's summary over a scenario's region: the region the picture shows, said ------------------
 "$fs" terrain terrains/complex_uneven.ini >"$tmp/plain.txt"

@@ -430,10 +430,11 @@ static void test_sweep_two_keys(void)
     const fs_scenario *sc = fs_campaign_pair(&c, 6 + 1 * 3 + 2);
     CHECK(sc->design.spring_scale == 10 && sc->geom.spring[0].k_N_per_m == 10 * sc->design.k_N_per_m[0]);
     CHECK(sc->def.robot.com_height_m == 0.3 && sc->terrain.def.kind == FS_TERRAIN_COMPLEX_UNEVEN);
-    /* the stretched body: its moments scale with the height squared */
+    /* the stretched body: its mass's spread along z, (1.4 + 1.4 - 0.1) / 2, scales with the height
+     * squared, the spread across (0.05 each way) stays */
     double I[3];
     fs_robot_inertia(&fs_campaign_pair(&c, 0)->def.robot, I);
-    CHECK_NEAR(I[0], 1.4 * (0.02 / 0.3) * (0.02 / 0.3), 1e-12);
+    CHECK_NEAR(I[0], 0.05 + 1.35 * (0.02 / 0.3) * (0.02 / 0.3), 1e-12);
     CHECK(I[2] == 0.1);
     /* a point's name holds a comma: written quoted, every CSV row has the header's fields */
     char tmp[] = "/tmp/fs_sweep_csv_XXXXXX";

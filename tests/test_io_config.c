@@ -1,8 +1,10 @@
 /* Tests of io_config.c through the design and scenario loaders: every bad input is refused with
- * "file:line: what is wrong" and FS_BAD_INPUT, before anything is built. */
+ * "file:line: what is wrong" and FS_BAD_INPUT, before anything is built. And io_gnuplot.c: a name
+ * written with fs_gp_string is read back by gnuplot byte for byte, and runs nothing. */
 #include "fs_test.h"
 
 #include "footsim/model/fs_scenario.h"
+#include "footsim/io/fs_gnuplot.h"
 #include "footsim/io/fs_input.h"
 
 #include <cJSON.h>
@@ -259,6 +261,57 @@ static void teardown(void)
     CHECK(system(cmd) == 0);
 }
 
+/* Every byte from 1 to 255 and hostile names (quotes, gnuplot commands, backquotes, macros, line
+ * ends, a trailing backslash), each assigned through fs_gp_string and printed back by gnuplot into
+ * a file of its own: the file holds the name and a newline, and no command ran (no INJECTED). */
+static void gnuplot_reads_names_back(void)
+{
+    if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
+        printf("  gnuplot is not installed: skipped\n");
+        return;
+    }
+    char every[256];
+    for (int i = 1; i < 256; i++)
+        every[i - 1] = (char)i;
+    every[255] = 0;
+    const char *names[] = {every, "", "'", "''", "bob's campaign", "x'; system('touch INJECTED'); y='",
+                           "'; system(\"touch INJECTED\")", "a`touch INJECTED`b", "@x @campaign", "two\nlines\r\n",
+                           "ends in \\", "\"", "'\n'", "\x7f\x01'"};
+    enum { N = sizeof names / sizeof names[0] };
+    char script[128], path[160], cmd[256];
+    snprintf(script, sizeof script, "%s/names.gp", dir);
+    FILE *f = fopen(script, "w");
+    REQUIRE(f != NULL);
+    for (int i = 0; i < N; i++) {
+        snprintf(path, sizeof path, "%s/name%d.txt", dir, i);
+        fputs("set print ", f);
+        fs_gp_string(f, path);
+        fprintf(f, "\ns%d = ", i);
+        fs_gp_string(f, names[i]);
+        fprintf(f, "\nprint s%d\nset print\n", i);
+    }
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "cd %s && gnuplot names.gp", dir);
+    CHECK(system(cmd) == 0);
+    for (int i = 0; i < N; i++) {
+        snprintf(path, sizeof path, "%s/name%d.txt", dir, i);
+        char back[512] = "";
+        FILE *r = fopen(path, "rb");
+        size_t n = r ? fread(back, 1, sizeof back - 1, r) : 0;
+        if (r)
+            fclose(r);
+        size_t len = strlen(names[i]);
+        int same = n == len + 1 && !memcmp(back, names[i], len) && back[len] == '\n';
+        if (!same)
+            fprintf(stderr, "  name %d read back as %zu bytes, not %zu\n", i, n, len + 1);
+        CHECK(same);
+        remove(path);
+    }
+    snprintf(path, sizeof path, "%s/INJECTED", dir);
+    CHECK(access(path, F_OK) != 0);
+    remove(script);
+}
+
 FS_TEST_MAIN(TEST(setup), TEST(good_files_load), TEST(unknown_names_are_refused), TEST(malformed_values_are_refused), TEST(misread_files_are_refused), TEST(caps_are_refused),
              TEST(out_of_range_values_are_refused), TEST(missing_files_are_refused),
-             TEST(overrides_are_checked_like_files), TEST(provenance_hashes_content), TEST(teardown))
+             TEST(overrides_are_checked_like_files), TEST(provenance_hashes_content), TEST(gnuplot_reads_names_back), TEST(teardown))

@@ -100,27 +100,39 @@ static void take_sweep_values(fs_config *cfg, binder *b)
     }
 }
 
-/* Splits the values of sweep w; each must be a finite number. Returns the count, or -1 (err set). */
+/* Splits the values of sweep w; each must be a finite number, given once (equal as numbers: 1 and
+ * 1e0 would make two points of one name). Returns the count, or -1 (err set). */
 static int parse_sweep(const binder *b, int w, char values[][FS_NAME_MAX], fs_error *err)
 {
-    char buf[FS_VALUE_MAX];
+    char buf[FS_VALUE_MAX], *tok[FS_CAMPAIGN_MAX_TERRAINS];
+    double v[FS_CAMPAIGN_MAX_TERRAINS];
     snprintf(buf, sizeof buf, "%s", b->sweep_values[w]);
-    int n = 0;
-    char *save = NULL;
-    for (char *tok = strtok_r(buf, ", \t", &save); tok; tok = strtok_r(NULL, ", \t", &save)) {
-        double v;
-        fs_number num = fs_parse_number(tok, &v);
-        if (num != FS_NUMBER_OK || strlen(tok) >= FS_NAME_MAX / 4) {
+    int empty = 0, n = fs_list_split(buf, tok, FS_CAMPAIGN_MAX_TERRAINS, &empty);
+    if (n == -1) {
+        fs_fail(err, FS_BAD_INPUT, "%s: %s: value %d is empty (two commas in a row, or a comma first or last); "
+                "allowed: comma-separated numbers, e.g. 0, 0.001, 0.002", b->sweep_where[w], sweep_values_key[w], empty);
+        return -1;
+    }
+    if (n == -2) {
+        fs_fail(err, FS_BAD_INPUT, "%s: %s: more than %d values", b->sweep_where[w], sweep_values_key[w],
+                FS_CAMPAIGN_MAX_TERRAINS);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        fs_number num = fs_parse_number(tok[i], &v[i]);
+        if (num != FS_NUMBER_OK || strlen(tok[i]) >= FS_NAME_MAX / 4) {
             fs_fail(err, FS_BAD_INPUT, "%s: %s: '%s' %s; allowed: comma-separated numbers", b->sweep_where[w],
-                    sweep_values_key[w], tok, num != FS_NUMBER_OK ? fs_number_problem(num) : "is too long");
+                    sweep_values_key[w], tok[i], num != FS_NUMBER_OK ? fs_number_problem(num) : "is too long");
             return -1;
         }
-        if (n == FS_CAMPAIGN_MAX_TERRAINS) {
-            fs_fail(err, FS_BAD_INPUT, "%s: %s: more than %d values", b->sweep_where[w], sweep_values_key[w],
-                    FS_CAMPAIGN_MAX_TERRAINS);
-            return -1;
-        }
-        snprintf(values[n++], FS_NAME_MAX, "%s", tok);
+        for (int j = 0; j < i; j++)
+            if (v[j] == v[i]) {
+                fs_fail(err, FS_BAD_INPUT, "%s: %s: '%s' is '%s' again (both %.15g): each point would be there "
+                        "twice under one name; give each value once", b->sweep_where[w], sweep_values_key[w], tok[i],
+                        tok[j], v[i]);
+                return -1;
+            }
+        snprintf(values[i], FS_NAME_MAX, "%s", tok[i]);
     }
     if (n == 0)
         fs_fail(err, FS_BAD_INPUT, "%s: %s is empty; give the values of the swept key, e.g. 0, 0.001, 0.002",

@@ -3,6 +3,7 @@
 #include "campaign_internal.h"
 
 #include "footsim/base/fs_path.h"
+#include "footsim/io/fs_gnuplot.h"
 #include "footsim/io/fs_output.h"
 
 #include <cjson/cJSON.h>
@@ -418,11 +419,15 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
         fputs("# terrain", f);
         for (int k = 0; k < nseries(c); k++) {
             series_title(c, k, title, sizeof title);
-            fprintf(f, " \"%s\": rate low high", title);
+            fputs(" \"", f);
+            fs_gp_data_text(f, title);
+            fputs("\": rate low high", f);
         }
         fputc('\n', f);
         for (int t = 0; t < c->nterrains; t++) {
-            fprintf(f, "\"%s\"", c->terrain[t].name);
+            fputc('"', f);
+            fs_gp_data_text(f, c->terrain[t].name);
+            fputc('"', f);
             for (int k = 0; k < nseries(c); k++) {
                 int foot, robot, base;
                 series_of(c, k, &foot, &robot, &base);
@@ -435,16 +440,21 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
     }
     for (int k = 0; k < nseries(c); k++) {
         series_title(c, k, title, sizeof title);
+        fprintf(f, "%s# ", k ? "\n\n" : "");
+        fs_gp_data_text(f, title);
+        fputs(": ", f);
+        fs_gp_data_text(f, c->sweep[0]);
         if (c->nsweep == 1) {
-            fprintf(f, "%s# %s: %s rate low high\n", k ? "\n\n" : "", title, c->sweep[0]);
+            fputs(" rate low high\n", f);
             for (int i = 0; i < c->nvalues[0]; i++) {
                 const fs_campaign_row *r = point_row(x, k, i, 0);
                 fprintf(f, "%.17g %.17g %.17g %.17g\n", value_of(c, 0, i), r->success_rate, r->ci_low, r->ci_high);
             }
             continue;
         }
-        fprintf(f, "%s# %s: %s %s x_low x_high y_low y_high rate law critical_height_m\n", k ? "\n\n" : "", title,
-                c->sweep[0], c->sweep[1]);
+        fputc(' ', f);
+        fs_gp_data_text(f, c->sweep[1]);
+        fputs(" x_low x_high y_low y_high rate law critical_height_m\n", f);
         for (int i = 0; i < c->nvalues[0]; i++)
             for (int j = 0; j < c->nvalues[1]; j++) {
                 const fs_campaign_row *r = point_row(x, k, i, j);
@@ -476,23 +486,20 @@ static void heat_map_script(FILE *f, const fs_campaign *c)
     cell_edges(c, 0, 0, ex), cell_edges(c, 0, c->nvalues[0] - 1, xr);
     cell_edges(c, 1, 0, ey), cell_edges(c, 1, c->nvalues[1] - 1, yr);
     fprintf(f, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\nset output out\n"
-               "set multiplot layout %d,%d title 'Campaign %s: success rate (%d seeds per point); law: o stands, "
-               "x topples%s'\n"
+               "set multiplot layout %d,%d title 'Campaign ' . campaign . ': success rate (%d seeds per point); law: "
+               "o stands, x topples%s'\n"
                "set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')\nset cbrange [0:1]\n"
-               "set cblabel 'success rate'\nset xlabel '%s'\nset ylabel '%s'\n%s%s"
+               "set cblabel 'success rate'\nset xlabel key1\nset ylabel key2\n%s%s"
                "set xrange [%.17g:%.17g]\nset yrange [%.17g:%.17g]\n"
                "set key off\nset style fill solid 1.0 noborder\n",
-            560 * cols, 440 * rows, rows, cols, c->name, c->seeds,
-            hk >= 0 ? "; line: the critical height K/(m g)" : "", c->sweep[0], c->sweep[1],
+            560 * cols, 440 * rows, rows, cols, c->seeds, hk >= 0 ? "; line: the critical height K/(m g)" : "",
             log_axis(c, 0) ? "set logscale x\n" : "", log_axis(c, 1) ? "set logscale y\n" : "", fmin(ex[0], xr[1]),
             fmax(ex[0], xr[1]), fmin(ey[0], yr[1]), fmax(ey[0], yr[1]));
-    char title[4 * FS_NAME_MAX];
     for (int k = 0; k < n; k++) {
-        series_title(c, k, title, sizeof title);
-        fprintf(f, "set title '%s'\nplot 'chart.dat' index %d using 1:2:3:4:5:6:7 with boxxyerror lc palette, \\\n"
+        fprintf(f, "set title series%d\nplot 'chart.dat' index %d using 1:2:3:4:5:6:7 with boxxyerror lc palette, \\\n"
                    "     '' index %d using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \\\n"
                    "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black'",
-                title, k, k, k);
+                k + 1, k, k, k);
         /* the critical height against the other key: one point per value of it (a row of the block
          * each, picked with every, so that the line is not broken by skipped rows), clipped by the
          * axes' ranges, which the data set */
@@ -506,13 +513,38 @@ static void heat_map_script(FILE *f, const fs_campaign *c)
     fputs("unset multiplot\n", f);
 }
 
+/* name = NAME as a gnuplot string (fs_gp_string): the script uses the variable, never the text. */
+static void name_variable(FILE *f, const char *name, int number, const char *text)
+{
+    fprintf(f, number ? "%s%d = " : "%s = ", name, number);
+    fs_gp_string(f, text);
+    fputc('\n', f);
+}
+
+/* The names the chart shows, each a variable: campaign, series1 .., terrain1 .. (bars) or key1,
+ * key2 (the swept keys). A received summary.json's names are anyone's text. */
+static void chart_names(FILE *f, const fs_campaign *c)
+{
+    char title[4 * FS_NAME_MAX];
+    fputs("# the names shown, as gnuplot strings: data, never code\n", f);
+    name_variable(f, "campaign", 0, c->name);
+    for (int k = 0; k < nseries(c); k++) {
+        series_title(c, k, title, sizeof title);
+        name_variable(f, "series", k + 1, title);
+    }
+    for (int t = 0; !c->nsweep && t < c->nterrains; t++)
+        name_variable(f, "terrain", t + 1, c->terrain[t].name);
+    for (int w = 0; w < c->nsweep; w++)
+        name_variable(f, "key", w + 1, c->sweep[w]);
+}
+
 static int fill_chart_script(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    char title[4 * FS_NAME_MAX];
-    fprintf(f, "# The chart of campaign %s: 'gnuplot chart.gp' in this folder draws success.png.\n"
-               "if (!exists(\"out\")) out = 'success.png'\n",
-            c->name);
+    fputs("# A campaign's chart: 'gnuplot chart.gp' in this folder draws success.png.\n"
+          "if (!exists(\"out\")) out = 'success.png'\n",
+          f);
+    chart_names(f, c);
     if (c->nsweep == 2) {
         heat_map_script(f, c);
         return 1;
@@ -525,42 +557,44 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
     int width = c->nsweep ? 960 : (int)fmax(960, 400 + 16.0 * nt * (n + 1));
     fprintf(f, "set terminal pngcairo size %d,540 noenhanced font 'sans,11'\n"
                "set output out\n"
-               "set title 'Campaign %s: success rate with 95 %% Wilson interval (%d seeds each)'\n"
+               "set title 'Campaign ' . campaign . ': success rate with 95 %% Wilson interval (%d seeds each)'\n"
                "set ylabel 'success rate (landed / trials)'\n"
-               "set yrange [-0.05:1.05]\nset ytics 0,0.2,1\nset grid ytics\nset key outside right top\n"
+               "set yrange [-0.05:1.05]\nset ytics 0,0.2,1\nset grid ytics\nset key outside right top noenhanced\n"
                "set arrow from graph 0, first 0 to graph 1, first 0 nohead lc rgb 'gray30'\n",
-            width, c->name, c->seeds);
+            width, c->seeds);
     if (!c->nsweep) {
         /* bars drawn as boxes at known places (not gnuplot's histogram), so that a rate of zero gets
          * a thin bar under the zero line in its colour, with its interval (a vector from low to high:
          * error bars would leave a hole at the rate); terrain names turned when
          * they are wider than their group of bars (about 7.5 px a character at 11 pt) */
         double group_px = (width - 400.0) / nt, bar = 0.8 / n;
-        fprintf(f, "set xrange [-0.6:%d.4]\nset xtics scale 0%s\nset boxwidth %.6g absolute\n"
+        fprintf(f, "set xrange [-0.6:%d.4]\nset xtics scale 0 noenhanced%s (", nt - 1,
+                7.5 * longest > 0.9 * group_px ? " rotate by 30 right" : "");
+        for (int t = 0; t < nt; t++) /* each terrain's name under its group of bars */
+            fprintf(f, "%sterrain%d %d", t ? ", " : "", t + 1, t);
+        fprintf(f, ")\nset boxwidth %.6g absolute\n"
                    "set style fill solid 0.6 border -1\nset xlabel 'terrain'\n"
                    "set label \"a thin bar under the zero line:\\nno trial landed\" at graph 1.03, graph 0.05 "
                    "font 'sans,9' tc rgb 'gray30'\nplot ",
-                nt - 1, 7.5 * longest > 0.9 * group_px ? " rotate by 30 right" : "", bar);
+                bar);
         for (int k = 0; k < n; k++) {
-            series_title(c, k, title, sizeof title);
             double off = -0.4 + (k + 0.5) * bar;
             int rate = 2 + 3 * k;
-            fprintf(f, "%s'chart.dat' using ($0%+.6g):%d%s with boxes lc %d title '%s', \\\n"
+            fprintf(f, "%s'chart.dat' using ($0%+.6g):%d with boxes lc %d title series%d, \\\n"
                        "     '' using ($0%+.6g):(column(%d) == 0 ? -0.025 : 1/0) with boxes lc %d notitle, \\\n"
                        "     '' using ($0%+.6g):%d:(0):(column(%d) - column(%d)) with vectors heads size screen 0.004,90 "
                        "lw 1 lc rgb 'black' notitle",
-                    k ? ", \\\n     " : "", off, rate, k ? "" : ":xtic(1)", k + 1, title, off, rate, k + 1, off,
-                    rate + 1, rate + 2, rate + 1);
+                    k ? ", \\\n     " : "", off, rate, k + 1, k + 1, off, rate, k + 1, off, rate + 1, rate + 2,
+                    rate + 1);
         }
         fputc('\n', f);
         return 1;
     }
-    fprintf(f, "set xlabel '%s'\nplot ", c->sweep[0]);
+    fputs("set xlabel key1\nplot ", f);
     for (int k = 0; k < nseries(c); k++) {
-        series_title(c, k, title, sizeof title);
         fprintf(f, "%s'chart.dat' index %d using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc %d "
-                   "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 pt 7 lc %d title '%s'",
-                k ? ", \\\n     " : "", k, k + 1, k, k + 1, title);
+                   "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 pt 7 lc %d title series%d",
+                k ? ", \\\n     " : "", k, k + 1, k, k + 1, k + 1);
     }
     fputc('\n', f);
     return 1;

@@ -386,6 +386,29 @@ const char *fs_number_problem(fs_number n)
     }
 }
 
+int fs_list_split(char *list, char **item, int max, int *empty_at)
+{
+    if (!*trim(list))
+        return 0;
+    int n = 0;
+    for (char *p = list;; n++) {
+        char *comma = strchr(p, ',');
+        if (comma)
+            *comma = 0;
+        char *word = (char *)trim(p);
+        if (!*word) {
+            *empty_at = n + 1;
+            return -1;
+        }
+        if (n == max)
+            return -2;
+        item[n] = word;
+        if (!comma)
+            return n + 1;
+        p = comma + 1;
+    }
+}
+
 static void describe_range(const fs_key *k, char *buf, size_t size)
 {
     snprintf(buf, size, "%s%g, %g]%s%s", (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max,
@@ -448,20 +471,23 @@ static fs_status bind_value(const fs_key *k, const char *value, const char *wher
         char buf[FS_VALUE_MAX];
         snprintf(buf, sizeof buf, "%s", value);
         double vals[FS_LIST_MAX];
-        int n = 0;
-        char *save = NULL;
-        for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-            if (n == k->count || n == FS_LIST_MAX)
-                return bad_value(err, where, k, value, "has too many values");
-            fs_number num = fs_parse_number(tok, &vals[n]);
+        char *tok[FS_LIST_MAX], why[128];
+        int empty = 0, n = fs_list_split(buf, tok, k->count < FS_LIST_MAX ? k->count : FS_LIST_MAX, &empty);
+        if (n == -1) {
+            snprintf(why, sizeof why, "has an empty value (value %d: two commas in a row, or a comma first or last)",
+                     empty);
+            return bad_value(err, where, k, value, why);
+        }
+        if (n == -2)
+            return bad_value(err, where, k, value, "has too many values");
+        for (int i = 0; i < n; i++) {
+            fs_number num = fs_parse_number(tok[i], &vals[i]);
             if (num != FS_NUMBER_OK) {
-                char why[128];
                 snprintf(why, sizeof why, "has a value that %s", fs_number_problem(num));
                 return bad_value(err, where, k, value, why);
             }
-            if (!in_range(k, vals[n]))
+            if (!in_range(k, vals[i]))
                 return bad_value(err, where, k, value, "has a value out of range");
-            n++;
         }
         if (n != k->count)
             return bad_value(err, where, k, value, "has too few values");

@@ -693,6 +693,16 @@ static fs_status check_target(const char *path, const char *dir, int replace, co
     return FS_OK;
 }
 
+/* o->lock for the results folder o->path: .<name>.footsim-lock beside it; refused when it would
+ * not fit. */
+static fs_status lock_path(fs_outdir *o, const char *option, fs_error *err)
+{
+    char parent[FS_OUT_PATH];
+    parent_of(o->path, parent, sizeof parent);
+    const char *base = strrchr(o->path, '/');
+    return fs_path_format(o->lock, sizeof o->lock, option, err, "%s/.%s.footsim-lock", parent, base ? base + 1 : o->path);
+}
+
 fs_status fs_outdir_open(fs_outdir *o, const char *dir, int replace, const char *option, fs_error *err)
 {
     memset(o, 0, sizeof *o);
@@ -702,13 +712,7 @@ fs_status fs_outdir_open(fs_outdir *o, const char *dir, int replace, const char 
         return s;
     if ((s = check_target(o->path, dir, replace, option, 0, err)) != FS_OK)
         return s;
-    {
-        char parent[FS_OUT_PATH];
-        parent_of(o->path, parent, sizeof parent);
-        const char *base = strrchr(o->path, '/');
-        s = fs_path_format(o->lock, sizeof o->lock, option, err, "%s/.%s.footsim-lock", parent, base ? base + 1 : o->path);
-    }
-    if (s != FS_OK)
+    if ((s = lock_path(o, option, err)) != FS_OK)
         return s;
     if ((s = take_lock(o, option, err)) != FS_OK)
         return s;
@@ -731,6 +735,29 @@ fs_status fs_outdir_open(fs_outdir *o, const char *dir, int replace, const char 
     if ((s = fs_write_file(marker, fill_marker, NULL, err)) != FS_OK)
         fs_outdir_abort(o);
     return s;
+}
+
+fs_status fs_outdir_lock(fs_outdir *o, const char *dir, const char *option, fs_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->lock_fd = -1;
+    fs_status s = fs_normalise_dir(dir, o->path, sizeof o->path, option, err);
+    if (s != FS_OK || (s = lock_path(o, option, err)) != FS_OK)
+        return s;
+    char parent[FS_OUT_PATH];
+    parent_of(o->path, parent, sizeof parent);
+    if (access(parent, W_OK) != 0 && (errno == EACCES || errno == EROFS || errno == EPERM))
+        return FS_OK; /* no footsim can replace a folder in a folder it cannot write: nothing to hold */
+    if ((s = take_lock(o, option, err)) == FS_OK)
+        remember(o->lock, 0);
+    return s;
+}
+
+void fs_outdir_unlock(fs_outdir *o)
+{
+    if (o->lock_fd >= 0)
+        forget(o->lock);
+    release_lock(o);
 }
 
 void fs_outdir_abort(fs_outdir *o)

@@ -24,7 +24,7 @@ const fs_key fs_robot_keys[] = {
     NUM("com_forward_m", com_forward_m, -1, 1, 0, "m", "0.03",
         "its centre of mass ahead of the ankle (a biped: its pelvis's and legs' together, ahead of the ankles)"),
     {"robot", "inertia_kgm2", FS_KEY_LIST, F(inertia_kgm2), 0, 1e4, FS_KEY_OPEN_MIN, 3, NULL, "kg m^2", "1.4, 1.4, 0.1",
-     "its principal moments of inertia about x, y, z at the centre of mass"},
+     "its principal moments of inertia about x, y, z at the centre of mass: a body's, each at most the other two together"},
     {"robot", "joint", FS_KEY_CHOICE, F(joint), 0, 0, 0, 0, "rigid|achilles", "", "rigid",
      "rigid: fixed to the ankle body; achilles: an ankle hinge with a heel-to-leg spring-damper"},
     NUM("achilles_k_N_per_m", achilles_k_N_per_m, 0, 1e9, POS, "N/m", "1e6",
@@ -32,8 +32,9 @@ const fs_key fs_robot_keys[] = {
     NUM("achilles_c_Ns_per_m", achilles_c_Ns_per_m, 0, 1e7, 0, "N s/m", "2000", "Achilles tendon damping"),
     NUM("achilles_leg_anchor_m", achilles_leg_anchor_m, 0, 10, POS, "m", "0.1", "where the tendon meets the leg, above the ankle"),
     NUM("inertia_height_m", inertia_height_m, 0, 10, 0, "m", "0",
-        "0: inertia_kgm2 as given; else the moments are the body's at this COM height and those about x and y "
-        "scale with (com_height_m / this)^2 (a sweep of the height stretches the same body)"),
+        "0: inertia_kgm2 as given; else the moments are the body's at this COM height, and at another the body is "
+        "stretched along the vertical by f = com_height_m / this: its mass's spread along z, (Ix + Iy - Iz) / 2, "
+        "times f^2 in Ix and Iy, Iz kept (a sweep of the height stretches the same body)"),
     {"robot", "mount", FS_KEY_CHOICE, F(mount), 0, 0, 0, 0, "free|vertical", "", "free",
      "free: all six degrees of freedom; vertical: on a vertical slide, only up and down (the walking machine's carriage)"},
 #define FIRST_BIPED_KEY "hip_width_m"
@@ -48,7 +49,8 @@ const fs_key fs_robot_keys[] = {
     NUM("shank_mass_kg", shank_mass_kg, 0, 1e4, POS, "kg", "2.42", "biped: each shank"),
     NUM("pelvis_com_height_m", pelvis_com_height_m, 0, 10, 0, "m", "0.15", "biped: the pelvis's centre of mass above the hip axis"),
     {"robot", "pelvis_inertia_kgm2", FS_KEY_LIST, F(pelvis_inertia_kgm2), 0, 1e4, FS_KEY_OPEN_MIN, 3, NULL, "kg m^2",
-     "0.47, 0.35, 0.26", "biped: the pelvis's principal moments about x (roll), y (pitch), z at its centre of mass"},
+     "0.47, 0.35, 0.26", "biped: the pelvis's principal moments about x (roll), y (pitch), z at its centre of mass (a body's, "
+     "each at most the other two together)"},
     NUM("hip_k_N_m_per_rad", hip_k_N_m_per_rad, 0, 1e7, 0, "N m/rad", "2000", "biped: each hip's angular stiffness toward the built pose"),
     NUM("hip_c_N_m_s_per_rad", hip_c_N_m_s_per_rad, 0, 1e6, 0, "N m s/rad", "40", "biped: each hip's angular damping"),
     NUM("knee_k_N_m_per_rad", knee_k_N_m_per_rad, 0, 1e7, 0, "N m/rad", "2000", "biped: each knee's angular stiffness"),
@@ -82,6 +84,45 @@ static fs_status other_kinds_keys(const fs_config *cfg, const fs_robot_def *def,
     return FS_OK;
 }
 
+/* The relative round-off a body's moments may carry and still count as one on the boundary (a
+ * thin plate: A + B = C). */
+#define INERTIA_ROUNDOFF 1e-9
+
+int fs_inertia_impossible(const double I[3])
+{
+    for (int c = 0; c < 3; c++) {
+        if (!(I[c] > 0))
+            return 1 + c;
+        double others = I[(c + 1) % 3] + I[(c + 2) % 3];
+        if (others < I[c] - INERTIA_ROUNDOFF * (others + I[c]))
+            return 1 + c;
+    }
+    return 0;
+}
+
+/* The robot's given moments (inertia_kgm2, a biped's pelvis_inertia_kgm2) must be a body's: each
+ * positive (their range says so) and none above the other two together. */
+static fs_status physical_inertia(const fs_config *cfg, const fs_robot_def *def, fs_error *err)
+{
+    const char *key = def->kind == FS_ROBOT_BIPED ? "pelvis_inertia_kgm2" : "inertia_kgm2";
+    const double *I = def->kind == FS_ROBOT_BIPED ? def->pelvis_inertia_kgm2 : def->inertia_kgm2;
+    int bad = fs_inertia_impossible(I);
+    if (!bad)
+        return FS_OK;
+    const char axis[3] = {'x', 'y', 'z'};
+    int c = bad - 1, a = (c + 1) % 3, b = (c + 2) % 3;
+    char where[FS_PATH_MAX + 80];
+    if (fs_config_has(cfg, "robot", key))
+        fs_config_where(cfg, "robot", key, where, sizeof where);
+    else
+        snprintf(where, sizeof where, "%s", cfg->path);
+    return fs_fail(err, FS_BAD_INPUT, "%s: %s = %g, %g, %g is no rigid body's: the moment about %c (%g kg m^2) is "
+                   "more than those about %c and %c together (%g); every body's principal moments A, B, C have "
+                   "A + B >= C for each (a thin plate: equal, the mass spread along an axis being (A + B - C) / 2 >= 0): "
+                   "give the moment about %c at most %g, or raise the others", where, key, I[0], I[1], I[2], axis[c],
+                   I[c], axis[a], axis[b], I[a] + I[b], axis[c], I[a] + I[b]);
+}
+
 fs_status fs_robot_load(const char *path, const char *const *overrides, int noverrides, fs_robot_def *def,
                         fs_error *err)
 {
@@ -93,6 +134,8 @@ fs_status fs_robot_load(const char *path, const char *const *overrides, int nove
         s = fs_config_bind(&cfg, fs_robot_keys, fs_robot_nkeys, def, err);
     if (s == FS_OK)
         s = other_kinds_keys(&cfg, def, err);
+    if (s == FS_OK)
+        s = physical_inertia(&cfg, def, err);
     if (s == FS_OK && !*path && !fs_config_has(&cfg, "robot", "mass_kg") && def->kind == FS_ROBOT_SINGLE)
         def->mass_kg = 0; /* no file: no robot, unless --set gives it a mass */
     fs_robot_derive(def);
@@ -100,12 +143,18 @@ fs_status fs_robot_load(const char *path, const char *const *overrides, int nove
     return s;
 }
 
+/* The body stretched along the vertical by f = com_height_m / inertia_height_m: each of its points'
+ * heights above the centre of mass times f, the spread across the vertical unchanged. Its mass's
+ * spread along z, s = sum m z^2 = (A + B - C) / 2, becomes f^2 s, and it enters the moments about x
+ * and y (A = sum m (y^2 + z^2)), not the one about z: a body stays a body at every height. */
 void fs_robot_inertia(const fs_robot_def *r, double I[3])
 {
+    const double *J = r->inertia_kgm2;
     double f = r->inertia_height_m > 0 ? r->com_height_m / r->inertia_height_m : 1;
-    I[0] = r->inertia_kgm2[0] * f * f;
-    I[1] = r->inertia_kgm2[1] * f * f;
-    I[2] = r->inertia_kgm2[2];
+    double spread_z = 0.5 * (J[0] + J[1] - J[2]), more = (f * f - 1) * spread_z;
+    I[0] = J[0] + more;
+    I[1] = J[1] + more;
+    I[2] = J[2];
 }
 
 /* One leg's joint centres in the design frame: its knee and hip above the ankle a, the knee ahead

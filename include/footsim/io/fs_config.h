@@ -69,6 +69,12 @@ fs_number fs_parse_number(const char *text, double *out);
 /* What is wrong with it, for messages: "is not a finite number", "is hexadecimal; ...", ... */
 const char *fs_number_problem(fs_number n);
 
+/* Splits a comma-separated list in place into at most max items, each trimmed of blanks (a blank
+ * list has none). Returns the count; -1 when an item is empty (",,", a comma first or last), with
+ * *empty_at its 1-based place; -2 when there are more than max. Every list key (and a campaign's
+ * sweep values) is read by it. */
+int fs_list_split(char *list, char **item, int max, int *empty_at);
+
 /* Reads path into cfg. Refuses, with file:line and the real reason: a missing, unreadable or
  * not regular file, one over FS_CONFIG_MAX_BYTES or FS_CONFIG_MAX_KEYS keys, a NUL byte, a
  * carriage return that does not end a line, text after a section's ']', a section without keys,

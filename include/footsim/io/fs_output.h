@@ -111,6 +111,14 @@ fs_status fs_outdir_commit(fs_outdir *o, fs_error *err);
 /* Gives up: removes the partial folder, releases the lock. Safe to call twice. */
 void fs_outdir_abort(fs_outdir *o);
 
+/* Takes only the lock of results folder dir (normalised into o->path), as fs_outdir_open does,
+ * for a command that reads the folder and writes beside its files (plot): while it holds it, no
+ * footsim replaces the folder, and it refuses (FS_BAD_INPUT, naming the holder's process) while
+ * another holds it. A folder whose parent cannot be written is read without a lock (none can
+ * replace it). Released by fs_outdir_unlock (safe to call twice), or at exit. */
+fs_status fs_outdir_lock(fs_outdir *o, const char *dir, const char *option, fs_error *err);
+void fs_outdir_unlock(fs_outdir *o);
+
 /* A folder footsim writes file by file and never replaces (results/bench/, plot --out): refused
  * as fs_outdir_open refuses a results folder (a symbolic link, not a folder, a non-empty folder
  * without the marker, unless replace); made when missing; given the marker when it has none. */

@@ -37,9 +37,8 @@ typedef struct fs_robot_def {
     int joint;                 /* fs_robot_joint: rigid, or an ankle hinge with an Achilles spring-damper */
     double achilles_k_N_per_m, achilles_c_Ns_per_m, achilles_leg_anchor_m;
     int mount;                 /* fs_robot_mount: free, or held but for vertical motion */
-    double inertia_height_m;   /* > 0: inertia_kgm2 is the body's at this COM height, and its moments
-                                  about x and y scale with (com_height_m / this)^2: the same body
-                                  stretched (fs_robot_inertia) */
+    double inertia_height_m;   /* > 0: inertia_kgm2 is the body's at this COM height, and at another
+                                  the same body is stretched along the vertical (fs_robot_inertia) */
     /* the biped (kind = biped) */
     double hip_width_m, thigh_length_m, shank_length_m, knee_bend_deg, leg_width_m;
     double pelvis_mass_kg, thigh_mass_kg, shank_mass_kg, pelvis_com_height_m;
@@ -58,8 +57,16 @@ void fs_robot_derive(fs_robot_def *r);
  * foot's ankle body, at its ankle). */
 void fs_robot_biped_geometry(const fs_robot_def *r, const fs_foot_geom *foot, fs_foot_geom *out);
 
-/* The body's principal moments for its centre-of-mass height (inertia_height_m says how). */
+/* The body's principal moments for its centre-of-mass height: with inertia_height_m > 0, the body
+ * stretched along the vertical by f = com_height_m / inertia_height_m, which scales its mass's
+ * spread along z, s = (Ix + Iy - Iz) / 2, by f^2: Ix + (f^2 - 1) s, Iy + (f^2 - 1) s, Iz. A body's
+ * moments stay a body's at every height (as given at f = 1, bit for bit). */
 void fs_robot_inertia(const fs_robot_def *r, double I[3]);
+
+/* 0 when the principal moments I can be a rigid body's: each positive, each at most the sum of the
+ * other two (A + B >= C, within a relative 1e-9 of round-off: a thin plate is on the boundary);
+ * else 1 + the first axis (0 x, 1 y, 2 z) that breaks it. fs_robot_load refuses a robot's. */
+int fs_inertia_impossible(const double I[3]);
 
 extern const fs_key fs_robot_keys[];
 extern const int fs_robot_nkeys;
