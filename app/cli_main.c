@@ -7,6 +7,7 @@
 #include "footsim/io/fs_output.h"
 #include "footsim/sim/fs_ode.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -349,6 +350,7 @@ void *cli_zalloc(size_t size)
 
 int main(int argc, char **argv)
 {
+    signal(SIGXFSZ, SIG_IGN); /* a file-size limit fails the write (EFBIG): exit 4 with a message */
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? FS_BAD_INPUT : 0;
