@@ -50,6 +50,10 @@ typedef struct cli_frames cli_frames;
 int cli_frames_open(const cli_args *a, const fs_scenario *sc, const char *dir, cli_frames **frames,
                     fs_run_observer *obs);
 int cli_frames_close(cli_frames *frames, int ok, const char *shown_dir);
+/* What every frame says after its time (the seed: "SEED 3"), and the last frame drawn again
+ * saying label (the seed and the outcome), once the run has ended. No-ops without frames. */
+void cli_frames_label(cli_frames *frames, const char *label);
+int cli_frames_finish(cli_frames *frames, const char *label);
 /* The same with the frames straight in frames_dir (made already); no video. */
 int cli_frames_open_at(const cli_args *a, const fs_scenario *sc, const char *frames_dir, cli_frames **frames,
                        fs_run_observer *obs);

@@ -33,6 +33,14 @@ typedef struct run_work {
     fs_outdir out;
 } run_work;
 
+/* FOOTSIM_TEST_ODE_ERROR: what an ODE internal error does, inside ODE's guard as in a step. */
+static fs_status ode_test_failure(void *arg, fs_error *err)
+{
+    (void)arg, (void)err;
+    fs_ode_fail("FOOTSIM_TEST_ODE_ERROR");
+    return FS_OK; /* not reached: the guard returns FS_NUMERICAL */
+}
+
 static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
 {
     fs_scenario *sc = &w->sc;
@@ -64,10 +72,10 @@ static int run_scenario(const cli_args *a, fs_run_result *res, run_work *w)
         }
         obs = &observer;
     }
-    if (getenv("FOOTSIM_TEST_ODE_ERROR"))
-        fs_ode_fail("FOOTSIM_TEST_ODE_ERROR"); /* tests: what an ODE internal error does (exit 3) */
     fs_provenance prov; /* what made the results: the files, the --set, the settings */
     fs_status rs = fs_scenario_provenance(sc, a->set, a->nset, &prov, &err);
+    if (rs == FS_OK && getenv("FOOTSIM_TEST_ODE_ERROR")) /* tests: an ODE internal error comes back as exit 3 */
+        rs = fs_ode_guard(ode_test_failure, NULL, NULL, &err);
     if (rs == FS_OK)
         rs = fs_run(sc, obs, res, &err);
     int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
@@ -469,6 +477,9 @@ typedef struct folder_job {
     const fs_provenance *provenance; /* what made the result, put into the JSON (NULL: none) */
     /* more files beside the JSON (a trial's trajectory.csv), written into dir; NULL: none */
     fs_status (*write_more)(void *user, const char *dir, fs_error *err);
+    /* what every frame says (a trial's seed), and the last once the run ended (and its outcome);
+       NULL: nothing */
+    void (*frame_label)(const void *user, const void *result, int ended, char *label, size_t size);
 } folder_job;
 
 /* out: the caller's results folder (on the heap with the rest of its work), aborted here when it
@@ -481,10 +492,23 @@ static int in_folder(const cli_args *a, const folder_job *j, fs_outdir *out, cha
     cli_frames *frames = NULL;
     fs_run_observer observer, *obs = NULL;
     int s = 0;
+    char label[128] = "";
     if (a->frames && !(s = cli_frames_open(a, j->framed, out->partial, &frames, &observer)))
         obs = &observer;
+    if (frames && j->frame_label) {
+        j->frame_label(j->user, j->result, 0, label, sizeof label);
+        cli_frames_label(frames, label);
+    }
     fs_status rs = s ? FS_OK : j->run(j->user, obs, &err);
-    int fstatus = frames ? cli_frames_close(frames, rs == FS_OK, out->path) : 0;
+    int fstatus = 0;
+    if (frames && j->frame_label && rs == FS_OK) {
+        j->frame_label(j->user, j->result, 1, label, sizeof label);
+        fstatus = cli_frames_finish(frames, label);
+    }
+    if (frames) {
+        int closed = cli_frames_close(frames, rs == FS_OK && !fstatus, out->path);
+        fstatus = fstatus ? fstatus : closed;
+    }
     if (!s && rs == FS_OK && !fstatus) {
         cJSON *o = j->to_json(j->result);
         if (j->provenance)
@@ -526,6 +550,17 @@ static fs_status write_trial_log(void *user, const char *dir, fs_error *err)
 
 static cJSON *trial_json_of(const void *r) { return trial_json(r); }
 
+/* A trial's frames say its seed, and the last its outcome and the rule that decided it. */
+static void trial_frame_label(const void *user, const void *result, int ended, char *label, size_t size)
+{
+    const trial_job *t = user;
+    const fs_trial_result *r = result;
+    if (ended)
+        snprintf(label, size, "SEED %d  %s (%s)", t->seed, fs_outcome_name(r->outcome), fs_rule_name(r->rule));
+    else
+        snprintf(label, size, "SEED %d", t->seed);
+}
+
 /* A trial with a folder of its own (--out, or --frames: default results/trials/NAME-seedN/):
  * trial.json, its time series trajectory.csv (footsim plot draws it) and the frames, swapped in
  * whole at the end. The frames are framed on the pose the
@@ -557,7 +592,7 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     prov.first_seed = seed, prov.nseeds = 1;
     trial_job t = {base, seed, r, &w->log};
     folder_job j = {dir, cli_trial_files, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov,
-                    write_trial_log};
+                    write_trial_log, trial_frame_label};
     if (!s)
         s = in_folder(a, &j, &w->out, dir_out, size);
     fs_provenance_free(&prov);
@@ -678,7 +713,7 @@ int cli_walk(const cli_args *a)
         fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
         if (fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
             s = fail(&err);
-        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL};
+        folder_job j = {dir, cli_walk_files, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL, NULL};
         if (!s)
             s = in_folder(a, &j, &w->out, shown, sizeof shown);
         fs_provenance_free(&prov);

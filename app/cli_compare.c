@@ -25,6 +25,7 @@ typedef struct scene_store {
     fs_scene *scene;
     int n, cap;
     double *heights;
+    const char *side; /* "A" or "B": said on each of its frames' halves and the filmstrip's rows */
 } scene_store;
 
 /* The observer: keeps a snapshot of the state now. */
@@ -99,6 +100,7 @@ static void draw_one(fs_render *r, const cli_frame_opts *o, fs_render_view *view
 {
     cli_frame_scene(o, &run->scene[0], scene_at(run, i), drawn);
     fs_render_view_follow(view, drawn);
+    cli_frame_note(r, run->side, o->exaggerate); /* which row or half: A or B */
     fs_render_draw(r, view, drawn, x0, y0, w, h);
 }
 
@@ -243,7 +245,7 @@ int cli_render_compare(const cli_args *a)
     fs_error err;
     cli_frame_opts o;
     fs_render *r[2] = {NULL, NULL};
-    scene_store run[2] = {{0}, {0}};
+    scene_store run[2] = {{.side = "A"}, {.side = "B"}};
     int s = load_pair(a, sc, dir, sizeof w->dir);
     /* the folder must be one footsim may replace before anything is simulated; everything goes to
      * a partial folder beside it, swapped in whole at the end: a failure leaves the old one */

@@ -109,12 +109,18 @@ int cli_render_open(fs_render **r, int w, int h, double exaggerate)
     fs_error err;
     if (fs_render_open(r, w, h, &err) != FS_OK)
         return cli_report(err.status, err.message);
-    if (exaggerate != 1) {
-        char note[64];
-        snprintf(note, sizeof note, "DISPLACEMENTS X%g", exaggerate);
-        fs_render_set_note(*r, note);
-    }
+    cli_frame_note(*r, "", exaggerate);
     return 0;
+}
+
+void cli_frame_note(fs_render *r, const char *label, double exaggerate)
+{
+    char note[128];
+    if (exaggerate != 1)
+        snprintf(note, sizeof note, "%.80s%sDISPLACEMENTS X%g", label, label[0] ? "  " : "", exaggerate);
+    else
+        snprintf(note, sizeof note, "%.80s", label);
+    fs_render_set_note(r, note);
 }
 
 void cli_frame_legend(fs_render *r, int x0, int y0, int w, int h)
@@ -202,6 +208,14 @@ struct cli_frames {
     fs_scene drawn;  /* the snapshot as drawn (exaggerated) */
 };
 
+/* The snapshot as drawn, from the view, with the legend, written as frame index. */
+static fs_status draw_drawn(cli_frames *f, int index, fs_error *err)
+{
+    fs_render_draw(f->r, &f->view, &f->drawn, 0, 0, f->o.width, f->o.height);
+    cli_frame_legend(f->r, 0, 0, f->o.width, f->o.height);
+    return cli_frames_write(f->r, f->frames_dir, index, err);
+}
+
 /* The observer: one frame of the state now, framed on the first. */
 static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
 {
@@ -215,9 +229,22 @@ static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
         fs_render_view_fit(&f->view, f->o.camera, &first, 1, (double)f->o.width / f->o.height);
     else
         fs_render_view_follow(&f->view, &f->drawn);
-    fs_render_draw(f->r, &f->view, &f->drawn, 0, 0, f->o.width, f->o.height);
-    cli_frame_legend(f->r, 0, 0, f->o.width, f->o.height);
-    return cli_frames_write(f->r, f->frames_dir, f->n++, err);
+    return draw_drawn(f, f->n++, err);
+}
+
+void cli_frames_label(cli_frames *f, const char *label)
+{
+    if (f)
+        cli_frame_note(f->r, label, f->o.exaggerate);
+}
+
+int cli_frames_finish(cli_frames *f, const char *label)
+{
+    if (!f || f->n == 0)
+        return 0;
+    cli_frames_label(f, label);
+    fs_error err;
+    return draw_drawn(f, f->n - 1, &err) == FS_OK ? 0 : cli_report(err.status, err.message);
 }
 
 /* The frame options for sc, checked (frames it would draw included). */

@@ -37,6 +37,10 @@ int cli_frames_video(const char *dir, const char *frames_dir, double fps, int nf
 /* Opens a renderer, printing why not; with exaggerate other than 1 its frames say so. */
 int cli_render_open(fs_render **r, int w, int h, double exaggerate);
 
+/* The note every frame of r says after its time: label (a side, a seed, an outcome; "" for none),
+ * then the exaggeration when it is not 1. */
+void cli_frame_note(fs_render *r, const char *label, double exaggerate);
+
 /* The colour legend in the bottom-right corner of the viewport, when it is wide enough. */
 void cli_frame_legend(fs_render *r, int x0, int y0, int w, int h);
 

@@ -185,6 +185,9 @@ static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int i, const
     fs_run_observer obs;
     if (!s)
         s = cli_frames_open_at(f->a, placed, path, &frames, &obs);
+    char label[128];
+    snprintf(label, sizeof label, "SEED %d", seed);
+    cli_frames_label(frames, label);
     fs_scenario_free(placed);
     free(placed);
     if (s)
@@ -196,7 +199,13 @@ static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int i, const
         fprintf(stderr, "footsim campaign: --frames-of: %s drew %s (%s) where the campaign recorded %s (%s); the "
                         "campaign's results stand\n", path, fs_outcome_name(r.outcome), fs_rule_name(r.rule),
                 fs_outcome_name(recorded->outcome), fs_rule_name(recorded->rule));
-    int fs = cli_frames_close(frames, rs == FS_OK, shown);
+    int fs = 0;
+    if (rs == FS_OK) {
+        snprintf(label, sizeof label, "SEED %d  %s (%s)", seed, fs_outcome_name(r.outcome), fs_rule_name(r.rule));
+        fs = cli_frames_finish(frames, label);
+    }
+    int closed = cli_frames_close(frames, rs == FS_OK && !fs, shown);
+    fs = fs ? fs : closed;
     if (rs != FS_OK)
         return cli_report(rs, err.message);
     return fs;

@@ -348,9 +348,17 @@ void *cli_zalloc(size_t size)
     return p;
 }
 
+/* The library's warnings (fs_warn), said on stderr. */
+static void print_warning(const char *text, void *user)
+{
+    (void)user;
+    fprintf(stderr, "footsim: warning: %s\n", text);
+}
+
 int main(int argc, char **argv)
 {
     signal(SIGXFSZ, SIG_IGN); /* a file-size limit fails the write (EFBIG): exit 4 with a message */
+    fs_warning_handler(print_warning, NULL);
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? FS_BAD_INPUT : 0;

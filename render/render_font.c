@@ -73,7 +73,7 @@ static void emit_glyph(const unsigned char g[7], int x, int y, int scale)
             }
 }
 
-int render_text_gl(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3])
+int fs_render_text_gl(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3])
 {
     begin_pixels(r);
     gl.Color3ub(rgb[0], rgb[1], rgb[2]);
@@ -87,12 +87,12 @@ int render_text_gl(fs_render *r, int x, int y, int scale, const char *text, cons
 
 int fs_render_text(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3])
 {
-    int w = render_text_gl(r, x, y, scale, text, rgb);
+    int w = fs_render_text_gl(r, x, y, scale, text, rgb);
     gl.Finish();
     return w;
 }
 
-void render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep)
+void fs_render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep)
 {
     begin_pixels(r);
     gl.Enable(GL_BLEND);
@@ -102,7 +102,7 @@ void render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep)
     gl.Disable(GL_BLEND);
 }
 
-void render_fill_box(fs_render *r, int x0, int y0, int w, int h, const float rgb[3])
+void fs_render_fill_box(fs_render *r, int x0, int y0, int w, int h, const float rgb[3])
 {
     begin_pixels(r);
     gl.Color3fv(rgb);

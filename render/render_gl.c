@@ -78,7 +78,7 @@ fs_status fs_render_open(fs_render **out, int width, int height, fs_error *err)
     if (width < 1 || height < 1 || width > FS_RENDER_MAX_SIZE || height > FS_RENDER_MAX_SIZE)
         return fs_fail(err, FS_BAD_INPUT, "frame size %dx%d; allowed: WxH with each from 1 to %d", width, height,
                        FS_RENDER_MAX_SIZE);
-    if (render_gl_load(err) != FS_OK)
+    if (fs_render_gl_load(err) != FS_OK)
         return FS_BAD_INPUT;
     fs_render *r = calloc(1, sizeof *r);
     if (r)
@@ -434,22 +434,23 @@ static void set_lighting(void)
 /* Text scale for a viewport: 1 up to 720 px tall (or 1280 wide), then a step per 360 px. */
 static int text_scale(int w, int h) { return (int)fmax(1, fmin(h / 360, w / 640)); }
 
-/* Time, the note, scenario, foot and terrain, one line along the viewport's top on a thin strip. */
+/* Time, the note, then what is drawn: the design file, the terrain, the robot (when there is one)
+ * and the scenario, one line along the viewport's top on a thin strip. */
 static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, int w, int h)
 {
     static const unsigned char white[3] = {255, 255, 255};
     int scale = text_scale(w, h);
-    char text[256];
-    /* the note (an exaggeration) before the names: cut off last on a narrow tile */
-    snprintf(text, sizeof text, "T %.3f S  %s%s%s  %s  %s", scene->time_s, r->note, r->note[0] ? "  " : "",
-             scene->scenario ? scene->scenario : "-", scene->foot ? scene->foot : "-",
-             scene->terrain ? scene->terrain : "-");
+    char text[512];
+    /* the note (the seed, the outcome, an exaggeration) before the names: cut off last on a narrow tile */
+    snprintf(text, sizeof text, "T %.3f S  %s%s%s  ON %s%s%s  (%s)", scene->time_s, r->note, r->note[0] ? "  " : "",
+             scene->design[0] ? scene->design : scene->foot ? scene->foot : "-", scene->terrain ? scene->terrain : "-",
+             scene->robot_file[0] ? "  UNDER " : "", scene->robot_file, scene->scenario ? scene->scenario : "-");
     int pad = 2 * scale, fit = (w - 2 * pad) / (6 * scale);
     if (fit >= 0 && (size_t)fit < strlen(text))
         text[fit] = 0; /* cut at the tile's edge, not into its neighbour */
     int bw = (int)strlen(text) * 6 * scale + 2 * pad - scale, bh = 7 * scale + 2 * pad;
-    render_shade_box(r, x0, y0, bw < w ? bw : w, bh < h ? bh : h, 0.45);
-    render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
+    fs_render_shade_box(r, x0, y0, bw < w ? bw : w, bh < h ? bh : h, 0.45);
+    fs_render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
 }
 
 /* A bar of a round length (1, 2 or 5 times a power of ten, mm) about a fifth of the viewport wide
@@ -472,10 +473,10 @@ static void draw_scale_bar(fs_render *r, int x0, int y0, int w, int h, double vi
         return;
     char label[32];
     snprintf(label, sizeof label, "%g MM", len_m * 1e3);
-    render_fill_box(r, bx, by, len, th, bar);
-    render_fill_box(r, bx, by - 3 * scale, scale, 3 * scale, bar);
-    render_fill_box(r, bx + len - scale, by - 3 * scale, scale, 3 * scale, bar);
-    render_text_gl(r, bx + len + 3 * scale, by - 5 * scale, scale, label, ink);
+    fs_render_fill_box(r, bx, by, len, th, bar);
+    fs_render_fill_box(r, bx, by - 3 * scale, scale, 3 * scale, bar);
+    fs_render_fill_box(r, bx + len - scale, by - 3 * scale, scale, 3 * scale, bar);
+    fs_render_text_gl(r, bx + len + 3 * scale, by - 5 * scale, scale, label, ink);
 }
 
 int fs_render_legend(fs_render *r, int x0, int y0, int w, int h)
@@ -486,9 +487,9 @@ int fs_render_legend(fs_render *r, int x0, int y0, int w, int h)
     int scale = (int)fmax(1, fmin(h / 12, w / 340)), x = x0 + 3 * scale, cy = y0 + h / 2;
     for (int i = 0; i < 4; i++) {
         int sw = 8 * scale;
-        render_fill_box(r, x, cy - 2 * scale, sw, 4 * scale, colour[i]);
+        fs_render_fill_box(r, x, cy - 2 * scale, sw, 4 * scale, colour[i]);
         x += sw + 3 * scale;
-        x += render_text_gl(r, x, cy - 3 * scale - scale / 2, scale, words[i], ink) + 5 * scale;
+        x += fs_render_text_gl(r, x, cy - 3 * scale - scale / 2, scale, words[i], ink) + 5 * scale;
     }
     gl.Finish();
     return x - x0;

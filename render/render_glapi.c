@@ -6,7 +6,7 @@
 
 /* Process-wide on purpose: OSMesa is one shared library, opened once per process with dlopen, and
  * this is the table of its functions every renderer calls through (no renderer's own state). */
-render_gl_api render_gl;
+render_gl_api fs_render_gl;
 
 /* The runtime library of Debian's libosmesa6 (and the development link, as a second choice). */
 static const char *const LIBRARIES[] = {"libOSMesa.so.8", "libOSMesa.so"};
@@ -27,9 +27,9 @@ static void *open_library(const char **tried)
     return lib;
 }
 
-fs_status render_gl_load(fs_error *err)
+fs_status fs_render_gl_load(fs_error *err)
 {
-    static int loaded; /* the library is loaded once per process (see render_gl above) */
+    static int loaded; /* the library is loaded once per process (see fs_render_gl above) */
     if (loaded)
         return FS_OK;
     const char *tried = "";

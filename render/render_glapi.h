@@ -1,7 +1,7 @@
 /* render_glapi.h: the GL and OSMesa functions the renderer calls, loaded from libOSMesa at run time.
  *
  * footsim does not link OSMesa (and the LLVM it pulls in, tens of milliseconds to load): a
- * command that draws nothing never loads it. render_gl_load opens the library the first time a
+ * command that draws nothing never loads it. fs_render_gl_load opens the library the first time a
  * renderer is opened and fills the table `gl`; the renderer calls gl.Begin(...) for glBegin(...).
  * FOOTSIM_OSMESA in the environment names another library file to load instead. */
 #ifndef FS_RENDER_GLAPI_H
@@ -70,12 +70,12 @@ typedef struct render_gl_api {
 #undef RENDER_GL_MEMBER
 } render_gl_api;
 
-/* The table (render_gl; `gl` for short in the renderer's own files). */
-extern render_gl_api render_gl;
-#define gl render_gl
+/* The table (fs_render_gl; `gl` for short in the renderer's own files). */
+extern render_gl_api fs_render_gl;
+#define gl fs_render_gl
 
 /* Loads libOSMesa and fills gl (once; later calls return at once). FS_BAD_INPUT, saying what to
  * install, when it is not there or lacks a function. */
-fs_status render_gl_load(fs_error *err);
+fs_status fs_render_gl_load(fs_error *err);
 
 #endif

@@ -12,7 +12,7 @@ struct fs_render {
     unsigned char *rgba;     /* w x h RGBA, rows bottom-up as GL writes them */
     GLuint sphere, cube;     /* display lists: unit sphere (radius 1), unit cube (edges 1) */
     GLuint cylinder;         /* display list: radius 1 about z, from z = 0 to 1, open ends */
-    char note[64];           /* said on every frame's overlay (fs_render_set_note), or "" */
+    char note[128];          /* said on every frame's overlay (fs_render_set_note), or "" */
     double spring_ref_N;     /* the largest spring force seen: full colour */
     double contact_ref_N;    /* the largest contact force seen: the longest arrow */
 };
@@ -26,12 +26,12 @@ static inline void render_make_current(fs_render *r)
 }
 
 /* Darkens the rectangle at (x0, y0), w x h, keeping the fraction keep of each colour (GL). */
-void render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep);
+void fs_render_shade_box(fs_render *r, int x0, int y0, int w, int h, double keep);
 
 /* Fills the rectangle at (x0, y0), w x h, with rgb (GL). */
-void render_fill_box(fs_render *r, int x0, int y0, int w, int h, const float rgb[3]);
+void fs_render_fill_box(fs_render *r, int x0, int y0, int w, int h, const float rgb[3]);
 
 /* fs_render_text without waiting for GL to finish. */
-int render_text_gl(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3]);
+int fs_render_text_gl(fs_render *r, int x, int y, int scale, const char *text, const unsigned char rgb[3]);
 
 #endif

@@ -336,5 +336,54 @@ static void test_exaggerate(void)
     fs_sim_destroy(&sim);
 }
 
-FS_TEST_MAIN(TEST(test_size_and_not_blank), TEST(test_size_refused), TEST(test_projection),
+/* The rightmost column of the header's white text (the top 9 rows: 2 px of padding, 7 of text at
+ * scale 1), or -1. */
+static int header_end(const fs_render *r)
+{
+    int w = fs_render_width(r), end = -1;
+    for (int y = 0; y < 9; y++)
+        for (int x = 0; x < w; x++) {
+            const unsigned char *p = fs_render_pixel(r, x, y);
+            if (p[0] > 230 && p[1] > 230 && p[2] > 230 && x > end)
+                end = x;
+        }
+    return end;
+}
+
+/* The header says what is drawn: with a design, a robot and a note (the seed and outcome, as a
+ * trial's last frame has) it runs as many characters further as it has more (6 px each at scale
+ * 1, within one character for the last glyph's own width), where without them it names the foot's
+ * kind alone. */
+static void test_header_says_what_is_drawn(void)
+{
+    int ends[2];
+    size_t chars[2];
+    for (int k = 0; k < 2; k++) {
+        fs_scene s;
+        fixture_scene(&s);
+        const char *note = k ? "SEED 3  LANDED (RESTED)" : "";
+        if (k) {
+            snprintf(s.design, sizeof s.design, "biomimetic");
+            snprintf(s.robot_file, sizeof s.robot_file, "single_tall");
+        }
+        char text[256];
+        snprintf(text, sizeof text, "T %.3f S  %s%s%s  ON %s%s%s  (%s)", s.time_s, note, note[0] ? "  " : "",
+                 k ? s.design : s.foot, s.terrain, k ? "  UNDER " : "", s.robot_file, s.scenario);
+        chars[k] = strlen(text);
+        fs_render *r = NULL;
+        fs_error err;
+        REQUIRE(fs_render_open(&r, 640, 360, &err) == FS_OK);
+        fs_render_set_note(r, note);
+        fs_render_view v;
+        const fs_scene *one = &s;
+        fs_render_view_fit(&v, FS_RENDER_THREE_QUARTER, &one, 1, 640.0 / 360);
+        fs_render_draw(r, &v, &s, 0, 0, 640, 360);
+        ends[k] = header_end(r);
+        fs_render_close(r);
+    }
+    CHECK(ends[0] > 0);
+    CHECK_NEAR(ends[1] - ends[0], 6.0 * (double)(chars[1] - chars[0]), 6.0);
+}
+
+FS_TEST_MAIN(TEST(test_size_and_not_blank), TEST(test_header_says_what_is_drawn), TEST(test_size_refused), TEST(test_projection),
              TEST(test_projection_geometry), TEST(test_terrain_band), TEST(test_foot_camera), TEST(test_exaggerate))

@@ -131,6 +131,11 @@ static void run_config(const config *c, const fs_scenario *loaded, double durati
     snprintf(o->reason, sizeof o->reason, "%s", fs_check_kind_name(o->kind != FS_CHECK_OK ? o->kind : o->drift));
     snprintf(o->where, sizeof o->where, "%s", o->kind != FS_CHECK_OK ? k->failure_where : k->drift_where);
     snprintf(o->drift_where, sizeof o->drift_where, "%s", k->drift_where);
+    if (sim.ode_failed) { /* ODE's own check stopped the step (fs_ode.h): blown up */
+        o->cls = FS_CHECK_BLOWN_UP;
+        snprintf(o->reason, sizeof o->reason, "ode_error");
+        snprintf(o->where, sizeof o->where, "ODE");
+    }
     o->time_s = o->kind != FS_CHECK_OK ? k->failure_time_s : o->drift ? k->first_drift_time_s : NAN;
     o->drift_time_s = o->drift ? k->first_drift_time_s : NAN;
     o->sim_time_s = sim.time_s;

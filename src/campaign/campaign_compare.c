@@ -12,7 +12,7 @@
 
 /* ---- comparison --------------------------------------------------------------------------- */
 
-cJSON *campaign_read_summary(const char *path, fs_error *err)
+cJSON *fs_campaign_read_summary(const char *path, fs_error *err)
 {
     char *text;
     size_t len;
@@ -34,7 +34,7 @@ cJSON *campaign_read_summary(const char *path, fs_error *err)
 fs_status fs_campaign_summary_expectations(const char *path, FILE *out, int *failed, int *total, fs_error *err)
 {
     *failed = *total = 0;
-    cJSON *root = campaign_read_summary(path, err);
+    cJSON *root = fs_campaign_read_summary(path, err);
     if (!root)
         return FS_BAD_INPUT;
     const cJSON *e;
@@ -293,8 +293,8 @@ static fs_status compare_mode(const char *result_path, const char *result_name, 
 {
     if (nbad)
         *nbad = 0;
-    cJSON *result = campaign_read_summary(result_path, err);
-    cJSON *baseline = result ? campaign_read_summary(baseline_path, err) : NULL;
+    cJSON *result = fs_campaign_read_summary(result_path, err);
+    cJSON *baseline = result ? fs_campaign_read_summary(baseline_path, err) : NULL;
     if (!baseline) {
         cJSON_Delete(result);
         return err ? err->status : FS_BAD_INPUT; /* as read_summary found it: bad input, unreadable, out of memory */

@@ -29,7 +29,7 @@ static inline int fs_expectation_met(const fs_expectation *e, const fs_campaign_
 /* A summary.json read and parsed (campaign_compare.c): a regular file of at most
  * FS_SUMMARY_MAX_BYTES holding JSON with "rows"; NULL (FS_BAD_INPUT, said in err) otherwise. The
  * caller frees it with cJSON_Delete. */
-cJSON *campaign_read_summary(const char *path, fs_error *err);
+cJSON *fs_campaign_read_summary(const char *path, fs_error *err);
 
 /* A text field of a summary's object: "?" when missing. */
 static inline const char *text_of(const cJSON *row, const char *key)

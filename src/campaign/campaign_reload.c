@@ -57,7 +57,7 @@ static int sweep_shape(fs_campaign *c)
 fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *rows, fs_error *err)
 {
     memset(c, 0, sizeof *c);
-    cJSON *root = campaign_read_summary(path, err);
+    cJSON *root = fs_campaign_read_summary(path, err);
     if (!root)
         return FS_BAD_INPUT;
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(root, "rows");

@@ -135,7 +135,7 @@ static int override_target(const char *assignment)
 
 /* Samples the terrain over the region the foot can reach. A heightmap the foot never reaches would
  * give flat-ground results without a word: refused. One that covers only part of the foot's region
- * is warned about on stderr when `warn` (a scenario read from its file, not each trial's copy). */
+ * is warned about (fs_warn) when `warn` (a scenario read from its file, not each trial's copy). */
 static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
 {
     double box[4];
@@ -149,10 +149,10 @@ static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
                        "heightmap (x0_m, y0_m) or the foot (start.x_m, y_m)", t->path, e[0], e[1], e[2], e[3], box[0],
                        box[1], box[2], box[3]);
     if (warn && outside > 0)
-        fprintf(stderr, "footsim: warning: %s: the heightmap covers x %.4g..%.4g m, y %.4g..%.4g m (%s); %.0f %% of the "
+        fs_warn("%s: the heightmap covers x %.4g..%.4g m, y %.4g..%.4g m (%s); %.0f %% of the "
                 "foot's region (x %.3g..%.3g m, y %.3g..%.3g m) is outside it, where the ground only draws out the "
                 "image's edge; move the heightmap (x0_m, y0_m) or the foot (start.x_m, y_m) to keep the foot on the "
-                "data\n", t->path, e[0], e[1], e[2], e[3], t->placed_at, fmax(1, round(outside * 100)), box[0], box[1],
+                "data", t->path, e[0], e[1], e[2], e[3], t->placed_at, fmax(1, round(outside * 100)), box[0], box[1],
                 box[2], box[3]);
     return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
 }

@@ -537,11 +537,24 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     return scene_ground(sim, err);
 }
 
+typedef struct build_call {
+    fs_sim *sim;
+    const fs_scenario *sc;
+    const fs_sim_options *opts;
+} build_call;
+
+static fs_status build_guarded(void *arg, fs_error *err)
+{
+    build_call *c = arg;
+    return build(c->sim, c->sc, c->opts, err);
+}
+
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
 {
     fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
     memset(sim, 0, sizeof *sim);
-    fs_status s = build(sim, sc, opts ? opts : &normal, err);
+    build_call call = {sim, sc, opts ? opts : &normal};
+    fs_status s = fs_ode_guard(build_guarded, &call, NULL, err); /* an ODE error: FS_NUMERICAL, not an exit */
     if (s != FS_OK)
         fs_sim_destroy(sim); /* whatever was made so far: a failed build leaves nothing behind */
     return s;

@@ -1,13 +1,12 @@
-/* sim_ode.c: ODE's process-wide handlers and the context their complaints name (fs_ode.h). */
+/* sim_ode.c: ODE's process-wide handlers, the guard that brings ODE's errors back to the caller,
+ * and the context their complaints name (fs_ode.h). */
 #include "footsim/sim/fs_ode.h"
 
-#include "footsim/base/fs_error.h"
-
 #include <ode/ode.h>
+#include <setjmp.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include <stdlib.h>
 
 /* The text of the simulation stepping now on this thread (its owner keeps it alive), or NULL. */
 static _Thread_local const char *ode_context_now;
@@ -22,13 +21,25 @@ void fs_ode_context_leave(const char *context)
 
 static const char *ode_context(void) { return ode_context_now ? ode_context_now : "ODE"; }
 
-/* ODE calls exit() or abort() after its error and debug handlers return, so these never return. */
+/* The innermost fs_ode_guard of this thread, and the message of the ODE error that left it. The
+ * message lives outside the guard's frame: a local changed between setjmp and longjmp would be
+ * indeterminate after the jump. */
+static _Thread_local jmp_buf *guard_now;
+static _Thread_local char guard_message[FS_ERROR_MAX];
+
+/* ODE ends the process after its error and debug handlers return (exit or abort, ODE 0.16), so
+ * within a guard these leave ODE by longjmp; outside one (a call the library makes unguarded,
+ * which should not happen) the text is a warning and ODE ends the process as it would. */
 static void ode_fatal(const char *kind, int errnum, const char *msg, va_list ap)
 {
-    fprintf(stderr, "footsim: %s: ODE %s %d: ", ode_context(), kind, errnum);
-    vfprintf(stderr, msg, ap);
-    fprintf(stderr, "\n  the simulation is numerically broken; try a smaller step_s or the implicit springs\n");
-    exit(FS_NUMERICAL);
+    char what[FS_ERROR_MAX / 2];
+    vsnprintf(what, sizeof what, msg, ap);
+    snprintf(guard_message, sizeof guard_message,
+             "%s: ODE %s %d: %s; the simulation is numerically broken: try a smaller step_s or the implicit springs",
+             ode_context(), kind, errnum, what);
+    if (guard_now)
+        longjmp(*guard_now, 1);
+    fs_warn("%s (outside a guarded call: ODE ends the process)", guard_message);
 }
 
 static void ode_error_handler(int errnum, const char *msg, va_list ap) { ode_fatal("error", errnum, msg, ap); }
@@ -37,10 +48,26 @@ static void ode_debug_handler(int errnum, const char *msg, va_list ap) { ode_fat
 
 static void ode_message_handler(int errnum, const char *msg, va_list ap)
 {
-    /* Messages are warnings: keep them on stderr, tagged with what footsim was doing. */
-    fprintf(stderr, "footsim: %s: ODE message %d: ", ode_context(), errnum);
-    vfprintf(stderr, msg, ap);
-    fputc('\n', stderr);
+    /* Messages are warnings, tagged with what footsim was doing. */
+    char what[FS_ERROR_MAX / 2];
+    vsnprintf(what, sizeof what, msg, ap);
+    fs_warn("%s: ODE message %d: %s", ode_context(), errnum, what);
+}
+
+fs_status fs_ode_guard(fs_status (*fn)(void *arg, fs_error *err), void *arg, int *interrupted, fs_error *err)
+{
+    jmp_buf here;
+    jmp_buf *const outer = guard_now;
+    if (setjmp(here)) {
+        guard_now = outer;
+        if (interrupted)
+            *interrupted = 1;
+        return fs_fail(err, FS_NUMERICAL, "%s", guard_message);
+    }
+    guard_now = &here;
+    fs_status s = fn(arg, err);
+    guard_now = outer;
+    return s;
 }
 
 void fs_ode_init(void)

@@ -1,6 +1,8 @@
 /* sim_scene.c: the simulation as plain data for anything that draws it (fs_scene.h). */
 #include "sim_internal.h"
 
+#include "footsim/base/fs_path.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -75,6 +77,11 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene)
     scene->scenario = sim->sc->name;
     scene->foot = g->kind == FS_FOOT_FLAT ? "flat" : "biomimetic";
     scene->terrain = sim->sc->terrain.name;
+    if (g->kind == FS_FOOT_FLAT) /* the flat sole, whatever design file gave the foot */
+        snprintf(scene->design, sizeof scene->design, "%s", scene->foot);
+    else
+        fs_path_stem(sim->sc->def.design_path, scene->design, sizeof scene->design);
+    fs_path_stem(sim->sc->def.robot_path, scene->robot_file, sizeof scene->robot_file);
     sample_ground(sim);
     scene->ground = sim->scene_ground;
     for (int i = 0; i < sim->nshapes && scene->nshapes < FS_SCENE_MAX_SHAPES; i++) {

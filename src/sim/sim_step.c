@@ -159,11 +159,11 @@ static int substeps(fs_sim *sim, double h)
     return sim->time_s < sim->impact_until_s ? s->impact_substeps : 1;
 }
 
-fs_status fs_sim_step(fs_sim *sim, fs_error *err)
+/* The step, within fs_ode_guard (ODE's errors come back as FS_NUMERICAL). */
+static fs_status step(void *arg, fs_error *err)
 {
+    fs_sim *sim = arg;
     double h = sim->sc->def.step_s;
-    fs_sim_lap(sim, FS_STAGE_CALLER);
-    fs_ode_context(sim->ode_context); /* this sim is the one ODE may complain about now */
     int n = substeps(sim, h);
     sim->substeps_now = n;
     fs_status st = FS_OK;
@@ -188,4 +188,14 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
     if (sim->profile)
         sim->profile->steps++;
     return st;
+}
+
+fs_status fs_sim_step(fs_sim *sim, fs_error *err)
+{
+    if (sim->ode_failed)
+        return fs_fail(err, FS_NUMERICAL, "%s: an ODE error stopped this simulation at %.6g s; it can only be "
+                       "destroyed (build a new one to run again)", sim->ode_context, sim->time_s);
+    fs_sim_lap(sim, FS_STAGE_CALLER);
+    fs_ode_context(sim->ode_context); /* this sim is the one ODE may complain about now */
+    return fs_ode_guard(step, sim, &sim->ode_failed, err);
 }

@@ -32,7 +32,21 @@ fs_status fs_fail(fs_error *err, fs_status status, const char *fmt, ...)
 #endif
     ;
 
-/* ODE's handlers, which report through this (an ODE error exits with FS_NUMERICAL), are the sim
- * layer's: footsim/sim/fs_ode.h. */
+/* Warnings: what the library accepts but doubts (a heightmap that covers only part of the region
+ * the foot can reach, a message from ODE). The library never prints one: it counts it (per thread,
+ * fs_warning_count) and hands its text to the handler the program installed, if any. The footsim
+ * command's handler prints "footsim: warning: TEXT" on stderr; a program that installs none sees
+ * only the count. Install the handler before the first call that may warn (it is process-wide). */
+typedef void (*fs_warning_fn)(const char *text, void *user);
+void fs_warning_handler(fs_warning_fn fn, void *user);
+void fs_warn(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+long fs_warning_count(void);
+
+/* ODE's errors, which reach the caller as FS_NUMERICAL from the call that stepped or built the
+ * simulation, are the sim layer's: footsim/sim/fs_ode.h. */
 
 #endif

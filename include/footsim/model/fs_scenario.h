@@ -1,7 +1,7 @@
 /* fs_scenario.h: an experiment described by a file: which foot, what ground, what load, and
  * how to integrate. fs_scenario_load reads and checks the file and the design it names, and
- * refuses anything wrong before any simulation starts. What it accepts but doubts is said on
- * stderr as "footsim: warning: ...": a heightmap that covers only part of the region the foot can
+ * refuses anything wrong before any simulation starts. What it accepts but doubts is a warning
+ * (fs_warn, fs_error.h; the command prints "footsim: warning: ..."): a heightmap that covers only part of the region the foot can
  * reach (one it never reaches is refused).
  *
  * Overrides ("section.key=value") go to the scenario, the terrain, the design or the robot,

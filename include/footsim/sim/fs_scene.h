@@ -51,6 +51,8 @@ typedef struct fs_scene_ground {
 typedef struct fs_scene {
     double time_s;
     const char *scenario, *foot, *terrain; /* names, for the overlay */
+    char design[64], robot_file[64]; /* the design's file name without .ini ("flat" for the flat sole), the
+                                        robot's ("" for none) */
     fs_scene_ground ground;
     int nshapes, nlinks, nsprings, ncontacts;
     fs_scene_shape shape[FS_SCENE_MAX_SHAPES];

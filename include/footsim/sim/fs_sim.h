@@ -125,6 +125,7 @@ typedef struct fs_sim {
     struct fs_contact_scratch *scratch; /* one shape's contacts while a step gathers them */
     unsigned long rand_seed; /* this sim's state of ODE's random generator, which QuickStep draws on */
     char ode_context[FS_PATH_MAX]; /* what ODE's complaints name while this sim steps: its scenario */
+    int ode_failed;        /* an ODE error interrupted a step: the sim may only be destroyed (fs_ode.h) */
     struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_options.profile) */
     double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
 } fs_sim;
@@ -136,7 +137,9 @@ void fs_sim_destroy(fs_sim *sim);
 /* Advances by the scenario's step, whole or, near a touchdown with run.impact_substeps N > 1, in N
  * equal substeps (from a step in which a foot shape without contact could reach the ground within
  * the step and run.impact_window_s, or first touches it, until that window after it); FS_NUMERICAL
- * (with the body or hinge and the time named) if a check of fs_check.h fails. */
+ * (with the body or hinge and the time named) if a check of fs_check.h fails, or with ODE's message
+ * if an ODE error interrupted the step (then, and for every later call, the sim may only be
+ * destroyed: fs_ode.h). */
 fs_status fs_sim_step(fs_sim *sim, fs_error *err);
 
 /* The load's force now (it rises over ramp_s), N; it acts along down. */
