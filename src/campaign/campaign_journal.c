@@ -139,25 +139,25 @@ int fs_journal_differs(const fs_journal_head *a, const fs_journal_head *b, const
 
 /* ---- writing ------------------------------------------------------------------------------ */
 
-/* A header's lines, then its check line: the CRC-32 of the lines before it. */
-void fs_journal_print_head(FILE *f, const fs_journal_head *h)
+/* Writes a header's lines, then its check line (the CRC-32 of the lines before it); 0: out of memory. */
+static int print_head(FILE *f, const fs_journal_head *h)
 {
     char *text = NULL;
     size_t len = 0;
     FILE *m = open_memstream(&text, &len);
     if (!m)
-        return;
+        return 0;
     fprintf(m, MAGIC " %d\ncampaign %s\n", FS_JOURNAL_FORMAT, h->campaign);
     for (int i = 0; i < h->nset; i++)
         fprintf(m, "set %s\n", h->set[i]);
     fprintf(m, "shard %d/%d\ntrials %d\nprovenance %s\n", h->shard, h->nshards, h->ntrials, h->provenance);
-    if (fclose(m) == 0) {
+    int ok = fclose(m) == 0;
+    if (ok) {
         fwrite(text, 1, len, f);
         fprintf(f, "check %08" PRIx32 "\n", fs_crc32(0, text, len));
-    } else {
-        fputs("(out of memory)\n", f); /* a header that reads as damaged, never a wrong one */
     }
     free(text);
+    return ok;
 }
 
 /* A record's payload: index, seed, outcome, rule, steps, the numbers, " |" and the failure text. */
@@ -204,15 +204,15 @@ static char *record_line(int index, const fs_trial_result *r, size_t *len)
     return line;
 }
 
-void fs_journal_print_record(FILE *f, int index, const fs_trial_result *r)
+/* Writes index's record line to f; 0: out of memory. */
+static int print_record(FILE *f, int index, const fs_trial_result *r)
 {
     size_t len;
     char *line = record_line(index, r, &len);
     if (line)
         fwrite(line, 1, len, f);
-    else
-        fputs("(out of memory)\n", f); /* read back as a damaged record, never as a wrong one */
     free(line);
+    return line != NULL;
 }
 
 typedef struct whole_journal {
@@ -224,11 +224,11 @@ typedef struct whole_journal {
 static int fill_journal(FILE *f, const void *user)
 {
     const whole_journal *x = user;
-    fs_journal_print_head(f, x->h);
-    for (int i = 0; x->done && i < x->h->ntrials; i++)
+    int ok = print_head(f, x->h);
+    for (int i = 0; ok && x->done && i < x->h->ntrials; i++)
         if (x->done[i])
-            fs_journal_print_record(f, i, &x->results[i]);
-    return !ferror(f);
+            ok = print_record(f, i, &x->results[i]);
+    return ok && !ferror(f);
 }
 
 fs_status fs_journal_write(const char *path, const fs_journal_head *h, const fs_trial_result *results,

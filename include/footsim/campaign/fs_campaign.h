@@ -246,10 +246,6 @@ void fs_journal_head_free(fs_journal_head *h);
 int fs_journal_differs(const fs_journal_head *a, const fs_journal_head *b, const char *name_a, const char *name_b,
                        char *why, size_t size);
 
-/* Writes the header to f; then fs_journal_print_record for each trial. */
-void fs_journal_print_head(FILE *f, const fs_journal_head *h);
-void fs_journal_print_record(FILE *f, int index, const fs_trial_result *r);
-
 /* Writes the journal at path whole (fs_write_file): h's header and the record of every trial i
  * with done[i] nonzero, by index. */
 fs_status fs_journal_write(const char *path, const fs_journal_head *h, const fs_trial_result *results,
