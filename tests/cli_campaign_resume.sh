@@ -230,6 +230,11 @@ mkdir "$tmp/fifoshard" && mkfifo "$tmp/fifoshard/trials.journal"
 timeout 60 "$fs" merge "$tmp/fifoshard" --out "$tmp/fifomerged" >/dev/null 2>"$tmp/fifoshard.err"
 check_that "merge of a FIFO trials.journal: exit 2" [ $? -eq 2 ]
 check_that "merge of a FIFO trials.journal: says it is a FIFO" grep -q 'fifoshard/trials.journal: is a FIFO' "$tmp/fifoshard.err"
+# a folder where the journal is: named as a folder (not "the header ends early"), exit 2
+mkdir -p "$tmp/dirj.journal/journal"
+camp -j 2 --out "$tmp/dirj" >/dev/null 2>"$tmp/dirj.err"
+check_that "a folder journal: exit 2" [ $? -eq 2 ]
+check_that "a folder journal: named as a folder" grep -q 'dirj.journal/journal: is a folder' "$tmp/dirj.err"
 # a symbolic link where the journal is: refused as such (exit 2), the file it points to untouched
 mkdir "$tmp/link.journal" && ln -s "$tmp/journal.before" "$tmp/link.journal/journal"
 cp "$tmp/journal.before" "$tmp/target.before"

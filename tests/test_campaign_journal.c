@@ -4,7 +4,8 @@
  * outcome, a number made nan) is caught by its checksum, named by line, with the records before it
  * kept; a header changed anywhere is refused; format 1 is read when clean and refused (naming
  * --fresh) when not; CR LF line ends are named; a FIFO, a folder or a symbolic link is refused
- * without blocking; a killed trial may have a second record, nothing else may. No simulation runs:
+ * without blocking; a killed trial may have a second record, nothing else may, and a record of a trial
+ * the campaign has not is damage at its line. No simulation runs:
  * the records are made up. */
 #include "fs_test.h"
 
@@ -501,6 +502,11 @@ static void test_killed_twice(void)
     CHECK(fs_journal_append(&j, 5, &r, &err) == FS_OK); /* 5 again: not a kill's retry */
     fs_journal_close(&j);
     CHECK(read_tail(path, &t, done, res) == 3 && t.line == 12 && strstr(t.why, "repeated"));
+    /* a whole record (its checksum right) of a trial the campaign has not: named, cut off there */
+    REQUIRE(fs_journal_open(&j, path, &h, t.good_bytes, &err) == FS_OK);
+    CHECK(fs_journal_append(&j, NTRIALS + 93, &r, &err) == FS_OK);
+    fs_journal_close(&j);
+    CHECK(read_tail(path, &t, done, res) == 3 && t.line == 12 && strstr(t.why, "trial 99, but the campaign has 6"));
     fs_journal_head_free(&h);
 }
 

@@ -472,7 +472,7 @@ fs_status fs_journal_read(const char *path, fs_journal_head *h, fs_trial_result 
     *results = NULL, *done = NULL, *ndone = 0;
     fs_journal_tail t = {0};
     struct stat st;
-    if (tail && lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) /* a journal to append to: footsim's own file */
+    if (tail && lstat(path, &st) == 0 && !S_ISREG(st.st_mode)) /* a journal to append to: footsim's own file */
         return check_regular(path, &st, err);
     FILE *f = fs_open_regular(path, 1L << 40, "a campaign journal", err); /* a FIFO: refused, not waited on */
     if (!f)
