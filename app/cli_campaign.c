@@ -1,12 +1,15 @@
 /* cli_campaign.c: `footsim campaign` (the trials in worker processes, the result files, the chart,
  * the expectations) and `footsim compare` (a summary against its baseline).
  *
- * The trials run in footsim's pool of worker processes (fs_pool.h). A worker that dies (an ODE
- * error exits with status 3) marks its trial failed_numerics, one that the watchdog kills (no
- * answer for FS_POOL_WATCHDOG_S) marks it hung, never a numerical failure; each is said with its
- * trial, seed and how it ended; a fresh worker takes its place and the campaign goes on. Tests:
- * FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with status 3 on seed N, FOOTSIM_TEST_STOP_SEED=N
- * stops it (SIGSTOP) on seed N;
+ * The trials run in footsim's pool of worker processes (fs_pool.h). A worker that exits with
+ * status 3 (an ODE error) marks its trial failed_numerics; one that the watchdog kills (no answer
+ * for FS_POOL_WATCHDOG_S) marks it hung; one that dies any other way (a signal from outside, as the
+ * OOM killer's SIGKILL, a crash, another status) marks it killed, and a killed trial runs once more
+ * (at the end of the run, or on resume when the run stopped first): neither hung nor killed says
+ * anything of the physics. Each is said with its trial, seed and how it ended; a fresh worker takes
+ * its place and the campaign goes on. Tests: FOOTSIM_TEST_CRASH_SEED=N makes a worker exit with
+ * status 3 on seed N, FOOTSIM_TEST_STOP_SEED=N stops it (SIGSTOP) on seed N,
+ * FOOTSIM_TEST_KILL_SEED=N kills it (SIGKILL) on seed N;
  * FOOTSIM_TEST_KILL_IN_WRITE kills the campaign with SIGKILL half way through writing its files;
  * FOOTSIM_TEST_SIGNAL_AFTER="N SIG" makes the campaign raise signal SIG on itself once N trials
  * are in its journal (a kill at a chosen point, for the resume tests).
@@ -14,7 +17,8 @@
  * Resume: every finished trial is appended to the journal DIR.journal/journal as it ends
  * (fs_campaign.h); a run whose journal exists runs only the trials it lacks, after checking that
  * the journal was made by the same campaign (provenance), and removes it once DIR holds the
- * results. SIGINT and SIGTERM stop the pool (fs_pool_spec.stop), keep the journal and say how to
+ * results. A torn last record, or a record that fails its checksum and all after it, is cut off
+ * (said, with the line) and its trials run again. SIGINT and SIGTERM stop the pool (fs_pool_spec.stop), keep the journal and say how to
  * continue. --shard I/N runs one share of the trials and writes it as DIR/trials.journal;
  * `footsim merge` makes the campaign's files of the shards. */
 #include "cli.h"
@@ -48,10 +52,12 @@ typedef struct campaign_run {
     int already;            /* trials done before this run (the journal's) */
     int total;              /* trials of this run's share, the journal's included */
     fs_journal *journal;    /* where each finished trial goes, or NULL */
+    const unsigned char *killed_before; /* per trial index: its worker was killed once already, or NULL */
+    int final_records;      /* records journaled that are final (not a first kill, which runs again) */
     fs_status journal_status; /* a journal write that failed in record_death, for the next take_one */
     fs_error journal_err;
     int signal_after, signal_sig, journaled; /* FOOTSIM_TEST_SIGNAL_AFTER */
-    int crash_seed, stop_seed;
+    int crash_seed, stop_seed, kill_seed;
     cli_progress progress;
     int failed;             /* trials so far that failed numerically or whose worker died */
 } campaign_run;
@@ -63,12 +69,20 @@ static void on_signal(int sig) { interrupted = sig; }
 
 static int trial_index(const campaign_run *p, int task) { return p->index ? p->index[task] : task; }
 
+/* Whether trial index's result is the first kill of its worker: the trial runs once more. */
+static int first_kill(const campaign_run *p, int index)
+{
+    return p->results[index].outcome == FS_KILLED && !(p->killed_before && p->killed_before[index]);
+}
+
 /* Appends a finished trial to the journal (when there is one). */
 static fs_status journal_trial(campaign_run *p, int index, fs_error *err)
 {
     if (!p->journal)
         return FS_OK;
     fs_status s = fs_journal_append(p->journal, index, &p->results[index], err);
+    if (s == FS_OK)
+        p->final_records += !first_kill(p, index);
     if (s == FS_OK && ++p->journaled == p->signal_after)
         raise(p->signal_sig);
     return s;
@@ -91,6 +105,8 @@ static void run_one(int task, void *result, void *user)
         _exit(FS_NUMERICAL); /* FOOTSIM_TEST_CRASH_SEED: what an ODE error does */
     if (seed == p->stop_seed)
         raise(SIGSTOP); /* FOOTSIM_TEST_STOP_SEED: a worker that hangs, for the watchdog */
+    if (seed == p->kill_seed)
+        raise(SIGKILL); /* FOOTSIM_TEST_KILL_SEED: what the OOM killer does */
     fs_error err = {FS_OK, ""};
     m->status = fs_trial_run_scenario(fs_campaign_pair(c, cell), seed, NULL, &m->result, &err);
     snprintf(m->error, sizeof m->error, "%s", err.message);
@@ -129,17 +145,21 @@ static void record_death(int task, const fs_pool_death *d, void *user)
     r->end_time_s = r->touchdown_s = r->peak_tilt_deg = r->final_tilt_deg = r->peak_force_N = nan;
     r->impact_impulse_Ns = r->settle_time_s = r->mean_contacts = r->final_contacts = nan;
     r->ankle_drop_m = r->slip_m = nan;
-    r->outcome = d->timed_out ? FS_HUNG : FS_FAILED_NUMERICS; /* a hang says nothing of the physics */
+    /* only a numerical failure (ODE's error handler exits with status 3) is one; a hang or a kill
+       from outside says nothing of the physics */
+    int numerics = d->exited && d->status == FS_NUMERICAL;
+    r->outcome = d->timed_out ? FS_HUNG : numerics ? FS_FAILED_NUMERICS : FS_KILLED;
     fs_trial_draw_pose(fs_campaign_pair(c, cell), seed, &r->draw);
     int foot, terrain, robot;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
-    r->rule = d->timed_out ? FS_RULE_WATCHDOG : FS_RULE_NUMERICS;
+    r->rule = d->timed_out ? FS_RULE_WATCHDOG : numerics ? FS_RULE_NUMERICS : FS_RULE_KILLED;
     snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s under robot %s, seed %d, %s",
              c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed, d->how);
     p->failed++;
     if (p->progress.tty)
         fputc('\n', stderr);
-    fprintf(stderr, "footsim campaign: %s; counted as %s\n", r->failure, fs_outcome_name(r->outcome));
+    fprintf(stderr, "footsim campaign: %s; counted as %s%s\n", r->failure, fs_outcome_name(r->outcome),
+            first_kill(p, index) ? " for now: it runs once more" : r->outcome == FS_KILLED ? " (its second try)" : "");
     if (p->journal_status == FS_OK)
         p->journal_status = journal_trial(p, index, &p->journal_err);
 }
@@ -153,17 +173,28 @@ static void draw_progress(int done, int ntrials, void *user)
 
 /* ---- campaign ----------------------------------------------------------------------------- */
 
+/* How a run of trials is journaled: where, the trials killed once before (or NULL), and, in and out,
+ * the records written so far (all; the final ones). */
+typedef struct journal_run {
+    fs_journal *journal;
+    const unsigned char *killed_before;
+    int records, final_records;
+} journal_run;
+
 /* Runs the trials index[0 .. n - 1] (every trial when index is NULL) into results, each appended
- * to journal when one is given (*finished: how many went there); `already` trials of `total` were
- * done before. Stops early, FS_OK, when `interrupted` is set. */
+ * to the journal when one is given (j NULL: none); `already` trials of `total` were done before.
+ * Stops early, FS_OK, when `interrupted` is set. */
 static fs_status run_trials(const fs_campaign *c, fs_trial_result *results, const int *index, int n, int already,
-                            int total, fs_journal *journal, int *finished, int jobs, const char *who, fs_error *err)
+                            int total, journal_run *j, int jobs, const char *who, fs_error *err)
 {
     const char *crash = getenv("FOOTSIM_TEST_CRASH_SEED"), *stop = getenv("FOOTSIM_TEST_STOP_SEED");
-    const char *after = getenv("FOOTSIM_TEST_SIGNAL_AFTER");
+    const char *kill_seed = getenv("FOOTSIM_TEST_KILL_SEED"), *after = getenv("FOOTSIM_TEST_SIGNAL_AFTER");
+    fs_journal *journal = j ? j->journal : NULL;
     campaign_run run = {.c = c, .results = results, .index = index, .already = already, .total = total,
-                        .journal = journal, .crash_seed = crash ? atoi(crash) : -1,
-                        .stop_seed = stop ? atoi(stop) : -1};
+                        .journal = journal, .killed_before = j ? j->killed_before : NULL,
+                        .journaled = j ? j->records : 0, .final_records = j ? j->final_records : 0,
+                        .crash_seed = crash ? atoi(crash) : -1, .stop_seed = stop ? atoi(stop) : -1,
+                        .kill_seed = kill_seed ? atoi(kill_seed) : -1};
     if (!after || sscanf(after, "%d %d", &run.signal_after, &run.signal_sig) != 2)
         run.signal_after = -1;
     cli_progress_start(&run.progress, who, "trials");
@@ -172,8 +203,8 @@ static fs_status run_trials(const fs_campaign *c, fs_trial_result *results, cons
                          .stop = journal ? &interrupted : NULL};
     fs_pool_stats stats;
     fs_status s = fs_pool_run(&spec, &stats, err);
-    if (finished)
-        *finished = run.journaled;
+    if (j)
+        j->records = run.journaled, j->final_records = run.final_records;
     if (s == FS_OK && run.journal_status != FS_OK) {
         *err = run.journal_err;
         s = run.journal_status;
@@ -188,7 +219,7 @@ static fs_status run_trials(const fs_campaign *c, fs_trial_result *results, cons
 int cli_campaign_trials(const fs_campaign *c, fs_trial_result *results, int jobs, const char *who, fs_error *err)
 {
     int n = fs_campaign_ntrials(c);
-    return run_trials(c, results, NULL, n, 0, n, NULL, NULL, jobs, who, err);
+    return run_trials(c, results, NULL, n, 0, n, NULL, jobs, who, err);
 }
 
 int cli_parse_jobs(const cli_args *a, int *jobs)
@@ -216,8 +247,10 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
         printf(", fell %3d, undecided %d; law: %s", r->fell, r->undecided, fs_law_name(r->law));
         if (r->failed_numerics)
             printf(", failed_numerics %d", r->failed_numerics);
-        if (r->hung)
-            printf(", hung %d", r->hung);
+        if (r->hung - r->killed)
+            printf(", hung %d", r->hung - r->killed);
+        if (r->killed)
+            printf(", killed %d", r->killed);
         putchar('\n');
     }
 }
@@ -361,7 +394,7 @@ static int finished_already(const char *dir, const fs_journal_head *h, int shard
         unsigned char *done;
         int ndone;
         fs_error err;
-        if (access(path, R_OK) != 0 || fs_journal_read(path, &old, &results, &done, &ndone, &err) != FS_OK)
+        if (access(path, R_OK) != 0 || fs_journal_read(path, &old, &results, &done, &ndone, NULL, &err) != FS_OK)
             return 0;
         char why[8];
         int same = !fs_journal_differs(h, &old, "", "", why, sizeof why) && old.shard == h->shard && old.nshards == h->nshards;
@@ -385,68 +418,78 @@ static int finished_already(const char *dir, const fs_journal_head *h, int shard
     return same;
 }
 
-typedef struct shard_file {
-    const fs_journal_head *h;
-    const fs_trial_result *results;
-} shard_file;
-
-static int fill_shard(FILE *f, const void *user)
-{
-    const shard_file *x = user;
-    fs_journal_print_head(f, x->h);
-    for (int i = 0; i < x->h->ntrials; i++)
-        if (fs_campaign_in_shard(i, x->h->shard, x->h->nshards))
-            fs_journal_print_record(f, i, &x->results[i]);
-    return 1;
-}
-
 /* A shard's results: DIR/trials.journal, its trials sorted by index. */
 static int finish_shard(const fs_campaign *c, const fs_journal_head *h, const fs_trial_result *results, fs_outdir *out)
 {
-    const shard_file x = {h, results};
+    unsigned char *in = malloc((size_t)h->ntrials);
+    char path[sizeof out->partial + 32];
+    if (!in)
+        return cli_report(FS_NO_MEMORY, "out of memory");
+    int n = 0;
+    for (int i = 0; i < h->ntrials; i++)
+        n += in[i] = (unsigned char)fs_campaign_in_shard(i, h->shard, h->nshards);
+    snprintf(path, sizeof path, "%s/trials.journal", out->partial);
     fs_error err;
-    fs_status s = fs_write_in(out->partial, "trials.journal", fill_shard, &x, &err);
+    fs_status s = fs_journal_write(path, h, results, in, &err);
+    free(in);
     if (s == FS_OK && interrupted) /* stopped while writing: the old folder stays, whole */
         return 128 + interrupted;
     if (s == FS_OK)
         s = fs_outdir_commit(out, &err);
     if (s != FS_OK)
         return fail(&err);
-    int n = 0;
-    for (int i = 0; i < h->ntrials; i++)
-        n += fs_campaign_in_shard(i, h->shard, h->nshards);
     printf("campaign %s, shard %d/%d: %d of %d trials\nresults: %s/trials.journal (merge the %d shards with "
            "'footsim merge DIR... --out DIR')\n", c->name, h->shard, h->nshards, n, h->ntrials, out->path, h->nshards);
     return 0;
 }
 
-/* The journal's records checked against the campaign: each in the share, with its trial's seed. */
+/* The journal's records checked against the campaign: each in the share, with its trial's seed.
+ * `what` says what to do about a record that is not (resume: move the journal away or --fresh;
+ * merge: run the shard again). */
 static int check_records(const fs_campaign *c, const fs_journal_head *h, const fs_trial_result *results,
-                         const unsigned char *done, const char *path)
+                         const unsigned char *done, const char *path, const char *what)
 {
     for (int i = 0; i < h->ntrials; i++) {
         int cell, seed;
         fs_campaign_trial_of(c, i, &cell, &seed);
-        if (done[i] && (!fs_campaign_in_shard(i, h->shard, h->nshards) || results[i].draw.seed != seed)) {
-            fprintf(stderr, "footsim: %s: trial %d does not belong to this campaign%s (seed %d, expected %d); the "
-                    "journal is damaged: move it away, or start over with --fresh\n", path, i,
-                    h->nshards > 1 ? "'s shard" : "", results[i].draw.seed, seed);
+        if (!done[i])
+            continue;
+        if (!fs_campaign_in_shard(i, h->shard, h->nshards)) {
+            fprintf(stderr, "footsim: %s: holds trial %d, which belongs to shard %d/%d, not to shard %d/%d as its "
+                    "header says: records of another shard were put in it; %s\n", path, i, i % h->nshards + 1,
+                    h->nshards, h->shard, h->nshards, what);
+            return FS_BAD_INPUT;
+        }
+        if (results[i].draw.seed != seed) {
+            fprintf(stderr, "footsim: %s: holds trial %d with seed %d, but this campaign's trial %d has seed %d: records "
+                    "of another campaign were put in it; %s\n", path, i, results[i].draw.seed, i, seed, what);
             return FS_BAD_INPUT;
         }
     }
     return 0;
 }
 
-/* Reads the journal of an interrupted run into results and done, refusing one that another
- * campaign, other inputs, overrides, version or shard made. */
+/* What a resume found in the journal. */
+typedef struct resumed {
+    unsigned char *done;          /* per trial: a final record is there (the results hold it) */
+    unsigned char *killed_once;   /* per trial: its one record says its worker was killed: it runs once more */
+    int ndone;
+    long long keep_bytes;         /* >= 0: the journal is cut to this length before appending */
+} resumed;
+
+/* Reads the journal of an interrupted run into results and *out, refusing one that another
+ * campaign, other inputs, overrides, version or shard made. A torn or damaged end is said and cut
+ * off (its trials run again); a journal of format 1 is rewritten in today's format. */
 static int resume(const fs_campaign *c, const fs_journal_head *h, const char *path, fs_trial_result *results,
-                  unsigned char *done, int *ndone)
+                  resumed *out)
 {
     fs_journal_head old;
     fs_trial_result *r;
     unsigned char *d;
+    fs_journal_tail tail;
     fs_error err;
-    if (fs_journal_read(path, &old, &r, &d, ndone, &err) != FS_OK)
+    int nrecords;
+    if (fs_journal_read(path, &old, &r, &d, &nrecords, &tail, &err) != FS_OK)
         return fail(&err);
     char why[512];
     int s = 0;
@@ -460,19 +503,60 @@ static int resume(const fs_campaign *c, const fs_journal_head *h, const char *pa
                 "is removed)\n", path, why);
         s = FS_BAD_INPUT;
     }
-    if (!s && !(s = check_records(c, h, r, d, path)))
-        for (int i = 0; i < h->ntrials; i++)
-            if (d[i]) {
-                results[i] = r[i];
-                done[i] = 1;
-            }
+    if (!s)
+        s = check_records(c, h, r, d, path, "move the journal away, or start over with --fresh (it is removed)");
+    out->keep_bytes = tail.torn || tail.line ? tail.good_bytes : -1;
+    for (int i = 0; !s && i < h->ntrials; i++) {
+        if (!d[i])
+            continue;
+        results[i] = r[i];
+        if (d[i] == 1 && r[i].outcome == FS_KILLED)
+            out->killed_once[i] = 1;
+        else
+            out->done[i] = 1, out->ndone++;
+    }
+    if (!s && tail.line)
+        fprintf(stderr, "footsim campaign: %s:%d: %s; the records before that line are kept, it and every line "
+                "after it are cut off, and their trials run again\n", path, tail.line, tail.why);
+    else if (!s && tail.torn)
+        fprintf(stderr, "footsim campaign: %s ends in a record cut short (a kill, a full disk or a file-size limit "
+                "in the middle of its write); it is cut off and its trial runs again\n", path);
+    if (!s && tail.format != FS_JOURNAL_FORMAT) { /* read cleanly: rewritten whole before anything follows */
+        fprintf(stderr, "footsim campaign: %s is of an earlier footsim's journal format (%d); its %d records read "
+                "cleanly and are kept, rewritten in format %d\n", path, tail.format, nrecords, FS_JOURNAL_FORMAT);
+        if (fs_journal_write(path, h, r, d, &err) != FS_OK)
+            s = fail(&err);
+        out->keep_bytes = -1;
+    }
     fs_journal_head_free(&old);
     free(r), free(d);
     return s;
 }
 
+/* Whether a finished folder's expectations (its summary.json's) all held: 0, or FS_EXPECTATION_FAILED
+ * with each printed, as the run that wrote it exited. */
+static int finished_expectations(const char *dir)
+{
+    char path[FS_OUT_PATH + 32];
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    char *text = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&text, &len);
+    int failed = 0, total = 0;
+    fs_error err;
+    if (m && fs_campaign_summary_expectations(path, m, &failed, &total, &err) == FS_OK && failed)
+        printf("expectations (as the run that wrote it checked them):\n");
+    if (m)
+        fclose(m);
+    if (failed)
+        printf("%s%d of %d expectations FAILED\n", text ? text : "", failed, total);
+    free(text);
+    return failed ? FS_EXPECTATION_FAILED : 0;
+}
+
 /* Runs the trials of c's share that the journal lacks, then draws the --frames-of trials (handing
- * *frames_of on, NULL after) and writes the results. */
+ * *frames_of on, NULL after) and writes the results. A trial whose worker was killed runs once
+ * more, after the others. */
 static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs_journal_head *h,
                                const char *given_dir, fs_outdir *out, fs_journal *journal, int jobs,
                                cli_frames_of **frames_of)
@@ -494,39 +578,50 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
     if (!a->fresh && kind == 0 && finished_already(out->path, h, a->shard != NULL)) {
         printf("footsim campaign: %s already holds this campaign's finished results (the same inputs, overrides and "
                "version); nothing to do (--fresh runs it again)\n", out->path);
-        return 0;
+        return h->nshards > 1 ? 0 : finished_expectations(out->path);
     }
-    int ntrials = h->ntrials, ndone = 0, npending = 0, total = 0;
+    int ntrials = h->ntrials, npending = 0, total = 0;
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
-    unsigned char *done = calloc((size_t)ntrials, 1);
+    resumed from = {.done = calloc((size_t)ntrials, 1), .killed_once = calloc((size_t)ntrials, 1), .keep_bytes = -1};
     int *pending = malloc((size_t)ntrials * sizeof *pending);
-    if (!results || !done || !pending) {
-        free(results), free(done), free(pending);
+    if (!results || !from.done || !from.killed_once || !pending) {
+        free(results), free(from.done), free(from.killed_once), free(pending);
         return cli_report(FS_NO_MEMORY, "out of memory");
     }
     int s = 0;
-    if (kind > 0 && access(jpath, F_OK) == 0)
-        s = resume(c, h, jpath, results, done, &ndone);
+    struct stat st;
+    if (kind > 0 && lstat(jpath, &st) == 0)
+        s = resume(c, h, jpath, results, &from);
     fs_error err;
     if (!s && kind == 0 && mkdir(jdir, 0777) != 0)
         s = cli_report(FS_IO, "cannot make the journal folder");
-    if (!s && fs_journal_open(journal, jpath, h, &err) != FS_OK)
+    if (!s && fs_journal_open(journal, jpath, h, from.keep_bytes, &err) != FS_OK)
         s = fail(&err);
     for (int i = 0; !s && i < ntrials; i++)
         if (fs_campaign_in_shard(i, h->shard, h->nshards)) {
             total++;
-            if (!done[i])
+            if (!from.done[i])
                 pending[npending++] = i;
         }
+    int ndone = from.ndone;
     if (!s && ndone)
         fprintf(stderr, "footsim campaign: resuming from %s: %d of %d trials done, %d to run\n", jpath, ndone, total,
                 npending);
     if (!s) {
-        int finished = 0;
-        fs_status r = run_trials(c, results, pending, npending, ndone, total, journal, &finished, jobs,
-                                 "footsim campaign", &err);
+        journal_run j = {.journal = journal, .killed_before = from.killed_once};
+        fs_status r = run_trials(c, results, pending, npending, ndone, total, &j, jobs, "footsim campaign", &err);
+        /* the trials whose worker was killed for the first time: once more, after the others */
+        int nretry = 0;
+        for (int k = 0; r == FS_OK && !interrupted && k < npending; k++)
+            if (results[pending[k]].outcome == FS_KILLED && !from.killed_once[pending[k]])
+                from.killed_once[pending[k]] = 1, pending[nretry++] = pending[k];
+        if (nretry) {
+            fprintf(stderr, "footsim campaign: %d trial%s whose worker was killed run%s once more\n", nretry,
+                    nretry > 1 ? "s" : "", nretry > 1 ? "" : "s");
+            r = run_trials(c, results, pending, nretry, total - nretry, total, &j, jobs, "footsim campaign", &err);
+        }
         fs_journal_close(journal);
-        int kept = ndone + finished;
+        int kept = ndone + j.final_records;
         if (kept == 0 && (interrupted || r != FS_OK)) { /* nothing to keep */
             fs_remove_tree(jdir);
         }
@@ -556,7 +651,7 @@ static int run_campaign_trials(const cli_args *a, const fs_campaign *c, const fs
                         "%s\n", jdir, again);
         }
     }
-    free(results), free(done), free(pending);
+    free(results), free(from.done), free(from.killed_once), free(pending);
     return s;
 }
 
@@ -695,8 +790,11 @@ int cli_merge(const cli_args *a)
             s = FS_BAD_INPUT;
             break;
         }
-        if (fs_journal_read(path, &heads[k], &r, &d, &nd, &err) != FS_OK) {
-            s = fail(&err);
+        if (fs_journal_read(path, &heads[k], &r, &d, &nd, NULL, &err) != FS_OK) {
+            /* a shard's trials.journal is written whole: damage is the disk's or an edit */
+            fprintf(stderr, "footsim merge: %s%s\n", err.message,
+                    err.status == FS_BAD_INPUT ? "; run that shard again (or give its folder as it was written)" : "");
+            s = err.status;
             break;
         }
         char why[512];
@@ -729,7 +827,7 @@ int cli_merge(const cli_args *a)
             s = FS_BAD_INPUT;
         }
         if (!s)
-            s = check_records(c, &heads[k], r, d, path);
+            s = check_records(c, &heads[k], r, d, path, "run that shard again");
         for (int i = 0; !s && i < heads[0].ntrials; i++) {
             if (!d[i])
                 continue;

@@ -359,6 +359,7 @@ static void print_warning(const char *text, void *user)
 
 int main(int argc, char **argv)
 {
+    signal(SIGXFSZ, SIG_IGN); /* a file-size limit fails the write (EFBIG): exit 4 with a message */
     fs_warning_handler(print_warning, NULL);
     /* the command's process policy (the library sets none): what it leaves half written is
      * removed at exit and on SIGINT, SIGTERM and SIGHUP; a file-size limit (ulimit -f) is a write

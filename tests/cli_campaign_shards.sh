@@ -4,7 +4,8 @@
 # shards; a merge is refused (exit 2, saying which) for a shard missing, a shard given twice, a
 # shard of other overrides, a campaign changed since the shards ran, a folder that is no shard;
 # --shard takes only I/N with 1 <= I <= N; --shard 1/1 is a shard too (a one-task Slurm array); a
-# merge into one of its own shards is refused (issue 33, items 9 and 11). Usage: cli_campaign_shards.sh path/to/footsim (run from
+# merge into one of its own shards is refused; a record injected from another shard or damaged is
+# named for what it is (issue 33). Usage: cli_campaign_shards.sh path/to/footsim (run from
 # the source folder).
 . "$(dirname "$0")/cli_check.sh"
 
@@ -18,7 +19,7 @@ camp -j 1 --shard 1/3 --out "$tmp/s1" >"$tmp/s1.out" 2>/dev/null
 check_that "shard 1/3 exits 0" [ $? -eq 0 ]
 check_that "shard 1/3 ran its 2 of 6 trials" grep -q '^campaign small, shard 1/3: 2 of 6 trials' "$tmp/s1.out"
 check_that "a shard folder holds its trials (and the marker) only" [ "$(ls -A "$tmp/s1" | tr '\n' ' ')" = ".footsim-results trials.journal " ]
-check_that "shard 1/3 holds trials 0 and 3" [ "$(grep -o '^[0-9]* [0-9]* ' "$tmp/s1/trials.journal" | cut -d' ' -f1 | tr '\n' ' ')" = "0 3 " ]
+check_that "shard 1/3 holds trials 0 and 3" [ "$(grep -o '^[0-9]* [0-9a-f]\{8\} [0-9]* ' "$tmp/s1/trials.journal" | cut -d' ' -f3 | tr '\n' ' ')" = "0 3 " ]
 FOOTSIM_TEST_SIGNAL_AFTER="1 9" camp -j 1 --shard 2/3 --out "$tmp/s2" >/dev/null 2>&1
 check_that "shard 2/3 killed: no folder yet" [ ! -e "$tmp/s2" ]
 camp -j 1 --shard 2/3 --out "$tmp/s2" >/dev/null 2>"$tmp/s2.err"
@@ -82,6 +83,21 @@ case $fs in /*) ;; *) fs=$PWD/$fs ;; esac
 check_that "a one-task Slurm array, then its merge: exit 0" [ $? -eq 0 ]
 check_that "a one-task Slurm array merged: trials.csv the single run's" cmp -s "$tmp/ref/trials.csv" "$tmp/arr/trials.csv"
 
+# issue 33 §14: a record of shard 2 put into shard 1's file (a whole record, its checksum right):
+# said for what it is, not as "seed 2, expected 2", and without --fresh, which merge has not
+mkdir "$tmp/s1mixed" && cp "$tmp/s1/trials.journal" "$tmp/s1mixed/" && grep '^[0-9]* [0-9a-f]\{8\} 1 ' "$tmp/s2/trials.journal" >>"$tmp/s1mixed/trials.journal"
+"$fs" merge "$tmp/s1mixed" "$tmp/s2" "$tmp/s3" --out "$tmp/bad" >/dev/null 2>"$tmp/mixed1.err"
+check_that "a record of another shard injected: exit 2" [ $? -eq 2 ]
+check_that "a record of another shard injected: said what is wrong" grep -q "s1mixed/trials.journal: holds trial 1, which belongs to shard 2/3, not to shard 1/3 as its header says.*run that shard again" "$tmp/mixed1.err"
+check_that "a record of another shard injected: no --fresh (merge has none)" sh -c "! grep -q -e --fresh -e expected '$tmp/mixed1.err'"
+# issue 33 §12: a shard's record damaged (a digit changed): refused with file:line (merge never
+# changes its inputs), the shard's file kept
+mkdir "$tmp/s1bad" && sed '8s/ 0x1\.\([0-9a-f]\)/ 0x1.f\1/' "$tmp/s1/trials.journal" >"$tmp/s1bad/trials.journal"
+cp "$tmp/s1bad/trials.journal" "$tmp/s1bad.before"
+"$fs" merge "$tmp/s1bad" "$tmp/s2" "$tmp/s3" --out "$tmp/bad" >/dev/null 2>"$tmp/damaged.err"
+check_that "a damaged shard record: exit 2" [ $? -eq 2 ]
+check_that "a damaged shard record: file:line, what is wrong, run the shard again" grep -q "s1bad/trials.journal:8: the record .*; the file is damaged; run that shard again" "$tmp/damaged.err"
+check_that "a damaged shard record: the shard's file untouched" cmp -s "$tmp/s1bad.before" "$tmp/s1bad/trials.journal"
 sed -i "s/^landed_tilt_deg = 15/landed_tilt_deg = 14/" "$tmp/trial.ini"
 "$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$tmp/bad" >/dev/null 2>"$tmp/changed.err"
 check_that "the campaign changed since: exit 2" [ $? -eq 2 ]

@@ -2,7 +2,8 @@
 # Issue 16, findings 3 and 9: a campaign killed while writing leaves its old folder whole (no mixed
 # folder, no temporary file in it); a render-compare that fails numerically leaves the old frames
 # and filmstrip; an ODE error leaves no folder and no partial folder; a stopped worker is killed by
-# the watchdog, counted and named. Usage: cli_killed.sh path/to/footsim [render|norender].
+# the watchdog, counted and named; a worker killed from outside is counted killed and runs once more
+# (issue 33). Usage: cli_killed.sh path/to/footsim [render|norender].
 . "$(dirname "$0")/cli_check.sh"
 renderer=${2:-render}
 src=$PWD
@@ -54,6 +55,25 @@ FOOTSIM_TEST_STOP_SEED=2 FOOTSIM_WATCHDOG_S=5 "$fs" campaign "$tmp/camp.ini" $sh
 status=$?
 check '[ "$status" -eq 0 ] && grep ",hung,watchdog," "$tmp/m/trials.csv" | grep -q "^bio,flat,drop_weight,2,"'
 check 'grep -q "\"hung\":	1" "$tmp/m/summary.json" && grep -q "\"failed_numerics\":	0" "$tmp/m/summary.json"'
+# issue 33 §16: a worker killed from outside (SIGKILL, as the OOM killer kills) is its own outcome,
+# killed (rule worker_died), never failed_numerics; its trial runs once more after the others, and
+# a second kill is final (the summary files count it with the hung: workers lost, not physics)
+FOOTSIM_TEST_KILL_SEED=2 "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/kl" >"$tmp/klout" 2>"$tmp/klerr"
+status=$?
+check '[ "$status" -eq 0 ] && grep -q "seed 2, was killed by signal 9 (Killed); counted as killed for now: it runs once more" "$tmp/klerr"'
+check 'grep -q "1 trial whose worker was killed runs once more" "$tmp/klerr" && grep -q "seed 2, was killed by signal 9 (Killed); counted as killed (its second try)" "$tmp/klerr"'
+check '[ "$(grep -c ",killed,worker_died," "$tmp/kl/trials.csv")" -eq 1 ] && grep ",killed,worker_died," "$tmp/kl/trials.csv" | grep -q "^bio,flat,drop_weight,2,.*was killed by signal 9"'
+check '! grep -q "failed_numerics,numerics" "$tmp/kl/trials.csv" && grep -q "\"failed_numerics\":	0" "$tmp/kl/summary.json" && grep -q "\"hung\":	1" "$tmp/kl/summary.json"'
+check 'grep -q "killed 1" "$tmp/klout" && grep -q "or killed from outside: trials.csv says which" "$tmp/kl/summary.md"'
+# retried once on resume: the run stopped (kill -9) after the kill was journaled, before its retry;
+# resumed without the kill, the trial runs and the files are an unkilled run's, byte for byte
+"$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/klref" >/dev/null 2>&1
+FOOTSIM_TEST_KILL_SEED=2 FOOTSIM_TEST_SIGNAL_AFTER="2 9" "$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/klr" >/dev/null 2>&1
+check '[ ! -e "$tmp/klr" ] && [ "$(grep -c " 1 2 5 10 " "$tmp/klr.journal/journal")" -eq 1 ]' # trial 1, seed 2: killed, worker_died
+"$fs" campaign "$tmp/camp.ini" $short -j 2 --out "$tmp/klr" >/dev/null 2>"$tmp/klrerr"
+status=$?
+check '[ "$status" -eq 0 ] && grep -q "resuming from .*: 1 of 2 trials done, 1 to run" "$tmp/klrerr"'
+check 'cmp -s "$tmp/klref/trials.csv" "$tmp/klr/trials.csv" && cmp -s "$tmp/klref/summary.json" "$tmp/klr/summary.json" && cmp -s "$tmp/klref/summary.md" "$tmp/klr/summary.md"'
 # finding 9: a refused fork (at most one process for an unprivileged user) leaves no folder
 if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null && command -v prlimit >/dev/null; then
     mkdir "$tmp/nobody" && chmod 777 "$tmp/nobody" && chmod 755 "$tmp" && cp "$tmp/camp.ini" "$tmp/nobody/" && chmod 644 "$tmp/nobody/camp.ini"

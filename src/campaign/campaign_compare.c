@@ -31,6 +31,25 @@ cJSON *fs_campaign_read_summary(const char *path, fs_error *err)
     return root;
 }
 
+fs_status fs_campaign_summary_expectations(const char *path, FILE *out, int *failed, int *total, fs_error *err)
+{
+    *failed = *total = 0;
+    cJSON *root = fs_campaign_read_summary(path, err);
+    if (!root)
+        return FS_BAD_INPUT;
+    const cJSON *e;
+    cJSON_ArrayForEach(e, cJSON_GetObjectItemCaseSensitive(root, "expectations")) {
+        int met = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(e, "met"));
+        ++*total;
+        *failed += !met;
+        fprintf(out, "  %-6s %s: %s on %s under %s: success %.2f; wanted %.2f to %.2f\n", met ? "ok" : "FAILED",
+                text_of(e, "name"), text_of(e, "foot"), text_of(e, "terrain"), text_of(e, "robot"),
+                number_of(e, "success_rate"), number_of(e, "min_success"), number_of(e, "max_success"));
+    }
+    cJSON_Delete(root);
+    return FS_OK;
+}
+
 /* The row of the same cell: foot, terrain and robot (a summary from before robots has none: "?"). */
 static const cJSON *find_row(const cJSON *rows, const cJSON *like)
 {

@@ -155,7 +155,7 @@ static int fill_trials(FILE *f, const out_ctx *x)
         fprintf(f, ",%s,%s", fs_outcome_name(r->outcome), fs_rule_name(r->rule));
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             csv_number(f, fs_metric_value(r, m));
-        csv_text(f, r->outcome == FS_FAILED_NUMERICS || r->outcome == FS_HUNG ? r->failure : "");
+        csv_text(f, fs_trial_measured(r) ? "" : r->failure);
         fputc('\n', f);
     }
     return 1;
@@ -192,11 +192,15 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
     const fs_campaign *c = x->c;
     char trial[FS_NAME_MAX];
     fs_path_stem(c->trial_path, trial, sizeof trial);
+    int killed = 0; /* said only when there are: the file of a campaign without is as before */
+    for (int i = 0; i < fs_campaign_ncells(c); i++)
+        killed += x->rows[i].killed;
     fprintf(f, "# Campaign %s\n\nTrial scenario `%s`, seeds %d to %d (%d per foot, terrain and robot)%s%s. Success: the "
                "trial landed; undecided trials (the window ended first) count as not landed and are shown apart; "
-               "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically or hang (hung: the worker killed by the watchdog); the ankle drop at rest's over the trials that landed.\n\n",
+               "interval: 95 %% Wilson score. Rules: docs/landing.md. Medians over the trials that did not fail numerically or hang (hung: the worker killed by the watchdog%s); the ankle drop at rest's over the trials that landed.\n\n",
             c->name, trial, c->first_seed, c->first_seed + c->seeds - 1, c->seeds,
-            c->nsweep ? "; each terrain swept over " : "", c->sweep[0]);
+            c->nsweep ? "; each terrain swept over " : "", c->sweep[0],
+            killed ? ", or killed from outside: trials.csv says which" : "");
     if (c->nsweep == 2)
         fprintf(f, "Swept over %s and %s: a terrain named NAME@v1,v2 is the point (%s = v1, %s = v2).\n\n", c->sweep[0],
                 c->sweep[1], c->sweep[0], c->sweep[1]);

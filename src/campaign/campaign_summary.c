@@ -62,14 +62,15 @@ void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results,
             row->fell += r[s].outcome == FS_FELL;
             row->undecided += r[s].outcome == FS_UNDECIDED;
             row->failed_numerics += r[s].outcome == FS_FAILED_NUMERICS;
-            row->hung += r[s].outcome == FS_HUNG;
+            row->hung += r[s].outcome == FS_HUNG || r[s].outcome == FS_KILLED;
+            row->killed += r[s].outcome == FS_KILLED;
         }
         row->success_rate = (double)row->landed / row->trials;
         fs_wilson(row->landed, row->trials, &row->ci_low, &row->ci_high);
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
             int n = 0;
             for (int s = 0; v && s < c->seeds; s++)
-                if (r[s].outcome != FS_FAILED_NUMERICS && r[s].outcome != FS_HUNG) /* no measurements */
+                if (fs_trial_measured(&r[s]))
                     v[n++] = fs_metric_value(&r[s], m);
             row->nmetric = n;
             /* a metric a trial does not have (NAN: the rest ankle drop of a fall) is left out */

@@ -6,14 +6,16 @@
 
 const char *fs_outcome_name(int outcome)
 {
-    static const char *names[FS_NOUTCOMES] = {"landed", "fell", "failed_numerics", "undecided", "hung"};
+    static const char *names[FS_NOUTCOMES] = {"landed", "fell", "failed_numerics", "undecided", "hung",
+                                                 "killed"};
     return outcome >= 0 && outcome < FS_NOUTCOMES ? names[outcome] : "unknown";
 }
 
 const char *fs_rule_name(int rule)
 {
     static const char *names[FS_NRULES] = {"none",    "leaned",    "lost_ground",  "sank",    "rested_tilted",
-                                           "at_rest", "dying_out", "window_ended", "numerics", "watchdog"};
+                                           "at_rest", "dying_out", "window_ended", "numerics", "watchdog",
+                                           "worker_died"};
     return rule >= 0 && rule < FS_NRULES ? names[rule] : "unknown";
 }
 

@@ -8,10 +8,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static const char *kind_of(mode_t m)
+const char *fs_file_kind(mode_t m)
 {
     return S_ISDIR(m) ? "a folder" : S_ISFIFO(m) ? "a FIFO" : S_ISSOCK(m) ? "a socket" : S_ISCHR(m) ? "a character device"
-         : S_ISBLK(m) ? "a block device" : "not a regular file";
+         : S_ISBLK(m) ? "a block device" : S_ISLNK(m) ? "a symbolic link" : S_ISREG(m) ? "a regular file"
+         : "not a regular file";
 }
 
 FILE *fs_open_regular(const char *path, long max_bytes, const char *what, fs_error *err)
@@ -30,7 +31,7 @@ FILE *fs_open_regular(const char *path, long max_bytes, const char *what, fs_err
         return NULL;
     }
     if (!S_ISREG(st.st_mode)) {
-        fs_fail(err, FS_BAD_INPUT, "%s: is %s; give %s (a regular file)", path, kind_of(st.st_mode), what);
+        fs_fail(err, FS_BAD_INPUT, "%s: is %s; give %s (a regular file)", path, fs_file_kind(st.st_mode), what);
         close(fd);
         return NULL;
     }

@@ -3,6 +3,8 @@
 #define _GNU_SOURCE /* renameat2: swapping two folders in one step (Linux) */
 #include "footsim/io/fs_output.h"
 
+#include "footsim/io/fs_input.h"
+
 #include <cJSON.h>
 #include <dirent.h>
 #include <signal.h>
@@ -138,12 +140,6 @@ static void forget(const char *path)
 
 /* ---- folders ------------------------------------------------------------------------------------ */
 
-static const char *type_name(mode_t m)
-{
-    return S_ISDIR(m) ? "a folder" : S_ISLNK(m) ? "a symbolic link" : S_ISFIFO(m) ? "a FIFO" : S_ISSOCK(m) ? "a socket"
-         : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device" : "a regular file";
-}
-
 fs_status fs_make_dirs(const char *dir, fs_error *err)
 {
     char buf[FS_OUT_PATH];
@@ -165,7 +161,7 @@ fs_status fs_make_dirs(const char *dir, fs_error *err)
     if (stat(buf, &st) != 0)
         return fs_fail(err, FS_BAD_INPUT, "%s: cannot create folder (%s); choose a writable --out", dir, strerror(errno));
     if (!S_ISDIR(st.st_mode))
-        return fs_fail(err, FS_BAD_INPUT, "%s: is %s, not a folder; choose another --out", dir, type_name(st.st_mode));
+        return fs_fail(err, FS_BAD_INPUT, "%s: is %s, not a folder; choose another --out", dir, fs_file_kind(st.st_mode));
     if (access(buf, W_OK | X_OK) != 0)
         return fs_fail(err, FS_BAD_INPUT, "%s: folder cannot be written (%s); choose another --out", dir,
                        strerror(errno));
@@ -269,7 +265,7 @@ fs_status fs_check_file_target(const char *path, const char *what, const unsigne
     int exists = lstat(path, &st) == 0;
     if (exists && !S_ISREG(st.st_mode))
         return fs_fail(err, FS_BAD_INPUT, "%s %s: is %s; footsim writes only regular files: give a file's path", what,
-                       path, type_name(st.st_mode));
+                       path, fs_file_kind(st.st_mode));
     /* a user's file (notes, data) is not replaced by accident: only what footsim would write there */
     if (exists && !replace && st.st_size > 0 && !begins_with(path, signature, nsig))
         return fs_fail(err, FS_BAD_INPUT, "%s %s: the file exists and is not %s; footsim replaces only its own kind of "
@@ -280,7 +276,7 @@ fs_status fs_check_file_target(const char *path, const char *what, const unsigne
         return fs_fail(err, FS_BAD_INPUT, "%s %s: folder %s: %s; give a path in an existing folder", what, path, dir,
                        strerror(errno));
     if (!S_ISDIR(st.st_mode))
-        return fs_fail(err, FS_BAD_INPUT, "%s %s: %s is %s, not a folder", what, path, dir, type_name(st.st_mode));
+        return fs_fail(err, FS_BAD_INPUT, "%s %s: %s is %s, not a folder", what, path, dir, fs_file_kind(st.st_mode));
     if (access(dir, W_OK | X_OK) != 0)
         return fs_fail(err, FS_BAD_INPUT, "%s %s: folder %s cannot be written (%s); give a writable place", what, path,
                        dir, strerror(errno));
@@ -296,7 +292,7 @@ fs_status fs_check_own_file(const char *path, const char *what, const char *fix,
         return fs_fail(err, FS_BAD_INPUT, "%s: is a symbolic link; footsim does not follow links for %s (it reads back "
                        "and appends to only the file it wrote there itself): %s", path, what, fix);
     return fs_fail(err, FS_BAD_INPUT, "%s: is %s, not %s (a regular file footsim writes): %s", path,
-                   type_name(st.st_mode), what, fix);
+                   fs_file_kind(st.st_mode), what, fix);
 }
 
 fs_status fs_temp_name(const char *path, char *temp, size_t size, fs_error *err)
@@ -325,7 +321,7 @@ static fs_status commit(const char *temp, const char *path, int synced, fs_error
     struct stat st;
     fs_status s = FS_OK;
     if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
-        s = fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, type_name(st.st_mode));
+        s = fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, fs_file_kind(st.st_mode));
     else if (!synced && fsync_path(temp) != 0)
         s = write_error(err, path, errno);
     else if (rename(temp, path) != 0) {
@@ -352,7 +348,7 @@ fs_status fs_write_file(const char *path, fs_fill_fn fill, const void *user, fs_
     char temp[FS_OUT_PATH + 64];
     struct stat st;
     if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
-        return fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, type_name(st.st_mode));
+        return fs_fail(err, FS_IO, "%s: is %s; footsim replaces only regular files", path, fs_file_kind(st.st_mode));
     if (fs_temp_name(path, temp, sizeof temp, err) != FS_OK)
         return FS_IO;
     unlink(temp); /* one a killed run of the same pid left */
@@ -673,7 +669,7 @@ static fs_status check_target(const char *path, const char *dir, int replace, co
                            "the folder's own path", option, dir);
         if (!S_ISDIR(st.st_mode))
             return fs_fail(err, FS_BAD_INPUT, "%s %s: is %s, not a results folder; choose another %s", option, dir,
-                           type_name(st.st_mode), option);
+                           fs_file_kind(st.st_mode), option);
         int empty = is_empty(path);
         if (empty < 0)
             return fs_fail(err, FS_BAD_INPUT, "%s %s: cannot read the folder (%s); choose another %s", option, dir,

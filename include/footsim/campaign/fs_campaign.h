@@ -132,10 +132,13 @@ void fs_wilson(int k, int n, double *low, double *high);
 typedef struct fs_campaign_row {
     int foot, terrain, robot;
     int trials, landed, fell, undecided, failed_numerics;
-    int hung;                              /* trials whose worker the watchdog killed (not physics) */
+    int hung;                              /* trials whose worker was lost, not to physics: killed by the
+                                              watchdog (outcome hung) or from outside (outcome killed);
+                                              the summary files' "hung" column, which counts both */
+    int killed;                            /* of those, the killed (trials.csv tells them apart) */
     double success_rate, ci_low, ci_high;  /* landed / trials and its Wilson interval */
-    int nmetric;                           /* trials the medians are over (all but failed_numerics, hung;
-                                              the ankle drop at rest's: the landed among them) */
+    int nmetric;                           /* trials the medians are over (all but failed_numerics, hung,
+                                              killed; the ankle drop at rest's: the landed among them) */
     double median[FS_CAMPAIGN_NMETRICS];   /* over those that have the metric; NAN when none has */
     /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
     int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */
@@ -170,6 +173,10 @@ fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *
 
 /* Checks every expectation, printing each with its numbers to out; returns how many failed. */
 int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *out);
+
+/* The expectations a summary.json records (path): each printed to out with whether it was met,
+ * *failed of *total not met. FS_BAD_INPUT (said) when the file is not a campaign's summary. */
+fs_status fs_campaign_summary_expectations(const char *path, FILE *out, int *failed, int *total, fs_error *err);
 
 /* Compares two summary.json files, printing a table of what changed to out. First their
  * provenance: results made with other seeds, overrides or input files (by content) are refused
@@ -208,14 +215,17 @@ static inline int fs_campaign_in_shard(int index, int shard, int nshards)
     return index % nshards == shard - 1;
 }
 
-/* A journal is a campaign's finished trials, one line each, behind a header that says what made
+/* A journal is a campaign's finished trials, one record each, behind a header that says what made
  * them: the campaign file (absolute), its --set as given, the shard, the trial count and the
- * provenance line. A record holds every field of a trial's result exactly (numbers in C99 hex
- * notation), so results read back are bit for bit those written. A run appends each record as its
- * trial ends (fs_journal_append: one write, then fdatasync); a shard's results folder holds the
- * same format sorted by index (trials.journal). A last line without its newline (a kill in the
- * middle of a write) is ignored. */
-enum { FS_JOURNAL_FORMAT = 1 };
+ * provenance line, then a line `check CRC` (the CRC-32 of the header's bytes before it, fs_crc.h).
+ * A record is one line `LEN CRC PAYLOAD`: the payload's length in bytes and its CRC-32 (8 hex
+ * digits), then the payload, which holds every field of a trial's result exactly (numbers in C99
+ * hex notation), so results read back are bit for bit those written. A run appends each record as
+ * its trial ends (fs_journal_append: one write, then fdatasync; a write that fails is cut off
+ * again); a shard's results folder holds the same format sorted by index (trials.journal). A trial
+ * whose worker was killed (FS_KILLED) may have a second record after its first: the second
+ * attempt's. Format 1 (an earlier footsim's: no check line, no frame) is still read. */
+enum { FS_JOURNAL_FORMAT = 2 };
 typedef struct fs_journal_head {
     char campaign[FS_PATH_MAX];          /* the campaign file, absolute */
     char *set[FS_CAMPAIGN_MAX_SET];      /* the --set as given (malloc'd) */
@@ -236,15 +246,29 @@ void fs_journal_head_free(fs_journal_head *h);
 int fs_journal_differs(const fs_journal_head *a, const fs_journal_head *b, const char *name_a, const char *name_b,
                        char *why, size_t size);
 
-/* Writes the header to f; then fs_journal_print_record for each trial. */
-void fs_journal_print_head(FILE *f, const fs_journal_head *h);
-void fs_journal_print_record(FILE *f, int index, const fs_trial_result *r);
+/* Writes the journal at path whole (fs_write_file): h's header and the record of every trial i
+ * with done[i] nonzero, by index. */
+fs_status fs_journal_write(const char *path, const fs_journal_head *h, const fs_trial_result *results,
+                           const unsigned char *done, fs_error *err);
 
-/* Reads the journal at path: its head, and its records into results[h->ntrials] and done (1 where
- * a record was read), both malloc'd. FS_BAD_INPUT ("path:line: ...") for a file that is not a
- * journal, a malformed record, an index out of range or repeated; FS_NO_MEMORY. */
+/* What fs_journal_read found past the records it kept: a resume keeps those and runs the rest. */
+typedef struct fs_journal_tail {
+    int format;              /* the file's format: 1 is rewritten (fs_journal_write) before appending */
+    long long good_bytes;    /* the bytes of the header and the records kept */
+    int torn;                /* the file ends in a record cut short (a kill, a full disk, a size limit) */
+    int line;                /* a record that failed its check, or 0: the first line not kept */
+    char why[160];           /* what is wrong with that line */
+} fs_journal_tail;
+
+/* Reads the journal at path (a regular file, never a FIFO or a symbolic link): its head, and its
+ * records into results[h->ntrials] and done (both malloc'd): done[i] is how many records trial i
+ * has (2 only when its first says its worker was killed), results[i] the last. A record cut short at
+ * the end of the file is left out. A record that fails its checksum or cannot be read (or, format 1,
+ * any line that is not a record) is FS_BAD_INPUT ("path:line: ...") when tail is NULL; with a tail
+ * (format 2) the records before it are kept, and tail says where the good part ends and why. The
+ * header wrong, or lines that end in CR LF: FS_BAD_INPUT, naming --fresh. FS_NO_MEMORY. */
 fs_status fs_journal_read(const char *path, fs_journal_head *h, fs_trial_result **results, unsigned char **done,
-                          int *ndone, fs_error *err);
+                          int *ndone, fs_journal_tail *tail, fs_error *err);
 
 /* An open journal being appended to (one process at a time: an exclusive flock on it). */
 typedef struct fs_journal {
@@ -253,10 +277,13 @@ typedef struct fs_journal {
 } fs_journal;
 
 /* Opens path for appending; creates it with h's header (written whole) when it does not exist.
- * FS_BAD_INPUT when another process holds it. */
-fs_status fs_journal_open(fs_journal *j, const char *path, const fs_journal_head *h, fs_error *err);
+ * keep_bytes >= 0: the file is cut to that length first (fs_journal_tail.good_bytes: a torn or
+ * damaged end removed, so that new records never follow it). FS_BAD_INPUT when path is not a
+ * regular file (a FIFO, a folder, a symbolic link: named) or another process holds it. */
+fs_status fs_journal_open(fs_journal *j, const char *path, const fs_journal_head *h, long long keep_bytes,
+                          fs_error *err);
 
-/* Appends index's record and syncs it to the disk. */
+/* Appends index's record and syncs it to the disk; FS_IO when it cannot (the record cut off again). */
 fs_status fs_journal_append(fs_journal *j, int index, const fs_trial_result *r, fs_error *err);
 void fs_journal_close(fs_journal *j);
 

@@ -17,10 +17,19 @@
 #ifndef FS_OUTCOME_H
 #define FS_OUTCOME_H
 
-/* FS_HUNG is no judge's decision: a campaign gives it to a trial whose worker the pool's watchdog
- * killed (no answer in its time), which says nothing of the physics. */
-typedef enum fs_outcome { FS_LANDED = 0, FS_FELL = 1, FS_FAILED_NUMERICS = 2, FS_UNDECIDED = 3, FS_HUNG = 4 } fs_outcome;
-enum { FS_NOUTCOMES = 5 };
+/* FS_HUNG and FS_KILLED are no judge's decisions: a campaign gives FS_HUNG to a trial whose worker
+ * the pool's watchdog killed (no answer in its time) and FS_KILLED to one whose worker died any other
+ * way than by a numerical failure (its exit status 3): a signal from outside (the OOM killer's
+ * SIGKILL), a crash, another exit status. Neither says anything of the physics. */
+typedef enum fs_outcome {
+    FS_LANDED = 0,
+    FS_FELL = 1,
+    FS_FAILED_NUMERICS = 2,
+    FS_UNDECIDED = 3,
+    FS_HUNG = 4,
+    FS_KILLED = 5
+} fs_outcome;
+enum { FS_NOUTCOMES = 6 };
 
 /* Which rule decided a trial (fs_rule_name gives the words). */
 typedef enum fs_rule {
@@ -34,6 +43,7 @@ typedef enum fs_rule {
     FS_RULE_WINDOW,         /* undecided: the window ended first */
     FS_RULE_NUMERICS,       /* failed_numerics: the state checks stopped the trial */
     FS_RULE_WATCHDOG,       /* hung: the pool's watchdog killed the trial's worker */
+    FS_RULE_KILLED,         /* killed: the trial's worker died, not of a numerical failure */
     FS_NRULES
 } fs_rule;
 
@@ -76,7 +86,7 @@ int fs_judge_step(fs_judge *j, const fs_outcome_sample *s);
  * decided yet from the last sample and the deepest foot shape's penetration, m. */
 void fs_judge_finish(fs_judge *j, const fs_outcome_sample *last, double penetration_m);
 
-/* "landed", "fell", "failed_numerics", "undecided", "hung". */
+/* "landed", "fell", "failed_numerics", "undecided", "hung", "killed". */
 const char *fs_outcome_name(int outcome);
 /* "leaned past the fall angle", ...: what decided it. */
 const char *fs_rule_name(int rule);

@@ -78,4 +78,11 @@ fs_status fs_trial_run_scenario(const fs_scenario *sc, int seed, const fs_run_ob
 fs_status fs_trial_run_logged(const fs_scenario *sc, int seed, const fs_run_observer *obs, fs_run_result *log,
                               fs_trial_result *out, fs_error *err);
 
+/* Whether r holds measurements: not a numerical failure, nor a trial whose worker was lost (hung,
+ * killed), which have only their draw and their failure text. */
+static inline int fs_trial_measured(const fs_trial_result *r)
+{
+    return r->outcome != FS_FAILED_NUMERICS && r->outcome != FS_HUNG && r->outcome != FS_KILLED;
+}
+
 #endif

@@ -11,10 +11,15 @@
 
 #include <stddef.h>
 #include <stdio.h>
+#include <sys/types.h>
 
 /* Opens path for reading ("rb") when it is a regular file of at most max_bytes; `what` names it in
  * messages ("a design file", "a heightmap"). */
 FILE *fs_open_regular(const char *path, long max_bytes, const char *what, fs_error *err);
+
+/* What a file that is not a regular file is, in words ("a folder", "a FIFO", "a socket", ...), from
+ * its st_mode. */
+const char *fs_file_kind(mode_t mode);
 
 /* Reads a whole regular file of at most max_bytes into *data (malloc'd, NUL-terminated; *len bytes
  * without the terminator). */
