@@ -137,13 +137,7 @@ mkdir "$tmp/charts" && echo mine >"$tmp/charts/plot.gp" && echo data >"$tmp/char
 expect 2 "a folder footsim did not make" -- plot "$tmp/r" --out "$tmp/charts"
 check '[ "$(cat "$tmp/charts/plot.gp")" = mine ] && [ "$(cat "$tmp/charts/chart.dat")" = data ]'
 
-# issue 33 item 1: a path is never cut short. long_dir LEN LETTER: a folder path under $tmp of LEN
-# characters (components of 200 LETTERs, then one shorter)
-long_dir() {
-    p=$tmp
-    while [ $(($1 - ${#p})) -gt 201 ]; do p=$p/$(printf "%0200d" 0 | tr 0 "$2"); done
-    echo "$p/$(printf "%0$(($1 - ${#p} - 1))d" 0 | tr 0 "$2")"
-}
+# issue 33 item 1: a path is never cut short (long_dir: cli_check.sh)
 # the issue's case: a 1083-character folder D; --out D/res, then --out D/res_v2_experiment (which an
 # unchecked 1088-byte buffer cut to D/res) leaves D/res as it was
 D=$(long_dir 1083 d)
