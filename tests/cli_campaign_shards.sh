@@ -68,6 +68,20 @@ check_that "merge --out a shard it reads: its journal untouched" cmp -s "$tmp/s1
 check_that "merge --out a shard by another name: exit 2" [ $? -eq 2 ]
 check_that "merge --out a shard by another name: its journal kept" [ -f "$tmp/s3/trials.journal" ]
 
+# issue 33 item 1: a merge's and a campaign's --out too long to use whole is refused (exit 2, nothing
+# written); one that fits, 3500 characters long, works
+L=$(long_dir 4080 g)
+"$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$L" >/dev/null 2>"$tmp/long.err"
+check_that "merge --out too long: exit 2" [ $? -eq 2 ]
+check_that "merge --out too long: says how long and what fits" grep -q "the path is 4080 characters long; footsim takes at most" "$tmp/long.err"
+camp -j 2 --out "$L" >/dev/null 2>"$tmp/long.err"
+check_that "campaign --out too long: exit 2, nothing written" sh -c "[ $? -eq 2 ] && [ ! -e '$tmp/gggg' ] && [ -z \"\$(ls '$tmp' | grep '^g')\" ]"
+F=$(long_dir 3500 f)
+"$fs" merge "$tmp/s1" "$tmp/s2" "$tmp/s3" --out "$F" >/dev/null 2>&1
+check_that "merge into a 3500-character --out: the single run's summary.json" cmp -s "$tmp/ref/summary.json" "$F/summary.json"
+camp -j 2 --out "$F.c" >/dev/null 2>&1
+check_that "campaign into a 3500-character --out: the single run's trials.csv" cmp -s "$tmp/ref/trials.csv" "$F.c/trials.csv"
+
 # issue 33 item 11: --shard 1/1 writes a shard (a one-task Slurm array), which merge accepts
 camp -j 2 --shard 1/1 --out "$tmp/one" >"$tmp/one.out" 2>&1
 check_that "--shard 1/1: exit 0" [ $? -eq 0 ]

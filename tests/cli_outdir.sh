@@ -137,13 +137,7 @@ mkdir "$tmp/charts" && echo mine >"$tmp/charts/plot.gp" && echo data >"$tmp/char
 expect 2 "a folder footsim did not make" -- plot "$tmp/r" --out "$tmp/charts"
 check '[ "$(cat "$tmp/charts/plot.gp")" = mine ] && [ "$(cat "$tmp/charts/chart.dat")" = data ]'
 
-# issue 33 item 1: a path is never cut short. long_dir LEN LETTER: a folder path under $tmp of LEN
-# characters (components of 200 LETTERs, then one shorter)
-long_dir() {
-    p=$tmp
-    while [ $(($1 - ${#p})) -gt 201 ]; do p=$p/$(printf "%0200d" 0 | tr 0 "$2"); done
-    echo "$p/$(printf "%0$(($1 - ${#p} - 1))d" 0 | tr 0 "$2")"
-}
+# issue 33 item 1: a path is never cut short (long_dir: cli_check.sh)
 # the issue's case: a 1083-character folder D; --out D/res, then --out D/res_v2_experiment (which an
 # unchecked 1088-byte buffer cut to D/res) leaves D/res as it was
 D=$(long_dir 1083 d)
@@ -202,12 +196,25 @@ if chattr +i "$tmp/ro/metrics.json" 2>/dev/null; then
 else
     echo "skipped: chattr +i is refused here (the immutable-folder case of issue 33 item 13)"
 fi
-if [ "$(id -u)" -ne 0 ]; then
-    chmod a-w "$tmp/ro"
-    expect 4 "--out .*ro: cannot be replaced: .*ro cannot be written" -- run scenarios/static_load.ini $short --out "$tmp/ro"
-    chmod u+w "$tmp/ro"
+# the issue's case, a folder made read-only (chmod a-w), as a user (root writes it anyway: as root,
+# the run is made as nobody with setpriv, in a folder nobody owns)
+as_user=""
+if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null; then
+    as_user="setpriv --reuid=65534 --regid=65534 --clear-groups"
+    chmod 755 "$tmp" && mkdir "$tmp/user" && chown 65534:65534 "$tmp/user"
+elif [ "$(id -u)" -ne 0 ]; then
+    mkdir "$tmp/user"
+fi
+if [ -d "$tmp/user" ]; then
+    $as_user "$fs" run scenarios/static_load.ini $short --out "$tmp/user/ro" >/dev/null 2>&1
+    cp "$tmp/user/ro/metrics.json" "$tmp/user.before" && chmod a-w "$tmp/user/ro"
+    $as_user "$fs" run scenarios/static_load.ini $short --out "$tmp/user/ro" >/dev/null 2>"$tmp/user.err"
+    su=$?
+    check '[ "$su" -eq 4 ] && grep -q -- "--out .*user/ro: cannot be replaced: .*user/ro cannot be written (Permission denied); make it writable" "$tmp/user.err"'
+    check 'cmp -s "$tmp/user.before" "$tmp/user/ro/metrics.json" && [ "$(ls -A "$tmp/user")" = ro ]'
+    chmod u+w "$tmp/user/ro"
 else
-    echo "skipped: root writes a chmod a-w folder (the read-only-folder case of issue 33 item 13 for a user)"
+    echo "skipped: root without setpriv writes a chmod a-w folder (the read-only-folder case of issue 33 item 13)"
 fi
 
 # issue 33 item 14: a campaign journal that is a folder, or a symbolic link (not followed), is named

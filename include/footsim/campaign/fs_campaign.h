@@ -16,6 +16,7 @@
 
 #include "footsim/base/fs_stats.h"
 #include "footsim/io/fs_config.h"
+#include "footsim/io/fs_output.h"
 #include "footsim/experiment/fs_trial.h"
 
 #include <stdio.h>
@@ -272,7 +273,7 @@ fs_status fs_journal_read(const char *path, fs_journal_head *h, fs_trial_result 
 
 /* An open journal being appended to (one process at a time: an exclusive flock on it). */
 typedef struct fs_journal {
-    char path[FS_PATH_MAX + 32];
+    char path[FS_OUT_PATH]; /* as long as any path a results folder's files may have (fs_output.h) */
     int fd;
 } fs_journal;
 
