@@ -74,9 +74,12 @@ static void sim_settles_and_its_accessors_agree(void)
     CHECK_NEAR(fs_sim_time(sim), 3000 * 1e-4, 1e-12);
     CHECK(fs_sim_step_size(sim) == 1e-4 && !fs_sim_dead(sim));
 
-    double mass = 26;
-    for (int b = 0; b < g->nbodies; b++)
-        mass += g->body[b].mass_kg;
+    double mass = 26, masses[64];
+    REQUIRE(n <= 64);
+    fs_sim_body_masses(sim, masses);
+    for (int b = 0; b < n; b++)
+        mass += masses[b];
+    CHECK(mass > 26 && masses[0] == g->body[0].mass_kg);
     int nc = fs_sim_contact_count(sim);
     CHECK(nc > 0);
     double *pos = malloc(sizeof(double) * 3 * (size_t)(nc > 0 ? nc : 1)), *force = malloc(sizeof(double) * 3 * (size_t)(nc > 0 ? nc : 1));
@@ -139,6 +142,9 @@ static void torque_turns_the_foot_and_bad_ones_are_refused(void)
     REQUIRE(s[0] && s[1] && s[2]);
     int n = fs_sim_body_count(s[0]);
     CHECK(n == s[0]->geom->nbodies + 1 && !strcmp(fs_sim_body_name(s[0], n - 1), "robot"));
+    double masses[64];
+    fs_sim_body_masses(s[0], masses);
+    CHECK(masses[n - 1] == 26); /* single_tall */
     int talus = fs_sim_body_index(s[0], "talus");
     REQUIRE(talus >= 0);
     const double tz[3] = {0, 5, -5};

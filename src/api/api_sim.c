@@ -114,6 +114,12 @@ int fs_sim_body_index(const fs_sim *sim, const char *name)
     return -1;
 }
 
+void fs_sim_body_masses(const fs_sim *sim, double *mass_kg)
+{
+    for (int i = 0; i < fs_sim_body_count(sim); i++)
+        mass_kg[i] = i < sim->geom->nbodies ? sim->geom->body[i].mass_kg : sim->sc->def.robot.mass_kg;
+}
+
 void fs_sim_poses(const fs_sim *sim, double *pos, double *R)
 {
     for (int i = 0; i < fs_sim_body_count(sim); i++)

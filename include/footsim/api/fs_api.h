@@ -67,6 +67,8 @@ int fs_sim_dead(const fs_sim *sim);
 int fs_sim_body_count(const fs_sim *sim);
 const char *fs_sim_body_name(const fs_sim *sim, int i);
 int fs_sim_body_index(const fs_sim *sim, const char *name);
+/* Every body's mass, kg (mass_kg: count); the robot's is its mass_kg, also when merged. */
+void fs_sim_body_masses(const fs_sim *sim, double *mass_kg);
 /* Every body's centre of mass, m (pos: count x 3), and rotation (R: count x 9, row-major, world =
  * R body), world frame; either may be NULL. */
 void fs_sim_poses(const fs_sim *sim, double *pos, double *R);
