@@ -277,9 +277,13 @@ class Sim(_Handle):
     def step(self, n=1):
         """Takes n steps of the scenario's step (dt). A failed check or an ODE error raises
         FootsimError (status 3) naming the body or hinge and the time; after an ODE error the
-        simulation is dead (dead is True) and only close() remains."""
-        err = _Error()
-        _check(_c.fs_sim_advance(self._handle(), int(n), byref(err)), err)
+        simulation is dead (dead is True) and only close() remains. Ctrl-C stops it between chunks
+        of 1000 steps (KeyboardInterrupt; the steps taken stay taken)."""
+        err, n = _Error(), int(n)
+        while n > 0:  # in chunks, so that Ctrl-C (Python's handler runs between calls) stops a long run
+            k = min(n, 1000)
+            _check(_c.fs_sim_advance(self._handle(), k, byref(err)), err)
+            n -= k
 
     @property
     def time(self):
