@@ -50,15 +50,17 @@ lib, lib_path = _load()
 
 
 def _load_render():
-    folder = lib_path.parent if lib_path is not None else None
-    names = [folder / "libfootsim-render.so", folder / RENDER_SONAME] if folder else []
-    for p in names:
-        if p.exists():
-            return ctypes.CDLL(str(p))
+    """libfootsim-render from beside the libfootsim loaded (the system's loader only when that one
+    came from it too), so that the two are always of one build; None when it was not built."""
+    if lib_path is not None:
+        for p in (lib_path.parent / "libfootsim-render.so", lib_path.parent / RENDER_SONAME):
+            if p.exists():
+                return ctypes.CDLL(str(p))
+        return None
     try:
         return ctypes.CDLL(RENDER_SONAME)
     except OSError:
-        return None  # built without the renderer
+        return None
 
 
 render_lib = _load_render()
