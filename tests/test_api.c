@@ -208,6 +208,19 @@ static void stiffness_and_law(void)
     CHECK_NEAR(K[1], K[2], 1e-9 * fabs(K[0]));
     CHECK(K[0] > 0 && K[0] * K[3] - K[1] * K[2] > 0 && K4[0] > 0);
     CHECK(fs_scenario_chain_stiffness(sc, 5, K, NULL, &err) == FS_BAD_INPUT);
+    fs_scenario *design = fs_scenario_open_design("scenarios/feet/biomimetic.ini", NULL, 0, &err);
+    REQUIRE(design);
+    double Kd[4];
+    REQUIRE(fs_scenario_chain_stiffness(design, 2, Kd, NULL, &err) == FS_OK);
+    CHECK(!memcmp(K, Kd, sizeof K)); /* the scenario's foot is that design */
+    fs_scenario_close(design);
+    const char *soft[] = {"springs.k_d1_N_per_m=1000"};
+    design = fs_scenario_open_design("scenarios/feet/biomimetic.ini", soft, 1, &err);
+    REQUIRE(design);
+    REQUIRE(fs_scenario_chain_stiffness(design, 2, Kd, NULL, &err) == FS_OK);
+    CHECK(Kd[0] < K[0]); /* a softer d1 spring, a softer chain */
+    fs_scenario_close(design);
+    CHECK(fs_scenario_open_design("scenarios/feet/none.ini", NULL, 0, &err) == NULL && err.status == FS_BAD_INPUT);
     double Kp;
     REQUIRE(fs_scenario_pitch_stiffness(sc, 26 * 9.81, &Kp, &err) == FS_OK);
     CHECK(Kp > 0);

@@ -138,15 +138,21 @@ class Scenario(_Handle):
     command's --set is: anything wrong raises FootsimError before anything runs."""
     _kind = "scenario"
 
-    def __init__(self, path, set=None):
+    def __init__(self, path, set=None, _open=None):
         self.path = find_data(path)
         sets = [s.encode() for s in _overrides(set)]
         arr = (c_char_p * max(len(sets), 1))(*sets)
         err = _Error()
-        self._h = _c.fs_scenario_open(self.path.encode(), arr, len(sets), byref(err))
+        self._h = (_open or _c.fs_scenario_open)(self.path.encode(), arr, len(sets), byref(err))
         if not self._h:
             _raise(err)
         self.overrides = tuple(s.decode() for s in sets)
+
+    @classmethod
+    def for_design(cls, path, set=None):
+        """A design file (a foot) alone, every other key at its default, for the stiffness model and
+        the law: footsim.Scenario.for_design("feet/biomimetic.ini", set={"springs.k_d1_N_per_m": 9000})."""
+        return cls(path, set, _open=_c.fs_scenario_open_design)
 
     def close(self):
         if getattr(self, "_h", None):

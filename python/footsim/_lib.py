@@ -87,6 +87,7 @@ for name, res, *args in [
     ("fs_version", c_char_p),
     ("fs_warning_handler", None, WARNING_FN, c_void_p),
     ("fs_scenario_open", c_void_p, c_char_p, POINTER(c_char_p), c_int, ERR),
+    ("fs_scenario_open_design", c_void_p, c_char_p, POINTER(c_char_p), c_int, ERR),
     ("fs_scenario_close", None, c_void_p),
     ("fs_scenario_title", c_char_p, c_void_p),
     ("fs_scenario_trial", c_int, c_void_p),

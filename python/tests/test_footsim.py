@@ -132,6 +132,10 @@ def test_stiffness_and_law():
     assert stiff.stands and stiff.lean_rad == pytest.approx(m * g * sc["robot.com_forward_m"] / (1e6 - m * g * h))
     with pytest.raises(footsim.FootsimError):
         footsim.Scenario("static_load.ini", set={"scenario.design": "feet/flat.ini"}).chain_stiffness(0)
+    design = footsim.Scenario.for_design("biomimetic.ini")
+    assert np.array_equal(design.chain_stiffness(0)[0], exact)  # the trial's foot is that design
+    soft = footsim.Scenario.for_design("biomimetic.ini", set={"springs.k_d1_N_per_m": 1000})
+    assert soft.chain_stiffness(0)[0][0, 0] < exact[0, 0]  # a softer midfoot spring, a softer chain
 
 
 @pytest.mark.skipif(not footsim.has_renderer(), reason="built without libfootsim-render")

@@ -12,7 +12,11 @@ typedef struct sim_box {
     fs_scenario sc;
 } sim_box;
 
-fs_scenario *fs_scenario_open(const char *path, const char *const *overrides, int noverrides, fs_error *err)
+typedef fs_status (*scenario_loader)(const char *path, const char *const *overrides, int noverrides, fs_scenario *sc,
+                                     fs_error *err);
+
+static fs_scenario *open_with(scenario_loader load, const char *path, const char *const *overrides, int noverrides,
+                              fs_error *err)
 {
     if (!path || noverrides < 0 || (noverrides > 0 && !overrides)) {
         fs_fail(err, FS_BAD_INPUT, "fs_scenario_open: path is NULL or the overrides do not match their count");
@@ -23,12 +27,22 @@ fs_scenario *fs_scenario_open(const char *path, const char *const *overrides, in
         fs_fail(err, FS_NO_MEMORY, "%s: no memory for the scenario", path);
         return NULL;
     }
-    if (fs_scenario_load(path, overrides, noverrides, sc, err) != FS_OK) {
+    if (load(path, overrides, noverrides, sc, err) != FS_OK) {
         fs_scenario_free(sc);
         free(sc);
         return NULL;
     }
     return sc;
+}
+
+fs_scenario *fs_scenario_open(const char *path, const char *const *overrides, int noverrides, fs_error *err)
+{
+    return open_with(fs_scenario_load, path, overrides, noverrides, err);
+}
+
+fs_scenario *fs_scenario_open_design(const char *path, const char *const *overrides, int noverrides, fs_error *err)
+{
+    return open_with(fs_scenario_for_design, path, overrides, noverrides, err);
 }
 
 void fs_scenario_close(fs_scenario *sc)

@@ -35,6 +35,9 @@ typedef struct fs_trial_result fs_trial_result;
  * handle, or NULL with err set (FS_BAD_INPUT with file:line, FS_NO_MEMORY). A design, terrain or
  * robot key reaches its file through the scenario (fs_scenario.h). */
 fs_scenario *fs_scenario_open(const char *path, const char *const *overrides, int noverrides, fs_error *err);
+/* A design file (a foot) alone, in a scenario with every other key at its default (the command's
+ * `footsim stiffness DESIGN`), for the stiffness model and the law; overrides as above. */
+fs_scenario *fs_scenario_open_design(const char *path, const char *const *overrides, int noverrides, fs_error *err);
 void fs_scenario_close(fs_scenario *sc);
 
 /* The file's base name without .ini ("landing_trial"); the handle owns it. */
