@@ -253,13 +253,15 @@ class TrialResult:
 
 
 class Sim(_Handle):
-    """A simulation of a scenario at its start pose, stepped by step(n). Reading it gives numpy
+    """A simulation of a scenario (a Scenario, or a file's name) at its start pose, stepped by step(n). Reading it gives numpy
     arrays (world frame, SI units); each reader takes an optional out= array to fill instead. The
     simulation keeps its own copy of the scenario."""
     _kind = "simulation"
     _render = None
 
     def __init__(self, scenario):
+        if isinstance(scenario, (str, Path)):
+            scenario = Scenario(scenario)
         err = _Error()
         self._h = _c.fs_sim_open(scenario._handle(), byref(err))
         if not self._h:

@@ -71,8 +71,7 @@ def test_trial_agrees_with_the_command(tmp_path):
 
 
 def test_sim_at_rest_carries_its_weight():
-    sc = footsim.Scenario("static_load.ini")
-    sim = footsim.Sim(sc)
+    sim = footsim.Sim("static_load.ini")
     assert sim.body_names[:2] == ("heel", "talus") and sim.nbodies == 12 and len(sim.spring_names) == 15
     sim.step(3000)
     assert sim.time == pytest.approx(0.3, abs=1e-12)
