@@ -3,8 +3,10 @@
 # Run as root on Debian 12; otherwise it prints the apt-get line to run.
 set -eu
 pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev libosmesa6-dev libpng-dev libgsl-dev libnlopt-dev libxml2-dev gnuplot-nox"
-# optional: MuJoCo, for the test that loads the MJCF export (export_mujoco skips without it)
-optional="libmujoco-dev"
+# optional: MuJoCo, for the test that loads the MJCF export (export_mujoco skips without it); Debian's
+# Python with numpy, pytest and matplotlib, for the Python package, its tests and examples (the ctest
+# test python skips without pytest or numpy)
+optional="libmujoco-dev python3-numpy python3-pytest python3-matplotlib"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -119,4 +119,16 @@ fs_status fs_render_png_write(const char *path, const unsigned char *rgba, int w
                               int level, fs_error *err);
 fs_status fs_render_png_read(const char *path, unsigned char **rgba, int *w, int *h, fs_error *err);
 
+/* A simulation drawn into the caller's buffer (for embedding, footsim/api/fs_api.h's handles): a
+ * renderer, the camera named (fs_render_camera_names) framed on the first frame drawn and
+ * following after as the command's frames do, and its scene, all made by fs_render_sim_open;
+ * drawing allocates nothing. fs_render_sim_draw fills rgba (width x height x 4 bytes, top-down
+ * rows) with sim now. FS_BAD_INPUT for an unknown camera or a size out of range, or when OSMesa is
+ * missing (the message says what to install). */
+struct fs_sim;
+typedef struct fs_render_sim fs_render_sim;
+fs_render_sim *fs_render_sim_open(int width, int height, const char *camera, fs_error *err);
+void fs_render_sim_close(fs_render_sim *rs);
+void fs_render_sim_draw(fs_render_sim *rs, const struct fs_sim *sim, unsigned char *rgba);
+
 #endif

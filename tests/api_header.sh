@@ -1,0 +1,18 @@
+#!/bin/sh
+# footsim/api/fs_api.h reaches no ODE header, directly or through footsim's (issue 31: a program
+# that embeds footsim through its handles needs neither ODE's headers nor a struct's layout).
+# usage: api_header.sh CC   (run from the source folder)
+cc=${1:-cc}
+fail=0
+for h in include/footsim/api/fs_api.h; do
+  files=$("$cc" -std=c11 -E -I include "$h" | sed -n 's/^# [0-9]* "\([^"]*\)".*/\1/p' | sort -u)
+  [ -n "$files" ] || { echo "$h: did not preprocess"; fail=1; continue; }
+  ode=$(echo "$files" | grep '/ode/' || true)
+  if [ -n "$ode" ]; then
+    echo "$h: reaches ODE's headers:"; echo "$ode" | sed 's/^/  /'; fail=1
+  else
+    echo "$h: $(echo "$files" | grep -c 'footsim/') footsim headers, none of ODE's"
+  fi
+done
+[ $fail -eq 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
+exit $fail
