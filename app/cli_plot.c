@@ -224,6 +224,10 @@ typedef struct trajectory {
     int ncols, ankle_z, contacts, lean;
     double z0_m;
     char title[512];
+    /* a landing trial's folder (trial.json beside): when it touched down and when its rule decided
+       it (NAN: not a trial, or no touchdown), and what it decided ("landed (at_rest)") */
+    double touchdown_s, decided_s;
+    char decided[128];
 } trajectory;
 
 static int column_of(const trajectory *t, const char *name)
@@ -297,6 +301,40 @@ static void run_title(const char *dir, trajectory *t)
     else
         snprintf(t->title, sizeof t->title, "Run %s", dir);
     cJSON_Delete(m);
+    /* a landing trial's: its seed and outcome in the title, its touchdown and decision marked */
+    t->touchdown_s = t->decided_s = NAN;
+    t->decided[0] = 0;
+    text = NULL;
+    cJSON *j = fs_path_format(path, sizeof path, "plot", &err, "%s/trial.json", dir) != FS_OK ? NULL : fs_read_regular(path, 1 << 20, "trial.json", &text, &len, &err) == FS_OK ? cJSON_Parse(text) : NULL;
+    free(text);
+    const char *outcome = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(j, "outcome"));
+    const char *rule = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(j, "rule"));
+    const cJSON *seed = cJSON_GetObjectItemCaseSensitive(j, "seed"), *td = cJSON_GetObjectItemCaseSensitive(j, "touchdown_s"),
+                *end = cJSON_GetObjectItemCaseSensitive(j, "end_time_s");
+    if (outcome && rule && cJSON_IsNumber(seed)) {
+        snprintf(t->decided, sizeof t->decided, "%s (%s)", outcome, rule);
+        snprintf(t->title, sizeof t->title, "Trial %s, seed %d: %s", dir, seed->valueint, t->decided);
+        t->touchdown_s = cJSON_IsNumber(td) ? td->valuedouble : NAN;
+        t->decided_s = cJSON_IsNumber(end) ? end->valuedouble : NAN;
+    }
+    cJSON_Delete(j);
+}
+
+/* A landing trial's marks on every panel: a dashed line at touchdown, a red one where its rule
+ * decided it, labelled with the outcome (text as data). */
+static void trial_marks(FILE *f, const trajectory *t)
+{
+    if (isfinite(t->touchdown_s))
+        fprintf(f, "set arrow 1 from %.9g, graph 0 to %.9g, graph 1 nohead dt 2 lw 1.5 lc rgb '#606060'\n"
+                   "set label 1 'touchdown' at %.9g, graph 0.96 offset 0.5, 0 textcolor rgb '#606060'\n",
+                t->touchdown_s, t->touchdown_s, t->touchdown_s);
+    if (isfinite(t->decided_s) && t->decided[0]) {
+        fputs("decided = ", f);
+        fs_gp_string(f, t->decided);
+        fprintf(f, "\nset arrow 2 from %.9g, graph 0 to %.9g, graph 1 nohead lw 1.5 lc rgb '#c02020'\n"
+                   "set label 2 decided at %.9g, graph 0.88 right offset -0.5, 0 textcolor rgb '#c02020'\n",
+                t->decided_s, t->decided_s, t->decided_s);
+    }
 }
 
 /* One panel: the columns whose names pass `pick`, coloured by their number (chain), dashed by kind. */
@@ -375,7 +413,9 @@ static int fill_run_script(FILE *f, const void *user)
                "set datafile separator ','\nset datafile columnheaders\n"
                "set multiplot layout %d,2 title run_title",
             60 + 330 * rows, rows);
-    fprintf(f, "\nset grid\nset autoscale xfix\nset xlabel 'time (s)'\nset key outside right top samplen 2 noenhanced\n"
+    fputc('\n', f);
+    trial_marks(f, t);
+    fprintf(f, "set grid\nset autoscale xfix\nset xlabel 'time (s)'\nset key outside right top samplen 2 noenhanced\n"
                "set title 'ankle drop: first height minus height (mm)'\nset ylabel 'ankle drop (mm)'\n"
                "plot data using 1:((%.17g - column(%d)) * 1000) with lines lw 2 lc rgb '#1f5fa0' notitle\n"
                "set title 'contact points with the ground'\nset ylabel 'contact points'\nset yrange [0:*]\n"

@@ -130,6 +130,16 @@ check_that "plot --out --replace: the chart beside the folder's own files" png_o
 "$fs" plot "$tmp/trial1" >/dev/null 2>&1
 check_that "plot of a trial's folder: a whole PNG" png_ok "$tmp/trial1/plot.png"
 check_that "plot of a trial's folder: the lean panel" grep -q "ylabel 'lean (deg)'" "$tmp/trial1/plot.gp"
+# issue 32 item 4: touchdown and the deciding rule's time marked where trial.json puts them, the
+# outcome and rule said (as data) on the mark and in the title
+td=$(sed -n 's/.*"touchdown_s":[[:space:]]*\([-0-9.e+]*\).*/\1/p' "$tmp/trial1/trial.json")
+end=$(sed -n 's/.*"end_time_s":[[:space:]]*\([-0-9.e+]*\).*/\1/p' "$tmp/trial1/trial.json")
+said=$(sed -n 's/.*"outcome":[[:space:]]*"\([a-z_]*\)".*/\1/p' "$tmp/trial1/trial.json")
+rule=$(sed -n 's/.*"rule":[[:space:]]*"\([a-z_]*\)".*/\1/p' "$tmp/trial1/trial.json")
+check_that "plot of a trial: touchdown marked at $td s" awk -v t="$td" '/^set arrow 1 from/ { split($5, a, ","); d = a[1] - t; ok = d < 1e-6 && d > -1e-6 } END { exit !ok }' "$tmp/trial1/plot.gp"
+check_that "plot of a trial: its decision marked at $end s" awk -v t="$end" '/^set arrow 2 from/ { split($5, a, ","); d = a[1] - t; ok = d < 1e-6 && d > -1e-6 } END { exit !ok }' "$tmp/trial1/plot.gp"
+check_that "plot of a trial: the outcome '$said ($rule)' said" grep -q "^decided = '$said ($rule)'" "$tmp/trial1/plot.gp"
+check_that "plot of a trial: the title names the seed and the outcome" grep -q "seed 1: $said ($rule)" "$tmp/trial1/plot.gp"
 
 for d in camp sweep heat; do
     "$fs" plot "$tmp/$d" >"$tmp/out.txt" 2>"$tmp/err.txt"
