@@ -33,6 +33,7 @@ typedef struct cli_args {
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
     int force;                      /* --force: compare results of different provenance */
     int equivalence;                /* --equivalence: compare judges equivalence to a reference */
+    int all;                        /* --all: compare's Markdown lists every quantity */
     int mjcf;                       /* --mjcf: export as MuJoCo MJCF */
     const char *shard;              /* --shard I/N (campaign) */
     int fresh;                      /* --fresh: start a campaign over, its journal removed */
@@ -152,11 +153,20 @@ void cli_machine(char *out, size_t size);
 /* The 1-minute load average from /proc/loadavg, or -1 when it cannot be read. */
 double cli_load_average(void);
 
+/* A CSV field's number: v in fmt into buf, or "" when v is not finite (in every CSV footsim
+ * writes, a missing value is an empty field). */
+const char *cli_csv_num(char *buf, size_t size, const char *fmt, double v);
+
+typedef struct fs_provenance fs_provenance;
+/* Writes dir/STEM.provenance.json beside dir/csv (fs_provenance_write_beside): p, and how the file
+ * was made: "command", "date_utc", "machine" (NULL: null), "load_average_start" and "_end" (below
+ * 0 or NAN: null). An fs_status. */
+int cli_csv_beside(const char *dir, const char *csv, const fs_provenance *p, const char *command, const char *date_utc,
+                   const char *machine, double load_start, double load_end, struct fs_error *err);
 /* What made a bench's results (fs_provenance.h): the files of the n scenarios it loaded, relative
  * to the shipped scenarios/ folder, with their hashes; settings as text (which columns vary); no
  * overrides (benches take none) and no seeds (set them when the runs draw from one). An fs_status;
  * fs_provenance_free releases p, also after a failure. */
-typedef struct fs_provenance fs_provenance;
 int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings,
                          struct fs_error *err);
 

@@ -22,7 +22,7 @@ typedef struct command {
 const char *const cli_run_files[] = {"metrics.json", "trajectory.csv", "frames", "video.mp4", NULL};
 const char *const cli_trial_files[] = {"trial.json", "trajectory.csv", "frames", "video.mp4", NULL};
 const char *const cli_walk_files[] = {"walk.json", "frames", "video.mp4", NULL};
-const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "success.png",
+const char *const cli_campaign_files[] = {"summary.md", "summary.csv", "summary.json", "trials.csv", "schema.sql", "success.png",
                                           "chart.dat", "chart.gp", "trials.journal", NULL};
 const char *const cli_compare_files[] = {"frames", "filmstrip.png", "video.mp4", NULL};
 
@@ -81,14 +81,20 @@ static const command commands[] = {
      "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
      "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
      "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
-    {"compare", cli_compare, "RESULT BASELINE", "--force --equivalence",
-     "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
-     "  baseline's 95 % interval or a median moves further than the baseline's tolerance; exit 2 when\n"
-     "  they were made with other seeds, overrides or input files, unless --force (a version that\n"
-     "  differs is only reported). --equivalence judges RESULT, run at another setting (--set\n"
-     "  run.step_s=...), against BASELINE as a reference campaign of the same seeds and inputs: exit 1\n"
-     "  unless every cell's success intervals overlap and its medians of impulse, final lean, ankle\n"
-     "  drop at rest, settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
+    {"compare", cli_compare, "RESULT BASELINE", "--force --equivalence --json --all",
+     "Compares two summary.json files and prints, as Markdown, what is outside what the baseline\n"
+     "  allows (--all: every quantity of every cell, with its verdict), or with --json one JSON object:\n"
+     "  every quantity with its baseline, result, allowed range and verdict, the provenance's\n"
+     "  differences (a changed input by its path), the counts, the verdict and the exit status.\n"
+     "  A step count (median_steps) is reported, never judged. Exit 0 when every quantity is within,\n"
+     "  1 when a success rate leaves the baseline's 95 % interval, a cell has more undecided or hung\n"
+     "  trials, a median moves further than the baseline's tolerance or a cell is missing; 2 when a\n"
+     "  file cannot be read as a campaign's summary.json; 6 when they were made with other seeds,\n"
+     "  overrides or input files, unless --force (a version or settings that differ are only\n"
+     "  reported). --equivalence judges RESULT, run at another setting (--set run.step_s=...),\n"
+     "  against BASELINE as a reference campaign of the same seeds and inputs: exit 1 unless every\n"
+     "  cell's success intervals overlap and its medians of impulse, final lean, ankle drop at rest,\n"
+     "  settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
     {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out --replace",
      "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
      "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
@@ -162,7 +168,7 @@ static void command_help(const command *c)
     if (strstr(c->options, "--force"))
         printf(" [--force]");
     if (strstr(c->options, "--equivalence"))
-        printf(" [--equivalence]");
+        printf(" [--equivalence] [--all]");
     if (strstr(c->options, "--shard"))
         printf(" [--shard I/N] [--fresh]");
     if (strstr(c->options, "--steps"))
@@ -279,6 +285,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->force = 1;
         else if (!strcmp(arg, "--equivalence") && strstr(c->options, "--equivalence"))
             a->equivalence = 1;
+        else if (!strcmp(arg, "--all") && strstr(c->options, "--all"))
+            a->all = 1;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--mjcf"))

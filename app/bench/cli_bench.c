@@ -11,8 +11,8 @@
 #include <string.h>
 
 /* What benches write into their shared folder (never replaced as a folder; file by file). */
-static const char *const bench_files[] = {"precision.*", "precision_equivalence", "stability*", "speed.*", "skips.csv",
-                                          "render.csv", "own_code_before_after.csv", NULL};
+static const char *const bench_files[] = {"precision.*", "precision_equivalence", "stability*", "speed.*", "skips.*",
+                                          "render.*", "own_code_before_after.*", NULL};
 
 int cli_bench(const cli_args *a)
 {

@@ -6,7 +6,8 @@
  * Every time is the wall time of building the world, stepping and measuring (what 'footsim run',
  * 'trial' or 'walk' spends between reading its files and writing its results), the median of
  * repeated runs; each scene's files are read once, before it is timed. A pair (with and without a skip) takes turns run by run, so that other load on the machine
- * hits both alike. Writes DIR/speed.csv, skips.csv, speed.md, speed.gp and speed.png. */
+ * hits both alike. Writes DIR/speed.csv, skips.csv (each with its NAME.provenance.json: the machine,
+ * the date, the load and what made it), speed.md, speed.gp and speed.png. */
 #include "cli.h"
 
 #include "footsim/base/fs_stats.h"
@@ -435,17 +436,8 @@ static figures figures_of(const timing *t)
 
 static const char *runner_name(runner r) { return r == BY_RUN ? "run" : r == BY_TRIAL ? "trial" : "walk"; }
 
-static void speed_header(FILE *f, const context *c)
+static void speed_csv(FILE *f, const timing *t, int n)
 {
-    fprintf(f, "# footsim bench speed%s, %s, load average %.2f at the start and %.2f at the end\n",
-            strstr(c->command, "quick") ? " --quick" : "", c->date, c->load_start, c->load_end);
-    fprintf(f, "# machine: %s\n", c->machine);
-    fs_provenance_csv(c->prov, f);
-}
-
-static void speed_csv(FILE *f, const context *c, const timing *t, int n)
-{
-    speed_header(f, c);
     fprintf(f, "scene,runner,runs,steps,sim_s,step_s,wall_s,steps_per_s,rtf,us_per_step,profiled_wall_s,collision_pct,"
                "ode_pct,own_pct,own_loads_pct,own_springs_pct,own_contacts_pct,own_check_pct,own_caller_pct,clock_read_ns,"
                "joint_rows,mean_rows,max_rows,found_per_shape,kept_per_shape,most_found\n");
@@ -465,9 +457,8 @@ static void speed_csv(FILE *f, const context *c, const timing *t, int n)
 
 static double saving_pct(const skip_timing *t) { return 100 * (1 - t->with.wall_s / t->without.wall_s); }
 
-static void skips_csv(FILE *f, const context *c, const skip_timing *t, int n)
+static void skips_csv(FILE *f, const skip_timing *t, int n)
 {
-    speed_header(f, c);
     fprintf(f, "skip,scene,with,without,runs,with_steps,without_steps,with_s,without_s,saving_pct,"
                "with_us_per_step,without_us_per_step,same_result\n");
     for (int i = 0; i < n; i++) {
@@ -549,12 +540,12 @@ static void speed_gp(FILE *f)
                "set style data histograms\nset style fill solid 0.8 border -1\nset boxwidth 0.75\n"
                "set xtics rotate by -30 left noenhanced\nset grid ytics\nset key noenhanced\n"
                "set title 'steps per second on one core (median)'\nset logscale y\nset ylabel 'steps/s'\n"
-               "plot 'speed.csv' using 8:xtic(1) skip 4 title 'steps/s' lc rgb '#4477aa'\n"
+               "plot 'speed.csv' using 8:xtic(1) skip 1 title 'steps/s' lc rgb '#4477aa'\n"
                "unset logscale y\nset title 'share of a step'\nset ylabel '%%'\nset yrange [0:100]\n"
                "set style histogram rowstacked\nset key outside right\n"
-               "plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision' lc rgb '#ddaa33', "
-               "'' using 13 skip 4 title 'ODE step' lc rgb '#4477aa', "
-               "'' using 14 skip 4 title 'footsim own code' lc rgb '#bb5566'\n"
+               "plot 'speed.csv' using 12:xtic(1) skip 1 title 'collision' lc rgb '#ddaa33', "
+               "'' using 13 skip 1 title 'ODE step' lc rgb '#4477aa', "
+               "'' using 14 skip 1 title 'footsim own code' lc rgb '#bb5566'\n"
                "unset multiplot\n");
 }
 
@@ -567,16 +558,24 @@ typedef struct report {
     int nk;
 } report;
 
-static int fill_speed_csv(FILE *f, const void *d) { const report *r = d; speed_csv(f, r->c, r->t, r->n); return 1; }
-static int fill_skips_csv(FILE *f, const void *d) { const report *r = d; skips_csv(f, r->c, r->k, r->nk); return 1; }
+static int fill_speed_csv(FILE *f, const void *d) { const report *r = d; speed_csv(f, r->t, r->n); return 1; }
+static int fill_skips_csv(FILE *f, const void *d) { const report *r = d; skips_csv(f, r->k, r->nk); return 1; }
 static int fill_speed_md(FILE *f, const void *d) { const report *r = d; speed_md(f, r->c, r->t, r->n, r->k, r->nk); return 1; }
 static int fill_speed_gp(FILE *f, const void *d) { (void)d; speed_gp(f); return 1; }
 
 static fs_status write_report(const char *dir, const report *r, fs_error *err)
 {
+    /* the CSV files hold their header and rows only; where, when and what made them beside each */
+    const context *c = r->c;
     fs_status s = fs_write_in(dir, "speed.csv", fill_speed_csv, r, err);
     if (s == FS_OK)
+        s = (fs_status)cli_csv_beside(dir, "speed.csv", c->prov, c->command, c->date, c->machine, c->load_start,
+                                      c->load_end, err);
+    if (s == FS_OK)
         s = fs_write_in(dir, "skips.csv", fill_skips_csv, r, err);
+    if (s == FS_OK)
+        s = (fs_status)cli_csv_beside(dir, "skips.csv", c->prov, c->command, c->date, c->machine, c->load_start,
+                                      c->load_end, err);
     if (s == FS_OK)
         s = fs_write_in(dir, "speed.gp", fill_speed_gp, r, err);
     if (s == FS_OK)
