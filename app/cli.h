@@ -213,7 +213,9 @@ void cli_gp_string(FILE *f, const char *s);
  * (P/share/footsim beside P/bin/footsim, wherever P is; then the configured
  * CMAKE_INSTALL_FULL_DATADIR/footsim): in each as given, then in the kind's folder (scenarios/,
  * scenarios/feet/, terrains/), so 'footsim run static_load.ini' finds the shipped scenario. Paths
- * inside a file stay relative to that file. cli_data_find returns path itself when nothing is
+ * inside a file stay relative to that file, and a path in --set is looked for from the current
+ * folder first; either falls back to the same folders (cli_data_folders hands them to the
+ * library: fs_config_data_folders). cli_data_find returns path itself when nothing is
  * found (the reader then says so), else buf. cli_data_set_dir checks --data (exit 2 when it is not
  * a folder). cli_data_path resolves one of footsim's own names ("scenarios/static_load.ini") to
  * text that lives as long as the process. */
@@ -221,6 +223,10 @@ typedef enum cli_data_kind { CLI_DATA_NONE = -1, CLI_DATA_SCENARIO, CLI_DATA_DES
 int cli_data_set_dir(const char *dir);
 const char *cli_data_find(const char *path, cli_data_kind kind, char *buf, size_t size);
 const char *cli_data_path(const char *rel);
+void cli_data_folders(void);
+/* The shipped robots' folder (scenarios/robots under --data, here, the installed data) into buf,
+ * or NULL when there is none. */
+const char *cli_data_robots(char *buf, size_t size);
 /* The installed data folder the search ends with (for help). */
 const char *cli_data_installed(void);
 

@@ -202,15 +202,10 @@ typedef struct pitch_report {
 
 static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
-/* The robot files beside the design's folder (scenarios/robots/ for scenarios/feet/X.ini), sorted. */
-static void shipped_robots(const char *design, double K, double g, pitch_report *p, fs_error *err)
+/* The names of the .ini files in dir (at most MAX_ROBOTS, malloc'd), sorted; how many. */
+static int robot_files(const char *dir, char **names)
 {
-    char dir[FS_PATH_MAX];
-    snprintf(dir, sizeof dir, "%s", design);
-    char *slash = strrchr(dir, '/');
-    snprintf(slash ? slash + 1 : dir, sizeof dir - (size_t)(slash ? slash + 1 - dir : 0), "../robots");
     DIR *d = opendir(dir);
-    char *names[MAX_ROBOTS];
     int n = 0;
     for (struct dirent *e; d && (e = readdir(d)) && n < MAX_ROBOTS;) {
         size_t len = strlen(e->d_name);
@@ -220,6 +215,22 @@ static void shipped_robots(const char *design, double K, double g, pitch_report 
     if (d)
         closedir(d);
     qsort(names, (size_t)n, sizeof names[0], by_name);
+    return n;
+}
+
+/* The robot files beside the design's folder (scenarios/robots/ for scenarios/feet/X.ini); for a
+ * design elsewhere (a folder with no ../robots/ of .ini files), the shipped robots (cli_data_robots:
+ * --data, here, the installed data). */
+static void shipped_robots(const char *design, double K, double g, pitch_report *p, fs_error *err)
+{
+    char dir[FS_PATH_MAX];
+    snprintf(dir, sizeof dir, "%s", design);
+    char *slash = strrchr(dir, '/');
+    snprintf(slash ? slash + 1 : dir, sizeof dir - (size_t)(slash ? slash + 1 - dir : 0), "../robots");
+    char *names[MAX_ROBOTS];
+    int n = robot_files(dir, names);
+    if (!n && cli_data_robots(dir, sizeof dir))
+        n = robot_files(dir, names);
     for (int i = 0; i < n; i++) {
         char path[2 * FS_PATH_MAX];
         snprintf(path, sizeof path, "%s/%s", dir, names[i]);

@@ -203,7 +203,11 @@ static void command_help(const command *c)
                cli_data_installed());
     if (strstr(c->options, "--set"))
         printf("\n  --set overrides one value of the file (or, for a scenario, of its design) without editing\n"
-               "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
+               "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n"
+               "  Paths: a relative path in --set (--set scenario.design=myfoot.ini) is looked for from the\n"
+               "  current folder first, then relative to the file it overrides; a path inside a file is\n"
+               "  relative to that file. Either, when not there, is looked for under --data DIR, the current\n"
+               "  folder and the installed data, each in scenarios/, terrains/ and itself.\n");
 }
 
 /* Whether the space-separated options list names option as a whole word (--frames is not
@@ -374,6 +378,7 @@ int main(int argc, char **argv)
             return s < 0 ? 0 : s;
         if (a.data && (s = cli_data_set_dir(a.data)) != 0)
             return s;
+        cli_data_folders();
         /* relative data files not found as given: --data, here, the installed data */
         cli_data_kind kind = data_kind(a.command);
         char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX]; /* live until the command ends */
