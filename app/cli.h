@@ -156,6 +156,9 @@ double cli_load_average(void);
 /* A CSV field's number: v in fmt into buf, or "" when v is not finite (in every CSV footsim
  * writes, a missing value is an empty field). */
 const char *cli_csv_num(char *buf, size_t size, const char *fmt, double v);
+/* A CSV field's text: s itself, or s quoted into buf (quotes doubled) when it holds a comma, a
+ * quote or a line break (RFC 4180). */
+const char *cli_csv_text(char *buf, size_t size, const char *s);
 
 typedef struct fs_provenance fs_provenance;
 /* Writes dir/STEM.provenance.json beside dir/csv (fs_provenance_write_beside): p, and how the file

@@ -58,7 +58,7 @@ static const command commands[] = {
     {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data --shard --fresh",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
-     "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
+     "  trials.csv, schema.sql and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
      "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
      "  sections go to every trial. --frames-of foot=F,terrain=T,robot=R,seed=N (any of them; repeat\n"
      "  a key with / for several values: seed=1/3) also draws the chosen trials into\n"

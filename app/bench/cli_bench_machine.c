@@ -62,6 +62,24 @@ const char *cli_csv_num(char *buf, size_t size, const char *fmt, double v)
     return buf;
 }
 
+const char *cli_csv_text(char *buf, size_t size, const char *s)
+{
+    if (!strpbrk(s, ",\"\r\n"))
+        return s;
+    size_t n = 0;
+    if (size < 3)
+        return "";
+    buf[n++] = '"';
+    for (; *s && n + 3 < size; s++) {
+        if (*s == '"')
+            buf[n++] = '"';
+        buf[n++] = *s;
+    }
+    buf[n++] = '"';
+    buf[n] = 0;
+    return buf;
+}
+
 int cli_csv_beside(const char *dir, const char *csv, const fs_provenance *p, const char *command, const char *date_utc,
                    const char *machine, double load_start, double load_end, fs_error *err)
 {

@@ -444,9 +444,10 @@ static void speed_csv(FILE *f, const timing *t, int n)
     for (int i = 0; i < n; i++) {
         const outcome *m = &t[i].median;
         figures g = figures_of(&t[i]);
+        char q[256];
         fprintf(f, "%s,%s,%d,%ld,%.4f,%.3g,%.4f,%.0f,%.3f,%.2f,%.4f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%d,%.1f,"
                    "%d,%.2f,%.2f,%d\n",
-                t[i].sc->name, runner_name(t[i].sc->how), t[i].runs, m->steps, m->sim_s, m->sim_s / m->steps,
+                cli_csv_text(q, sizeof q, t[i].sc->name), runner_name(t[i].sc->how), t[i].runs, m->steps, m->sim_s, m->sim_s / m->steps,
                 m->wall_s, g.steps_per_s, g.rtf, g.us_per_step, t[i].prof_wall_s, g.collision_pct, g.ode_pct,
                 g.own_pct, stage_pct(&t[i].prof, FS_STAGE_LOADS), stage_pct(&t[i].prof, FS_STAGE_SPRINGS),
                 stage_pct(&t[i].prof, FS_STAGE_CONTACTS), stage_pct(&t[i].prof, FS_STAGE_CHECK),
@@ -465,8 +466,10 @@ static void skips_csv(FILE *f, const skip_timing *t, int n)
         const skip_timing *s = &t[i];
         if (s->skipped)
             continue;
-        fprintf(f, "%s,%s,%s,%s,%d,%ld,%ld,%.4f,%.4f,%.1f,%.2f,%.2f,%s\n", s->k->name, s->k->base.name, s->k->with,
-                s->k->without, s->runs, s->with.steps, s->without.steps, s->with.wall_s, s->without.wall_s,
+        char q[4][256]; /* a text with a comma ("ODE's, with the vertices inside added") quoted */
+        fprintf(f, "%s,%s,%s,%s,%d,%ld,%ld,%.4f,%.4f,%.1f,%.2f,%.2f,%s\n", cli_csv_text(q[0], sizeof q[0], s->k->name),
+                cli_csv_text(q[1], sizeof q[1], s->k->base.name), cli_csv_text(q[2], sizeof q[2], s->k->with),
+                cli_csv_text(q[3], sizeof q[3], s->k->without), s->runs, s->with.steps, s->without.steps, s->with.wall_s, s->without.wall_s,
                 saving_pct(s), 1e6 * s->with.wall_s / s->with.steps, 1e6 * s->without.wall_s / s->without.steps,
                 s->same ? "yes" : "no");
     }

@@ -259,10 +259,11 @@ static int fill_csv(FILE *f, const void *user)
         double k = !strcmp(sl, "stiffness") ? c->value : 12000, load = !strcmp(sl, "load") ? c->value : 26;
         double scale = !strcmp(sl, "mass") ? c->value : 1, drop = !strcmp(sl, "drop") ? c->value : 0;
         /* a quantity the run did not have (no failure: its time; a blow-up's non-finite figures): empty */
-        char b[7][32];
+        char b[7][32], q[2][128];
         fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s\n", sl,
                 STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop,
-                fs_check_class_name((fs_check_class)o->cls), o->cls, o->reason, o->where,
+                fs_check_class_name((fs_check_class)o->cls), o->cls, cli_csv_text(q[0], sizeof q[0], o->reason),
+                cli_csv_text(q[1], sizeof q[1], o->where),
                 cli_csv_num(b[0], sizeof b[0], "%.6g", o->time_s), fs_check_kind_name((fs_check_kind)o->drift),
                 cli_csv_num(b[1], sizeof b[1], "%.6g", o->drift_time_s), o->steps,
                 cli_csv_num(b[2], sizeof b[2], "%.4g", o->loop_m), cli_csv_num(b[3], sizeof b[3], "%.4g", o->excess_J),
