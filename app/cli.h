@@ -33,6 +33,7 @@ typedef struct cli_args {
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
     int force;                      /* --force: compare results of different provenance */
     int equivalence;                /* --equivalence: compare judges equivalence to a reference */
+    int all;                        /* --all: compare's Markdown lists every quantity */
     int mjcf;                       /* --mjcf: export as MuJoCo MJCF */
     const char *shard;              /* --shard I/N (campaign) */
     int fresh;                      /* --fresh: start a campaign over, its journal removed */
@@ -151,11 +152,23 @@ void cli_machine(char *out, size_t size);
 /* The 1-minute load average from /proc/loadavg, or -1 when it cannot be read. */
 double cli_load_average(void);
 
+/* A CSV field's number: v in fmt into buf, or "" when v is not finite (in every CSV footsim
+ * writes, a missing value is an empty field). */
+const char *cli_csv_num(char *buf, size_t size, const char *fmt, double v);
+/* A CSV field's text: s itself, or s quoted into buf (quotes doubled) when it holds a comma, a
+ * quote or a line break (RFC 4180). */
+const char *cli_csv_text(char *buf, size_t size, const char *s);
+
+typedef struct fs_provenance fs_provenance;
+/* Writes dir/STEM.provenance.json beside dir/csv (fs_provenance_write_beside): p, and how the file
+ * was made: "command", "date_utc", "machine" (NULL: null), "load_average_start" and "_end" (below
+ * 0 or NAN: null). An fs_status. */
+int cli_csv_beside(const char *dir, const char *csv, const fs_provenance *p, const char *command, const char *date_utc,
+                   const char *machine, double load_start, double load_end, struct fs_error *err);
 /* What made a bench's results (fs_provenance.h): the files of the n scenarios it loaded, relative
  * to the shipped scenarios/ folder, with their hashes; settings as text (which columns vary); no
  * overrides (benches take none) and no seeds (set them when the runs draw from one). An fs_status;
  * fs_provenance_free releases p, also after a failure. */
-typedef struct fs_provenance fs_provenance;
 int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings,
                          struct fs_error *err);
 
@@ -207,7 +220,9 @@ int cli_gnuplot_shown(const char *dir, const char *shown_dir, const char *script
  * (P/share/footsim beside P/bin/footsim, wherever P is; then the configured
  * CMAKE_INSTALL_FULL_DATADIR/footsim): in each as given, then in the kind's folder (scenarios/,
  * scenarios/feet/, terrains/), so 'footsim run static_load.ini' finds the shipped scenario. Paths
- * inside a file stay relative to that file. cli_data_find returns path itself when nothing is
+ * inside a file stay relative to that file, and a path in --set is looked for from the current
+ * folder first; either falls back to the same folders (cli_data_folders hands them to the
+ * library: fs_config_data_folders). cli_data_find returns path itself when nothing is
  * found (the reader then says so), else buf. cli_data_set_dir checks --data (exit 2 when it is not
  * a folder). cli_data_path resolves one of footsim's own names ("scenarios/static_load.ini") to
  * text that lives as long as the process. */
@@ -215,6 +230,10 @@ typedef enum cli_data_kind { CLI_DATA_NONE = -1, CLI_DATA_SCENARIO, CLI_DATA_DES
 int cli_data_set_dir(const char *dir);
 const char *cli_data_find(const char *path, cli_data_kind kind, char *buf, size_t size);
 const char *cli_data_path(const char *rel);
+void cli_data_folders(void);
+/* The shipped robots' folder (scenarios/robots under --data, here, the installed data) into buf,
+ * or NULL when there is none. */
+const char *cli_data_robots(char *buf, size_t size);
 /* The installed data folder the search ends with (for help). */
 const char *cli_data_installed(void);
 

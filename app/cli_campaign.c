@@ -31,6 +31,7 @@
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
+#include <cjson/cJSON.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -295,7 +296,7 @@ static int finish(const fs_campaign *c, const fs_trial_result *results, fs_outdi
         printf(failed ? "%d of %d expectations FAILED\n" : "all %d expectations met\n", failed ? failed : c->nexpect,
                c->nexpect);
     }
-    printf("results: %s/summary.md, summary.csv, summary.json, trials.csv, %s\n", dir,
+    printf("results: %s/summary.md, summary.csv, summary.json, trials.csv, schema.sql, %s\n", dir,
            drawn ? "success.png" : "chart.dat and chart.gp (no success.png: see above)");
     free(rows);
     return failed ? FS_EXPECTATION_FAILED : 0;
@@ -382,8 +383,8 @@ static int journal_folder(const char *journal)
     return ours ? 1 : -1;
 }
 
-/* Whether dir already holds this campaign's finished results: summary.json, and a trials.csv
- * whose provenance line is h's (the whole campaign), or a trials.journal with h's head (a shard). */
+/* Whether dir already holds this campaign's finished results: a summary.json whose provenance is
+ * h's (the whole campaign), or a trials.journal with h's head (a shard). */
 static int finished_already(const char *dir, const fs_journal_head *h, int sharded)
 {
     char path[FS_OUT_PATH + 32];
@@ -405,15 +406,8 @@ static int finished_already(const char *dir, const fs_journal_head *h, int shard
     snprintf(path, sizeof path, "%s/summary.json", dir);
     if (access(path, R_OK) != 0)
         return 0;
-    snprintf(path, sizeof path, "%s/trials.csv", dir);
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return 0;
-    char *line = NULL;
-    size_t cap = 0;
-    ssize_t n = getline(&line, &cap, f);
-    fclose(f);
-    int same = n > 0 && line[n - 1] == '\n' && (line[n - 1] = 0, !strcmp(line, h->provenance));
+    char *line = fs_campaign_summary_provenance(path);
+    int same = line && !strcmp(line, h->provenance);
     free(line);
     return same;
 }
@@ -896,7 +890,17 @@ int cli_compare(const cli_args *a)
     if (!a->input2)
         return cli_report(FS_BAD_INPUT, "compare: give two summary.json files: RESULT BASELINE");
     fs_error err;
-    fs_status s = a->equivalence ? fs_campaign_equivalence(a->input, NULL, a->input2, a->force, stdout, NULL, &err)
-                                 : fs_campaign_compare(a->input, a->input2, a->force, stdout, &err);
-    return s == FS_BAD_INPUT ? fail(&err) : (int)s;
+    const fs_compare_opts o = {.force = a->force, .all = a->all, .equivalence = a->equivalence};
+    cJSON *json = NULL;
+    /* --json: the JSON alone on stdout, whatever the outcome (the Markdown not printed) */
+    fs_status s = fs_campaign_compare_with(a->input, a->input2, &o, a->json ? NULL : stdout, a->json ? &json : NULL,
+                                           NULL, &err);
+    char *text = json ? cJSON_Print(json) : NULL;
+    if (text)
+        printf("%s\n", text);
+    free(text);
+    cJSON_Delete(json);
+    if (a->json && !text && s != FS_NO_MEMORY)
+        return cli_report(FS_NO_MEMORY, "compare: out of memory for the JSON");
+    return s == FS_OK || s == FS_EXPECTATION_FAILED ? (int)s : fail(&err);
 }

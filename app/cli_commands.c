@@ -209,15 +209,10 @@ typedef struct pitch_report {
 
 static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
-/* The robot files beside the design's folder (scenarios/robots/ for scenarios/feet/X.ini), sorted. */
-static void shipped_robots(const char *design, double K, double g, pitch_report *p, fs_error *err)
+/* The names of the .ini files in dir (at most MAX_ROBOTS, malloc'd), sorted; how many. */
+static int robot_files(const char *dir, char **names)
 {
-    char dir[FS_OUT_PATH];
-    const char *slash = strrchr(design, '/');
-    int fits = fs_path_format(dir, sizeof dir, "", NULL, "%.*s../robots", slash ? (int)(slash + 1 - design) : 0,
-                              design) == FS_OK;
-    DIR *d = fits ? opendir(dir) : NULL; /* none found: the report says so */
-    char *names[MAX_ROBOTS];
+    DIR *d = opendir(dir);
     int n = 0;
     for (struct dirent *e; d && (e = readdir(d)) && n < MAX_ROBOTS;) {
         size_t len = strlen(e->d_name);
@@ -227,6 +222,22 @@ static void shipped_robots(const char *design, double K, double g, pitch_report 
     if (d)
         closedir(d);
     qsort(names, (size_t)n, sizeof names[0], by_name);
+    return n;
+}
+
+/* The robot files beside the design's folder (scenarios/robots/ for scenarios/feet/X.ini); for a
+ * design elsewhere (a folder with no ../robots/ of .ini files), the shipped robots (cli_data_robots:
+ * --data, here, the installed data). */
+static void shipped_robots(const char *design, double K, double g, pitch_report *p, fs_error *err)
+{
+    char dir[FS_OUT_PATH];
+    const char *slash = strrchr(design, '/');
+    char *names[MAX_ROBOTS];
+    int n = 0;
+    if (fs_path_format(dir, sizeof dir, "", NULL, "%.*s../robots", slash ? (int)(slash + 1 - design) : 0, design) == FS_OK)
+        n = robot_files(dir, names);
+    if (!n && cli_data_robots(dir, sizeof dir))
+        n = robot_files(dir, names);
     for (int i = 0; i < n; i++) {
         char path[FS_OUT_PATH];
         if (names[i] && fs_path_format(path, sizeof path, "", NULL, "%s/%s", dir, names[i]) == FS_OK &&

@@ -73,6 +73,31 @@ static const char *beside_command(void)
     return dir;
 }
 
+void cli_data_folders(void)
+{
+    /* static on purpose: the library keeps the array (fs_config_data_folders), set once per process */
+    static const char *folders[5];
+    int n = 0;
+    const char *roots[] = {data_dir, ".", beside_command(), FS_DATADIR};
+    for (size_t r = 0; r < sizeof roots / sizeof *roots; r++)
+        if (roots[r] && *roots[r])
+            folders[n++] = roots[r];
+    folders[n] = NULL;
+    fs_config_data_folders(folders);
+}
+
+const char *cli_data_robots(char *buf, size_t size)
+{
+    const char *roots[] = {data_dir, ".", beside_command(), FS_DATADIR};
+    for (size_t r = 0; r < sizeof roots / sizeof *roots; r++) {
+        struct stat st;
+        if (roots[r] && *roots[r] && snprintf(buf, size, "%s/scenarios/robots", roots[r]) < (int)size &&
+            stat(buf, &st) == 0 && S_ISDIR(st.st_mode))
+            return buf;
+    }
+    return NULL;
+}
+
 const char *cli_data_installed(void) { return *beside_command() ? beside_command() : FS_DATADIR; }
 
 const char *cli_data_find(const char *path, cli_data_kind kind, char *buf, size_t size)

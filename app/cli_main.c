@@ -53,7 +53,7 @@ static const command commands[] = {
     {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data --shard --fresh",
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
-     "  trials.csv and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
+     "  trials.csv, schema.sql and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
      "  expectation of the file fails. --set campaign.seeds=5 changes the campaign file; other\n"
      "  sections go to every trial. --frames-of foot=F,terrain=T,robot=R,seed=N (any of them; repeat\n"
      "  a key with / for several values: seed=1/3) also draws the chosen trials into\n"
@@ -76,14 +76,20 @@ static const command commands[] = {
      "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
      "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
      "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
-    {"compare", cli_compare, "RESULT BASELINE", "--force --equivalence",
-     "Compares two summary.json files and prints what changed. Exit 1 when a success rate leaves the\n"
-     "  baseline's 95 % interval or a median moves further than the baseline's tolerance; exit 2 when\n"
-     "  they were made with other seeds, overrides or input files, unless --force (a version that\n"
-     "  differs is only reported). --equivalence judges RESULT, run at another setting (--set\n"
-     "  run.step_s=...), against BASELINE as a reference campaign of the same seeds and inputs: exit 1\n"
-     "  unless every cell's success intervals overlap and its medians of impulse, final lean, ankle\n"
-     "  drop at rest, settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
+    {"compare", cli_compare, "RESULT BASELINE", "--force --equivalence --json --all",
+     "Compares two summary.json files and prints, as Markdown, what is outside what the baseline\n"
+     "  allows (--all: every quantity of every cell, with its verdict), or with --json one JSON object:\n"
+     "  every quantity with its baseline, result, allowed range and verdict, the provenance's\n"
+     "  differences (a changed input by its path), the counts, the verdict and the exit status.\n"
+     "  A step count (median_steps) is reported, never judged. Exit 0 when every quantity is within,\n"
+     "  1 when a success rate leaves the baseline's 95 % interval, a cell has more undecided or hung\n"
+     "  trials, a median moves further than the baseline's tolerance or a cell is missing; 2 when a\n"
+     "  file cannot be read as a campaign's summary.json; 6 when they were made with other seeds,\n"
+     "  overrides or input files, unless --force (a version or settings that differ are only\n"
+     "  reported). --equivalence judges RESULT, run at another setting (--set run.step_s=...),\n"
+     "  against BASELINE as a reference campaign of the same seeds and inputs: exit 1 unless every\n"
+     "  cell's success intervals overlap and its medians of impulse, final lean, ankle drop at rest,\n"
+     "  settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
     {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out --replace",
      "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
      "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
@@ -157,7 +163,7 @@ static void command_help(const command *c)
     if (strstr(c->options, "--force"))
         printf(" [--force]");
     if (strstr(c->options, "--equivalence"))
-        printf(" [--equivalence]");
+        printf(" [--equivalence] [--all]");
     if (strstr(c->options, "--shard"))
         printf(" [--shard I/N] [--fresh]");
     if (strstr(c->options, "--steps"))
@@ -192,7 +198,11 @@ static void command_help(const command *c)
                cli_data_installed());
     if (strstr(c->options, "--set"))
         printf("\n  --set overrides one value of the file (or, for a scenario, of its design) without editing\n"
-               "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n");
+               "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n"
+               "  Paths: a relative path in --set (--set scenario.design=myfoot.ini) is looked for from the\n"
+               "  current folder first, then relative to the file it overrides; a path inside a file is\n"
+               "  relative to that file. Either, when not there, is looked for under --data DIR, the current\n"
+               "  folder and the installed data, each in scenarios/, terrains/ and itself.\n");
 }
 
 /* Whether the space-separated options list names option as a whole word (--frames is not
@@ -274,6 +284,8 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             a->force = 1;
         else if (!strcmp(arg, "--equivalence") && strstr(c->options, "--equivalence"))
             a->equivalence = 1;
+        else if (!strcmp(arg, "--all") && strstr(c->options, "--all"))
+            a->all = 1;
         else if (!strcmp(arg, "--json"))
             a->json = 1;
         else if (!strcmp(arg, "--mjcf"))
@@ -383,6 +395,7 @@ int main(int argc, char **argv)
             return s < 0 ? 0 : s;
         if (a.data && (s = cli_data_set_dir(a.data)) != 0)
             return s;
+        cli_data_folders();
         /* relative data files not found as given: --data, here, the installed data */
         cli_data_kind kind = data_kind(a.command);
         char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX]; /* live until the command ends */

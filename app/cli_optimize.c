@@ -81,7 +81,6 @@ static int fill_evaluations(FILE *f, const void *user)
     const optimize_out *x = user;
     const fs_optimize *o = x->o;
     const fs_campaign *c = &o->campaign;
-    fs_provenance_csv(x->prov, f);
     fputs("evaluation", f);
     for (int p = 0; p < o->nparams; p++)
         fprintf(f, ",%s", o->param[p].key);
@@ -91,12 +90,14 @@ static int fill_evaluations(FILE *f, const void *user)
     fputc('\n', f);
     for (int n = 0; n < x->run->nlog; n++) {
         const evaluation *e = &x->run->log[n];
+        char b[32];
         fprintf(f, "%d", n + 1);
         for (int p = 0; p < o->nparams; p++)
-            fprintf(f, ",%.17g", e->x[p]);
-        fprintf(f, ",%.17g,%.17g", e->objective, e->shortfall);
+            fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->x[p]));
+        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->objective));
+        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->shortfall));
         for (int i = 0; i < c->nexpect; i++)
-            fprintf(f, ",%.17g", e->rate[i]);
+            fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->rate[i]));
         fputc('\n', f);
     }
     return 1;
@@ -231,6 +232,8 @@ int cli_optimize(const cli_args *a)
     if (st == FS_OK)
         st = fs_write_in(out->partial, "evaluations.csv", fill_evaluations, &x, &err);
     if (st == FS_OK)
+        st = fs_provenance_write_beside(out->partial, "evaluations.csv", &prov, NULL, &err);
+    if (st == FS_OK)
         st = fs_write_in(out->partial, "result.md", fill_result, &x, &err);
     if (st == FS_OK)
         st = fs_outdir_commit(out, &err);
@@ -241,7 +244,7 @@ int cli_optimize(const cli_args *a)
         for (int p = 0; p < o->nparams; p++)
             printf(" %s = %.6g (start %.6g)", o->param[p].key, best[p], start[p]);
         printf("\ntargets %s on the search's seeds and %s on fresh seeds %d to %d\nresults: %s/result.md, "
-               "evaluations.csv\n",
+               "evaluations.csv, evaluations.provenance.json\n",
                fs_optimize_shortfall(&o->campaign, rows) == 0 ? "met" : "MISSED",
                fs_optimize_shortfall(&o->campaign, rows + 2 * ncells) == 0 ? "met" : "MISSED", o->validation_first_seed,
                o->validation_first_seed + o->campaign.seeds - 1, out->path);

@@ -7,13 +7,16 @@
 "$fs" bench precision --quick --out "$tmp/bench" >/dev/null 2>"$tmp/err.txt"
 status=$?
 check '[ "$status" -eq 0 ]'
-csv="$tmp/bench/precision.csv"
-# what made it first (the scenarios' files with their hashes, relative to scenarios/), then the header
-check 'head -1 "$csv" | grep -q "^# provenance: footsim .*; inputs static_load.ini=[0-9a-f]\{16\} .*landing_trial.ini=.*../terrains/rough.ini=.*; overrides none$"'
-check 'sed -n 2p "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default,impact_substeps$"'
+csv="$tmp/bench/precision.csv" eq_ref="$tmp/bench/precision_equivalence/reference"
+# the header first; what made it beside it (the scenarios' files with their hashes, relative to scenarios/)
+check 'tr -d " \t\n" <"$tmp/bench/precision.provenance.json" | grep -q "\"file\":\"precision.csv\",\"provenance\":{\"footsim\":\"[^\"]*\",\"overrides\":\[\],\"inputs\":\[{\"path\":\"static_load.ini\",\"hash\":\"[0-9a-f]\{16\}\"}.*\"landing_trial.ini\".*\"../terrains/rough.ini\""'
+check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default,impact_substeps$"'
+# read right: one header row, rows as wide, a blown-up run's error an empty field (issue 32)
+check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" csv "$csv:max_err_m" "$eq_ref/trials.csv:steps" >&2'
+check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" sqlite "$csv:max_err_m" "$eq_ref/summary.csv:trials" >&2'
 # 3 steps x 2 steppers: x 2 spring implementations for the chain and the two biomimetic landings, x 1 for the flat
 # foot (42); and each landing at 1e-3 and 1e-2 s with its touchdown in 8 substeps (6)
-check '[ "$(tail -n +3 "$csv" | wc -l)" -eq 48 ]'
+check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 48 ]'
 check '[ "$(awk -F, "\$16 == 8" "$csv" | wc -l)" -eq 6 ]'
 check '[ "$(awk -F, "\$1 == \"chain\" && \$16 != 1" "$csv" | wc -l)" -eq 0 ]'
 check 'grep -q "^Provenance: footsim " "$tmp/bench/precision.md"'

@@ -16,7 +16,7 @@ mv "$tmp/co/build/bench" "$tmp/bench"
 check '[ -z "$(tr -dc "\r" <"$tmp/err")" ]'
 check 'grep -q "^footsim bench speed: [0-9]*/[0-9]* measurements done, 0 failed, " "$tmp/err"'
 check 'grep -q "^bench speed: static_load: [0-9]* steps/s" "$tmp/err"'
-check 'sed -n 3p "$tmp/bench/speed.csv" | grep -q "^# provenance: footsim .*; seeds 1 to 1; .*; inputs static_load.ini=[0-9a-f]\{16\} .*landing_trial.ini="'
+check 'head -1 "$tmp/bench/speed.csv" | grep -q "^scene,runner," && tr -d " \t\n" <"$tmp/bench/speed.provenance.json" | grep -q "\"file\":\"speed.csv\",\"provenance\":{\"footsim\":.*\"inputs\":\[{\"path\":\"static_load.ini\",\"hash\":\"[0-9a-f]\{16\}\"}.*\"landing_trial.ini\".*\"seeds\":1,\"first_seed\":1}"'
 for f in speed.csv skips.csv speed.md speed.gp; do
     check '[ -s "$tmp/bench/$f" ]'
 done
@@ -24,8 +24,11 @@ if command -v gnuplot >/dev/null; then check '[ -s "$tmp/bench/speed.png" ]'; fi
 check '[ -z "$(ls "$tmp/bench" | grep tmp)" ]'
 check 'grep -q "^scene,runner,runs,steps,sim_s,step_s,wall_s,steps_per_s,rtf" "$tmp/bench/speed.csv"'
 check '[ "$(grep -c "^static_load," "$tmp/bench/speed.csv")" -eq 1 ]'
-check '[ "$(grep -vc "^#" "$tmp/bench/skips.csv")" -ge 6 ]'
-check 'grep -q "^# machine: " "$tmp/bench/speed.csv"'
+check '[ "$(wc -l <"$tmp/bench/skips.csv")" -ge 6 ]'
+check 'grep -q "\"machine\":[[:space:]]*\"[^\"]*cores online" "$tmp/bench/speed.provenance.json" && grep -q "\"file\":[[:space:]]*\"skips.csv\"" "$tmp/bench/skips.provenance.json"'
+# both CSV files read right: one header row, rows as wide, a missing value an empty field (issue 32)
+check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" csv "$tmp/bench/speed.csv:steps_per_s" "$tmp/bench/skips.csv:with_s" >&2'
+check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" sqlite "$tmp/bench/speed.csv:steps_per_s" "$tmp/bench/skips.csv:with_s" >&2'
 check 'grep -q "own code takes at most" "$tmp/bench/speed.md"'
 # every scene row: each share a percentage; the ODE step takes some time in every scene;
 # own_pct is the sum of its five stages (rounded to 0.1 each); steps = sim_s / step_s.

@@ -2,11 +2,13 @@
 # Installs footsim's Debian build dependencies when any is missing.
 # Run as root on Debian 12; otherwise it prints the apt-get line to run.
 set -eu
-pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev libosmesa6-dev libpng-dev libgsl-dev libnlopt-dev libxml2-dev gnuplot-nox"
+# python3 and sqlite3: the tests read every CSV file footsim writes with them (cli_csv)
+pkgs="cmake make gcc pkg-config libode-dev libccd-dev libinih-dev libcjson-dev libosmesa6-dev libpng-dev libgsl-dev libnlopt-dev libxml2-dev gnuplot-nox python3 sqlite3"
 # optional: MuJoCo, for the test that loads the MJCF export (export_mujoco skips without it); Debian's
 # Python with numpy, pytest and matplotlib, for the Python package, its tests and examples (the ctest
-# test python skips without pytest or numpy)
-optional="libmujoco-dev python3-numpy python3-pytest python3-matplotlib"
+# test python skips without pytest or numpy); pandas, for the test that reads the CSV files with
+# pandas.read_csv (cli_csv_pandas skips without it)
+optional="libmujoco-dev python3-numpy python3-pytest python3-matplotlib python3-pandas"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

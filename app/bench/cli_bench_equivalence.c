@@ -257,7 +257,7 @@ static int fill_equivalence(FILE *f, const void *user)
             sp->shown, sp->command, e->date, e->machine, e->load, sp->jobs, sp->jobs > 1 ? "s" : "", sp->jobs,
             e->ref.text, e->ref.wall_s);
     cli_equivalence_table(f, e);
-    const char *prov = e->provenance; /* a CSV line: "# provenance: footsim ..." */
+    const char *prov = e->provenance; /* the journal's line: "# provenance: footsim ..." */
     fprintf(f, "\nProvenance (of the reference): %s.\n", strncmp(prov, "# provenance: ", 14) ? prov : prov + 14);
     return 1;
 }

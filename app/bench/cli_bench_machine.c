@@ -3,7 +3,11 @@
 #include "cli.h"
 
 #include "footsim/model/fs_scenario.h"
+#include "footsim/io/fs_provenance.h"
 #include "footsim/sim/fs_ode.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
 
 #include <stdio.h>
 #include <string.h>
@@ -47,5 +51,51 @@ int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, 
     for (int i = 0; s == FS_OK && i < n; i++)
         s = fs_scenario_inputs(sc[i], p, err);
     snprintf(p->settings, sizeof p->settings, "%s", settings);
+    return s;
+}
+
+const char *cli_csv_num(char *buf, size_t size, const char *fmt, double v)
+{
+    if (!isfinite(v))
+        return "";
+    snprintf(buf, size, fmt, v);
+    return buf;
+}
+
+const char *cli_csv_text(char *buf, size_t size, const char *s)
+{
+    if (!strpbrk(s, ",\"\r\n"))
+        return s;
+    size_t n = 0;
+    if (size < 3)
+        return "";
+    buf[n++] = '"';
+    for (; *s && n + 3 < size; s++) {
+        if (*s == '"')
+            buf[n++] = '"';
+        buf[n++] = *s;
+    }
+    buf[n++] = '"';
+    buf[n] = 0;
+    return buf;
+}
+
+int cli_csv_beside(const char *dir, const char *csv, const fs_provenance *p, const char *command, const char *date_utc,
+                   const char *machine, double load_start, double load_end, fs_error *err)
+{
+    cJSON *run = cJSON_CreateObject();
+    int ok = run != NULL;
+    const char *texts[][2] = {{"command", command}, {"date_utc", date_utc}, {"machine", machine}};
+    for (int i = 0; i < 3; i++)
+        ok = ok && (texts[i][1] ? cJSON_AddStringToObject(run, texts[i][0], texts[i][1])
+                                : cJSON_AddNullToObject(run, texts[i][0])) != NULL;
+    const double loads[2] = {load_start, load_end};
+    static const char *const load_keys[2] = {"load_average_start", "load_average_end"};
+    for (int i = 0; i < 2; i++) /* unknown (-1, or not measured: NAN): null */
+        ok = ok && (loads[i] >= 0 ? cJSON_AddNumberToObject(run, load_keys[i], loads[i])
+                                  : cJSON_AddNullToObject(run, load_keys[i])) != NULL;
+    fs_status s = ok ? fs_provenance_write_beside(dir, csv, p, run, err)
+                     : fs_fail(err, FS_NO_MEMORY, "out of memory for %s's provenance", csv);
+    cJSON_Delete(run);
     return s;
 }

@@ -11,7 +11,8 @@
  * Error is the ankle's distance (and the hinge angles' difference) from the reference, largest and
  * RMS over the run; cost is the median wall time of the steps over repeated runs. Last, campaign
  * equivalence (cli_bench_equivalence.c) of scenarios/equivalence_flat.ini on one worker, into
- * DIR/precision_equivalence/ (its folder checked before anything runs). Writes DIR/precision.csv,
+ * DIR/precision_equivalence/ (its folder checked before anything runs). Writes DIR/precision.csv (and
+ * precision.provenance.json beside it),
  * precision.md (with the equivalence verdicts) and precision.png (gnuplot). */
 #include "cli.h"
 
@@ -328,18 +329,22 @@ static int fill_csv(FILE *f, const void *user)
     const report *x = user;
     const row *rows = x->rows;
     int n = x->n;
-    fs_provenance_csv(x->prov, f);
     fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
             "wall_s,wall_per_sim_s,rtf,status,pareto,default,impact_substeps\n");
     for (int i = 0; i < n; i++) {
         const row *r = &rows[i];
+        char b[7][32]; /* a figure a row does not have (not finite): an empty field */
         if (r->ok)
-            fprintf(f, "%s,%s,%d,%s,%g,%.4e,%.4e,%.4e,%.4e,%.4e,%.4e,%.4g,%s,%d,%d,%d\n", r->sc->name,
-                stepper_name(r->stepper), r->iterations, spring_name(r->springs), r->step_s, r->e.max_m, r->e.rms_m,
-                r->e.max_rad, r->e.rms_rad, r->wall_s, r->wall_s / r->sc->duration_s, rtf(r),
-                r->drifting ? "drifting" : "ok", r->pareto, r->is_default, substeps_of(r));
+            fprintf(f, "%s,%s,%d,%s,%g,%s,%s,%s,%s,%s,%s,%s,%s,%d,%d,%d\n", r->sc->name, stepper_name(r->stepper),
+                r->iterations, spring_name(r->springs), r->step_s, cli_csv_num(b[0], sizeof b[0], "%.4e", r->e.max_m),
+                cli_csv_num(b[1], sizeof b[1], "%.4e", r->e.rms_m), cli_csv_num(b[2], sizeof b[2], "%.4e", r->e.max_rad),
+                cli_csv_num(b[3], sizeof b[3], "%.4e", r->e.rms_rad), cli_csv_num(b[4], sizeof b[4], "%.4e", r->wall_s),
+                cli_csv_num(b[5], sizeof b[5], "%.4e", r->wall_s / r->sc->duration_s),
+                cli_csv_num(b[6], sizeof b[6], "%.4g", rtf(r)), r->drifting ? "drifting" : "ok", r->pareto,
+                r->is_default, substeps_of(r));
         else
-            fprintf(f, "%s,%s,%d,%s,%g,inf,inf,inf,inf,,,,blown_up,0,%d,%d\n", r->sc->name, stepper_name(r->stepper),
+            /* a blown-up run has no error nor speed: missing, empty fields */
+            fprintf(f, "%s,%s,%d,%s,%g,,,,,,,,blown_up,0,%d,%d\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, r->is_default, substeps_of(r));
     }
     return 1;
@@ -503,17 +508,17 @@ static int fill_chart(FILE *f, const void *user)
         "set key bottom right font ',8' spacing 0.9\n";
     static const char panel[] =
         "set title '%s'\n"
-        "plot 'precision.csv' skip 2 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
+        "plot 'precision.csv' skip 1 using (sel(s,'step','implicit',12)):(sel(s,'step','implicit',6)) "
         "with points pt 7 ps 1 lc rgb '#1f77b4' title 'dWorldStep, implicit springs', \\\n"
-        "     '' skip 2 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
+        "     '' skip 1 using (sel(s,'step','explicit',12)):(sel(s,'step','explicit',6)) with points pt 5 ps 1 "
         "lc rgb '#ff7f0e' title 'dWorldStep, explicit', \\\n"
-        "     '' skip 2 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
+        "     '' skip 1 using (sel(s,'quickstep','implicit',12)):(sel(s,'quickstep','implicit',6)) with points "
         "pt 6 ps 1 lc rgb '#2ca02c' title 'QuickStep, implicit', \\\n"
-        "     '' skip 2 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
+        "     '' skip 1 using (sel(s,'quickstep','explicit',12)):(sel(s,'quickstep','explicit',6)) with points "
         "pt 4 ps 1 lc rgb '#d62728' title 'QuickStep, explicit', \\\n"
-        "     '' skip 2 using (subs(s,12)):(subs(s,6)) with points pt 9 ps 1 lc rgb '#9467bd' "
+        "     '' skip 1 using (subs(s,12)):(subs(s,6)) with points pt 9 ps 1 lc rgb '#9467bd' "
         "title 'touchdown in substeps', \\\n"
-        "     '' skip 2 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
+        "     '' skip 1 using (dflt(s,12)):(dflt(s,6)) with points pt 3 ps 3 lw 2 lc rgb 'black' "
         "title 'scenario default', \\\n"
         "     $front%d using 1:2 with lines lw 2 lc rgb 'black' title 'Pareto front'\n";
     fprintf(f, "%s", head);
@@ -613,6 +618,13 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     const report x = {rows, nrows, scenes, nscenes, machine, a->quick, &prov, eq};
     if (s == FS_OK)
         s = fs_write_in(dir, "precision.csv", fill_csv, &x, &err);
+    if (s == FS_OK) {
+        char date[32];
+        time_t now = time(NULL);
+        strftime(date, sizeof date, "%Y-%m-%d %H:%M", gmtime(&now));
+        s = (fs_status)cli_csv_beside(dir, "precision.csv", &prov, a->quick ? "footsim bench precision --quick"
+                                      : "footsim bench precision", date, machine, NAN, cli_load_average(), &err);
+    }
     if (s == FS_OK)
         s = fs_write_in(dir, "precision.md", fill_md, &x, &err);
     if (s == FS_OK)

@@ -6,7 +6,8 @@
  * Every time is the wall time of building the world, stepping and measuring (what 'footsim run',
  * 'trial' or 'walk' spends between reading its files and writing its results), the median of
  * repeated runs; each scene's files are read once, before it is timed. A pair (with and without a skip) takes turns run by run, so that other load on the machine
- * hits both alike. Writes DIR/speed.csv, skips.csv, speed.md, speed.gp and speed.png. */
+ * hits both alike. Writes DIR/speed.csv, skips.csv (each with its NAME.provenance.json: the machine,
+ * the date, the load and what made it), speed.md, speed.gp and speed.png. */
 #include "cli.h"
 
 #include "footsim/base/fs_stats.h"
@@ -435,26 +436,18 @@ static figures figures_of(const timing *t)
 
 static const char *runner_name(runner r) { return r == BY_RUN ? "run" : r == BY_TRIAL ? "trial" : "walk"; }
 
-static void speed_header(FILE *f, const context *c)
+static void speed_csv(FILE *f, const timing *t, int n)
 {
-    fprintf(f, "# footsim bench speed%s, %s, load average %.2f at the start and %.2f at the end\n",
-            strstr(c->command, "quick") ? " --quick" : "", c->date, c->load_start, c->load_end);
-    fprintf(f, "# machine: %s\n", c->machine);
-    fs_provenance_csv(c->prov, f);
-}
-
-static void speed_csv(FILE *f, const context *c, const timing *t, int n)
-{
-    speed_header(f, c);
     fprintf(f, "scene,runner,runs,steps,sim_s,step_s,wall_s,steps_per_s,rtf,us_per_step,profiled_wall_s,collision_pct,"
                "ode_pct,own_pct,own_loads_pct,own_springs_pct,own_contacts_pct,own_check_pct,own_caller_pct,clock_read_ns,"
                "joint_rows,mean_rows,max_rows,found_per_shape,kept_per_shape,most_found\n");
     for (int i = 0; i < n; i++) {
         const outcome *m = &t[i].median;
         figures g = figures_of(&t[i]);
+        char q[256];
         fprintf(f, "%s,%s,%d,%ld,%.4f,%.3g,%.4f,%.0f,%.3f,%.2f,%.4f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f,%d,%.1f,"
                    "%d,%.2f,%.2f,%d\n",
-                t[i].sc->name, runner_name(t[i].sc->how), t[i].runs, m->steps, m->sim_s, m->sim_s / m->steps,
+                cli_csv_text(q, sizeof q, t[i].sc->name), runner_name(t[i].sc->how), t[i].runs, m->steps, m->sim_s, m->sim_s / m->steps,
                 m->wall_s, g.steps_per_s, g.rtf, g.us_per_step, t[i].prof_wall_s, g.collision_pct, g.ode_pct,
                 g.own_pct, stage_pct(&t[i].prof, FS_STAGE_LOADS), stage_pct(&t[i].prof, FS_STAGE_SPRINGS),
                 stage_pct(&t[i].prof, FS_STAGE_CONTACTS), stage_pct(&t[i].prof, FS_STAGE_CHECK),
@@ -465,17 +458,18 @@ static void speed_csv(FILE *f, const context *c, const timing *t, int n)
 
 static double saving_pct(const skip_timing *t) { return 100 * (1 - t->with.wall_s / t->without.wall_s); }
 
-static void skips_csv(FILE *f, const context *c, const skip_timing *t, int n)
+static void skips_csv(FILE *f, const skip_timing *t, int n)
 {
-    speed_header(f, c);
     fprintf(f, "skip,scene,with,without,runs,with_steps,without_steps,with_s,without_s,saving_pct,"
                "with_us_per_step,without_us_per_step,same_result\n");
     for (int i = 0; i < n; i++) {
         const skip_timing *s = &t[i];
         if (s->skipped)
             continue;
-        fprintf(f, "%s,%s,%s,%s,%d,%ld,%ld,%.4f,%.4f,%.1f,%.2f,%.2f,%s\n", s->k->name, s->k->base.name, s->k->with,
-                s->k->without, s->runs, s->with.steps, s->without.steps, s->with.wall_s, s->without.wall_s,
+        char q[4][256]; /* a text with a comma ("ODE's, with the vertices inside added") quoted */
+        fprintf(f, "%s,%s,%s,%s,%d,%ld,%ld,%.4f,%.4f,%.1f,%.2f,%.2f,%s\n", cli_csv_text(q[0], sizeof q[0], s->k->name),
+                cli_csv_text(q[1], sizeof q[1], s->k->base.name), cli_csv_text(q[2], sizeof q[2], s->k->with),
+                cli_csv_text(q[3], sizeof q[3], s->k->without), s->runs, s->with.steps, s->without.steps, s->with.wall_s, s->without.wall_s,
                 saving_pct(s), 1e6 * s->with.wall_s / s->with.steps, 1e6 * s->without.wall_s / s->without.steps,
                 s->same ? "yes" : "no");
     }
@@ -549,12 +543,12 @@ static void speed_gp(FILE *f)
                "set style data histograms\nset style fill solid 0.8 border -1\nset boxwidth 0.75\n"
                "set xtics rotate by -30 left noenhanced\nset grid ytics\nset key noenhanced\n"
                "set title 'steps per second on one core (median)'\nset logscale y\nset ylabel 'steps/s'\n"
-               "plot 'speed.csv' using 8:xtic(1) skip 4 title 'steps/s' lc rgb '#4477aa'\n"
+               "plot 'speed.csv' using 8:xtic(1) skip 1 title 'steps/s' lc rgb '#4477aa'\n"
                "unset logscale y\nset title 'share of a step'\nset ylabel '%%'\nset yrange [0:100]\n"
                "set style histogram rowstacked\nset key outside right\n"
-               "plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision' lc rgb '#ddaa33', "
-               "'' using 13 skip 4 title 'ODE step' lc rgb '#4477aa', "
-               "'' using 14 skip 4 title 'footsim own code' lc rgb '#bb5566'\n"
+               "plot 'speed.csv' using 12:xtic(1) skip 1 title 'collision' lc rgb '#ddaa33', "
+               "'' using 13 skip 1 title 'ODE step' lc rgb '#4477aa', "
+               "'' using 14 skip 1 title 'footsim own code' lc rgb '#bb5566'\n"
                "unset multiplot\n");
 }
 
@@ -567,16 +561,24 @@ typedef struct report {
     int nk;
 } report;
 
-static int fill_speed_csv(FILE *f, const void *d) { const report *r = d; speed_csv(f, r->c, r->t, r->n); return 1; }
-static int fill_skips_csv(FILE *f, const void *d) { const report *r = d; skips_csv(f, r->c, r->k, r->nk); return 1; }
+static int fill_speed_csv(FILE *f, const void *d) { const report *r = d; speed_csv(f, r->t, r->n); return 1; }
+static int fill_skips_csv(FILE *f, const void *d) { const report *r = d; skips_csv(f, r->k, r->nk); return 1; }
 static int fill_speed_md(FILE *f, const void *d) { const report *r = d; speed_md(f, r->c, r->t, r->n, r->k, r->nk); return 1; }
 static int fill_speed_gp(FILE *f, const void *d) { (void)d; speed_gp(f); return 1; }
 
 static fs_status write_report(const char *dir, const report *r, fs_error *err)
 {
+    /* the CSV files hold their header and rows only; where, when and what made them beside each */
+    const context *c = r->c;
     fs_status s = fs_write_in(dir, "speed.csv", fill_speed_csv, r, err);
     if (s == FS_OK)
+        s = (fs_status)cli_csv_beside(dir, "speed.csv", c->prov, c->command, c->date, c->machine, c->load_start,
+                                      c->load_end, err);
+    if (s == FS_OK)
         s = fs_write_in(dir, "skips.csv", fill_skips_csv, r, err);
+    if (s == FS_OK)
+        s = (fs_status)cli_csv_beside(dir, "skips.csv", c->prov, c->command, c->date, c->machine, c->load_start,
+                                      c->load_end, err);
     if (s == FS_OK)
         s = fs_write_in(dir, "speed.gp", fill_speed_gp, r, err);
     if (s == FS_OK)

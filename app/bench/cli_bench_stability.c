@@ -22,6 +22,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 enum { NSLICES = 4, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64 };
@@ -253,7 +254,6 @@ static int fill_csv(FILE *f, const void *user)
     const config *cfg = x->cfg;
     const outcome *out = x->out;
     int n = x->n;
-    fs_provenance_csv(x->prov, f);
     fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,class,class_code,reason,"
                "where,time_s,drift_reason,drift_time_s,steps,max_loop_err_m,max_energy_excess_J,energy_bound_J,"
                "max_speed_m_per_s,explicit_limit_s\n");
@@ -263,11 +263,17 @@ static int fill_csv(FILE *f, const void *user)
         const char *sl = SLICES[c->slice].name;
         double k = !strcmp(sl, "stiffness") ? c->value : 12000, load = !strcmp(sl, "load") ? c->value : 26;
         double scale = !strcmp(sl, "mass") ? c->value : 1, drop = !strcmp(sl, "drop") ? c->value : 0;
-        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%d,%s,%s,%.6g,%s,%.6g,%ld,%.4g,%.4g,%.4g,%.4g,%.4g\n", sl,
+        /* a quantity the run did not have (no failure: its time; a blow-up's non-finite figures): empty */
+        char b[7][32], q[2][128];
+        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s\n", sl,
                 STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop,
-                fs_check_class_name((fs_check_class)o->cls), o->cls, o->reason, o->where, o->time_s,
-                fs_check_kind_name((fs_check_kind)o->drift), o->drift_time_s, o->steps, o->loop_m, o->excess_J,
-                o->bound_J, o->speed_m_per_s, o->limit_s);
+                fs_check_class_name((fs_check_class)o->cls), o->cls, cli_csv_text(q[0], sizeof q[0], o->reason),
+                cli_csv_text(q[1], sizeof q[1], o->where),
+                cli_csv_num(b[0], sizeof b[0], "%.6g", o->time_s), fs_check_kind_name((fs_check_kind)o->drift),
+                cli_csv_num(b[1], sizeof b[1], "%.6g", o->drift_time_s), o->steps,
+                cli_csv_num(b[2], sizeof b[2], "%.4g", o->loop_m), cli_csv_num(b[3], sizeof b[3], "%.4g", o->excess_J),
+                cli_csv_num(b[4], sizeof b[4], "%.4g", o->bound_J),
+                cli_csv_num(b[5], sizeof b[5], "%.4g", o->speed_m_per_s), cli_csv_num(b[6], sizeof b[6], "%.4g", o->limit_s));
     }
     return 1;
 }
@@ -488,6 +494,14 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     report x = {cfg, out, n, a->quick, jobs, 0, &prov};
     if (s == FS_OK)
         s = fs_write_in(dir, "stability.csv", fill_csv, &x, &err);
+    if (s == FS_OK) {
+        char date[32], machine[512];
+        time_t now = time(NULL);
+        strftime(date, sizeof date, "%Y-%m-%d %H:%M", gmtime(&now));
+        cli_machine(machine, sizeof machine);
+        s = (fs_status)cli_csv_beside(dir, "stability.csv", &prov, a->quick ? "footsim bench stability --quick"
+                                      : "footsim bench stability", date, machine, NAN, cli_load_average(), &err);
+    }
     for (int i = 0; s == FS_OK && i < NSLICES; i++) {
         char gp[64], png[64];
         snprintf(gp, sizeof gp, "stability_%s.gp", SLICES[i].name);

@@ -5,6 +5,7 @@
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The index of name among items[0..*n), appended when new; -1 when there is no room. */
@@ -112,4 +113,27 @@ fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *
                        "under every robot, in order, each with a success rate and its interval); give a "
                        "summary.json written by footsim campaign", path);
     return FS_OK;
+}
+
+char *fs_campaign_summary_provenance(const char *path)
+{
+    fs_error err;
+    cJSON *root = fs_campaign_read_summary(path, &err);
+    fs_provenance p;
+    char *text = NULL;
+    size_t len = 0;
+    if (root && fs_provenance_from_json(cJSON_GetObjectItemCaseSensitive(root, "provenance"), &p, &err) == FS_OK) {
+        FILE *f = open_memstream(&text, &len);
+        if (f) {
+            fs_provenance_line(&p, f);
+            if (fclose(f) != 0)
+                free(text), text = NULL;
+        }
+        if (text && len && text[len - 1] == '\n')
+            text[len - 1] = 0;
+    }
+    if (root)
+        fs_provenance_free(&p);
+    cJSON_Delete(root);
+    return text;
 }

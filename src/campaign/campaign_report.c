@@ -1,5 +1,7 @@
 /* campaign_report.c: a campaign's result files (trials.csv, summary.csv, summary.md,
- * summary.json), its chart, and its expectations checked. */
+ * summary.json, schema.sql), its chart, and its expectations checked. The CSV files are RFC 4180:
+ * one header row, then the rows, a missing value an empty field (null in summary.json, – in
+ * summary.md); what made them is in summary.json and schema.sql. */
 #include "campaign_internal.h"
 
 #include "footsim/base/fs_path.h"
@@ -101,11 +103,11 @@ static fs_provenance provenance_of(const fs_campaign *c)
     return p;
 }
 
-/* The CSV files' first line: what made them. */
+/* The provenance line a journal keeps (the CSV files hold none: summary.json and schema.sql do). */
 static void csv_provenance(FILE *f, const fs_campaign *c)
 {
     fs_provenance p = provenance_of(c);
-    fs_provenance_csv(&p, f);
+    fs_provenance_line(&p, f);
 }
 
 char *fs_campaign_provenance(const fs_campaign *c)
@@ -136,7 +138,6 @@ static void csv_key_header(FILE *f, const fs_campaign *c)
 static int fill_trials(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    csv_provenance(f, c);
     csv_key_header(f, c);
     fputs(",seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
@@ -164,7 +165,6 @@ static int fill_trials(FILE *f, const out_ctx *x)
 static int fill_summary_csv(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
-    csv_provenance(f, c);
     csv_key_header(f, c);
     fputs(",trials,landed,fell,undecided,failed_numerics,hung,success_rate,ci_low,ci_high", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
@@ -179,7 +179,7 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
         csv_number(f, r->ci_high);
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             csv_number(f, r->median[m]);
-        fprintf(f, ",%s", fs_law_name(r->law));
+        fprintf(f, ",%s", r->law == FS_LAW_NONE ? "" : fs_law_name(r->law)); /* none: empty, as every missing value */
         csv_number(f, r->law_K);
         csv_number(f, r->law_critical_m);
         fputc('\n', f);
@@ -220,7 +220,7 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
             fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m) |", fs_law_name(r->law), r->law_K,
                     r->law_critical_m);
         else
-            fprintf(f, " %s |", r->law == FS_LAW_STANDS ? "stands (pitch held)" : fs_law_name(r->law));
+            fprintf(f, " %s |", r->law == FS_LAW_STANDS ? "stands (pitch held)" : r->law == FS_LAW_NONE ? "–" : fs_law_name(r->law));
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
@@ -287,7 +287,8 @@ static cJSON *summary_json(const out_ctx *x)
         ok &= cJSON_AddNumberToObject(o, "success_rate", r->success_rate) != NULL;
         ok &= cJSON_AddNumberToObject(o, "ci_low", r->ci_low) != NULL;
         ok &= cJSON_AddNumberToObject(o, "ci_high", r->ci_high) != NULL;
-        ok &= cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law)) != NULL;
+        ok &= (r->law == FS_LAW_NONE ? cJSON_AddNullToObject(o, "law_prediction") /* none: null, as every missing value */
+                                     : cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law))) != NULL;
         ok &= cJSON_AddNumberToObject(o, "law_K_N_m_per_rad", r->law_K) != NULL; /* NAN, INFINITY: null */
         ok &= cJSON_AddNumberToObject(o, "law_critical_com_height_m", r->law_critical_m) != NULL;
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
@@ -330,6 +331,120 @@ static int fill_summary_json(FILE *f, const out_ctx *x)
     return text != NULL;
 }
 
+/* ---- schema.sql: the CSV files as SQLite tables ------------------------------------------- */
+
+/* A column of a table schema.sql makes, as its declaration (`"name" TYPE`) or, with set, as the
+ * assignment that turns its empty text into NULL (`"name" = NULLIF("name", '')`). */
+typedef struct sql_list {
+    FILE *f;
+    int n, set;
+} sql_list;
+
+static void sql_column(sql_list *l, const char *name, const char *type)
+{
+    fputs(l->n++ ? (l->set ? ", " : ",\n") : "", l->f);
+    if (l->set)
+        fprintf(l->f, "\"%s\" = NULLIF(\"%s\", '')", name, name);
+    else
+        fprintf(l->f, "  \"%s\" %s", name, type);
+}
+
+/* SQL text: single quotes doubled. */
+static void sql_text(FILE *f, const char *s)
+{
+    fputc('\'', f);
+    for (; *s; s++) {
+        if (*s == '\'')
+            fputc('\'', f);
+        fputc(*s, f);
+    }
+    fputc('\'', f);
+}
+
+/* The columns of trials.csv (summary 0) or summary.csv (1), in the files' order, each with its type:
+ * the names and the order are those the CSV writers above write. */
+static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
+{
+    sql_column(l, "foot", "TEXT NOT NULL");
+    sql_column(l, "terrain", "TEXT NOT NULL");
+    sql_column(l, "robot", "TEXT NOT NULL");
+    for (int w = 0; w < c->nsweep; w++)
+        sql_column(l, c->sweep[w], "REAL");
+    if (!summary) {
+        static const char *const pose[] = {"x_m", "y_m", "yaw_deg", "pitch_deg", "roll_deg"};
+        sql_column(l, "seed", "INTEGER NOT NULL");
+        for (int k = 0; k < 5; k++)
+            sql_column(l, pose[k], "REAL");
+        sql_column(l, "outcome", "TEXT NOT NULL");
+        sql_column(l, "rule", "TEXT NOT NULL");
+        for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
+            sql_column(l, fs_campaign_metrics[m].name, strcmp(fs_campaign_metrics[m].name, "steps") ? "REAL" : "INTEGER");
+        sql_column(l, "failure", "TEXT");
+        return;
+    }
+    static const char *const counts[] = {"trials", "landed", "fell", "undecided", "failed_numerics", "hung"};
+    for (int k = 0; k < 6; k++)
+        sql_column(l, counts[k], "INTEGER NOT NULL");
+    sql_column(l, "success_rate", "REAL");
+    sql_column(l, "ci_low", "REAL");
+    sql_column(l, "ci_high", "REAL");
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+        char key[FS_NAME_MAX + 8];
+        snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);
+        sql_column(l, key, "REAL");
+    }
+    sql_column(l, "law_prediction", "TEXT");
+    sql_column(l, "law_K_N_m_per_rad", "REAL");
+    sql_column(l, "law_critical_com_height_m", "REAL");
+}
+
+/* One table filled from its CSV file: made, imported (the header row skipped), and every empty
+ * field (a missing value) turned into NULL, which .import would keep as empty text. */
+static void sql_table(FILE *f, const fs_campaign *c, const char *table, const char *csv, int summary)
+{
+    fprintf(f, "DROP TABLE IF EXISTS %s;\nCREATE TABLE %s (\n", table, table);
+    sql_columns(&(sql_list){f, 0, 0}, c, summary);
+    fprintf(f, "\n);\n.import --csv --skip 1 %s %s\nUPDATE %s SET ", csv, table, table);
+    sql_columns(&(sql_list){f, 0, 1}, c, summary);
+    fputs(";\n", f);
+}
+
+/* schema.sql: a sqlite3 script that makes the campaign's tables from its CSV files, with typed
+ * columns and NULL for a missing value, and its provenance as tables. */
+static int fill_schema(FILE *f, const out_ctx *x)
+{
+    const fs_campaign *c = x->c;
+    fprintf(f, "-- Campaign %s as SQLite tables: in this folder, `sqlite3 %s.sqlite < schema.sql` (sqlite3 3.32 or\n"
+               "-- later) makes tables trials (trials.csv) and summary (summary.csv), their columns typed, an empty\n"
+               "-- field NULL, and provenance, provenance_inputs and provenance_overrides (summary.json's).\n"
+               "BEGIN;\n",
+            c->name, c->name);
+    sql_table(f, c, "trials", "trials.csv", 0);
+    sql_table(f, c, "summary", "summary.csv", 1);
+    fs_provenance p = provenance_of(c);
+    fputs("DROP TABLE IF EXISTS provenance;\nCREATE TABLE provenance (footsim TEXT NOT NULL, seeds INTEGER NOT NULL, "
+          "first_seed INTEGER NOT NULL, settings TEXT NOT NULL);\nINSERT INTO provenance VALUES (", f);
+    sql_text(f, p.version ? p.version : "");
+    fprintf(f, ", %d, %d, ", p.nseeds, p.first_seed);
+    sql_text(f, p.settings);
+    fputs(");\nDROP TABLE IF EXISTS provenance_inputs;\nCREATE TABLE provenance_inputs (path TEXT NOT NULL, hash TEXT "
+          "NOT NULL);\n", f);
+    for (int i = 0; i < p.ninputs; i++) {
+        fputs("INSERT INTO provenance_inputs VALUES (", f);
+        sql_text(f, p.inputs[i].path);
+        fprintf(f, ", '%016llx');\n", p.inputs[i].hash);
+    }
+    fputs("DROP TABLE IF EXISTS provenance_overrides;\nCREATE TABLE provenance_overrides (position INTEGER NOT NULL, "
+          "override TEXT NOT NULL);\n", f);
+    for (int i = 0; i < p.noverrides; i++) {
+        fprintf(f, "INSERT INTO provenance_overrides VALUES (%d, ", i + 1);
+        sql_text(f, p.overrides[i]);
+        fputs(");\n", f);
+    }
+    fputs("COMMIT;\n", f);
+    return 1;
+}
+
 fs_status fs_campaign_write(const fs_campaign *c, const fs_trial_result *results, const fs_campaign_row *rows,
                             const char *dir, fs_error *err)
 {
@@ -339,6 +454,8 @@ fs_status fs_campaign_write(const fs_campaign *c, const fs_trial_result *results
         s = write_file(dir, "summary.csv", fill_summary_csv, &x, err);
     if (s == FS_OK)
         s = write_file(dir, "summary.md", fill_summary_md, &x, err);
+    if (s == FS_OK)
+        s = write_file(dir, "schema.sql", fill_schema, &x, err);
     return s;
 }
 

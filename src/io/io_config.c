@@ -9,6 +9,7 @@
 #include <ini.h>
 #include <errno.h>
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -441,8 +442,41 @@ static fs_status bad_value(fs_error *err, const char *where, const fs_key *k, co
     }
 }
 
-static fs_status bind_value(const fs_key *k, const char *value, const char *where, const char *dir, void *def,
-                            fs_error *err)
+/* The data folders a file's relative path falls back to (fs_config_data_folders), or NULL. */
+static const char *const *data_folders;
+
+void fs_config_data_folders(const char *const *folders) { data_folders = folders; }
+
+static int regular_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* Where a relative path that is not beside its file is found: from the current folder when it was
+ * given on the command line and is there; else under each data folder D, as D/scenarios/rel,
+ * D/terrains/rel or D/rel (the shipped files' paths are relative to those folders). 0: nowhere. */
+static int find_path(const char *rel, int from_command_line, char *out, size_t size)
+{
+    if (from_command_line && regular_file(rel)) {
+        char real[PATH_MAX];
+        if (!realpath(rel, real) || strlen(real) >= size)
+            return 0;
+        snprintf(out, size, "%s", real);
+        return 1;
+    }
+    static const char *const subs[] = {"scenarios/", "terrains/", ""};
+    for (int i = 0; data_folders && data_folders[i]; i++)
+        for (size_t k = 0; k < sizeof subs / sizeof *subs; k++) {
+            int n = snprintf(out, size, "%s/%s%s", data_folders[i], subs[k], rel);
+            if (n > 0 && (size_t)n < size && regular_file(out))
+                return 1;
+        }
+    return 0;
+}
+
+static fs_status bind_value(const fs_key *k, const char *value, const char *where, const char *dir,
+                            int from_command_line, void *def, fs_error *err)
 {
     char *slot = (char *)def + k->offset;
     double v;
@@ -523,11 +557,20 @@ static fs_status bind_value(const fs_key *k, const char *value, const char *wher
         int n = rel[0] == '/' ? snprintf(full, sizeof full, "%s", rel) : snprintf(full, sizeof full, "%s/%s", dir, rel);
         if (n < 0 || (size_t)n >= sizeof full)
             return bad_value(err, where, k, value, "is too long");
-        /* the system's reason: no such file, a folder, a FIFO, a symbolic link loop, no permission */
+        /* a relative path given on the command line: from the current folder first, as a command-
+           line path; then (and for a file's own paths) the file's folder, then the data folders */
+        char found[FS_PATH_MAX];
         struct stat st;
+        if (rel[0] != '/' && ((from_command_line && regular_file(rel)) || stat(full, &st) != 0) &&
+            find_path(rel, from_command_line, found, sizeof found)) {
+            n = (int)strlen(found);
+            memcpy(full, found, (size_t)n + 1);
+        }
+        /* the system's reason: no such file, a folder, a FIFO, a symbolic link loop, no permission */
         if (stat(full, &st) != 0)
-            return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s': %s (looked for %s); give a path relative to %s", where,
-                           k->name, rel, errno == ENOENT ? "no such file" : strerror(errno), full, dir);
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s': %s (looked for %s%s%s); give a path relative to %s%s", where,
+                           k->name, rel, errno == ENOENT ? "no such file" : strerror(errno), from_command_line ? rel : "",
+                           from_command_line ? ", then " : "", full, from_command_line ? "the current folder or " : "", dir);
         if (!S_ISREG(st.st_mode))
             return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s': %s is %s, not a file; give a file's path", where, k->name,
                            rel, full, S_ISDIR(st.st_mode) ? "a folder" : S_ISFIFO(st.st_mode) ? "a FIFO"
@@ -574,7 +617,7 @@ fs_status fs_config_number(const fs_key *k, const char *value, const char *where
     fs_key at_start = *k;
     at_start.offset = 0;
     union { double number; int integer; } slot;
-    fs_status s = bind_value(&at_start, value, where, "", &slot, err);
+    fs_status s = bind_value(&at_start, value, where, "", 0, &slot, err);
     if (s == FS_OK)
         *out = k->type == FS_KEY_INTEGER ? slot.integer : slot.number;
     return s;
@@ -622,7 +665,7 @@ fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *
         } else {
             snprintf(where, sizeof where, "footsim's default for [%s] %s", k->section, k->name);
         }
-        fs_status s = bind_value(k, value, where, dir, def, err);
+        fs_status s = bind_value(k, value, where, dir, e && e->line == 0, def, err);
         if (s != FS_OK)
             return s;
     }

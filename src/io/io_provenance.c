@@ -156,7 +156,7 @@ void fs_provenance_print(const fs_provenance *p, FILE *f)
         fputs(" none", f);
 }
 
-void fs_provenance_csv(const fs_provenance *p, FILE *f)
+void fs_provenance_line(const fs_provenance *p, FILE *f)
 {
     fputs("# provenance: ", f);
     fs_provenance_print(p, f);
@@ -260,4 +260,38 @@ fs_status fs_provenance_from_json(const cJSON *o, fs_provenance *p, fs_error *er
     p->nseeds = (int)seeds->valuedouble;
     p->first_seed = (int)first->valuedouble;
     return s;
+}
+
+typedef struct beside {
+    const char *name;
+    const fs_provenance *p;
+    const cJSON *run;
+} beside;
+
+static int fill_beside(FILE *f, const void *user)
+{
+    const beside *b = user;
+    cJSON *root = cJSON_CreateObject();
+    cJSON *run = b->run ? cJSON_Duplicate(b->run, 1) : cJSON_CreateNull();
+    int ok = root && cJSON_AddStringToObject(root, "file", b->name) != NULL;
+    ok = fs_json_put(root, "provenance", fs_provenance_json(b->p)) && ok;
+    ok = fs_json_put(root, "run", run) && ok;
+    char *text = ok ? cJSON_Print(root) : NULL;
+    if (text)
+        fprintf(f, "%s\n", text);
+    free(text);
+    cJSON_Delete(root);
+    return text != NULL;
+}
+
+fs_status fs_provenance_write_beside(const char *dir, const char *name, const fs_provenance *p, const cJSON *run,
+                                     fs_error *err)
+{
+    char file[FS_PATH_MAX];
+    size_t n = strlen(name);
+    int stem = n > 4 && !strcmp(name + n - 4, ".csv") ? (int)(n - 4) : (int)n;
+    if (snprintf(file, sizeof file, "%.*s.provenance.json", stem, name) >= (int)sizeof file)
+        return fs_fail(err, FS_BAD_INPUT, "%s: a file name too long for its provenance's", name);
+    const beside b = {name, p, run};
+    return fs_write_in(dir, file, fill_beside, &b, err);
 }

@@ -15,7 +15,8 @@ typedef enum fs_status {
     FS_BAD_INPUT = 2,          /* refused before anything was simulated or written */
     FS_NUMERICAL = 3,          /* the simulation produced a non-finite or exploding state */
     FS_IO = 4,                 /* a result could not be written */
-    FS_NO_MEMORY = 5           /* the system refused memory footsim needed (nothing was written) */
+    FS_NO_MEMORY = 5,          /* the system refused memory footsim needed (nothing was written) */
+    FS_INPUTS_DIFFER = 6       /* compare: two results made of other inputs, seeds or overrides */
 } fs_status;
 
 enum { FS_ERROR_MAX = 1024 };

@@ -40,6 +40,7 @@ typedef struct fs_metric {
     const char *name;      /* "peak_force_N" */
     const char *tolerance; /* default "relative, absolute" */
     int over_landed;       /* 1: only a trial that landed has it (its median is over those) */
+    int reported;          /* 1: compare reports it, never judges it (the step count follows the step) */
 } fs_metric;
 extern const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS];
 
@@ -153,7 +154,9 @@ const char *fs_law_name(int law);
 /* Fills rows[fs_campaign_ncells(c)] (by cell) from results[fs_campaign_ntrials(c)]. */
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows);
 
-/* Writes dir/trials.csv, dir/summary.csv and dir/summary.md. */
+/* Writes dir/trials.csv, dir/summary.csv (RFC 4180: one header row, a missing value an empty
+ * field, no provenance: summary.json has it), dir/summary.md and dir/schema.sql (a sqlite3 script
+ * that makes typed tables of the two CSV files, NULL for a missing value, and of the provenance). */
 fs_status fs_campaign_write(const fs_campaign *c, const fs_trial_result *results, const fs_campaign_row *rows,
                             const char *dir, fs_error *err);
 
@@ -179,15 +182,32 @@ int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *o
  * *failed of *total not met. FS_BAD_INPUT (said) when the file is not a campaign's summary. */
 fs_status fs_campaign_summary_expectations(const char *path, FILE *out, int *failed, int *total, fs_error *err);
 
-/* Compares two summary.json files, printing a table of what changed to out. First their
- * provenance: results made with other seeds, overrides or input files (by content) are refused
- * (FS_BAD_INPUT, each difference named) unless force, when they are only reported; another footsim
- * version is only reported (CI compares new code against an old baseline); a summary without
- * provenance is reported as not checked. Then FS_OK when every
- * success rate lies in its baseline's [ci_low, ci_high], no cell has more undecided trials than the
- * baseline's, and every median lies within the baseline's tolerance
- * (|result - baseline| <= relative * |baseline| + absolute); FS_EXPECTATION_FAILED when
- * not, or when a row is missing on either side; FS_BAD_INPUT when a file cannot be read as a summary. */
+/* Compares two summary.json files, cell by cell. First their provenance: results made with other
+ * seeds, overrides or input files (by content; a changed input named by its path) are refused
+ * (FS_INPUTS_DIFFER, each difference said) unless force, when they are only reported; another
+ * footsim version or other settings are only reported (CI compares new code against an old
+ * baseline); a summary without provenance is reported as not checked. Then FS_OK when every
+ * success rate lies in its baseline's [ci_low, ci_high], no cell has more undecided or hung trials
+ * than the baseline's, and every judged median lies within the baseline's tolerance
+ * (|result - baseline| <= relative * |baseline| + absolute); a metric marked reported (steps) is
+ * reported, never judged; FS_EXPECTATION_FAILED when not, or when a row is missing on either side;
+ * FS_BAD_INPUT (or the reading's status) when a file cannot be read as a summary.
+ * The Markdown (out, unless NULL) lists the quantities outside what is allowed, or every quantity
+ * with all; *json (unless json is NULL; the caller frees it) gets every quantity with its verdict
+ * ("identical", "within", "outside", "reported", "not judged", "not compared", "missing in the
+ * result/baseline"; for equivalence "equivalent", "differs"), the provenance's differences, the
+ * counts, the verdict, the exit status and the error, whatever the status. *nbad (unless NULL):
+ * how many quantities are outside (differ). */
+typedef struct fs_compare_opts {
+    int force;               /* compare results of other inputs anyway */
+    int all;                 /* the Markdown lists every quantity */
+    int equivalence;         /* judge equivalence to a reference (below) */
+    const char *result_name; /* names the result in the Markdown's heading (NULL: its path) */
+} fs_compare_opts;
+struct cJSON;
+fs_status fs_campaign_compare_with(const char *result_path, const char *baseline_path, const fs_compare_opts *o,
+                                   FILE *out, struct cJSON **json, int *nbad, fs_error *err);
+/* fs_campaign_compare_with without --all or JSON. */
 fs_status fs_campaign_compare(const char *result_path, const char *baseline_path, int force, FILE *out, fs_error *err);
 
 /* Campaign equivalence (docs/bench.md): whether a campaign run at some setting (a step, a solver)
@@ -197,17 +217,22 @@ fs_status fs_campaign_compare(const char *result_path, const char *baseline_path
  * final lean, ankle drop at rest, settle time, mean and final contacts) lie within 5 % of the reference's or
  * an absolute floor (0.5 deg, 0.1 mm, 5 ms, 1 contact), whichever is larger; peak force is reported,
  * not judged. FS_OK when every cell is equivalent, FS_EXPECTATION_FAILED when not or a row is
- * missing (*ndiffer, unless NULL: how many quantities differ), FS_BAD_INPUT as fs_campaign_compare.
- * result_name names the result in the table's heading (NULL: result_path). */
+ * missing (*ndiffer, unless NULL: how many quantities differ), FS_BAD_INPUT and FS_INPUTS_DIFFER as
+ * fs_campaign_compare. result_name names the result in the table's heading (NULL: result_path).
+ * The Markdown lists every judged quantity (fs_campaign_compare_with with all). */
 fs_status fs_campaign_equivalence(const char *result_path, const char *result_name, const char *reference_path,
                                   int force, FILE *out, int *ndiffer, fs_error *err);
 
 /* ---- provenance and the journal (campaign_journal.c) -------------------------------------- */
 
-/* The provenance line the CSV files begin with ("# provenance: footsim VERSION; seeds A to B;
+/* The provenance line a journal keeps ("# provenance: footsim VERSION; seeds A to B;
  * SETTINGS; inputs PATH=HASH ...; overrides ..."), without its newline; malloc'd (NULL: out of
  * memory). Two runs with the same line ran the same trials. */
 char *fs_campaign_provenance(const fs_campaign *c);
+
+/* The same line of the results a summary.json (path) records, to compare with
+ * fs_campaign_provenance's; malloc'd, NULL when the file has none or cannot be read. */
+char *fs_campaign_summary_provenance(const char *path);
 
 /* Shards: trial index belongs to shard (1-based) of nshards when index % nshards == shard - 1, so
  * any nshards splits any campaign into disjoint shares, each spread over every cell. */

@@ -87,7 +87,10 @@ fs_status fs_config_load(fs_config *cfg, const char *path, fs_error *err);
 fs_status fs_config_override(fs_config *cfg, const char *assignment, fs_error *err);
 
 /* Fills def from the schema's defaults, then from cfg; then refuses any entry of cfg that no
- * key of the schema used (unknown section or key, with the known ones listed). */
+ * key of the schema used (unknown section or key, with the known ones listed).
+ * A relative path (a file key) is looked for: given by an override (--set), first from the current
+ * folder, as a path on the command line is; then relative to cfg's file's folder; then under each
+ * data folder (fs_config_data_folders) D, as D/scenarios/PATH, D/terrains/PATH and D/PATH. */
 fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *def, fs_error *err);
 
 /* Reads value as the number or integer key k reads it from a file (the same rules and range, the
@@ -108,6 +111,12 @@ const char *fs_config_where(const fs_config *cfg, const char *section, const cha
 
 /* Whether the file or an override gives [section] name (any key of the section when name is NULL). */
 int fs_config_has(const fs_config *cfg, const char *section, const char *name);
+
+/* The data folders a relative path that is not beside its file falls back to, in order, NULL-
+ * terminated (the program's --data and installed data; none by default). The array and its text
+ * must outlive every load. Process-wide on purpose: the data a program reads are one setting of
+ * the program, set once before anything is loaded. */
+void fs_config_data_folders(const char *const *folders);
 
 /* The folder of cfg's file, for resolving relative paths. */
 void fs_config_dir(const fs_config *cfg, char *buf, size_t size);

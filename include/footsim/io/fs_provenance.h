@@ -1,6 +1,7 @@
 /* fs_provenance.h: what made a result, recorded in every results file footsim writes (a run's
- * metrics.json, a trial's trial.json, a campaign's summary.json, summary.md and its CSVs' first
- * line, the benches' CSVs): the footsim version (fs_version), every --set as the user gave it,
+ * metrics.json, a trial's trial.json, a campaign's summary.json and summary.md) or beside it (a
+ * CSV file holds data only, one header row and its rows: its record goes into the JSON beside it,
+ * a campaign's summary.json, or a sidecar NAME.provenance.json): the footsim version (fs_version), every --set as the user gave it,
  * each input file read with a hash of its content, the step and solver settings, and the seeds.
  *
  * Input paths are written relative to one folder (the campaign's, the scenario's, the bench's
@@ -59,9 +60,18 @@ fs_status fs_provenance_include(fs_provenance *p, const fs_provenance *from, fs_
 
 /* The record as one line of text without a newline: "footsim V; seeds A to B; SETTINGS; inputs
  * PATH=HASH ...; overrides 'SET' ..." ("seeds none", "overrides none" when there are none).
- * fs_provenance_csv writes it as a CSV file's first line, "# provenance: TEXT\n". */
+ * fs_provenance_line writes it as "# provenance: TEXT\n", the line a campaign's journal keeps
+ * (never a CSV file's: CSV files hold only their header and rows). */
 void fs_provenance_print(const fs_provenance *p, FILE *f);
-void fs_provenance_csv(const fs_provenance *p, FILE *f);
+void fs_provenance_line(const fs_provenance *p, FILE *f);
+
+/* Writes dir/STEM.provenance.json beside the CSV file dir/NAME (STEM: NAME without ".csv"), whole
+ * or not at all: {"file": NAME, "provenance": fs_provenance_json(p), "run": run} ("run": what else
+ * says how the file was made, e.g. the machine and the date of a benchmark; null when run is
+ * NULL; run is not freed). Status as fs_write_in. */
+struct cJSON;
+fs_status fs_provenance_write_beside(const char *dir, const char *name, const fs_provenance *p,
+                                     const struct cJSON *run, fs_error *err);
 
 /* The record as a JSON object (the caller frees it with cJSON_Delete; NULL when out of memory):
  * {"footsim", "overrides": [...], "inputs": [{"path", "hash"}...], "settings", "seeds",
