@@ -151,6 +151,23 @@ check_that "bars: 960x540 (got $(png_size "$tmp/camp/success.png"))" [ "$(png_si
 check_that "bars: a rate of zero drawn under the zero line" grep -q '== 0 ? -0.025' "$tmp/camp/chart.gp"
 check_that "bars: every cell's rate in the data" [ "$(grep -c '^"' "$tmp/camp/chart.dat")" -eq 2 ]
 check_that "heat map: one panel, 560x440" [ "$(png_size "$tmp/heat/success.png")" = 560x440 ]
+# issue 32 item 4: bars grouped by robot, each foot in one colour whatever the robot, the law marked
+mkdir -p "$tmp/grouped"
+law() { printf '{"foot": "%s", "terrain": "flat", "robot": "%s", "trials": 4, "landed": 2, "success_rate": 0.5, "ci_low": 0.15, "ci_high": 0.85, "law_prediction": "%s"}' "$1" "$2" "$3"; }
+echo "{\"campaign\": \"grouped\", \"seeds\": 4, \"first_seed\": 1, \"sweep\": null, \"sweep2\": null, \"rows\": [$(law bio r1 stands), $(law bio r2 topples), $(law flat r1 stands), $(law flat r2 none)]}" >"$tmp/grouped/summary.json"
+"$fs" plot "$tmp/grouped" >/dev/null 2>&1
+check_that "grouped bars: a whole PNG" png_ok "$tmp/grouped/success.png"
+# the series are foot-major (bio r1, bio r2, flat r1, flat r2): their rate's boxes in the foot's colour
+boxes=$(grep -o "using (\$0[-+.0-9]*):[0-9]* with boxes fs solid [0-9.]* lc [0-9]* title series[0-9]" "$tmp/grouped/chart.gp")
+check_that "grouped bars: each foot one colour (bio 1, flat 2)" \
+    [ "$(echo "$boxes" | sed 's/.* lc \([0-9]*\) title series\([0-9]\)/\2:\1/' | tr '\n' ' ')" = "1:1 2:1 3:2 4:2 " ]
+offs=$(echo "$boxes" | sed 's/using (\$0\([-+.0-9]*\)).*/\1/' | tr '\n' ' ')
+check_that "grouped bars: robot by robot (bio r1 < flat r1 < bio r2 < flat r2: $offs)" \
+    sh -c "echo '$offs' | awk '{ exit !(\$1 < \$3 && \$3 < \$2 && \$2 < \$4) }'"
+check_that "grouped bars: the law's verdict in the data (1 stands, 0 topples, -1 none)" \
+    [ "$(grep -v '^#' "$tmp/grouped/chart.dat" | awk '{ print $5, $9, $13, $17 }')" = "1 0 1 -1" ]
+check_that "grouped bars: the law marked (o stands, x topples) and keyed" \
+    sh -c "[ \$(grep -c 'with points pt 6' '$tmp/grouped/chart.gp') -ge 5 ] && grep -q \"title 'law: topples'\" '$tmp/grouped/chart.gp'"
 
 # ---- names reach gnuplot as data, never as code (issue 33, item 4) --------------------------------------
 # campaign files named with a quote, a gnuplot command and a newline: each drawn, nothing run

@@ -1,20 +1,27 @@
-# The chart of campaign roughness: 'gnuplot chart.gp' in this folder draws success.png.
+# A campaign's chart: 'gnuplot chart.gp' in this folder draws success.png.
 if (!exists("out")) out = 'success.png'
+# the names shown, as gnuplot strings: data, never code
+campaign = 'roughness'
+series1 = 'biomimetic, single_tall'
+series2 = 'biomimetic, drop_weight'
+series3 = 'flat, single_tall'
+series4 = 'flat, drop_weight'
+key1 = 'rough.rms_m'
 set terminal pngcairo size 960,540 noenhanced font 'sans,11'
 set output out
-set title 'Campaign roughness: success rate with 95 % Wilson interval (5 seeds each)'
+set title 'Campaign ' . campaign . ': success rate with 95 % Wilson interval (5 seeds each)'
 set ylabel 'success rate (landed / trials)'
 set yrange [-0.05:1.05]
 set ytics 0,0.2,1
 set grid ytics
-set key outside right top
+set key outside right top noenhanced
 set arrow from graph 0, first 0 to graph 1, first 0 nohead lc rgb 'gray30'
-set xlabel 'rough.rms_m'
+set xlabel key1
 plot 'chart.dat' index 0 using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc 1 notitle, \
-     '' index 0 using 1:2 with linespoints lw 2 pt 7 lc 1 title 'biomimetic, single_tall', \
-     'chart.dat' index 1 using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc 2 notitle, \
-     '' index 1 using 1:2 with linespoints lw 2 pt 7 lc 2 title 'biomimetic, drop_weight', \
-     'chart.dat' index 2 using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc 3 notitle, \
-     '' index 2 using 1:2 with linespoints lw 2 pt 7 lc 3 title 'flat, single_tall', \
-     'chart.dat' index 3 using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc 4 notitle, \
-     '' index 3 using 1:2 with linespoints lw 2 pt 7 lc 4 title 'flat, drop_weight'
+     '' index 0 using 1:2 with linespoints lw 2 dt 1 pt 7 lc 1 title series1, \
+     'chart.dat' index 1 using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc 1 notitle, \
+     '' index 1 using 1:2 with linespoints lw 2 dt 2 pt 7 lc 1 title series2, \
+     'chart.dat' index 2 using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc 2 notitle, \
+     '' index 2 using 1:2 with linespoints lw 2 dt 1 pt 7 lc 2 title series3, \
+     'chart.dat' index 3 using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc 2 notitle, \
+     '' index 3 using 1:2 with linespoints lw 2 dt 2 pt 7 lc 2 title series4

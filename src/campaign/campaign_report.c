@@ -542,7 +542,7 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
             series_title(c, k, title, sizeof title);
             fputs(" \"", f);
             fs_gp_data_text(f, title);
-            fputs("\": rate low high", f);
+            fputs("\": rate low high law (1 stands, 0 topples, -1 none)", f);
         }
         fputc('\n', f);
         for (int t = 0; t < c->nterrains; t++) {
@@ -553,7 +553,7 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
                 int foot, robot, base;
                 series_of(c, k, &foot, &robot, &base);
                 const fs_campaign_row *r = fs_campaign_row_of(c, x->rows, foot, t, robot);
-                fprintf(f, " %.17g %.17g %.17g", r->success_rate, r->ci_low, r->ci_high);
+                fprintf(f, " %.17g %.17g %.17g %d", r->success_rate, r->ci_low, r->ci_high, r->law);
             }
             fputc('\n', f);
         }
@@ -686,10 +686,12 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
     if (!c->nsweep) {
         /* bars drawn as boxes at known places (not gnuplot's histogram), so that a rate of zero gets
          * a thin bar under the zero line in its colour, with its interval (a vector from low to high:
-         * error bars would leave a hole at the rate); terrain names turned when
-         * they are wider than their group of bars (about 7.5 px a character at 11 pt) */
-        double group_px = (width - 400.0) / nt, bar = 0.8 / n;
-        fprintf(f, "set xrange [-0.6:%d.4]\nset xtics scale 0 noenhanced%s (", nt - 1,
+         * error bars would leave a hole at the rate); within a terrain the bars stand robot by robot
+         * (half a bar apart), each foot in its own colour, each robot in its own shade, and above
+         * each bar the law's verdict for its foot and robot (o stands, x topples); terrain names
+         * turned when they are wider than their group of bars (about 7.5 px a character at 11 pt) */
+        double group_px = (width - 400.0) / nt, bar = 0.8 / (n + 0.5 * (c->nrobots - 1));
+        fprintf(f, "set yrange [-0.05:1.12]\nset xrange [-0.6:%d.4]\nset xtics scale 0 noenhanced%s (", nt - 1,
                 7.5 * longest > 0.9 * group_px ? " rotate by 30 right" : "");
         for (int t = 0; t < nt; t++) /* each terrain's name under its group of bars */
             fprintf(f, "%sterrain%d %d", t ? ", " : "", t + 1, t);
@@ -699,23 +701,33 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
                    "font 'sans,9' tc rgb 'gray30'\nplot ",
                 bar);
         for (int k = 0; k < n; k++) {
-            double off = -0.4 + (k + 0.5) * bar;
-            int rate = 2 + 3 * k;
-            fprintf(f, "%s'chart.dat' using ($0%+.6g):%d with boxes lc %d title series%d, \\\n"
-                       "     '' using ($0%+.6g):(column(%d) == 0 ? -0.025 : 1/0) with boxes lc %d notitle, \\\n"
+            int foot, robot, base;
+            series_of(c, k, &foot, &robot, &base);
+            double off = -0.4 + (robot * c->nfeet + foot + 0.5 * robot + 0.5) * bar;
+            double shade = 0.75 - 0.5 * robot / (c->nrobots > 1 ? c->nrobots - 1 : 1);
+            int rate = 2 + 4 * k;
+            fprintf(f, "%s'chart.dat' using ($0%+.6g):%d with boxes fs solid %.3g lc %d title series%d, \\\n"
+                       "     '' using ($0%+.6g):(column(%d) == 0 ? -0.025 : 1/0) with boxes fs solid %.3g lc %d notitle, \\\n"
                        "     '' using ($0%+.6g):%d:(0):(column(%d) - column(%d)) with vectors heads size screen 0.004,90 "
-                       "lw 1 lc rgb 'black' notitle",
-                    k ? ", \\\n     " : "", off, rate, k + 1, k + 1, off, rate, k + 1, off, rate + 1, rate + 2,
-                    rate + 1);
+                       "lw 1 lc rgb 'black' notitle, \\\n"
+                       "     '' using ($0%+.6g):(column(%d) == 1 ? 1.07 : 1/0) with points pt 6 ps 1.2 lc %d notitle, \\\n"
+                       "     '' using ($0%+.6g):(column(%d) == 0 ? 1.07 : 1/0) with points pt 2 ps 1.2 lc %d notitle",
+                    k ? ", \\\n     " : "", off, rate, shade, foot + 1, k + 1, off, rate, shade, foot + 1, off,
+                    rate + 1, rate + 2, rate + 1, off, rate + 3, foot + 1, off, rate + 3, foot + 1);
         }
-        fputc('\n', f);
+        fputs(", \\\n     keyentry with points pt 6 lc rgb 'black' title 'law: stands', \\\n"
+              "     keyentry with points pt 2 lc rgb 'black' title 'law: topples'\n",
+              f);
         return 1;
     }
+    /* a line per series, each foot in its own colour and each robot in its own dash */
     fputs("set xlabel key1\nplot ", f);
     for (int k = 0; k < nseries(c); k++) {
+        int foot, robot, base;
+        series_of(c, k, &foot, &robot, &base);
         fprintf(f, "%s'chart.dat' index %d using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc %d "
-                   "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 pt 7 lc %d title series%d",
-                k ? ", \\\n     " : "", k, k + 1, k, k + 1, k + 1);
+                   "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 dt %d pt %d lc %d title series%d",
+                k ? ", \\\n     " : "", k, foot + 1, k, robot + 1, 7 + 2 * base, foot + 1, k + 1);
     }
     fputc('\n', f);
     return 1;
