@@ -1,24 +1,30 @@
-# The chart of campaign envelope: 'gnuplot chart.gp' in this folder draws success.png.
+# A campaign's chart: 'gnuplot chart.gp' in this folder draws success.png.
 if (!exists("out")) out = 'success.png'
+# the names shown, as gnuplot strings: data, never code
+campaign = 'envelope'
+series1 = 'biomimetic, flat'
+series2 = 'biomimetic, complex_uneven'
+key1 = 'springs.scale'
+key2 = 'robot.com_height_m'
 set terminal pngcairo size 1120,440 noenhanced font 'sans,10'
 set output out
-set multiplot layout 1,2 title 'Campaign envelope: success rate (5 seeds per point); law: o stands, x topples; line: the critical height K/(m g)'
+set multiplot layout 1,2 title 'Campaign ' . campaign . ': success rate (5 seeds per point); law: o stands, x topples; line: the critical height K/(m g)'
 set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')
 set cbrange [0:1]
 set cblabel 'success rate'
-set xlabel 'springs.scale'
-set ylabel 'robot.com_height_m'
+set xlabel key1
+set ylabel key2
 set logscale x
 set xrange [0.6819943394704735:146.80505487867589]
 set yrange [0.012499999999999999:0.34999999999999998]
 set key off
 set style fill solid 1.0 noborder
-set title 'biomimetic, flat'
+set title series1
 plot 'chart.dat' index 0 using 1:2:3:4:5:6:7 with boxxyerror lc palette, \
      '' index 0 using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \
      '' index 0 using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black', \
      '' index 0 every 6 using 1:9 with lines lw 2 lc rgb 'black'
-set title 'biomimetic, complex_uneven'
+set title series2
 plot 'chart.dat' index 1 using 1:2:3:4:5:6:7 with boxxyerror lc palette, \
      '' index 1 using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \
      '' index 1 using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black', \
