@@ -42,6 +42,13 @@ struct fs_sim_saved {
  * tolerance (the local error of a first-order step grows with h^2: a doubled step's is 4 times). */
 enum { GROW_AFTER = 4 };
 
+/* The largest ODE step at which an implicit spring-damper of stiffness k and damping c damps by c:
+ * c / k. ODE's soft row is implicit Euler, which damps by c + k h; the damping correction hands it
+ * c - k h, which it can only while k h <= c (fs_spring_soft): beyond, a contact or spring damps by
+ * k h, more the larger the step, and a rocking foot comes to rest sooner. Infinite without a spring
+ * or a damper. */
+static double damped_step(double k, double c) { return k > 0 && c > 0 ? c / k : INFINITY; }
+
 fs_status fs_sim_adapt_init(fs_sim *sim, fs_error *err)
 {
     const fs_scenario_def *d = &sim->sc->def;
@@ -50,6 +57,15 @@ fs_status fs_sim_adapt_init(fs_sim *sim, fs_error *err)
     sim->saved = calloc(1, sizeof *sim->saved);
     if (!sim->saved)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sim->sc->path);
+    sim->damped_contact_s = damped_step(sim->contact_k_N_per_m, sim->contact_c_Ns_per_m);
+    sim->damped_step_s = INFINITY;
+    for (int i = 0; i < sim->geom->nsprings; i++)
+        sim->damped_step_s = fmin(sim->damped_step_s, damped_step(sim->spring[i].k, sim->spring[i].c));
+    if (sim->has_achilles)
+        sim->damped_step_s = fmin(sim->damped_step_s, damped_step(sim->achilles.k, sim->achilles.c));
+    for (int i = 0; i < sim->geom->nhinges; i++)
+        sim->damped_step_s = fmin(sim->damped_step_s, damped_step(sim->geom->hinge[i].k_N_m_per_rad,
+                                                                  sim->geom->hinge[i].c_N_m_s_per_rad));
     /* the first step tried: the fixed step's level, at most step_s */
     sim->level = 0;
     while (d->step_max_s / ldexp(1, sim->level) > d->step_s && sim->level < FS_STEP_LEVELS - 1)
@@ -225,6 +241,10 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
         least++;
     if (sim->level > least)
         sim->level = least;
+    /* the dampers' limit (damped_step): while a foot touches, the contacts' too */
+    double cap = 2 * fmin(sim->damped_step_s, sim->contacts_now > 0 ? sim->damped_contact_s : INFINITY);
+    while (d->step_max_s / ldexp(1, sim->level) > cap && sim->level < least)
+        sim->level++;
     fs_sim_save_state(sim);
     int tries = 0;
     for (;;) {

@@ -146,6 +146,8 @@ typedef struct fs_sim {
     double horizon_s;      /* the next step ends at or before this time, s (fs_sim_set_horizon); 0: none */
     double step_taken_s;   /* the time the last fs_sim_step advanced by, s */
     double step_error_m;   /* the last accepted step's error estimate, m (0 with fixed steps) */
+    double damped_step_s;  /* the least c / k of the springs and hinge springs: the ODE step is at most this */
+    double damped_contact_s; /* c / k of the contacts: and at most this while a foot touches the ground */
     fs_step_stats stats;
 } fs_sim;
 
@@ -167,7 +169,10 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err);
  * the state checks' reference, ODE's random state) and the step tried at half the size. A step
  * grows (doubles) after 4 accepted in a row whose error was below a quarter of the tolerance, and
  * never ends past the horizon (fs_sim_set_horizon). A step whose state checks fail is rejected
- * like one beyond the tolerance, and fails only at the least step. The time advanced is
+ * like one beyond the tolerance, and fails only at the least step. An ODE step is at most c / k of
+ * every spring and damped hinge, and of the contacts while a foot touches: beyond it ODE's implicit
+ * damper damps by k h instead of c, so a rocking foot would come to rest sooner the larger the step
+ * (fs_spring_soft; docs/bench.md). The time advanced is
  * sim->step_taken_s; the ground force read after it is the mean over its two half steps. */
 void fs_sim_set_horizon(fs_sim *sim, double t_s);
 /* The median of the accepted steps, s: the level at which half of them had been taken (a step cut
