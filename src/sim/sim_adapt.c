@@ -13,6 +13,7 @@
 #include "sim_internal.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -222,6 +223,24 @@ static double difference_m(const fs_sim *sim, const body_state *whole, const bod
 
 /* ---- the step ----------------------------------------------------------------------------------- */
 
+/* Where the dampers' bound, not the error, sets the step (at rest, a foot standing), a doubled step
+ * accepted at once at the bound is followed by CRUISE_STEPS single ODE steps of the bound itself, each
+ * kept unless the set of foot shapes touching the ground changed (then put back and doubled), before
+ * the next doubled step checks the error again. Measured (docs/bench.md): 8 take the landing under
+ * drop_weight from 1719 to 1130 ODE steps over 0.5 s at 3e-6 m, its error and its campaign's
+ * verdict unchanged; 32 gave 1070. */
+enum { CRUISE_STEPS = 8 };
+
+/* The foot shapes in contact now, one bit each. */
+static uint64_t touching(const fs_sim *sim)
+{
+    uint64_t m = 0;
+    for (int i = 0; i < sim->contacts_now; i++)
+        if (sim->scratch->shape[i] >= 0)
+            m |= (uint64_t)1 << (sim->scratch->shape[i] & 63);
+    return m;
+}
+
 /* One ODE step of h from the state now (the driver's torques again after the first). */
 static fs_status one(fs_sim *sim, double h, int again, fs_error *err)
 {
@@ -242,11 +261,34 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
     if (sim->level > least)
         sim->level = least;
     /* the dampers' limit (damped_step): while a foot touches, the contacts' too */
-    double cap = 2 * fmin(sim->damped_step_s, sim->contacts_now > 0 ? sim->damped_contact_s : INFINITY);
-    while (d->step_max_s / ldexp(1, sim->level) > cap && sim->level < least)
-        sim->level++;
+    double bound = fmin(sim->damped_step_s, sim->contacts_now > 0 ? sim->damped_contact_s : INFINITY);
+    int bound_level = 0; /* the largest step the dampers allow */
+    while (d->step_max_s / ldexp(1, bound_level) > 2 * bound && bound_level < least)
+        bound_level++;
+    if (sim->level < bound_level)
+        sim->level = bound_level;
+    int capped = sim->level == bound_level && bound_level > 0; /* the dampers, not the error, set the step */
     fs_sim_save_state(sim);
     int tries = 0;
+    if (capped && sim->cruise_left > 0 && sim->contacts_now > 0) {
+        /* cruising at the dampers' bound: one ODE step of it, kept unless the contact set changed */
+        double h = bound, t0 = sim->time_s;
+        if (sim->horizon_s > t0 && t0 + h > sim->horizon_s - 0.5 * d->step_min_s)
+            h = sim->horizon_s - t0;
+        uint64_t before = touching(sim);
+        fs_error trial_err;
+        fs_status st = one(sim, h, tries++ > 0, &trial_err);
+        if (st == FS_OK && touching(sim) == before) {
+            sim->substeps_now = 1;
+            sim->step_error_m = 0;
+            sim->cruise_left--;
+            sim->stats.cruised++;
+            fs_sim_count_step(sim, h, sim->level);
+            return FS_OK;
+        }
+        fs_sim_restore_state(sim); /* something changed: the step is doubled after all */
+        sim->cruise_left = 0;
+    }
     for (;;) {
         double h = d->step_max_s / ldexp(1, sim->level), t0 = sim->time_s;
         if (sim->horizon_s > t0 && t0 + h > sim->horizon_s - 0.5 * d->step_min_s)
@@ -279,6 +321,7 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
             fs_sim_count_step(sim, h, sim->level);
             if (e <= tol / 4 && ++sim->level_held >= GROW_AFTER && sim->level > 0)
                 sim->level--, sim->level_held = 0;
+            sim->cruise_left = capped && tries == 1 ? CRUISE_STEPS : 0; /* accepted at once at the bound */
             return FS_OK;
         }
         if (st != FS_OK && at_least) { /* the checks fail at the least step: a failure of the run */

@@ -69,6 +69,7 @@ typedef struct fs_step_stats {
     long rejected;         /* steps tried, found beyond the tolerance, and taken again smaller */
     long missed;           /* steps kept at the least step although beyond the tolerance */
     long ode_steps;        /* ODE steps, the rejected ones and the comparisons' included */
+    long cruised;          /* steps taken singly at the dampers' bound, not doubled */
     double least_s, largest_s; /* of the steps accepted (a step cut short to end on a horizon included) */
     long at_level[FS_STEP_LEVELS]; /* steps accepted at each level (one cut short: at the level it was cut from) */
 } fs_step_stats;
@@ -148,6 +149,7 @@ typedef struct fs_sim {
     double step_error_m;   /* the last accepted step's error estimate, m (0 with fixed steps) */
     double damped_step_s;  /* the least c / k of the springs and hinge springs: the ODE step is at most this */
     double damped_contact_s; /* c / k of the contacts: and at most this while a foot touches the ground */
+    int cruise_left;       /* steps still to take singly at the dampers' bound before the next doubled one */
     fs_step_stats stats;
 } fs_sim;
 
@@ -172,7 +174,9 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err);
  * like one beyond the tolerance, and fails only at the least step. An ODE step is at most c / k of
  * every spring and damped hinge, and of the contacts while a foot touches: beyond it ODE's implicit
  * damper damps by k h instead of c, so a rocking foot would come to rest sooner the larger the step
- * (fs_spring_soft; docs/bench.md). The time advanced is
+ * (fs_spring_soft; docs/bench.md). Where that bound, not the error, sets the step, a doubled step
+ * accepted at once is followed by 8 single ODE steps of the bound, each put back and doubled if the
+ * set of shapes touching the ground changed. The time advanced is
  * sim->step_taken_s; the ground force read after it is the mean over its two half steps. */
 void fs_sim_set_horizon(fs_sim *sim, double t_s);
 /* The median of the accepted steps, s: the level at which half of them had been taken (a step cut
