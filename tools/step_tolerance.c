@@ -67,14 +67,7 @@ int main(int argc, char **argv)
     for (int rb = 0; rb < 2; rb++) {
         fs_error err;
         static fs_scenario trial, scene, sc;
-        char robot[128];
-        snprintf(robot, sizeof robot, "robot.design=%s", ROBOTS[rb]);
-        const char *set[] = {"scenario.terrain=../terrains/flat.ini", "scenario.design=feet/biomimetic.ini", robot};
-        fs_status s = fs_scenario_load("scenarios/landing_trial.ini", set, 3, &trial, &err);
-        if (s == FS_OK)
-            s = fs_scenario_load("scenarios/landing_trial.ini", set, 3, &scene, &err);
-        if (s == FS_OK)
-            s = fs_trial_place(&scene, 1, NULL, &err);
+        fs_status s = cli_flat_landing(ROBOTS[rb], &trial, &scene, &err);
         if (s != FS_OK)
             return fail(s, &err);
         static conf c[MAX_CONF];
