@@ -2,6 +2,8 @@
 #ifndef FS_CLI_H
 #define FS_CLI_H
 
+#include "footsim/model/fs_scenario.h"
+
 #include <stddef.h>
 #include <stdio.h>
 
@@ -236,6 +238,11 @@ void cli_data_folders(void);
 const char *cli_data_robots(char *buf, size_t size);
 /* The installed data folder the search ends with (for help). */
 const char *cli_data_installed(void);
+/* The landing trial (scenarios/landing_trial.ini, read from the current folder) of the biomimetic
+ * foot under robot (relative to scenarios/, e.g. "robots/drop_weight.ini") on flat ground: as loaded
+ * into trial, and placed for seed 1 (fs_trial_place) into scene: bench precision's
+ * landing_biomimetic, for the tools that measure it (tools/). */
+fs_status cli_flat_landing(const char *robot, fs_scenario *trial, fs_scenario *scene, fs_error *err);
 
 /* Prints "footsim: message" to stderr and returns the status. */
 int cli_report(int status, const char *message);

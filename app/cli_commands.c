@@ -446,6 +446,13 @@ static cJSON *trial_json(const fs_trial_result *r)
     cJSON_AddItemToObject(o, "pose_x_y_m_yaw_pitch_roll_deg", cJSON_CreateDoubleArray(pose, 5));
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) /* the metrics, named as campaigns name them */
         cJSON_AddNumberToObject(o, fs_campaign_metrics[m].name, fs_metric_value(r, m));
+    cJSON *steps = cJSON_AddObjectToObject(o, "steps_taken"); /* fixed or error-controlled (run.tolerance_m) */
+    cJSON_AddNumberToObject(steps, "accepted", (double)r->steps);
+    cJSON_AddNumberToObject(steps, "rejected", (double)r->rejected_steps);
+    cJSON_AddNumberToObject(steps, "ode_steps", (double)r->ode_steps);
+    cJSON_AddNumberToObject(steps, "least_s", r->step_least_s);
+    cJSON_AddNumberToObject(steps, "median_s", r->step_median_s);
+    cJSON_AddNumberToObject(steps, "largest_s", r->step_largest_s);
     if (r->nfeet > 1) { /* a biped: each foot's own, right then left */
         cJSON *feet = cJSON_AddArrayToObject(o, "feet");
         for (int f = 0; f < r->nfeet; f++) {
@@ -653,6 +660,9 @@ int cli_trial(const cli_args *a)
                r.robot_mass_kg, r.draw.x_m, r.draw.y_m, r.draw.yaw_deg, r.draw.pitch_deg, r.draw.roll_deg, r.touchdown_s,
                r.end_time_s, r.peak_tilt_deg, r.final_tilt_deg, r.peak_force_N, r.impact_impulse_Ns, rest,
                r.mean_contacts, r.final_contacts, r.ankle_drop_m * 1e3, r.slip_m * 1e3);
+        if (r.rejected_steps > 0 || r.step_least_s != r.step_largest_s)
+            printf("  %ld steps (%ld rejected, %ld ODE steps), least %.3g s, median %.3g s, largest %.3g s\n", r.steps,
+                   r.rejected_steps, r.ode_steps, r.step_least_s, r.step_median_s, r.step_largest_s);
         for (int f = 0; r.nfeet > 1 && f < r.nfeet; f++)
             printf("  %s foot: touchdown %.3f s; contacts mean %.1f, final %.0f; ankle drop %.2f mm, slip %.2f mm; "
                    "ground force at the end %.0f N\n", f ? "left" : "right", r.foot[f].touchdown_s, r.foot[f].mean_contacts,

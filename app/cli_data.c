@@ -3,6 +3,7 @@
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
+#include "footsim/experiment/fs_trial.h"
 #include "footsim/io/fs_config.h"
 
 #include <limits.h>
@@ -143,4 +144,15 @@ const char *cli_data_path(const char *rel)
     found[i].rel = rel;
     snprintf(found[i].full, sizeof found[i].full, "%s", p);
     return found[i].full;
+}
+
+fs_status cli_flat_landing(const char *robot, fs_scenario *trial, fs_scenario *scene, fs_error *err)
+{
+    char body[FS_PATH_MAX + 16];
+    snprintf(body, sizeof body, "robot.design=%s", robot);
+    const char *set[] = {"scenario.terrain=../terrains/flat.ini", "scenario.design=feet/biomimetic.ini", body};
+    fs_status s = fs_scenario_load("scenarios/landing_trial.ini", set, 3, trial, err);
+    if (s == FS_OK)
+        s = fs_scenario_load("scenarios/landing_trial.ini", set, 3, scene, err);
+    return s == FS_OK ? fs_trial_place(scene, 1, NULL, err) : s;
 }

@@ -1,6 +1,6 @@
 #!/bin/sh
 # footsim campaign and compare, end to end on a small campaign (2 feet x 1 terrain x 3 seeds):
-# -j 1 and -j 4 write identical files; a worker that dies is reported as failed_numerics and the
+# -j 1 and -j 4 write identical files (and -j 1 and -j 2 with an error-controlled step); a worker that dies is reported as failed_numerics and the
 # campaign goes on; expectations set the exit status; compare exits 0 on identical summaries and
 # 1 on a planted change. Usage: cli_campaign.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
@@ -24,6 +24,16 @@ for f in $files; do
     check_that "$f written" [ -s "$tmp/j1/$f" ]
     check_that "$f the same with -j 1 and -j 4" cmp -s "$tmp/j1/$f" "$tmp/j4/$f"
 done
+# with an error-controlled step (run.tolerance_m): the steps each trial takes, rejects and puts back
+# are its own, so 1 and 2 workers write the same bytes too
+"$fs" campaign "$tmp/small.ini" -j 1 --set run.tolerance_m=1e-5 --out "$tmp/t1" >/dev/null 2>&1
+check_that "a variable-step campaign on 1 worker exits 0" [ $? -eq 0 ]
+"$fs" campaign "$tmp/small.ini" -j 2 --set run.tolerance_m=1e-5 --out "$tmp/t2" >/dev/null 2>&1
+check_that "a variable-step campaign on 2 workers exits 0" [ $? -eq 0 ]
+for f in summary.json trials.csv; do
+    check_that "variable steps: $f the same with -j 1 and -j 2" cmp -s "$tmp/t1/$f" "$tmp/t2/$f"
+done
+check_that "variable steps: the settings say the tolerance" grep -q 'tolerance_m 1e-05' "$tmp/t1/summary.json"
 check_that "rows in order of foot, terrain, seed" [ "$(cut -d, -f1,2,4 "$tmp/j1/trials.csv" | tr '\n' ' ')" = \
     "foot,terrain,seed bio,bumpy,1 bio,bumpy,2 bio,bumpy,3 flat,bumpy,1 flat,bumpy,2 flat,bumpy,3 " ]
 # without a terminal: no bar redrawn with carriage returns, but plain progress lines (at each tenth

@@ -1,7 +1,8 @@
 /* Determinism: the static-load scenario's whole trajectory hashes to the value committed in
  * tests/determinism_static_load.txt, and a landing trial's state after every step to
  * tests/determinism_landing.txt (on a plane: ODE's contacts) and, on rough ground (footsim's own
- * heightfield contacts, both feet), to tests/determinism_landing_rough.txt. A change of the physics, the solver settings, the compiler's
+ * heightfield contacts, both feet), to tests/determinism_landing_rough.txt, and the landing with an
+ * error-controlled step to tests/determinism_landing_tolerance.txt. A change of the physics, the solver settings, the compiler's
  * floating-point contraction or the ODE build shows up here; if the change is meant, rewrite the
  * files with FS_HASH_UPDATE=1 build/tests/test_engine_determinism (from the source folder) and say
  * why in the commit. (That the same inputs give the same bits in one build is tested directly in
@@ -109,6 +110,24 @@ static void rough_landings_hash_to_their_committed_value(void)
         CHECK(r.steps > 1000);
     }
     check_hash("tests/determinism_landing_rough.txt", "rough-ground landings", h);
+}
+
+/* The landing trial with an error-controlled step (run.tolerance_m = 1e-5 m; the biomimetic foot
+ * under drop_weight, seed 1, from the drop to rest), its state after every accepted step hashed to
+ * tests/determinism_landing_tolerance.txt: the steps it takes, rejects and the states it restores
+ * are the same bits every run. */
+static void variable_step_trial_hashes_to_its_committed_value(void)
+{
+    uint64_t h = 1469598103934665603ULL;
+    fs_run_observer obs = {.interval_s = 1e-12, .fn = hash_state, .user = &h};
+    const char *set[] = {"robot.design=robots/drop_weight.ini", "run.tolerance_m=1e-5"};
+    fs_trial_result r;
+    fs_error err;
+    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 2, 1, &obs, &r, &err) == FS_OK);
+    CHECK(r.rejected_steps > 0 && r.steps > 50);
+    h = (h ^ (uint64_t)r.steps) * 1099511628211ULL;
+    h = (h ^ (uint64_t)r.rejected_steps) * 1099511628211ULL;
+    check_hash("tests/determinism_landing_tolerance.txt", "variable-step landing trial", h);
 }
 
 /* The end of a quickstep run, which draws on ODE's random generator to order its constraints. */
@@ -222,6 +241,6 @@ static void interleaved_sims_give_the_bits_of_each_alone(void)
 }
 
 FS_TEST_MAIN(TEST(static_load_hashes_to_its_committed_value), TEST(landing_trial_hashes_to_its_committed_value),
-             TEST(rough_landings_hash_to_their_committed_value),
+             TEST(rough_landings_hash_to_their_committed_value), TEST(variable_step_trial_hashes_to_its_committed_value),
              TEST(quickstep_does_not_depend_on_earlier_runs),
              TEST(interleaved_sims_give_the_bits_of_each_alone))

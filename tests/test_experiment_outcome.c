@@ -33,7 +33,7 @@ static double judge(fs_judge *j, const fs_outcome_rules *r, const history *h, do
     long n = lround(r->window_s / H);
     for (long i = 1; i <= n; i++) {
         double t = i * H;
-        s = (fs_outcome_sample){t, h->lean_deg(t) * DEG, h->kinetic_J(t), h->speed(t), h->contacts(t)};
+        s = (fs_outcome_sample){t, h->lean_deg(t) * DEG, h->kinetic_J(t), h->speed(t), h->contacts(t), 1};
         if (fs_judge_step(j, &s))
             break;
     }

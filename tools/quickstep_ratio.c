@@ -74,13 +74,7 @@ int main(int argc, char **argv)
     fs_ode_init();
     fs_error err;
     static fs_scenario trial, scene, sc;
-    const char *set[] = {"scenario.terrain=../terrains/flat.ini", "scenario.design=feet/biomimetic.ini",
-                         "robot.design=robots/drop_weight.ini"};
-    fs_status s = fs_scenario_load("scenarios/landing_trial.ini", set, 3, &trial, &err);
-    if (s == FS_OK)
-        s = fs_scenario_load("scenarios/landing_trial.ini", set, 3, &scene, &err);
-    if (s == FS_OK)
-        s = fs_trial_place(&scene, 1, NULL, &err);
+    fs_status s = cli_flat_landing("robots/drop_weight.ini", &trial, &scene, &err);
     if (s != FS_OK)
         return fail(s, &err);
     char machine[512];

@@ -66,6 +66,10 @@ static const double SUBSTEP_STEPS_FULL[] = {5e-4, 8e-4, 1e-3, 2e-3, 5e-3, 1e-2};
 static const double SUBSTEP_STEPS_QUICK[] = {1e-3, 1e-2};
 static const int SUBSTEPS_FULL[] = {2, 4, 8};
 static const int SUBSTEPS_QUICK[] = {8};
+/* The landings with an error-controlled step (run.tolerance_m, its step_max_s and step_min_s at
+ * their defaults), each tolerance a row. */
+static const double TOLERANCES_FULL[] = {1e-4, 3e-5, 1e-5, 3e-6, 1e-6};
+static const double TOLERANCES_QUICK[] = {1e-5};
 /* the campaign-equivalence stage: the flat campaign (40 trials) against 1e-5 s, where the landing
  * converges, at each step of the sweep; --quick on 2 seeds (8 trials) against 5e-5 s, two steps,
  * one on each side of the verdict (about 4 s) */
@@ -96,6 +100,8 @@ typedef struct row {
     int stepper, iterations, springs;
     double step_s;
     int substeps;               /* run.impact_substeps (1: off) */
+    double tolerance_m;         /* run.tolerance_m (0: fixed steps) */
+    long steps, rejected, ode_steps; /* of the first run: steps accepted, rejected, ODE steps in all */
     int ok;                     /* 0: the run blew up */
     int drifting;               /* a loop opened or energy grew beyond the checks' bounds (fs_check.h) */
     fs_track_error e;
@@ -117,6 +123,7 @@ static void with_settings(const scene *s, const row *r, fs_scenario *sc)
     sc->def.iterations = r->iterations > 0 ? r->iterations : 20;
     sc->def.springs = r->springs;
     sc->def.impact_substeps = r->substeps > 1 ? r->substeps : 1;
+    sc->def.tolerance_m = r->tolerance_m;
     sc->def.log_interval_s = fmax(r->step_s, 1e-3); /* no path is logged here */
 }
 
@@ -149,8 +156,10 @@ static fs_status measure(row *r, int repeats, fs_error *err)
         wall[done++] = t.wall_s;
         r->drifting = t.check_class == FS_CHECK_DRIFTING;
         spent += t.wall_s;
-        if (k == 0)
+        if (k == 0) {
             s = fs_track_compare(&t, &r->sc->ref, &r->e, err);
+            r->steps = t.steps, r->rejected = t.rejected, r->ode_steps = t.ode_steps;
+        }
         fs_track_free(&t);
         if (s != FS_OK)
             break;
@@ -256,7 +265,7 @@ static int is_default(const row *r)
 {
     const fs_scenario_def *d = &r->sc->defaults;
     return r->step_s == d->step_s && r->springs == d->springs && r->stepper == d->stepper &&
-           (r->substeps > 1 ? r->substeps : 1) == d->impact_substeps && (r->stepper == FS_STEPPER_STEP || r->iterations == d->iterations);
+           (r->substeps > 1 ? r->substeps : 1) == d->impact_substeps && r->tolerance_m == d->tolerance_m && (r->stepper == FS_STEPPER_STEP || r->iterations == d->iterations);
 }
 
 static double rtf(const row *r) { return r->ok && r->wall_s > 0 ? r->sc->duration_s / r->wall_s : 0; }
@@ -273,8 +282,10 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
                            : (int)(sizeof SUBSTEP_STEPS_FULL / sizeof *sub_steps);
     const int *subs = quick ? SUBSTEPS_QUICK : SUBSTEPS_FULL;
     int nsubs = quick ? (int)(sizeof SUBSTEPS_QUICK / sizeof *subs) : (int)(sizeof SUBSTEPS_FULL / sizeof *subs);
+    const double *tols = quick ? TOLERANCES_QUICK : TOLERANCES_FULL;
+    int ntols = quick ? (int)(sizeof TOLERANCES_QUICK / sizeof *tols) : (int)(sizeof TOLERANCES_FULL / sizeof *tols);
     for (int c = 0; c < nscenes; c++)
-        total += nsteps * nits * (1 + scenes[c].has_springs) + (scenes[c].pinned_chain ? 0 : nsubs * nsub_steps);
+        total += nsteps * nits * (1 + scenes[c].has_springs) + (scenes[c].pinned_chain ? 0 : nsubs * nsub_steps + ntols);
     cli_progress progress;
     cli_progress_start(&progress, "footsim bench precision", "configurations");
     cli_progress_update(&progress, 0, total, 0);
@@ -305,6 +316,17 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
                 blown += !r->ok;
                 cli_progress_update(&progress, n, total, blown);
             }
+    /* the landings with an error-controlled step, from the scene's own step */
+    for (int c = 0; c < nscenes && s == FS_OK; c++)
+        for (int k = 0; k < ntols && !scenes[c].pinned_chain && s == FS_OK; k++) {
+            row *r = &rows[n++];
+            *r = (row){.sc = &scenes[c], .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT,
+                       .step_s = scenes[c].defaults.step_s, .tolerance_m = tols[k]};
+            s = measure(r, repeats, err);
+            r->is_default = is_default(r);
+            blown += !r->ok;
+            cli_progress_update(&progress, n, total, blown);
+        }
     *nrows = n;
     mark_pareto(rows, n);
     return s;
@@ -330,29 +352,32 @@ static int fill_csv(FILE *f, const void *user)
     const row *rows = x->rows;
     int n = x->n;
     fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
-            "wall_s,wall_per_sim_s,rtf,status,pareto,default,impact_substeps\n");
+            "wall_s,wall_per_sim_s,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps\n");
     for (int i = 0; i < n; i++) {
         const row *r = &rows[i];
         char b[7][32]; /* a figure a row does not have (not finite): an empty field */
         if (r->ok)
-            fprintf(f, "%s,%s,%d,%s,%g,%s,%s,%s,%s,%s,%s,%s,%s,%d,%d,%d\n", r->sc->name, stepper_name(r->stepper),
+            fprintf(f, "%s,%s,%d,%s,%g,%s,%s,%s,%s,%s,%s,%s,%s,%d,%d,%d,%g,%ld,%ld,%ld\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, cli_csv_num(b[0], sizeof b[0], "%.4e", r->e.max_m),
                 cli_csv_num(b[1], sizeof b[1], "%.4e", r->e.rms_m), cli_csv_num(b[2], sizeof b[2], "%.4e", r->e.max_rad),
                 cli_csv_num(b[3], sizeof b[3], "%.4e", r->e.rms_rad), cli_csv_num(b[4], sizeof b[4], "%.4e", r->wall_s),
                 cli_csv_num(b[5], sizeof b[5], "%.4e", r->wall_s / r->sc->duration_s),
                 cli_csv_num(b[6], sizeof b[6], "%.4g", rtf(r)), r->drifting ? "drifting" : "ok", r->pareto,
-                r->is_default, substeps_of(r));
+                r->is_default, substeps_of(r), r->tolerance_m, r->steps, r->rejected, r->ode_steps);
         else
             /* a blown-up run has no error nor speed: missing, empty fields */
-            fprintf(f, "%s,%s,%d,%s,%g,,,,,,,,blown_up,0,%d,%d\n", r->sc->name, stepper_name(r->stepper),
-                r->iterations, spring_name(r->springs), r->step_s, r->is_default, substeps_of(r));
+            fprintf(f, "%s,%s,%d,%s,%g,,,,,,,,blown_up,0,%d,%d,%g,,,\n", r->sc->name, stepper_name(r->stepper),
+                r->iterations, spring_name(r->springs), r->step_s, r->is_default, substeps_of(r), r->tolerance_m);
     }
     return 1;
 }
 
 static void describe(FILE *f, const row *r)
 {
-    if (r->stepper == FS_STEPPER_QUICKSTEP)
+    if (r->tolerance_m > 0)
+        fprintf(f, "| step, tolerance %g m (%ld steps, %ld rejected, %ld ODE steps) | %s | variable |", r->tolerance_m,
+                r->steps, r->rejected, r->ode_steps, spring_name(r->springs));
+    else if (r->stepper == FS_STEPPER_QUICKSTEP)
         fprintf(f, "| quickstep %d | %s | %g |", r->iterations, spring_name(r->springs), r->step_s);
     else if (substeps_of(r) > 1)
         fprintf(f, "| step, %d substeps at a touchdown | %s | %g |", r->substeps, spring_name(r->springs), r->step_s);
@@ -408,6 +433,8 @@ static void target(FILE *f, const row *rows, int n, const scene *s, double err_m
     char subs[64] = "";
     if (best && substeps_of(best) > 1)
         snprintf(subs, sizeof subs, " (%d substeps at a touchdown)", best->substeps);
+    if (best && best->tolerance_m > 0)
+        snprintf(subs, sizeof subs, " (error-controlled, tolerance %g m)", best->tolerance_m);
     if (best)
         fprintf(f, "the fastest configuration within %g mm is %s, %s springs, h = %g s%s: %.3g mm at %.3gx, %s. ",
             err_m * 1e3, best->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep",

@@ -52,8 +52,9 @@ int fs_judge_step(fs_judge *j, const fs_outcome_sample *s)
     /* the motion over the window's last two spans: their mean kinetic energies */
     double w = j->r.motion_window_s, end = j->r.window_s;
     int span = s->t_s >= end - w ? 1 : s->t_s >= end - 2 * w ? 0 : -1;
+    double weight = s->weight > 0 ? s->weight : 1; /* a mean over time */
     if (span >= 0)
-        j->kinetic_sum_J[span] += s->kinetic_J, j->samples[span]++;
+        j->kinetic_sum_J[span] += s->kinetic_J * weight, j->samples[span] += weight;
     /* at rest: every body slow for rest_hold_s, after touchdown */
     if (j->touched && s->max_speed_m_per_s < j->r.rest_speed_m_per_s) {
         if (j->rest_since_s < 0)

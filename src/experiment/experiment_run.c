@@ -32,11 +32,10 @@ static void name_columns(fs_run_result *res, const fs_foot_geom *g, int with_lea
         res->col_name[res->ncols++] = "lean_deg";
 }
 
-void fs_log_row(fs_run_result *res, const fs_sim *sim)
+/* sim's state now as a row of res's columns. */
+static void fill_row(const fs_run_result *res, const fs_sim *sim, double *row)
 {
-    if (res->nrows == res->capacity)
-        return;
-    double *row = res->rows + (size_t)res->nrows * res->ncols, p[3];
+    double p[3];
     fs_sim_ankle(sim, p);
     row[0] = sim->time_s;
     row[1] = p[0];
@@ -49,7 +48,42 @@ void fs_log_row(fs_run_result *res, const fs_sim *sim)
         row[5 + sim->geom->nhinges + i] = fs_spring_measure(&sim->spring[i]).force_N;
     if (res->lean_col)
         row[res->lean_col] = fs_sim_robot_tilt(sim) * 180 / M_PI;
-    res->nrows++;
+}
+
+void fs_log_row(fs_run_result *res, const fs_sim *sim)
+{
+    if (res->nrows == res->capacity)
+        return;
+    fill_row(res, sim, res->rows + (size_t)res->nrows++ * res->ncols);
+}
+
+void fs_log_begin(fs_run_logger *l, fs_run_result *res, const fs_sim *sim)
+{
+    *l = (fs_run_logger){.res = res, .every = res ? res->every : 1, .timed = sim->saved != NULL,
+                         .interval_s = sim->sc->def.log_interval_s};
+    if (!res)
+        return;
+    fs_log_row(res, sim);
+    fill_row(res, sim, l->prev);
+}
+
+/* The rows due between the last step's state (l->prev) and now's, each interpolated at its time. */
+static void log_crossings(fs_run_logger *l, const fs_sim *sim)
+{
+    fs_run_result *res = l->res;
+    double now[FS_TRAJ_MAX_COLS];
+    fill_row(res, sim, now);
+    double t;
+    while (res->nrows < res->capacity && (t = (double)(l->logged + 1) * l->interval_s) <= now[0]) {
+        double u = (t - l->prev[0]) / (now[0] - l->prev[0]);
+        double *row = res->rows + (size_t)res->nrows++ * res->ncols;
+        for (int c = 0; c < res->ncols; c++)
+            row[c] = l->prev[c] + u * (now[c] - l->prev[c]);
+        row[0] = t;
+        row[4] = u < 0.5 ? l->prev[4] : now[4]; /* contacts: a count */
+        l->logged++;
+    }
+    memcpy(l->prev, now, (size_t)res->ncols * sizeof now[0]);
 }
 
 void fs_log_last(fs_run_result *res, const fs_sim *sim)
@@ -115,7 +149,9 @@ static void measure_end(fs_run_result *res, const fs_sim *sim)
 int fs_log_after_step(void *user, fs_sim *sim)
 {
     fs_run_logger *l = user;
-    if (++l->step % l->every == 0)
+    if (l->timed)
+        log_crossings(l, sim);
+    else if (++l->step % l->every == 0)
         fs_log_row(l->res, sim);
     return 0;
 }
@@ -153,8 +189,8 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
         return s;
     fs_sim_ankle(&sim, res->ankle_start_m);
     res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
-    fs_log_row(res, &sim);
-    fs_run_logger logger = {res, res->every, 0};
+    fs_run_logger logger;
+    fs_log_begin(&logger, res, &sim);
     rest_rule rest = {d, -1};
     const fs_step_hook hooks[] = {{"logged", fs_log_after_step, &logger}, {"at rest", at_rest, &rest}};
     fs_drive_spec spec = {.max_steps = nsteps, .hooks = hooks, .nhooks = 2, .obs = obs};

@@ -46,7 +46,7 @@ typedef struct watch {
     double momentum_Ns; /* the ground's vertical impulse beyond the weight (and load) since then */
     double touch_ankle[3];
     double contact_sum;
-    long contact_steps;
+    double contact_steps; /* the steps watched, each weighing its time over step_s (1 with fixed steps) */
     double rest_since;
     /* a biped's feet, each from its own touchdown */
     int foot_touched[FS_MAX_FEET];
@@ -65,7 +65,7 @@ static void observe_feet(const fs_sim *sim, watch *w, fs_trial_result *out)
             memcpy(w->foot_touch_ankle[f], t->ankle_m, sizeof t->ankle_m);
         }
         if (w->touched)
-            w->foot_contact_sum[f] += n;
+            w->foot_contact_sum[f] += n * (sim->step_taken_s / sim->sc->def.step_s);
     }
 }
 
@@ -97,8 +97,9 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     if (!w->touched)
         return;
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
-    w->contact_sum += sim->contacts_now;
-    w->contact_steps++;
+    double weight = h / sim->sc->def.step_s; /* exactly 1 with fixed steps: a mean over time */
+    w->contact_sum += sim->contacts_now * weight;
+    w->contact_steps += weight;
     /* the impact: the ground's vertical impulse beyond the weight (and any load) since it first
      * pushed, which is the momentum it has taken out of the fall, at its largest within the window
      * after touchdown. A landing reads its mass times its speed at the start of the (sub)step whose
@@ -193,7 +194,8 @@ static void sample_of(const fs_sim *sim, fs_outcome_sample *s)
 {
     double ke;
     fs_sim_energy(sim, &ke, NULL, NULL);
-    *s = (fs_outcome_sample){sim->time_s, fs_sim_robot_tilt(sim), ke, fs_sim_max_speed(sim), sim->contacts_now};
+    *s = (fs_outcome_sample){sim->time_s, fs_sim_robot_tilt(sim), ke, fs_sim_max_speed(sim), sim->contacts_now,
+                             sim->step_taken_s / sim->sc->def.step_s};
 }
 
 /* A trial's state while it runs, for its hook. */
@@ -209,7 +211,7 @@ typedef struct trial_run {
 static int judge_step(void *user, fs_sim *sim)
 {
     trial_run *t = user;
-    observe_step(sim, &t->w, t->out, t->d->step_s);
+    observe_step(sim, &t->w, t->out, sim->step_taken_s); /* step_s, or the error-controlled step's */
     sample_of(sim, &t->last);
     int over = fs_judge_step(&t->judge, &t->last);
     if (t->judge.at_rest && t->w.rest_since < 0)
@@ -233,9 +235,8 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     fs_status s = fs_sim_build(&sim, sc, &opts, err);
     if (s != FS_OK)
         return s;
-    if (log)
-        fs_log_row(log, &sim);
-    fs_run_logger logger = {log, log ? log->every : 1, 0};
+    fs_run_logger logger;
+    fs_log_begin(&logger, log, &sim);
     trial_run t = {.d = d, .w = {.rest_since = -1, .mass_kg = moving_mass_kg(&sim, d),
                                  .impulse_window_s = d->impulse_window_s},
                    .out = out};
@@ -251,6 +252,11 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     fs_error step_err;
     s = fs_drive(&sim, &spec, &r, &step_err);
     out->steps = r.steps - r.step_failed;
+    out->rejected_steps = sim.stats.rejected;
+    out->ode_steps = sim.stats.ode_steps;
+    out->step_least_s = sim.stats.least_s;
+    out->step_median_s = fs_sim_median_step_s(&sim);
+    out->step_largest_s = sim.stats.largest_s;
     if (r.step_failed) { /* a result of the trial, not a failure of the call */
         out->outcome = FS_FAILED_NUMERICS;
         out->rule = FS_RULE_NUMERICS;

@@ -39,6 +39,15 @@ const fs_key fs_scenario_keys[] = {
     NUM("run", "impact_window_s", impact_window_s, 0, 10, 0, "s", "0.03",
         "with impact_substeps: substeps from the step in which a foot shape without contact could reach the ground "
         "within the step and this long (or first touches it) until this long after"),
+    NUM("run", "tolerance_m", tolerance_m, 0, 1, 0, "m", "0",
+        "0: fixed steps of step_s; > 0: an error-controlled step, which keeps each step's local error (step doubling: "
+        "how far any body's point ends apart after one step and after two half steps) below this, the step "
+        "varying from step_min_s to step_max_s (docs/bench.md, \"An error-controlled step\")"),
+    NUM("run", "step_max_s", step_max_s, FS_STEP_MIN_S, FS_STEP_MAX_S, 0, "s", "1e-2",
+        "with tolerance_m: the largest step (a pair of half steps)"),
+    NUM("run", "step_min_s", step_min_s, FS_STEP_MIN_S, FS_STEP_MAX_S, 0, "s", "1e-5",
+        "with tolerance_m: the least ODE step (half the least pair); a step that misses the tolerance at it is kept "
+        "and counted"),
     {"run", "stepper", FS_KEY_CHOICE, F(stepper), 0, 0, 0, 0, "step|quickstep", "", "step",
      "step: dWorldStep (direct); quickstep: dWorldQuickStep (iterative)"},
     {"run", "iterations", FS_KEY_INTEGER, F(iterations), 1, 10000, 0, 0, NULL, "", "50", "dWorldQuickStep iterations"},
@@ -172,6 +181,17 @@ static fs_status check_relations(fs_scenario *sc, const fs_config *cfg, fs_error
         return fs_fail(err, FS_BAD_INPUT, "%s: log_interval_s = %g is shorter than step_s = %g (from %s); make it at "
                        "least one step", fs_config_where(cfg, "run", "log_interval_s", where, sizeof where),
                        d->log_interval_s, d->step_s, fs_config_where(cfg, "run", "step_s", where_step, sizeof where_step));
+    if (d->tolerance_m > 0) {
+        const char *why = d->kind == FS_SCENARIO_WALK ? "the walking machine drives its carriage by the step"
+                          : d->impact_substeps > 1 ? "impact_substeps is the fixed step's way to resolve a touchdown"
+                          : d->auto_disable_s > 0 ? "ODE's auto-disable keeps a state a rejected step cannot restore"
+                          : d->step_min_s * 2 > d->step_max_s ? "step_min_s must be at most half step_max_s"
+                                                               : NULL;
+        if (why)
+            return fs_fail(err, FS_BAD_INPUT, "%s: tolerance_m = %g cannot be used here: %s; give tolerance_m = 0 "
+                           "(fixed steps) or change that setting", fs_config_where(cfg, "run", "tolerance_m", where,
+                           sizeof where), d->tolerance_m, why);
+    }
     int walk = d->kind == FS_SCENARIO_WALK;
     if (walk) {
         double stance = d->walk_period_s * d->stance_fraction, swing = d->walk_period_s - stance;
@@ -331,6 +351,10 @@ void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
     used = strlen(buf);
     if (!d->damping_correction && used < size) /* the same */
         snprintf(buf + used, size - used, ", damping_correction 0");
+    used = strlen(buf);
+    if (d->tolerance_m > 0 && used < size) /* the same */
+        snprintf(buf + used, size - used, ", tolerance_m %.6g, step_max_s %.6g, step_min_s %.6g", d->tolerance_m,
+                 d->step_max_s, d->step_min_s);
     used = strlen(buf);
     if (d->impact_substeps > 1 && used < size) /* the same */
         snprintf(buf + used, size - used, ", impact_substeps %d, impact_window_s %.6g", d->impact_substeps,

@@ -534,7 +534,8 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         grip_directions(sim);
     body_reach(sim);
     sim->profile = opts->profile;
-    return scene_ground(sim, err);
+    fs_status made = fs_sim_adapt_init(sim, err);
+    return made == FS_OK ? scene_ground(sim, err) : made;
 }
 
 typedef struct build_call {
@@ -573,6 +574,7 @@ void fs_sim_destroy(fs_sim *sim)
         dWorldDestroy(sim->world);
     free(sim->feedback);
     free(sim->scratch);
+    fs_sim_adapt_free(sim);
     free(sim->ground_grid);
     fs_ode_context_leave(sim->ode_context);
     memset(sim, 0, sizeof *sim);

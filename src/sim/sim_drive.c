@@ -20,8 +20,17 @@ fs_status fs_drive(fs_sim *sim, const fs_drive_spec *spec, fs_drive_result *out,
     if (every < 1)
         every = 1;
     *out = (fs_drive_result){0, -1, 0};
+    /* an error-controlled step (run.tolerance_m): the run ends at the time max_steps fixed steps
+     * would reach, its last step cut to end there; the observer is called at the first step that
+     * ends at or past each interval (it never moves a step, so it never changes a result) */
+    const fs_scenario_def *d = &sim->sc->def;
+    int timed = sim->saved != NULL;
+    double end_s = timed ? (double)spec->max_steps * d->step_s : 0, sliver = timed ? 0.5 * d->step_min_s : 0;
+    double seen_s = 0;
+    if (timed)
+        fs_sim_set_horizon(sim, end_s);
     fs_status s = observe(obs, sim, err);
-    while (s == FS_OK && out->steps < spec->max_steps && out->stopped_by < 0) {
+    while (s == FS_OK && (timed ? sim->time_s < end_s - sliver : out->steps < spec->max_steps) && out->stopped_by < 0) {
         if (spec->before_step)
             spec->before_step(spec->before_user, sim);
         s = fs_sim_step(sim, err);
@@ -30,13 +39,17 @@ fs_status fs_drive(fs_sim *sim, const fs_drive_spec *spec, fs_drive_result *out,
             out->step_failed = 1;
             break;
         }
-        if (out->steps % every == 0 && (s = observe(obs, sim, err)) != FS_OK)
-            break;
+        int due = timed ? obs && sim->time_s >= seen_s + obs->interval_s - sliver : out->steps % every == 0;
+        if (due) {
+            seen_s = sim->time_s;
+            if ((s = observe(obs, sim, err)) != FS_OK)
+                break;
+        }
         for (int k = 0; k < spec->nhooks; k++) /* every hook sees every step, the last one too */
             if (spec->hooks[k].after_step(spec->hooks[k].user, sim) && out->stopped_by < 0)
                 out->stopped_by = k;
     }
-    if (s == FS_OK && out->steps % every != 0)
+    if (s == FS_OK && (timed ? seen_s != sim->time_s : out->steps % every != 0))
         s = observe(obs, sim, err); /* the end, if not just seen */
     return s;
 }

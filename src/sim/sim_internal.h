@@ -76,4 +76,30 @@ dBodyID fs_sim_body_id(const fs_sim *sim, int i);
  * foot); every contact becomes a contact joint of this step (sim_contacts.c). */
 void fs_sim_collide(fs_sim *sim);
 
+/* One ODE step of h as the step's stages (loads, springs, collision and contacts, ODE, checks):
+ * a whole step, a substep or a half step (sim_step.c). */
+fs_status fs_sim_step_by(fs_sim *sim, double h, fs_error *err);
+
+/* The driver's torques for this step added again, for a later ODE step within it (sim_step.c). */
+void fs_sim_add_torques_again(fs_sim *sim);
+
+/* The error-controlled step (run.tolerance_m > 0; sim_adapt.c): one accepted step, its time in
+ * sim->step_taken_s. */
+fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err);
+
+/* Records an accepted step of h taken at level (sim->stats; sim_adapt.c), and sets step_taken_s. */
+void fs_sim_count_step(fs_sim *sim, double h, int level);
+
+/* The state a step changes, saved (into sim->saved) and put back bit for bit: every body's position,
+ * quaternion and velocities, and footsim's history (the last step's contacts and their forces,
+ * touches, the substep window, the checks' reference, ODE's random state, the time, the counters)
+ * (sim_adapt.c; only with sim->saved). */
+void fs_sim_save_state(fs_sim *sim);
+void fs_sim_restore_state(fs_sim *sim);
+
+/* The error-controlled step's memory, taken at build when run.tolerance_m > 0 (sim_adapt.c); its
+ * release. */
+fs_status fs_sim_adapt_init(fs_sim *sim, fs_error *err);
+void fs_sim_adapt_free(fs_sim *sim);
+
 #endif

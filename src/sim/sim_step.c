@@ -23,7 +23,7 @@ void fs_sim_body_add_torque(fs_sim *sim, int i, const double torque_N_m[3])
 }
 
 /* The torques added for this step, again for a later substep of it. */
-static void add_torques_again(fs_sim *sim)
+void fs_sim_add_torques_again(fs_sim *sim)
 {
     for (int i = 0; sim->torque_added && i < fs_sim_nbodies(sim); i++) {
         const double *q = sim->torque_again[i];
@@ -33,7 +33,7 @@ static void add_torques_again(fs_sim *sim)
 }
 
 /* One ODE step of h, the whole step or one of its substeps, as named stages. */
-static fs_status advance(fs_sim *sim, double h, fs_error *err)
+fs_status fs_sim_step_by(fs_sim *sim, double h, fs_error *err)
 {
     const fs_scenario_def *s = &sim->sc->def;
     fs_sim_set_step(sim, h);
@@ -135,22 +135,27 @@ static fs_status step(void *arg, fs_error *err)
 {
     fs_sim *sim = arg;
     double h = sim->sc->def.step_s;
-    int n = substeps(sim, h);
-    sim->substeps_now = n;
     fs_status st = FS_OK;
-    if (n == 1) {
-        st = advance(sim, h, err);
+    int n = sim->saved ? 0 : substeps(sim, h);
+    if (sim->saved) {
+        st = fs_sim_adaptive_step(sim, err); /* run.tolerance_m (sim_adapt.c) */
+    } else if ((sim->substeps_now = n) == 1) {
+        st = fs_sim_step_by(sim, h, err);
     } else {
         double t0 = sim->time_s;
         for (int i = 0; i < n && st == FS_OK; i++) {
             sim->time_s = t0 + i * (h / n);
             if (i > 0)
-                add_torques_again(sim);
-            st = advance(sim, h / n, err);
+                fs_sim_add_torques_again(sim);
+            st = fs_sim_step_by(sim, h / n, err);
             fs_sim_add_step_force(sim, i, n);
         }
         if (st == FS_OK)
             sim->time_s = t0 + h; /* as a whole step ends */
+    }
+    if (n) {
+        fs_sim_count_step(sim, h, 0);
+        sim->stats.ode_steps += n;
     }
     if (sim->torque_added) {
         memset(sim->torque_again, 0, sizeof sim->torque_again);

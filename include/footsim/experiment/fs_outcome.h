@@ -64,6 +64,8 @@ typedef struct fs_outcome_sample {
     double kinetic_J;              /* of every body */
     double max_speed_m_per_s;      /* of the fastest body (points of it) */
     int contacts;                  /* foot-terrain contact points */
+    double weight;                 /* the sample's step over step_s (an error-controlled step's varies);
+                                      0 is taken as 1 */
 } fs_outcome_sample;
 
 typedef struct fs_judge {
@@ -71,7 +73,7 @@ typedef struct fs_judge {
     int touched;
     double touchdown_s, last_contact_s, rest_since_s;
     double kinetic_sum_J[2];       /* summed over [end - 2w, end - w) and [end - w, end] ... */
-    long samples[2];               /* ... over this many samples */
+    double samples[2];             /* ... over this many samples (their weights) */
     int at_rest;
     int outcome, rule;             /* fs_outcome, fs_rule; outcome is FS_UNDECIDED until decided */
 } fs_judge;

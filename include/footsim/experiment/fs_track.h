@@ -24,10 +24,13 @@ typedef struct fs_track {
     int check_class;           /* fs_track_run: fs_check_class of the run (drifting only with record_drift) */
     int first_drift;           /* fs_track_run: the fs_check_kind of the first drift (FS_CHECK_OK: none) */
     double max_loop_error_m;   /* fs_track_run: the widest a hinge's two anchors stood apart, m */
+    double *t_s;               /* with an error-controlled step (run.tolerance_m): sample i's time (the
+                                  end of step i); NULL: i * dt_s */
+    long steps, rejected, ode_steps; /* fs_track_run: steps accepted, rejected, and ODE steps in all */
 } fs_track;
 
-/* Runs sc built with opts (NULL: the whole foot on its ground) for duration_s at sc's step and
- * samples every step. All memory is taken before the first step. FS_NUMERICAL when a state
+/* Runs sc built with opts (NULL: the whole foot on its ground) for duration_s at sc's step (or its
+ * error-controlled step) and samples every step. All memory is taken before the first step. FS_NUMERICAL when a state
  * check fails (fs_check.h; with opts->record_drift only when it blows up; err says when); out is
  * then freed. */
 fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double duration_s, fs_track *out,
@@ -44,7 +47,8 @@ typedef struct fs_track_error {
 } fs_track_error;
 
 /* Compares run with ref at run's sample times, which must fall on ref's (run.dt_s a whole
- * multiple of ref.dt_s), up to the shorter of the two. */
+ * multiple of ref.dt_s), up to the shorter of the two; a run with sample times (t_s) at those
+ * times, ref interpolated linearly between its samples. */
 fs_status fs_track_compare(const fs_track *run, const fs_track *ref, fs_track_error *out, fs_error *err);
 
 void fs_track_free(fs_track *t);

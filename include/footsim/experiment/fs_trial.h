@@ -41,6 +41,10 @@ typedef struct fs_trial_result {
     double ankle_drop_m;         /* ankle height at touchdown minus at the end */
     double slip_m;               /* horizontal travel of the ankle from touchdown to the end */
     long steps;
+    /* the steps taken (fs_step_stats): with run.tolerance_m the error-controlled step's, else the
+       fixed step's (none rejected, least = median = largest = step_s) */
+    long rejected_steps, ode_steps;
+    double step_least_s, step_median_s, step_largest_s;
     /* each foot's own (a biped's two: 0 right, 1 left, each from its own touchdown; the trial's
        ankle_drop_m is then their mean, slip_m the larger, the contacts their sums). One foot: its
        foot[0] is the trial's own */

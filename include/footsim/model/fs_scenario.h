@@ -44,6 +44,8 @@ typedef struct fs_scenario_def {
     double duration_s, step_s;
     int impact_substeps;       /* > 1: a step around a touchdown is taken as this many substeps (fs_sim_step) */
     double impact_window_s;    /* ... from a touchdown foreseen within the step until this long after it */
+    double tolerance_m;        /* > 0: an error-controlled step (fs_sim_step) of at most step_max_s ... */
+    double step_max_s, step_min_s; /* ... and an ODE step of at least step_min_s; 0: fixed steps of step_s */
     int stepper, iterations;
     int springs;               /* fs_spring_impl */
     int damping_correction;    /* 1: soft rows' dampers less k h (fs_spring_soft), 0: plain implicit Euler */

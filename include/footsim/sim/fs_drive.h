@@ -8,6 +8,9 @@
  * every hook sees every step, the last one too, and the first that said stop is the one the
  * result names. A step whose state checks fail
  * (fs_check.h) ends the run with FS_NUMERICAL; an observer that fails ends it with its status.
+ * With an error-controlled step (run.tolerance_m > 0, fs_sim.h) the run ends instead at the time
+ * max_steps steps of step_s reach, its last step cut short to end there, and the observer is called
+ * at the first step ending at or past each interval.
  * The loop allocates nothing and adds a few indirect calls to a step (docs/bench.md). */
 #ifndef FS_DRIVE_H
 #define FS_DRIVE_H

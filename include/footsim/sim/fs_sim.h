@@ -62,6 +62,19 @@ typedef struct fs_touch {
     double found_s; /* the start of the (sub)step whose collision found it: its contact force acts from then */
 } fs_touch;
 
+/* The steps a sim has taken: with run.tolerance_m > 0 the error-controlled step's (fs_sim_step), a
+ * step being a pair of half steps of ODE's whose size is step_max_s / 2^level; else the fixed steps. */
+enum { FS_STEP_LEVELS = 48 };
+typedef struct fs_step_stats {
+    long taken;            /* steps accepted */
+    long rejected;         /* steps tried, found beyond the tolerance, and taken again smaller */
+    long missed;           /* steps kept at the least step although beyond the tolerance */
+    long ode_steps;        /* ODE steps, the rejected ones and the comparisons' included */
+    long cruised;          /* steps taken singly at the dampers' bound, not doubled */
+    double least_s, largest_s; /* of the steps accepted (a step cut short to end on a horizon included) */
+    long at_level[FS_STEP_LEVELS]; /* steps accepted at each level (one cut short: at the level it was cut from) */
+} fs_step_stats;
+
 typedef struct fs_sim {
     const fs_scenario *sc;
     const fs_foot_geom *geom; /* the scenario's, or own_geom for a pinned chain */
@@ -129,6 +142,17 @@ typedef struct fs_sim {
     int ode_failed;        /* an ODE error interrupted a step: the sim may only be destroyed (fs_ode.h) */
     struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_options.profile) */
     double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
+    /* run.tolerance_m > 0: the error-controlled step (sim_adapt.c) */
+    struct fs_sim_saved *saved; /* the state before the step being tried; NULL with fixed steps */
+    int level;             /* the next step tried is step_max_s / 2^level */
+    int level_held;        /* steps accepted in a row since the level last changed */
+    double horizon_s;      /* the next step ends at or before this time, s (fs_sim_set_horizon); 0: none */
+    double step_taken_s;   /* the time the last fs_sim_step advanced by, s */
+    double step_error_m;   /* the last accepted step's error estimate, m (0 with fixed steps) */
+    double damped_step_s;  /* the least c / k of the springs and hinge springs: the ODE step is at most this */
+    double damped_contact_s; /* c / k of the contacts: and at most this while a foot touches the ground */
+    int cruise_left;       /* steps still to take singly at the dampers' bound before the next doubled one */
+    fs_step_stats stats;
 } fs_sim;
 
 /* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */
@@ -142,6 +166,26 @@ void fs_sim_destroy(fs_sim *sim);
  * if an ODE error interrupted the step (then, and for every later call, the sim may only be
  * destroyed: fs_ode.h). */
 fs_status fs_sim_step(fs_sim *sim, fs_error *err);
+
+/* With run.tolerance_m > 0, fs_sim_step takes one error-controlled step instead: a step of h
+ * (step_max_s / 2^level) tried once whole and once as two half steps from the same state; the two
+ * results' difference (each body's centre and its rotation times its reach, and the step times the
+ * same for their velocities) estimates the half steps' local error. Within the tolerance the half
+ * steps are kept; beyond it the whole state is put back (bodies, contacts and their forces, touches,
+ * the state checks' reference, ODE's random state) and the step tried at half the size. A step
+ * grows (doubles) after 4 accepted in a row whose error was below a quarter of the tolerance, and
+ * never ends past the horizon (fs_sim_set_horizon). A step whose state checks fail is rejected
+ * like one beyond the tolerance, and fails only at the least step. An ODE step is at most c / k of
+ * every spring and damped hinge, and of the contacts while a foot touches: beyond it ODE's implicit
+ * damper damps by k h instead of c, so a rocking foot would come to rest sooner the larger the step
+ * (fs_spring_soft; docs/bench.md). Where that bound, not the error, sets the step, a doubled step
+ * accepted at once is followed by 8 single ODE steps of the bound, each put back and doubled if the
+ * set of shapes touching the ground changed. The time advanced is
+ * sim->step_taken_s; the ground force read after it is the mean over its two half steps. */
+void fs_sim_set_horizon(fs_sim *sim, double t_s);
+/* The median of the accepted steps, s: the level at which half of them had been taken (a step cut
+ * short at a horizon counted at its level); the fixed step with fixed steps; 0 before any. */
+double fs_sim_median_step_s(const fs_sim *sim);
 
 /* The load's force now (it rises over ramp_s), N; it acts along down. */
 double fs_sim_load_now_N(const fs_sim *sim);
