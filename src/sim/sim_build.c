@@ -14,15 +14,6 @@
 /* Two materials in contact: friction as the geometric mean, stiffness and damping in series. */
 static double series(double a, double b) { return a > 0 && b > 0 ? a * b / (a + b) : 0; }
 
-/* The contact template's softness for a step of h, from the sole's and terrain's k and c in series. */
-static void soften_contacts(fs_sim *sim, double h)
-{
-    double erp, cfm;
-    fs_spring_soft(h, sim->contact_k_N_per_m, sim->contact_c_Ns_per_m, sim->sc->def.damping_correction, &erp, &cfm);
-    sim->contact_template.surface.soft_erp = erp;
-    sim->contact_template.surface.soft_cfm = cfm;
-}
-
 static void contact_template(fs_sim *sim)
 {
     const fs_scenario_def *s = &sim->sc->def;
@@ -39,7 +30,7 @@ static void contact_template(fs_sim *sim)
     }
     sim->contact_k_N_per_m = series(d->sole_stiffness_N_per_m, m->stiffness_N_per_m);
     sim->contact_c_Ns_per_m = series(d->sole_damping_Ns_per_m, m->damping_Ns_per_m);
-    soften_contacts(sim, s->step_s);
+    fs_sim_soften_contacts(sim, s->step_s);
     sim->step_now_s = s->step_s;
 }
 
@@ -260,15 +251,6 @@ static void grip_directions(fs_sim *sim)
     }
 }
 
-/* A hinge stop's ERP and CFM from k and c for a step of h. */
-static void soften_stop(const fs_sim *sim, dJointID j, double k, double c, double h)
-{
-    double erp, cfm;
-    fs_spring_soft(h, k, c, sim->sc->def.damping_correction, &erp, &cfm);
-    dJointSetHingeParam(j, dParamStopERP, erp);
-    dJointSetHingeParam(j, dParamStopCFM, cfm);
-}
-
 /* A passive angular spring-damper toward the hinge's angle now (0: its built pose), implicit: a stop
  * with lo = hi, which ODE makes one two-sided row whenever it is met, as it always is (joint.cpp,
  * dxJointLimitMotor::testRotationalLimit and addLimot: angle <= lo or >= hi sets the limit, and
@@ -278,23 +260,8 @@ static void angular_spring(const fs_sim *sim, dJointID j, double k, double c, do
 {
     dJointSetHingeParam(j, dParamLoStop, 0);
     dJointSetHingeParam(j, dParamHiStop, 0);
-    soften_stop(sim, j, k, c, h);
+    fs_sim_soften_stop(sim, j, k, c, h);
     dJointSetHingeParam(j, dParamBounce, 0);
-}
-
-static int has_angular_spring(const fs_hinge_geom *h) { return h->k_N_m_per_rad > 0 || h->c_N_m_s_per_rad > 0; }
-
-void fs_sim_set_step(fs_sim *sim, double h)
-{
-    if (h == sim->step_now_s)
-        return;
-    soften_contacts(sim, h);
-    for (int i = 0; i < sim->geom->nhinges; i++) {
-        const fs_hinge_geom *g = &sim->geom->hinge[i];
-        if (has_angular_spring(g))
-            soften_stop(sim, sim->hinge[i], g->k_N_m_per_rad, g->c_N_m_s_per_rad, h);
-    }
-    sim->step_now_s = h;
 }
 
 void fs_sim_spring_init(const fs_sim *sim, fs_spring *s, dBodyID body1, dBodyID body2, const double p1[3],
@@ -314,7 +281,7 @@ static void build_joints(fs_sim *sim)
         fs_vec3 a = place(sim, h->anchor), x = turn(sim, h->axis);
         dJointSetHingeAnchor(j, a.x, a.y, a.z);
         dJointSetHingeAxis(j, x.x, x.y, x.z);
-        if (has_angular_spring(h))
+        if (fs_hinge_has_spring(h))
             angular_spring(sim, j, h->k_N_m_per_rad, h->c_N_m_s_per_rad, sim->sc->def.step_s);
         sim->hinge[i] = j;
     }

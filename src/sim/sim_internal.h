@@ -59,9 +59,14 @@ void fs_sim_spring_init(const fs_sim *sim, fs_spring *s, dBodyID body1, dBodyID 
 void fs_sim_note_touch(fs_sim *sim, double h);
 
 /* Sets the contacts' and the hinge stops' softness (ERP, CFM from their k and c) for a step of h
- * (sim_build.c); nothing when they are set for h already. The springs set theirs as they are
+ * (sim_soften.c); nothing when they are set for h already. The springs set theirs as they are
  * prepared (fs_spring_prepare). */
 void fs_sim_set_step(fs_sim *sim, double h);
+/* The contact template's softness for a step of h (the sole's and terrain's k and c in series), and a
+ * hinge stop's; whether a hinge has an angular spring-damper (sim_soften.c). */
+void fs_sim_soften_contacts(fs_sim *sim, double h);
+void fs_sim_soften_stop(const fs_sim *sim, dJointID j, double k, double c, double h);
+int fs_hinge_has_spring(const fs_hinge_geom *h);
 
 /* After one substep of n: adds its ground forces, over n, to step_force (sim_measure.c). */
 void fs_sim_add_step_force(fs_sim *sim, int substep, int n);
