@@ -1,6 +1,7 @@
 /* sim_build.c: the foot built in ODE from its geometry (bodies, shapes, joints, springs, the
  * robot, the ground), and taken down again. The step is sim_step.c. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include "sim_ground.h"
 
@@ -107,6 +108,8 @@ static double start_lift(const fs_sim *sim)
             }
         lift = fmax(lift, top - lowest);
     }
+    if (sim->sc->terrain.def.soil.model != FS_SOIL_NONE) /* drop_m above the soil's surface */
+        lift += sim->sc->terrain.def.soil.depth_m;
     return lift + sim->sc->def.drop_m;
 }
 
@@ -534,7 +537,8 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         grip_directions(sim);
     body_reach(sim);
     sim->profile = opts->profile;
-    return scene_ground(sim, err);
+    fs_status soil = fs_sim_soil_build(sim, err);
+    return soil == FS_OK ? scene_ground(sim, err) : soil;
 }
 
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
@@ -561,6 +565,7 @@ void fs_sim_destroy(fs_sim *sim)
     free(sim->feedback);
     free(sim->scratch);
     free(sim->ground_grid);
+    fs_sim_soil_destroy(sim);
     fs_ode_context_leave(sim->ode_context);
     memset(sim, 0, sizeof *sim);
 }

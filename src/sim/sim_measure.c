@@ -1,6 +1,7 @@
 /* sim_measure.c: what a simulation's state measures now (energy, speeds, lean, penetration,
  * ground force, hinge angles, the ankle): read from ODE, never changing it. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include "sim_ground.h"
 
@@ -144,6 +145,13 @@ double fs_sim_robot_tilt(const fs_sim *sim)
     return acos(fmax(-1.0, fmin(1.0, R[10])));
 }
 
+/* The surface a shape must not pass: the terrain's, or with a soil its surface now (sinkage is
+ * judged against the soil, which is never below the bedrock). */
+static double ground_at(const fs_sim *sim, const fs_terrain *t, double x, double y)
+{
+    return sim->soil ? fs_sim_ground_surface(sim, x, y) : fs_terrain_height(t, x, y);
+}
+
 double fs_sim_penetration(const fs_sim *sim)
 {
     const fs_terrain *t = &sim->sc->terrain;
@@ -152,7 +160,7 @@ double fs_sim_penetration(const fs_sim *sim)
         dGeomID g = sim->shape[i];
         const dReal *p = dGeomGetPosition(g);
         if (dGeomGetClass(g) == dSphereClass) {
-            worst = fmax(worst, fs_terrain_height(t, p[0], p[1]) - (p[2] - dGeomSphereGetRadius(g)));
+            worst = fmax(worst, ground_at(sim, t, p[0], p[1]) - (p[2] - dGeomSphereGetRadius(g)));
             continue;
         }
         /* a box: its underside on a 21 x 11 grid */
@@ -161,7 +169,7 @@ double fs_sim_penetration(const fs_sim *sim)
         for (int a = 0; a <= 20; a++)
             for (int b = 0; b <= 10; b++) {
                 dGeomGetRelPointPos(g, (a / 20.0 - 0.5) * l[0], (b / 10.0 - 0.5) * l[1], -0.5 * l[2], q);
-                worst = fmax(worst, fs_terrain_height(t, q[0], q[1]) - q[2]);
+                worst = fmax(worst, ground_at(sim, t, q[0], q[1]) - q[2]);
             }
     }
     return worst;
@@ -239,6 +247,12 @@ static void feedback_force(const fs_sim *sim, int foot, double force[3])
         if (foot == EVERY_CONTACT || contact_foot(sim, i) == foot)
             for (int k = 0; k < 3; k++)
                 force[k] += sim->feedback[i].f1[k];
+    if (sim->soil) { /* and the soil's, on the same feet */
+        double s[3];
+        fs_sim_soil_force(sim, foot == EVERY_CONTACT ? -1 : foot, s);
+        for (int k = 0; k < 3; k++)
+            force[k] += s[k];
+    }
 }
 
 void fs_sim_add_step_force(fs_sim *sim, int substep, int n)

@@ -1,5 +1,6 @@
 /* sim_step.c: one step as named stages (fs_stage), each timed when the sim is profiled. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include <math.h>
 #include <string.h>
@@ -85,6 +86,11 @@ static fs_status advance(fs_sim *sim, double h, fs_error *err)
     sim->contacts_total += sim->contacts_now;
     if (sim->contacts_now > 0)
         fs_sim_note_touch(sim, h);
+    if (sim->soil) { /* the soil's forces, explicit, for this (sub)step (fs_sim_soil.h) */
+        fs_status st = fs_sim_soil_apply(sim, h, err);
+        if (st != FS_OK)
+            return st;
+    }
     fs_sim_lap(sim, FS_STAGE_CONTACTS);
     /* the ODE step, with this sim's own state of ODE's one random generator (QuickStep draws on
      * it to order its constraints), so that other sims stepped between leave it alone */
@@ -129,6 +135,8 @@ static int could_land(const fs_sim *sim, int i, double h, double ahead)
     for (int k = 0; k < 4; k++)
         top = fmax(top, fs_terrain_height(t, p[0] + (k == 0 ? reach : k == 1 ? -reach : 0),
                                           p[1] + (k == 2 ? reach : k == 3 ? -reach : 0)));
+    if (sim->soil) /* the soil's undisturbed surface (a print only lowers it) */
+        top += t->def.soil.depth_m;
     dVector3 v;
     dBodyGetPointVel(dGeomGetBody(g), p[0], p[1], p[2], v);
     double spin = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);

@@ -127,6 +127,7 @@ typedef struct fs_sim {
     char ode_context[FS_PATH_MAX]; /* what ODE's complaints name while this sim steps: its scenario */
     struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_options.profile) */
     double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
+    struct fs_sim_soil *soil; /* the terrain's soil layer (fs_sim_soil.h), or NULL: rigid ground only */
 } fs_sim;
 
 /* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */
