@@ -145,11 +145,15 @@ double fs_sim_robot_tilt(const fs_sim *sim)
     return acos(fmax(-1.0, fmin(1.0, R[10])));
 }
 
-/* The surface a shape must not pass: the terrain's, or with a soil its surface now (sinkage is
- * judged against the soil, which is never below the bedrock). */
+/* The surface a shape must not pass: the terrain's; with a soil, the bedrock or, where the soil
+ * carries a shape now, its surface there (sinkage is judged against the soil's surface, which
+ * follows the shape it carries: a foot sunk into sand is not in the ground). */
 static double ground_at(const fs_sim *sim, const fs_terrain *t, double x, double y)
 {
-    return sim->soil ? fs_sim_ground_surface(sim, x, y) : fs_terrain_height(t, x, y);
+    if (!sim->soil)
+        return fs_terrain_height(t, x, y);
+    double z;
+    return fmax(fs_terrain_height(t, x, y), fs_soil_grid_carried(fs_sim_soil_grid(sim), x, y, &z) ? z : -INFINITY);
 }
 
 double fs_sim_penetration(const fs_sim *sim)

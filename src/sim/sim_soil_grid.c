@@ -193,6 +193,15 @@ double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y)
     return n->stamp == g->stamp ? fmin(s, n->zb_m) : s;
 }
 
+int fs_soil_grid_carried(const fs_soil_grid *g, double x, double y, double *z)
+{
+    const fs_soil_node *n = node_at(g, (int)lround((x - g->x0) / g->dx), (int)lround((y - g->y0) / g->dx));
+    if (!n || n->stamp != g->stamp)
+        return 0;
+    *z = n->zb_m;
+    return 1;
+}
+
 /* The node range [i0, i1] x [j0, j1] over a plan box, clipped to the region; 0 when empty. */
 static int node_range(const fs_soil_grid *g, const double box[4], int r[4])
 {
@@ -219,6 +228,7 @@ fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (
     g->terrain = t;
     g->d = t->def.soil;
     g->dx = g->d.grid_m;
+    g->tan_phi = tan(g->d.friction_deg * M_PI / 180);
     g->x0 = t->soil_region[0];
     g->y0 = t->soil_region[2];
     g->nx = (int)floor((t->soil_region[1] - t->soil_region[0]) / g->dx) + 2;
@@ -300,14 +310,10 @@ static int mine(const fs_soil_grid *g, int i, int j, int s)
     return n && n->stamp == g->stamp && n->shape == s;
 }
 
-/* Elastic trial, and past the yield the law: the normal stress, the node's yield and print moved. */
-static double elastic_plastic(fs_soil_node *nd, double s, double law, double Ke)
+/* Past the yield, the law: the normal stress from the elastic trial se (> the node's yield), the
+ * node's yield and print moved. */
+static double plastic(fs_soil_node *nd, double s, double se, double law, double Ke)
 {
-    double se = Ke * (s - nd->sp_m);
-    if (se <= 0)
-        return 0;
-    if (se <= nd->yield_Pa)
-        return se;
     double sigma = fmin(se, fmax(law, nd->yield_Pa));
     nd->yield_Pa = sigma;
     nd->sp_m = fmax(nd->sp_m, s - sigma / Ke);
@@ -322,13 +328,17 @@ static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, const double
     const fs_soil_def *d = &g->d;
     double A = g->dx * g->dx, reg = d->slip_speed_m_per_s;
     double s = fmin(nd->h0_m - nd->zb_m, d->depth_m); /* sinkage below the undisturbed surface, above the bedrock */
-    double vh = hypot(v[0], v[1]);
+    double vh = sqrt(v[0] * v[0] + v[1] * v[1]);
     F[0] = F[1] = F[2] = S[0] = S[1] = S[2] = 0;
+    /* the elastic trial: within the yield (unloading, reloading, at rest) no law need be evaluated */
+    double se = d->K_e_Pa_per_m * (s - nd->sp_m);
+    if (se <= 0)
+        return;
     if (d->model == FS_SOIL_BEKKER) {
-        double sigma = elastic_plastic(nd, s, fs_bekker_pressure(d, b, s), d->K_e_Pa_per_m);
+        double sigma = se <= nd->yield_Pa ? se : plastic(nd, s, se, fs_bekker_pressure(d, b, s), d->K_e_Pa_per_m);
         double total = fmax(0, sigma - d->damping_Pa_s_per_m * v[2]);
         nd->slip_m += vh * h;
-        double tau = sigma > 0 ? fs_soil_shear_strength(d, sigma) * fs_janosi_share(d, nd->slip_m) : 0;
+        double tau = (d->cohesion_Pa + sigma * g->tan_phi) * (1 - exp(-nd->slip_m / d->shear_K_m));
         double k = tau / fmax(vh, reg);
         S[0] = -k * v[0] * A, S[1] = -k * v[1] * A, F[2] = total * A;
         *slope += k * A;
@@ -349,7 +359,7 @@ static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, const double
     fs_rft_alpha(d, beta, fmax(gamma, 0), &az, &ax);
     double dA = A / fmax(fabs(n[2]), 0.25); /* the element's own area over its plan cell */
     double law = d->zeta_N_per_m3 * fmax(az, 0) * s;
-    double sigma = elastic_plastic(nd, s, law, d->K_e_Pa_per_m);
+    double sigma = se <= nd->yield_Pa ? se : plastic(nd, s, se, law, d->K_e_Pa_per_m);
     double mob = law > 0 ? sigma / law : 0;
     double sx = d->zeta_N_per_m3 * ax * s * mob; /* drag, in proportion to the vertical stress mobilised */
     F[0] = -sx * e[0] * dA, F[1] = -sx * e[1] * dA, F[2] = sigma * dA;

@@ -84,6 +84,7 @@ typedef struct fs_soil_grid {
     double force[FS_SOIL_MAX_SHAPES][3], torque[FS_SOIL_MAX_SHAPES][3];
     int nodes[FS_SOIL_MAX_SHAPES];
     double b_m[FS_SOIL_MAX_SHAPES];
+    double tan_phi;         /* tan of the friction angle, once */
     double work_J;          /* work the soil's forces have taken out of the bodies (sum of -F.v h) */
 } fs_soil_grid;
 
@@ -101,6 +102,8 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
  * undisturbed surface and plastic sinkage; NULL node when (i, j) lies outside the region. */
 const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j);
 double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y);
+/* Whether the node nearest (x, y) carries a shape now (the last step), and then its surface, in *z. */
+int fs_soil_grid_carried(const fs_soil_grid *g, double x, double y, double *z);
 /* The undisturbed surface at (x, y): the terrain plus the layer's depth. */
 double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y);
 
