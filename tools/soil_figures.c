@@ -1,8 +1,11 @@
-/* soil_figures.c: Fig. 11 on soft ground (docs/soil.md): the static load (scenarios/static_load.ini,
- * 26 kg at the ankle) on every soil preset for both feet, each run until at rest or its 1 s window
- * ends. Per run: the ankle's drop, the deepest print under the foot, the foot's tilt (its ankle
- * body's z axis from vertical), the time to rest, the area the soil carries the foot on (its nodes
- * times the grid's cell), and the soil's share of the ground force (the rest on the bedrock).
+/* soil_figures.c: Fig. 11 on soft ground (docs/soil.md): 26 kg set down on the foot on every soil
+ * preset, for both feet: the landing trial's scenario with the rig robot (26 kg on a vertical slide,
+ * so the foot keeps its attitude as under the paper's test load; scenarios/robots/rig.ini), no
+ * drop and no drawn pose, run until at rest or 1 s. (The static-load scenario's bare force at the
+ * ankle turns a foot on soil over: nothing holds its pitch once the heel sinks.) Per run: the
+ * ankle's drop, the deepest print under the foot, the foot's tilt (its ankle body's z axis from
+ * vertical), the time to rest, the area the soil carries the foot on (its nodes times the grid's
+ * cell), and the soil's share of the ground force (the rest on the bedrock).
  * Built with footsim (`cmake --build build` makes build/soil-figures); run from the source folder:
  * `build/soil-figures > results/soil/static_load.md`. A Markdown table on stdout. */
 #include "footsim/sim/fs_sim.h"
@@ -22,8 +25,10 @@ static int run(const char *foot, const char *soil)
     char design[128], terrain[128];
     snprintf(design, sizeof design, "scenario.design=feet/%s.ini", foot);
     snprintf(terrain, sizeof terrain, "scenario.terrain=../terrains/soils/%s.ini", soil);
-    const char *set[] = {design, terrain};
-    if (fs_scenario_load("scenarios/static_load.ini", set, 2, &sc, &err) != FS_OK) {
+    const char *set[] = {design, terrain, "robot.design=robots/rig.ini", "start.drop_m=0", "run.duration_s=1",
+                         "landing.x_range_m=0", "landing.y_range_m=0", "landing.yaw_range_deg=0",
+                         "landing.tilt_range_deg=0"};
+    if (fs_scenario_load("scenarios/landing_trial.ini", set, 9, &sc, &err) != FS_OK) {
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
@@ -44,7 +49,7 @@ static int run(const char *foot, const char *soil)
         }
         steps++;
         int slow = fs_sim_max_speed(&sim) < 1e-3;
-        if (sim.time_s > sc.def.ramp_s && slow && rest_since < 0)
+        if (slow && rest_since < 0)
             rest_since = sim.time_s;
         if (!slow)
             rest_since = -1;
