@@ -69,7 +69,7 @@ const fs_key fs_terrain_keys[] = {
     NUM("soil", "slip_speed_m_per_s", soil.slip_speed_m_per_s, 0, 10, POS, "m/s", "1e-3",
         "shear and drag act fully above this slip speed and in proportion below it (a regularisation, a choice)"),
     INT("soil", "max_nodes", soil.max_nodes, 1000, 50000000, "4000000",
-        "the most nodes the grid may cover (32 bytes each at most while untouched, 96 once touched)"),
+        "the most nodes the grid may cover (its index: 4 bytes a tile of 256 nodes; a tile a foot has reached: 88 bytes a node)"),
     NUM("bekker", "n", soil.n, 0, 5, POS, "", "1.1", "sinkage exponent n"),
     NUM("bekker", "k_c_N_per_m_n1", soil.k_c_N_per_m_n1, 0, 1e12, 0, "N/m^(n+1)", "0", "cohesive modulus k_c"),
     NUM("bekker", "k_phi_N_per_m_n2", soil.k_phi_N_per_m_n2, 0, 1e12, 0, "N/m^(n+2)", "2e6", "frictional modulus k_phi"),

@@ -427,14 +427,16 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
     double box[4], m = sim->sc->def.region_margin_m + 0.05;
     fs_scenario_reach(sim->sc, box);
     int steps = t->def.kind == FS_TERRAIN_STEPPED;
-    double dx = steps ? 0.001 : (box[1] - box[0] + 2 * m); /* steps need their edges sampled */
-    int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = 2;
-    double dy = box[3] - box[2] + 2 * m;
+    /* steps need their edges sampled; a soil its prints, every 1 mm both ways */
+    int soil = t->def.soil.model != FS_SOIL_NONE;
+    double dx = steps || soil ? 0.001 : (box[1] - box[0] + 2 * m);
+    int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = soil ? (int)ceil((box[3] - box[2] + 2 * m) / dx) + 1 : 2;
+    double dy = soil ? dx : box[3] - box[2] + 2 * m;
     sim->ground_grid = malloc(sizeof *sim->ground_grid + (size_t)nx * ny * sizeof sim->ground_grid->z[0]);
     if (!sim->ground_grid)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sim->sc->path);
     sim->ground_grid->sampled = 0;
-    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid->z, !steps};
+    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid->z, !steps && !soil};
     return FS_OK;
 }
 
