@@ -145,17 +145,8 @@ double fs_sim_robot_tilt(const fs_sim *sim)
     return acos(fmax(-1.0, fmin(1.0, R[10])));
 }
 
-/* The surface a shape must not pass: the terrain's; with a soil, the bedrock or, where the soil
- * carries a shape now, its surface there (sinkage is judged against the soil's surface, which
- * follows the shape it carries: a foot sunk into sand is not in the ground). */
-static double ground_at(const fs_sim *sim, const fs_terrain *t, double x, double y)
-{
-    if (!sim->soil)
-        return fs_terrain_height(t, x, y);
-    double z;
-    return fmax(fs_terrain_height(t, x, y), fs_soil_grid_carried(fs_sim_soil_grid(sim), x, y, &z) ? z : -INFINITY);
-}
-
+/* With a soil the terrain is its bedrock: the soil's surface follows the shape it carries, so a shape
+ * can sink only into the bedrock (docs/soil.md, What reads the ground). */
 double fs_sim_penetration(const fs_sim *sim)
 {
     const fs_terrain *t = &sim->sc->terrain;
@@ -164,7 +155,7 @@ double fs_sim_penetration(const fs_sim *sim)
         dGeomID g = sim->shape[i];
         const dReal *p = dGeomGetPosition(g);
         if (dGeomGetClass(g) == dSphereClass) {
-            worst = fmax(worst, ground_at(sim, t, p[0], p[1]) - (p[2] - dGeomSphereGetRadius(g)));
+            worst = fmax(worst, fs_terrain_height(t, p[0], p[1]) - (p[2] - dGeomSphereGetRadius(g)));
             continue;
         }
         /* a box: its underside on a 21 x 11 grid */
@@ -173,7 +164,7 @@ double fs_sim_penetration(const fs_sim *sim)
         for (int a = 0; a <= 20; a++)
             for (int b = 0; b <= 10; b++) {
                 dGeomGetRelPointPos(g, (a / 20.0 - 0.5) * l[0], (b / 10.0 - 0.5) * l[1], -0.5 * l[2], q);
-                worst = fmax(worst, ground_at(sim, t, q[0], q[1]) - q[2]);
+                worst = fmax(worst, fs_terrain_height(t, q[0], q[1]) - q[2]);
             }
     }
     return worst;

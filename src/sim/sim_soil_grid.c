@@ -193,15 +193,6 @@ double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y)
     return n->stamp == g->stamp ? fmin(s, n->zb_m) : s;
 }
 
-int fs_soil_grid_carried(const fs_soil_grid *g, double x, double y, double *z)
-{
-    const fs_soil_node *n = node_at(g, (int)lround((x - g->x0) / g->dx), (int)lround((y - g->y0) / g->dx));
-    if (!n || n->stamp != g->stamp)
-        return 0;
-    *z = n->zb_m;
-    return 1;
-}
-
 /* The node range [i0, i1] x [j0, j1] over a plan box, clipped to the region; 0 when empty. */
 static int node_range(const fs_soil_grid *g, const double box[4], int r[4])
 {

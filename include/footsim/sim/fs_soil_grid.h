@@ -102,8 +102,6 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
  * undisturbed surface and plastic sinkage; NULL node when (i, j) lies outside the region. */
 const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j);
 double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y);
-/* Whether the node nearest (x, y) carries a shape now (the last step), and then its surface, in *z. */
-int fs_soil_grid_carried(const fs_soil_grid *g, double x, double y, double *z);
 /* The undisturbed surface at (x, y): the terrain plus the layer's depth. */
 double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y);
 
