@@ -97,6 +97,9 @@ static const scene SCENES[] = {
     TRIAL("landing flat complex_uneven", "flat", "complex_uneven", BOTH),
     TRIAL("landing flat stepped", "flat", "stepped", FULL),
     TRIAL("landing flat rough", "flat", "rough", FULL | SLOW),
+    /* the same landings on a soil (docs/soil.md): their cost per step against the rows on flat ground */
+    TRIAL("landing biomimetic soil dry_sand", "biomimetic", "soils/dry_sand", FULL | SLOW),
+    TRIAL("landing flat soil dry_sand", "flat", "soils/dry_sand", FULL | SLOW),
     {"walking", BY_WALK, "scenarios/walking.ini", {NULL}, FULL | SLOW},
     {"walking (2 steps)", BY_WALK, "scenarios/walking.ini", {"walk.steps=2"}, QUICK},
 };

@@ -6,6 +6,7 @@
 
 #include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
+#include "footsim/sim/fs_sim_soil.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -77,7 +78,7 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     fs_sim_ground_force(sim, f);
     double tilt = fs_sim_robot_tilt(sim) / DEG;
     out->peak_tilt_deg = fmax(out->peak_tilt_deg, tilt);
-    if (!w->touched && sim->contacts_now > 0) {
+    if (!w->touched && fs_sim_support(sim) > 0) { /* contacts, or the soil holding a foot */
         /* the first touch of any foot, at the instant its lowest point met the surface (fs_touch);
          * a biped's ankle drop and slip are each foot's, from its own touch (finish) */
         const fs_touch *first = NULL;
@@ -194,7 +195,7 @@ static void sample_of(const fs_sim *sim, fs_outcome_sample *s)
 {
     double ke;
     fs_sim_energy(sim, &ke, NULL, NULL);
-    *s = (fs_outcome_sample){sim->time_s, fs_sim_robot_tilt(sim), ke, fs_sim_max_speed(sim), sim->contacts_now,
+    *s = (fs_outcome_sample){sim->time_s, fs_sim_robot_tilt(sim), ke, fs_sim_max_speed(sim), fs_sim_support(sim),
                              sim->step_taken_s / sim->sc->def.step_s};
 }
 

@@ -4,6 +4,7 @@
 #include "footsim/sim/fs_carriage.h"
 #include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
+#include "footsim/sim/fs_sim_soil.h"
 
 #include <math.h>
 #include <string.h>
@@ -71,7 +72,7 @@ static int judge_step(void *user, fs_sim *sim)
         w->judged = 1;
         double a[3];
         fs_sim_ankle(sim, a);
-        int ok = sim->contacts_now > 0 && ankle_tilt(sim) < d->walk_fall_tilt_deg * DEG;
+        int ok = fs_sim_support(sim) > 0 && ankle_tilt(sim) < d->walk_fall_tilt_deg * DEG; /* contacts or soil */
         ok ? out->steps_completed++ : out->falls++;
         const fs_terrain_def *td = w->td;
         int rough = td->kind == FS_TERRAIN_ROUGH && a[0] >= td->patch_x_min_m && a[0] <= td->patch_x_max_m;

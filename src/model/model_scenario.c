@@ -163,7 +163,10 @@ static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
                 "image's edge; move the heightmap (x0_m, y0_m) or the foot (start.x_m, y_m) to keep the foot on the "
                 "data", t->path, e[0], e[1], e[2], e[3], t->placed_at, fmax(1, round(outside * 100)), box[0], box[1],
                 box[2], box[3]);
-    return fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
+    fs_status s = fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
+    if (s == FS_OK && sc->terrain.def.soil.model != FS_SOIL_NONE) /* the soil's grid over the same region */
+        s = fs_soil_region(&sc->terrain.def.soil, box, sc->terrain.path, sc->terrain.soil_region, NULL, err);
+    return s;
 }
 
 /* Relations between the scenario's keys that no single key can judge, checked where the file is
@@ -185,6 +188,7 @@ static fs_status check_relations(fs_scenario *sc, const fs_config *cfg, fs_error
         const char *why = d->kind == FS_SCENARIO_WALK ? "the walking machine drives its carriage by the step"
                           : d->impact_substeps > 1 ? "impact_substeps is the fixed step's way to resolve a touchdown"
                           : d->auto_disable_s > 0 ? "ODE's auto-disable keeps a state a rejected step cannot restore"
+                          : sc->terrain.def.soil.model != FS_SOIL_NONE ? "a soil's nodes (prints, slip) are not put back by a rejected step"
                           : d->step_min_s * 2 > d->step_max_s ? "step_min_s must be at most half step_max_s"
                                                                : NULL;
         if (why)

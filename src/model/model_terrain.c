@@ -56,6 +56,45 @@ const fs_key fs_terrain_keys[] = {
     NUM("material", "damping_Ns_per_m", damping_Ns_per_m, 0, 1e9, 0, "N s/m", "2e4", "contact damping (in series with the sole's)"),
     NUM("material", "sink_bound_m", sink_bound_m, 0, 1, POS, "m", "1e-3",
         "a landing fell when a foot shape ends deeper than this in the ground (soft ground states its own)"),
+    /* a soil laid over this ground (fs_soil.h, docs/soil.md) */
+    {"soil", "model", FS_KEY_CHOICE, F(soil.model), 0, 0, 0, 0, "none|bekker|rft", "", "none",
+     "none: the ground is rigid; bekker: Bekker-Wong/Janosi terramechanics (as Chrono's SCM); rft: resistive force "
+     "theory for granular media (Li, Zhang & Goldman 2013)"},
+    NUM("soil", "depth_m", soil.depth_m, 0, 10, POS, "m", "0.1", "thickness of the soil over the terrain, which is its rigid bedrock"),
+    NUM("soil", "grid_m", soil.grid_m, 1e-4, 0.05, 0, "m", "5e-4",
+        "spacing of the soil's nodes (0.5 mm: a 3 mm toe sphere's patch spans several nodes; docs/soil.md)"),
+    NUM("soil", "margin_m", soil.margin_m, 0, 1, 0, "m", "0.03", "the grid covers the region the feet can reach plus this"),
+    NUM("soil", "b_min_m", soil.b_min_m, 0, 1, POS, "m", "0.002",
+        "Bekker's b (twice a patch's area over its perimeter) is taken at least this (a patch as it first forms)"),
+    NUM("soil", "slip_speed_m_per_s", soil.slip_speed_m_per_s, 0, 10, POS, "m/s", "1e-3",
+        "shear and drag act fully above this slip speed and in proportion below it (a regularisation, a choice)"),
+    INT("soil", "max_nodes", soil.max_nodes, 1000, 50000000, "4000000",
+        "the most nodes the grid may cover (its index: 4 bytes a tile of 256 nodes; a tile a foot has reached: 88 bytes a node)"),
+    NUM("bekker", "n", soil.n, 0, 5, POS, "", "1.1", "sinkage exponent n"),
+    NUM("bekker", "k_c_N_per_m_n1", soil.k_c_N_per_m_n1, 0, 1e12, 0, "N/m^(n+1)", "0", "cohesive modulus k_c"),
+    NUM("bekker", "k_phi_N_per_m_n2", soil.k_phi_N_per_m_n2, 0, 1e12, 0, "N/m^(n+2)", "2e6", "frictional modulus k_phi"),
+    NUM("bekker", "cohesion_Pa", soil.cohesion_Pa, 0, 1e9, 0, "Pa", "50", "cohesion c"),
+    NUM("bekker", "friction_deg", soil.friction_deg, 0, 90, 0, "deg", "20", "internal friction angle phi, below 90"),
+    NUM("bekker", "shear_K_m", soil.shear_K_m, 0, 1, POS, "m", "0.01", "Janosi's shear deformation modulus K"),
+    NUM("bekker", "K_e_Pa_per_m", soil.K_e_Pa_per_m, 0, 1e13, POS, "Pa/m", "5e7", "elastic unloading and reloading slope K_e"),
+    NUM("bekker", "damping_Pa_s_per_m", soil.damping_Pa_s_per_m, 0, 1e9, 0, "Pa s/m", "0",
+        "pressure added per sinking speed (Chrono's R)"),
+    NUM("rft", "A00", soil.rft_coeff[0], -10, 10, 0, "", "0.206", "generic alpha_z coefficient (Li et al. 2013)"),
+    NUM("rft", "A10", soil.rft_coeff[1], -10, 10, 0, "", "0.169", "generic alpha_z coefficient"),
+    NUM("rft", "B11", soil.rft_coeff[2], -10, 10, 0, "", "0.212", "generic alpha_z coefficient"),
+    NUM("rft", "B01", soil.rft_coeff[3], -10, 10, 0, "", "0.358", "generic alpha_z coefficient"),
+    NUM("rft", "Bm11", soil.rft_coeff[4], -10, 10, 0, "", "0.055", "generic alpha_z coefficient B-11"),
+    NUM("rft", "C11", soil.rft_coeff[5], -10, 10, 0, "", "-0.124", "generic alpha_x coefficient"),
+    NUM("rft", "C01", soil.rft_coeff[6], -10, 10, 0, "", "0.253", "generic alpha_x coefficient"),
+    NUM("rft", "Cm11", soil.rft_coeff[7], -10, 10, 0, "", "0.007", "generic alpha_x coefficient C-11"),
+    NUM("rft", "D10", soil.rft_coeff[8], -10, 10, 0, "", "0.088", "generic alpha_x coefficient"),
+    NUM("rft", "zeta_N_per_m3", soil.zeta_N_per_m3, 0, 1e10, 0, "N/m^3", "0",
+        "the medium's scale: alpha = zeta times the generic fit (one plate test); an rft soil must give it"),
+    NUM("rft", "density_kg_per_m3", soil.density_kg_per_m3, 0, 1e5, 0, "kg/m^3", "0",
+        "bulk density of the medium, for the inertial term; an rft soil must give it"),
+    NUM("rft", "inertial_lambda", soil.inertial_lambda, 0, 100, 0, "", "1",
+        "the inertial pressure is lambda rho (v.n)^2 on an element moving into the medium (a choice, docs/soil.md)"),
+    NUM("rft", "friction_mu", soil.friction_mu, 0, 10, 0, "", "0.4", "intruder-grain friction on the inertial pressure"),
 };
 const int fs_terrain_nkeys = (int)(sizeof fs_terrain_keys / sizeof fs_terrain_keys[0]);
 
@@ -373,7 +412,7 @@ static fs_status check_terrain(const fs_terrain *t, const fs_config *cfg, fs_err
                        "%s: correlation_m is %.3g lattice cells; at most 300: use a coarser resolution_m",
                        fs_config_where(cfg, "rough", "correlation_m", where, sizeof where),
                        d->correlation_m / d->resolution_m);
-    return FS_OK;
+    return fs_soil_check(&d->soil, cfg, t->path, err);
 }
 
 fs_status fs_terrain_load(const char *path, const char *const *overrides, int noverrides, fs_terrain *t,

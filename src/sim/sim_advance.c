@@ -3,6 +3,7 @@
  * caller adds, kept for a step's later substeps. The whole step, its substeps and the
  * error-controlled step (sim_step.c, sim_adapt.c) all take their ODE steps here. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include <math.h>
 #include <string.h>
@@ -59,6 +60,11 @@ fs_status fs_sim_step_by(fs_sim *sim, double h, fs_error *err)
     sim->contacts_total += sim->contacts_now;
     if (sim->contacts_now > 0)
         fs_sim_note_touch(sim, h);
+    if (sim->soil) { /* the soil's forces, explicit, for this (sub)step (fs_sim_soil.h) */
+        fs_status st = fs_sim_soil_apply(sim, h, err);
+        if (st != FS_OK)
+            return st;
+    }
     fs_sim_lap(sim, FS_STAGE_CONTACTS);
     /* the ODE step, with this sim's own state of ODE's one random generator (QuickStep draws on
      * it to order its constraints), so that other sims stepped between leave it alone */

@@ -1,6 +1,7 @@
 /* sim_build.c: the foot built in ODE from its geometry (bodies, shapes, joints, springs, the
  * robot, the ground), and taken down again. The step is sim_step.c. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include "sim_ground.h"
 
@@ -98,6 +99,8 @@ static double start_lift(const fs_sim *sim)
             }
         lift = fmax(lift, top - lowest);
     }
+    if (sim->sc->terrain.def.soil.model != FS_SOIL_NONE) /* drop_m above the soil's surface */
+        lift += sim->sc->terrain.def.soil.depth_m;
     return lift + sim->sc->def.drop_m;
 }
 
@@ -391,14 +394,16 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
     double box[4], m = sim->sc->def.region_margin_m + 0.05;
     fs_scenario_reach(sim->sc, box);
     int steps = t->def.kind == FS_TERRAIN_STEPPED;
-    double dx = steps ? 0.001 : (box[1] - box[0] + 2 * m); /* steps need their edges sampled */
-    int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = 2;
-    double dy = box[3] - box[2] + 2 * m;
+    /* steps need their edges sampled; a soil its prints, every 1 mm both ways */
+    int soil = t->def.soil.model != FS_SOIL_NONE;
+    double dx = steps || soil ? 0.001 : (box[1] - box[0] + 2 * m);
+    int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = soil ? (int)ceil((box[3] - box[2] + 2 * m) / dx) + 1 : 2;
+    double dy = soil ? dx : box[3] - box[2] + 2 * m;
     sim->ground_grid = malloc(sizeof *sim->ground_grid + (size_t)nx * ny * sizeof sim->ground_grid->z[0]);
     if (!sim->ground_grid)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sim->sc->path);
     sim->ground_grid->sampled = 0;
-    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid->z, !steps};
+    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid->z, !steps && !soil};
     return FS_OK;
 }
 
@@ -502,6 +507,8 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
     body_reach(sim);
     sim->profile = opts->profile;
     fs_status made = fs_sim_adapt_init(sim, err);
+    if (made == FS_OK)
+        made = fs_sim_soil_build(sim, err);
     return made == FS_OK ? scene_ground(sim, err) : made;
 }
 
@@ -543,6 +550,7 @@ void fs_sim_destroy(fs_sim *sim)
     free(sim->scratch);
     fs_sim_adapt_free(sim);
     free(sim->ground_grid);
+    fs_sim_soil_destroy(sim);
     fs_ode_context_leave(sim->ode_context);
     memset(sim, 0, sizeof *sim);
 }

@@ -1,6 +1,7 @@
 /* sim_measure.c: what a simulation's state measures now (energy, speeds, lean, penetration,
  * ground force, hinge angles, the ankle, the load): read from ODE, never changing it. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include "sim_ground.h"
 
@@ -150,6 +151,8 @@ double fs_sim_robot_tilt(const fs_sim *sim)
     return acos(fmax(-1.0, fmin(1.0, R[10])));
 }
 
+/* With a soil the terrain is its bedrock: the soil's surface follows the shape it carries, so a shape
+ * can sink only into the bedrock (docs/soil.md, What reads the ground). */
 double fs_sim_penetration(const fs_sim *sim)
 {
     const fs_terrain *t = &sim->sc->terrain;
@@ -177,6 +180,14 @@ double fs_sim_penetration(const fs_sim *sim)
 static dBodyID foot_ankle_body(const fs_sim *sim, int foot)
 {
     return sim->body[sim->geom->nfeet > 1 ? sim->geom->foot[foot].ankle_body : sim->geom->ankle_body];
+}
+
+void fs_sim_soil_force(const fs_sim *sim, int foot, double force[3])
+{
+    if (sim->soil)
+        memcpy(force, sim->soil->foot_force[1 + foot], 3 * sizeof(double));
+    else
+        force[0] = force[1] = force[2] = 0;
 }
 
 void fs_sim_foot_ankle(const fs_sim *sim, int foot, double p[3])
@@ -245,6 +256,12 @@ static void feedback_force(const fs_sim *sim, int foot, double force[3])
         if (foot == EVERY_CONTACT || contact_foot(sim, i) == foot)
             for (int k = 0; k < 3; k++)
                 force[k] += sim->feedback[i].f1[k];
+    if (sim->soil) { /* and the soil's, on the same feet */
+        double s[3];
+        fs_sim_soil_force(sim, foot == EVERY_CONTACT ? -1 : foot, s);
+        for (int k = 0; k < 3; k++)
+            force[k] += s[k];
+    }
 }
 
 void fs_sim_add_step_force(fs_sim *sim, int substep, int n)

@@ -1,5 +1,6 @@
 /* sim_scene.c: the simulation as plain data for anything that draws it (fs_scene.h). */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include "footsim/base/fs_path.h"
 
@@ -56,16 +57,19 @@ static void robot_box(const fs_sim *sim, fs_scene_shape *box)
 }
 
 /* The plane or steps sampled on the grid scene_ground (sim_build.c) set out, once: the first
- * scene asks for it. A heightfield's grid is its own samples. */
+ * scene asks for it. A heightfield's grid is its own samples. With a soil, its surface now, at every
+ * scene: the prints and the foot pressing them (fs_sim_soil.h). */
 static void sample_ground(const fs_sim *sim)
 {
     fs_ground_grid *grid = sim->ground_grid;
-    if (!grid || grid->sampled)
+    if (!grid || (grid->sampled && !sim->soil))
         return;
     const fs_scene_ground *g = &sim->scene_ground;
     for (int j = 0; j < g->ny; j++)
-        for (int i = 0; i < g->nx; i++)
-            grid->z[j * g->nx + i] = fs_terrain_height(&sim->sc->terrain, g->x0 + i * g->dx, g->y0 + j * g->dy);
+        for (int i = 0; i < g->nx; i++) {
+            double x = g->x0 + i * g->dx, y = g->y0 + j * g->dy;
+            grid->z[j * g->nx + i] = sim->soil ? fs_sim_ground_surface(sim, x, y) : fs_terrain_height(&sim->sc->terrain, x, y);
+        }
     grid->sampled = 1;
 }
 

@@ -13,6 +13,7 @@
 #define FS_TERRAIN_H
 
 #include "footsim/io/fs_config.h"
+#include "footsim/model/fs_soil.h"
 
 typedef enum fs_terrain_kind {
     FS_TERRAIN_FLAT, FS_TERRAIN_SLOPE, FS_TERRAIN_STEPPED, FS_TERRAIN_ROUGH,
@@ -39,6 +40,7 @@ typedef struct fs_terrain_def {
     double heightmap_scale_m, heightmap_pixel_m, heightmap_x0_m, heightmap_y0_m;
     double mu, restitution, stiffness_N_per_m, damping_Ns_per_m; /* the ground's material */
     double sink_bound_m;       /* deepest a landed foot may end in it (fs_outcome.h) */
+    fs_soil_def soil;          /* [soil], [bekker], [rft]: a deformable layer over this ground (fs_soil.h) */
 } fs_terrain_def;
 
 typedef struct fs_rock { double x, y, height, radius; } fs_rock;
@@ -63,6 +65,8 @@ typedef struct fs_terrain {
      * above a height skips the blocks below it */
     int bx, by;
     double *zblock;
+    /* with a soil: the rectangle its grid covers, [xmin, xmax, ymin, ymax] (fs_soil_region), m */
+    double soil_region[4];
 } fs_terrain;
 
 enum { FS_TERRAIN_BLOCK = 8 };

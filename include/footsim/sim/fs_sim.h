@@ -153,6 +153,7 @@ typedef struct fs_sim {
     double damped_contact_s; /* c / k of the contacts: and at most this while a foot touches the ground */
     int cruise_left;       /* steps still to take singly at the dampers' bound before the next doubled one */
     fs_step_stats stats;
+    struct fs_sim_soil *soil; /* the terrain's soil layer (fs_sim_soil.h), or NULL: rigid ground only */
 } fs_sim;
 
 /* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */

@@ -1,0 +1,33 @@
+/* fs_sim_soil.h: a simulation's soil (fs_soil_grid.h), when its terrain has one ([soil] model not
+ * none): what the experiments read of it. Without a soil every function here says so (NULL, 0) and
+ * nothing of a rigid run's arithmetic changes: the soil's hooks in the step, the measures and the
+ * start pose are all behind `sim->soil != NULL`.
+ *
+ * The soil's forces are applied as explicit forces and torques on the bodies inside each step and
+ * substep (sim_advance.c's contact stage), after the rigid contacts are made and before the ODE step;
+ * the ground force a step reports (fs_sim_ground_force, fs_sim_foot_force) includes them, a foot
+ * that the soil holds is supported (fs_sim_support), and its first soil contact is its touchdown
+ * (fs_sim_first_touch). */
+#ifndef FS_SIM_SOIL_H
+#define FS_SIM_SOIL_H
+
+#include "footsim/sim/fs_sim.h"
+#include "footsim/sim/fs_soil_grid.h"
+
+/* The soil's grid, or NULL without a soil. */
+const fs_soil_grid *fs_sim_soil_grid(const fs_sim *sim);
+
+/* The soil nodes carrying foot (0, 1; -1: every foot) in the last (sub)step; 0 without a soil. */
+int fs_sim_soil_nodes(const fs_sim *sim, int foot);
+
+/* What holds the feet now: contact points plus soil nodes (the outcome rules' support). */
+int fs_sim_support(const fs_sim *sim);
+
+/* The soil's force on foot (-1: every foot) in the last (sub)step, N (0 without a soil). */
+void fs_sim_soil_force(const fs_sim *sim, int foot, double force[3]);
+
+/* The soil's surface under (x, y) now, m: its print, or the shape pressing it; without a soil the
+ * terrain's surface. */
+double fs_sim_ground_surface(const fs_sim *sim, double x, double y);
+
+#endif

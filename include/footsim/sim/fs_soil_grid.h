@@ -1,0 +1,116 @@
+/* fs_soil_grid.h: the state of a soil during one simulation (fs_soil.h gives its laws and keys):
+ * a regular grid of nodes over the region the feet can reach, each with its undisturbed surface
+ * height, plastic sinkage, the pressure it yielded at and the slip accumulated on it, and the
+ * forces it gives the bodies whose soil shapes reach below its surface.
+ *
+ * Storage follows the feet: the region is an index of 16 x 16-node tiles, and a tile is taken from
+ * a pool the first time a shape comes below the soil's top over it. The pool is allocated at
+ * fs_soil_grid_init for the tiles under the shapes' start, and doubles (realloc) when it runs out,
+ * never past the region's tiles or max_nodes: the only allocation a step may make, a few times in
+ * a run, said in docs/soil.md. Prints persist for the whole run (a node never forgets its plastic
+ * sinkage).
+ *
+ * Each step (and each substep) fs_soil_grid_step casts a vertical line through every node under a
+ * shape's bounding box, finds the shape's lowest surface there (capsules and boxes in closed form),
+ * gives a node to the lowest shape over it, and computes per node (SCM's way, explicit):
+ * - bekker: the elastic trial K_e (s - s_p); past the yield pressure, Bekker's (k_c / b + k_phi) s^n
+ *   with b = 2 A / P of the shape's loaded patch (at least b_min_m), the yield raised and the plastic
+ *   sinkage moved to s - sigma / K_e; damping - R v_z added, never tension; Janosi shear from the slip
+ *   j accumulated on the node, against the slip velocity (full above slip_speed_m_per_s, in
+ *   proportion below: the regularisation that keeps a resting foot from chattering). The viscous
+ *   slope this gives a shape, sum of tau A / max(|v_t|, slip_speed), is an explicit damper: it is
+ *   capped at half its body's mass over the step (c h / m <= 0.5, inside explicit damping's
+ *   stability bound c h / m < 2) by scaling the shape's shear down, which widens the viscous zone
+ *   of a light link (a toe) instead of letting it chatter;
+ * - rft: the same elastic-plastic frame with RFT's zeta alpha_z(beta, gamma) |z| as the yield law,
+ *   alpha_x's drag in proportion to the vertical stress mobilised, and the inertial pressure
+ *   lambda rho (v.n)^2 with its friction on elements moving into the medium.
+ * Forces are summed per shape into a force and a torque about its body's origin. Depth is measured
+ * from the undisturbed surface and never past the bedrock (the rigid contacts hold a foot there).
+ * Plain C, no ODE: the sim's glue (sim_soil.c) reads the bodies and applies the forces. */
+#ifndef FS_SOIL_GRID_H
+#define FS_SOIL_GRID_H
+
+#include "footsim/model/fs_terrain.h"
+
+enum { FS_SOIL_TILE = 16, FS_SOIL_MAX_SHAPES = 64 };
+
+typedef enum fs_soil_shape_kind { FS_SOIL_CAPSULE = 0, FS_SOIL_BOX = 1 } fs_soil_shape_kind;
+
+/* A body's shape for the soil, in its body's frame (origin at the body's origin). */
+typedef struct fs_soil_shape {
+    int kind;               /* fs_soil_shape_kind */
+    int body;               /* the caller's body index */
+    int foot;               /* 0 or 1 */
+    char name[32];
+    double a[3], b[3];      /* capsule: its segment's ends; box: a is its centre */
+    double radius_m;        /* capsule */
+    double half[3];         /* box: half lengths along its axes */
+    double R[9];            /* box: its axes in the body frame (columns), row-major */
+    double plan_area_m2;    /* the area it presents from below at rest (stated, docs/soil.md) */
+} fs_soil_shape;
+
+/* A body's state: its origin, rotation (row-major, world = R body), velocity and spin (world), and
+ * its mass, which bounds the shear's regularisation (fs_soil_grid_step). */
+typedef struct fs_soil_body { double p[3], R[9], v[3], w[3], mass_kg; } fs_soil_body;
+
+typedef struct fs_soil_node {
+    double h0_m;            /* the undisturbed surface (bedrock + depth) */
+    double sp_m;            /* plastic sinkage: the print's depth here */
+    double yield_Pa;        /* the pressure it yielded at */
+    double slip_m;          /* shear displacement accumulated on it */
+    double zb_m;            /* this step: the lowest shape surface over it */
+    double n[3];            /* ... that surface's outward normal */
+    double sigma_Pa;        /* this step: its normal stress */
+    long stamp;             /* the step that set zb (0: never) */
+    int shape;              /* ... and whose shape it is */
+} fs_soil_node;
+
+typedef struct fs_soil_grid {
+    const fs_terrain *terrain;
+    fs_soil_def d;
+    double x0, y0, dx;      /* node (i, j) at (x0 + i dx, y0 + j dx) */
+    int nx, ny;             /* nodes over the region */
+    int tx, ty;             /* tiles over it */
+    int *tile;              /* tx * ty: the pool slot of each tile, or -1 */
+    fs_soil_node *pool;     /* ntiles * FS_SOIL_TILE^2 nodes */
+    int ntiles, cap_tiles, max_tiles;
+    int grows;              /* how many times the pool grew during the run */
+    double top_m;           /* the highest undisturbed surface: a shape above it meets nothing */
+    int nshapes;
+    fs_soil_shape shape[FS_SOIL_MAX_SHAPES];
+    long stamp;
+    /* the last step's results, per shape: force and torque about its body's origin (world), nodes */
+    double force[FS_SOIL_MAX_SHAPES][3], torque[FS_SOIL_MAX_SHAPES][3];
+    int nodes[FS_SOIL_MAX_SHAPES];
+    double b_m[FS_SOIL_MAX_SHAPES];
+    double tan_phi;         /* tan of the friction angle, once */
+    double work_J;          /* work the soil's forces have taken out of the bodies (sum of -F.v h) */
+} fs_soil_grid;
+
+/* Sets the grid over t's soil region (t->soil_region) and allocates its index and a pool for the
+ * tiles under boxes[0 .. nboxes - 1] ([xmin, xmax, ymin, ymax] each: the shapes at the start).
+ * FS_NO_MEMORY, or FS_BAD_INPUT past max_nodes (fs_soil_region checks it first). */
+fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (*boxes)[4], int nboxes, fs_error *err);
+void fs_soil_grid_free(fs_soil_grid *g);
+
+/* One step of h: forces on every shape from the bodies' states (indexed by shape.body). FS_NO_MEMORY
+ * when the pool cannot grow (then no force is given). */
+fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double h, fs_error *err);
+
+/* The soil's surface at node (i, j) now (the print, or the shape pressing it this step), m; its
+ * undisturbed surface and plastic sinkage; NULL node when (i, j) lies outside the region. */
+const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j);
+double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y);
+/* The undisturbed surface at (x, y): the terrain plus the layer's depth. */
+double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y);
+
+/* Over every stored node: the prints' volume (sum of plastic sinkage times dx^2), m^3, the deepest
+ * plastic sinkage, m, and how many nodes carry a print (sp > 0). */
+double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes);
+
+/* A vertical line at (x, y) against a shape placed by body: its lowest point below z_top on the
+ * shape (returned, or +INFINITY when it misses) and the outward normal there. */
+double fs_soil_shape_lowest(const fs_soil_shape *s, const fs_soil_body *body, double x, double y, double n[3]);
+
+#endif

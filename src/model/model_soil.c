@@ -1,0 +1,69 @@
+/* model_soil.c: a soil's relations between keys, the region its grid covers, and its laws. */
+#include "footsim/model/fs_soil.h"
+
+#include <math.h>
+#include <stdio.h>
+
+fs_status fs_soil_check(const fs_soil_def *d, const fs_config *cfg, const char *path, fs_error *err)
+{
+    char where[FS_PATH_MAX + 80];
+    if (d->model == FS_SOIL_NONE)
+        return FS_OK;
+    if (d->model == FS_SOIL_BEKKER && !(d->friction_deg < 90))
+        return fs_fail(err, FS_BAD_INPUT, "%s: friction_deg is %g; the friction angle must lie in [0, 90) degrees",
+                       fs_config_where(cfg, "bekker", "friction_deg", where, sizeof where), d->friction_deg);
+    if (d->model == FS_SOIL_RFT && !(d->zeta_N_per_m3 > 0))
+        return fs_fail(err, FS_BAD_INPUT, "%s: an rft soil needs [rft] zeta_N_per_m3 > 0, the medium's scale from one "
+                       "plate test (about 1e6 N/m^3 for dry sand or glass beads; terrains/soils/ has presets)",
+                       fs_config_where(cfg, "rft", "zeta_N_per_m3", where, sizeof where));
+    if (d->model == FS_SOIL_RFT && !(d->density_kg_per_m3 > 0))
+        return fs_fail(err, FS_BAD_INPUT, "%s: an rft soil needs [rft] density_kg_per_m3 > 0, the medium's bulk density "
+                       "(about 1500-1700 kg/m^3 for dry sand)",
+                       fs_config_where(cfg, "rft", "density_kg_per_m3", where, sizeof where));
+    (void)path;
+    return FS_OK;
+}
+
+fs_status fs_soil_region(const fs_soil_def *d, const double box[4], const char *path, double region[4], double *nodes,
+                         fs_error *err)
+{
+    double m = d->margin_m;
+    region[0] = box[0] - m, region[1] = box[1] + m, region[2] = box[2] - m, region[3] = box[3] + m;
+    double n = (floor((region[1] - region[0]) / d->grid_m) + 2) * (floor((region[3] - region[2]) / d->grid_m) + 2);
+    if (nodes)
+        *nodes = n;
+    if (!(n <= d->max_nodes))
+        return fs_fail(err, FS_BAD_INPUT,
+                       "%s [soil] grid_m: the soil's grid of %.3g m over the region the feet reach (%.3g x %.3g m with its margin) "
+                       "would have %.4g nodes, over [soil] max_nodes = %d; use a coarser grid_m, a smaller margin_m, "
+                       "or raise max_nodes", path, d->grid_m, region[1] - region[0], region[3] - region[2], n,
+                       d->max_nodes);
+    return FS_OK;
+}
+
+double fs_bekker_pressure(const fs_soil_def *d, double b_m, double z_m)
+{
+    return (d->k_c_N_per_m_n1 / b_m + d->k_phi_N_per_m_n2) * pow(fmax(z_m, 0), d->n);
+}
+
+double fs_bekker_sinkage(const fs_soil_def *d, double b_m, double p_Pa)
+{
+    return pow(fmax(p_Pa, 0) / (d->k_c_N_per_m_n1 / b_m + d->k_phi_N_per_m_n2), 1 / d->n);
+}
+
+double fs_soil_shear_strength(const fs_soil_def *d, double sigma_Pa)
+{
+    return d->cohesion_Pa + fmax(sigma_Pa, 0) * tan(d->friction_deg * M_PI / 180);
+}
+
+double fs_janosi_share(const fs_soil_def *d, double j_m) { return 1 - exp(-fabs(j_m) / d->shear_K_m); }
+
+void fs_rft_alpha(const fs_soil_def *d, double beta, double gamma, double *alpha_z, double *alpha_x)
+{
+    /* sum over m in {-1, 0, 1}, n in {0, 1} of A cos(2 m beta + n gamma) + B sin(...) (alpha_z) and
+     * C cos + D sin (alpha_x); the generic fit keeps nine of the terms */
+    const double *k = d->rft_coeff;
+    double a = 2 * beta, g = gamma;
+    *alpha_z = k[0] + k[1] * cos(a) + k[2] * sin(a + g) + k[3] * sin(g) + k[4] * sin(g - a);
+    *alpha_x = k[5] * cos(a + g) + k[6] * cos(g) + k[7] * cos(g - a) + k[8] * sin(a);
+}

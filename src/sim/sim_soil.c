@@ -1,0 +1,207 @@
+/* sim_soil.c: the feet's shapes for the soil, and the soil's forces put on the ODE bodies.
+ *
+ * Soil shapes (docs/soil.md gives their sizes and areas): the flat sole is its plate (a box); on the
+ * biomimetic foot every link is a capsule of its contact spheres' radius: the heel a capsule between
+ * its two heel spheres, each metatarsal from its midfoot joint to its ball sphere, each phalanx from
+ * its MTP joint to its toe sphere, the talus between its two joints at half the links' width. The
+ * contact spheres stay the shapes the rigid bedrock meets. */
+#include "sim_soil.h"
+
+#include "sim_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const fs_soil_grid *fs_sim_soil_grid(const fs_sim *sim) { return sim->soil ? &sim->soil->g : NULL; }
+
+int fs_sim_soil_nodes(const fs_sim *sim, int foot) { return sim->soil ? sim->soil->foot_nodes[1 + foot] : 0; }
+
+int fs_sim_support(const fs_sim *sim) { return sim->contacts_now + (sim->soil ? sim->soil->foot_nodes[0] : 0); }
+
+double fs_sim_ground_surface(const fs_sim *sim, double x, double y)
+{
+    return sim->soil ? fs_soil_grid_surface(&sim->soil->g, x, y) : fs_terrain_height(&sim->sc->terrain, x, y);
+}
+
+static int foot_of(const fs_foot_geom *g, int body)
+{
+    for (int f = 0; g->nfeet > 1 && f < g->nfeet; f++)
+        if (body >= g->foot[f].first_body && body < g->foot[f].first_body + g->foot[f].nbodies)
+            return f;
+    return g->nfeet > 1 ? -1 : 0;
+}
+
+/* A capsule from design point p to q (radius r) on body i, in its frame (origin at its centre). */
+static void add_capsule(fs_sim *sim, int body, fs_vec3 p, fs_vec3 q, double r, const char *name)
+{
+    fs_soil_grid *g = &sim->soil->g;
+    if (g->nshapes == FS_SOIL_MAX_SHAPES)
+        return;
+    fs_soil_shape *s = &g->shape[g->nshapes++];
+    memset(s, 0, sizeof *s);
+    const fs_vec3 c = sim->com[body];
+    s->kind = FS_SOIL_CAPSULE;
+    s->body = body;
+    s->foot = foot_of(sim->geom, body);
+    snprintf(s->name, sizeof s->name, "%s", name);
+    s->a[0] = p.x - c.x, s->a[1] = p.y - c.y, s->a[2] = p.z - c.z;
+    s->b[0] = q.x - c.x, s->b[1] = q.y - c.y, s->b[2] = q.z - c.z;
+    s->radius_m = r;
+    s->plan_area_m2 = 2 * r * hypot(q.x - p.x, q.y - p.y) + M_PI * r * r;
+}
+
+/* The anchors of the hinges joining body to another body of its foot, up to two. */
+static int anchors(const fs_foot_geom *g, int body, fs_vec3 out[2], int as_distal_only)
+{
+    int n = 0;
+    for (int h = 0; h < g->nhinges && n < 2; h++) {
+        const fs_hinge_geom *j = &g->hinge[h];
+        int other = j->body2 == body ? j->body1 : j->body1 == body && !as_distal_only ? j->body2 : -1;
+        if (other >= 0 && foot_of(g, other) == foot_of(g, body) && foot_of(g, other) >= 0)
+            out[n++] = j->anchor;
+    }
+    return n;
+}
+
+static void make_shapes(fs_sim *sim)
+{
+    const fs_foot_geom *g = sim->geom;
+    fs_soil_grid *sg = &sim->soil->g;
+    for (int b = 0; b < g->nboxes; b++) {
+        fs_soil_shape *s = &sg->shape[sg->nshapes++];
+        memset(s, 0, sizeof *s);
+        const int body = g->box[b].body;
+        const fs_vec3 c = sim->com[body], bc = g->box[b].centre;
+        s->kind = FS_SOIL_BOX;
+        s->body = body;
+        s->foot = foot_of(g, body);
+        snprintf(s->name, sizeof s->name, "sole");
+        s->a[0] = bc.x - c.x, s->a[1] = bc.y - c.y, s->a[2] = bc.z - c.z;
+        s->half[0] = 0.5 * g->box_size.x, s->half[1] = 0.5 * g->box_size.y, s->half[2] = 0.5 * g->box_size.z;
+        s->R[0] = s->R[4] = s->R[8] = 1;
+        s->plan_area_m2 = g->box_size.x * g->box_size.y;
+    }
+    for (int body = 0; body < g->nbodies; body++) {
+        if (foot_of(g, body) < 0)
+            continue;
+        int has_box = 0, ns = 0, first = -1, last = -1;
+        for (int b = 0; b < g->nboxes; b++)
+            has_box |= g->box[b].body == body;
+        for (int i = 0; i < g->nspheres; i++)
+            if (g->sphere[i].body == body) {
+                ns++;
+                last = i;
+                if (first < 0)
+                    first = i;
+            }
+        if (has_box)
+            continue;
+        fs_vec3 a[2];
+        if (ns >= 2) { /* the heel: across its spheres */
+            add_capsule(sim, body, g->sphere[first].centre, g->sphere[last].centre,
+                        fmax(g->sphere[first].radius_m, g->sphere[last].radius_m), g->body[body].name);
+        } else if (ns == 1) { /* a metatarsal or phalanx: from its proximal joint to its sphere */
+            if (anchors(g, body, a, 1) >= 1)
+                add_capsule(sim, body, a[0], g->sphere[first].centre, g->sphere[first].radius_m, g->body[body].name);
+            else
+                add_capsule(sim, body, g->sphere[first].centre, g->sphere[first].centre, g->sphere[first].radius_m,
+                            g->body[body].name);
+        } else if (anchors(g, body, a, 0) == 2) { /* the talus: between its joints */
+            add_capsule(sim, body, a[0], a[1], 0.5 * sim->sc->design.link_width_m, g->body[body].name);
+        }
+    }
+}
+
+static void read_bodies(fs_sim *sim)
+{
+    for (int i = 0; i < sim->geom->nbodies; i++) {
+        fs_soil_body *b = &sim->soil->body[i];
+        dBodyID id = sim->body[i];
+        const dReal *p = dBodyGetPosition(id), *R = dBodyGetRotation(id), *v = dBodyGetLinearVel(id),
+                    *w = dBodyGetAngularVel(id);
+        for (int k = 0; k < 3; k++) {
+            b->p[k] = p[k], b->v[k] = v[k], b->w[k] = w[k];
+            for (int c = 0; c < 3; c++)
+                b->R[3 * k + c] = R[4 * k + c];
+        }
+        dMass m;
+        dBodyGetMass(id, &m);
+        b->mass_kg = m.mass;
+    }
+}
+
+fs_status fs_sim_soil_build(fs_sim *sim, fs_error *err)
+{
+    if (sim->sc->terrain.def.soil.model == FS_SOIL_NONE || !sim->ground)
+        return FS_OK;
+    sim->soil = calloc(1, sizeof *sim->soil);
+    if (!sim->soil)
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the soil", sim->sc->path);
+    make_shapes(sim);
+    read_bodies(sim);
+    /* the pool sized for the tiles under the shapes at the start */
+    double boxes[FS_SOIL_MAX_SHAPES][4];
+    fs_soil_grid *g = &sim->soil->g;
+    for (int s = 0; s < g->nshapes; s++) {
+        double A[3], B[3], n[3];
+        (void)n;
+        const fs_soil_body *b = &sim->soil->body[g->shape[s].body];
+        for (int r = 0; r < 3; r++) {
+            A[r] = b->p[r] + b->R[3 * r] * g->shape[s].a[0] + b->R[3 * r + 1] * g->shape[s].a[1] + b->R[3 * r + 2] * g->shape[s].a[2];
+            B[r] = b->p[r] + b->R[3 * r] * g->shape[s].b[0] + b->R[3 * r + 1] * g->shape[s].b[1] + b->R[3 * r + 2] * g->shape[s].b[2];
+        }
+        double reach = g->shape[s].kind == FS_SOIL_BOX
+                           ? hypot(g->shape[s].half[0], g->shape[s].half[1])
+                           : g->shape[s].radius_m;
+        boxes[s][0] = fmin(A[0], B[0]) - reach, boxes[s][1] = fmax(A[0], B[0]) + reach;
+        boxes[s][2] = fmin(A[1], B[1]) - reach, boxes[s][3] = fmax(A[1], B[1]) + reach;
+    }
+    return fs_soil_grid_init(g, &sim->sc->terrain, (const double(*)[4])boxes, g->nshapes, err);
+}
+
+void fs_sim_soil_destroy(fs_sim *sim)
+{
+    if (!sim->soil)
+        return;
+    fs_soil_grid_free(&sim->soil->g);
+    free(sim->soil);
+    sim->soil = NULL;
+}
+
+fs_status fs_sim_soil_apply(fs_sim *sim, double h, fs_error *err)
+{
+    fs_sim_soil *so = sim->soil;
+    read_bodies(sim);
+    fs_status st = fs_soil_grid_step(&so->g, so->body, h, err);
+    if (st != FS_OK)
+        return st;
+    memset(so->foot_force, 0, sizeof so->foot_force);
+    memset(so->foot_nodes, 0, sizeof so->foot_nodes);
+    for (int s = 0; s < so->g.nshapes; s++) {
+        if (!so->g.nodes[s])
+            continue;
+        const double *F = so->g.force[s], *M = so->g.torque[s];
+        dBodyID b = sim->body[so->g.shape[s].body];
+        dBodyAddForce(b, F[0], F[1], F[2]);
+        dBodyAddTorque(b, M[0], M[1], M[2]);
+        int f = so->g.shape[s].foot;
+        for (int k = 0; k < 3; k++) {
+            so->foot_force[0][k] += F[k];
+            so->foot_force[1 + f][k] += F[k];
+        }
+        so->foot_nodes[0] += so->g.nodes[s];
+        so->foot_nodes[1 + f] += so->g.nodes[s];
+    }
+    /* a foot's first soil contact is its touchdown, at the start of this (sub)step */
+    int nfeet = sim->geom->nfeet > 1 ? sim->geom->nfeet : 1;
+    for (int f = 0; f < nfeet; f++) {
+        fs_touch *t = &sim->touch[f];
+        if (t->touched || !so->foot_nodes[1 + f])
+            continue;
+        t->touched = 1;
+        t->time_s = t->found_s = sim->time_s;
+        fs_sim_foot_ankle(sim, f, t->ankle_m);
+    }
+    return FS_OK;
+}

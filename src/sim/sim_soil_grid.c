@@ -1,0 +1,452 @@
+/* sim_soil_grid.c: the soil's nodes, tiles and per-node laws (fs_soil_grid.h); no ODE here. */
+#include "footsim/sim/fs_soil_grid.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { T = FS_SOIL_TILE, TT = FS_SOIL_TILE * FS_SOIL_TILE };
+
+/* ---- geometry: a vertical line against a shape ---------------------------------------------- */
+
+static void to_world(const fs_soil_body *b, const double l[3], double w[3])
+{
+    for (int r = 0; r < 3; r++)
+        w[r] = b->p[r] + b->R[3 * r] * l[0] + b->R[3 * r + 1] * l[1] + b->R[3 * r + 2] * l[2];
+}
+
+/* The lowest point of the capsule (segment A-B, radius r) on the vertical line through (x, y): the
+ * capsule is the union of balls along the segment, so the lowest point is the lowest of
+ * g(t) = A_z + t D_z - sqrt(r^2 - rho(t)^2), rho the horizontal distance to A + t D; g is convex
+ * and its stationary point has a closed form. */
+static double capsule_lowest(const double A[3], const double B[3], double r, double x, double y, double n[3])
+{
+    double D[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
+    double wx = x - A[0], wy = y - A[1];
+    double a = D[0] * D[0] + D[1] * D[1], wd = wx * D[0] + wy * D[1], w2 = wx * wx + wy * wy;
+    double t;
+    if (a < 1e-18) {
+        t = D[2] > 0 ? 0 : 1;
+    } else {
+        double perp2 = fmax(0, w2 - wd * wd / a); /* squared distance to the segment's line, in plan */
+        if (perp2 >= r * r)
+            return INFINITY;
+        double u = -D[2] * sqrt(a * (r * r - perp2) / (a + D[2] * D[2]));
+        t = (u + wd) / a;
+        t = fmin(1, fmax(0, t));
+    }
+    double qx = A[0] + t * D[0], qy = A[1] + t * D[1], qz = A[2] + t * D[2];
+    double rho2 = (x - qx) * (x - qx) + (y - qy) * (y - qy);
+    if (rho2 >= r * r)
+        return INFINITY;
+    double z = qz - sqrt(r * r - rho2);
+    n[0] = (x - qx) / r, n[1] = (y - qy) / r, n[2] = (z - qz) / r;
+    return z;
+}
+
+/* The box (centre c, axes the columns of R, half lengths h) entered by a line going up through (x, y). */
+static double box_lowest(const double c[3], const double R[9], const double h[3], double x, double y, double n[3])
+{
+    double o[3], dir[3]; /* the line's point at z = c_z and its direction, in the box's frame */
+    double rel[3] = {x - c[0], y - c[1], 0};
+    for (int k = 0; k < 3; k++) {
+        o[k] = R[k] * rel[0] + R[3 + k] * rel[1] + R[6 + k] * rel[2];
+        dir[k] = R[6 + k];
+    }
+    double t0 = -INFINITY, t1 = INFINITY;
+    int face = -1;
+    for (int k = 0; k < 3; k++) {
+        if (fabs(dir[k]) < 1e-12) {
+            if (fabs(o[k]) > h[k])
+                return INFINITY;
+            continue;
+        }
+        double ta = (-h[k] - o[k]) / dir[k], tb = (h[k] - o[k]) / dir[k];
+        if (ta > tb) {
+            double s = ta;
+            ta = tb, tb = s;
+        }
+        if (ta > t0)
+            t0 = ta, face = k;
+        t1 = fmin(t1, tb);
+    }
+    if (t0 > t1 || face < 0)
+        return INFINITY;
+    double s = dir[face] > 0 ? -1 : 1; /* the face entered looks against the line */
+    for (int r = 0; r < 3; r++)
+        n[r] = s * R[3 * r + face];
+    return c[2] + t0;
+}
+
+/* A shape where its body is now: world ends (capsule) or centre and axes (box). */
+typedef struct placed { int kind; double A[3], B[3], R[9], r, half[3]; } placed;
+
+static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
+{
+    p->kind = s->kind;
+    p->r = s->radius_m;
+    memcpy(p->half, s->half, sizeof p->half);
+    to_world(body, s->a, p->A);
+    to_world(body, s->b, p->B);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            p->R[3 * r + c] = body->R[3 * r] * s->R[c] + body->R[3 * r + 1] * s->R[3 + c] + body->R[3 * r + 2] * s->R[6 + c];
+}
+
+static double placed_lowest(const placed *p, double x, double y, double n[3])
+{
+    return p->kind == FS_SOIL_CAPSULE ? capsule_lowest(p->A, p->B, p->r, x, y, n) : box_lowest(p->A, p->R, p->half, x, y, n);
+}
+
+double fs_soil_shape_lowest(const fs_soil_shape *s, const fs_soil_body *body, double x, double y, double n[3])
+{
+    placed p;
+    place(s, body, &p);
+    return placed_lowest(&p, x, y, n);
+}
+
+/* A shape's plan extent now and its lowest point, from its bounding box. */
+static void shape_bounds(const fs_soil_shape *s, const fs_soil_body *b, double box[4], double *zmin)
+{
+    double A[3];
+    to_world(b, s->a, A);
+    if (s->kind == FS_SOIL_CAPSULE) {
+        double B[3], r = s->radius_m;
+        to_world(b, s->b, B);
+        box[0] = fmin(A[0], B[0]) - r, box[1] = fmax(A[0], B[0]) + r;
+        box[2] = fmin(A[1], B[1]) - r, box[3] = fmax(A[1], B[1]) + r;
+        *zmin = fmin(A[2], B[2]) - r;
+        return;
+    }
+    double e[3] = {0, 0, 0};
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            double Rw = b->R[3 * r] * s->R[c] + b->R[3 * r + 1] * s->R[3 + c] + b->R[3 * r + 2] * s->R[6 + c];
+            e[r] += fabs(Rw) * s->half[c];
+        }
+    box[0] = A[0] - e[0], box[1] = A[0] + e[0], box[2] = A[1] - e[1], box[3] = A[1] + e[1];
+    *zmin = A[2] - e[2];
+}
+
+/* ---- storage -------------------------------------------------------------------------------- */
+
+double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y)
+{
+    return fs_terrain_height(g->terrain, x, y) + g->d.depth_m;
+}
+
+static fs_status grow(fs_soil_grid *g, fs_error *err)
+{
+    int cap = g->cap_tiles ? 2 * g->cap_tiles : 16;
+    if (cap > g->max_tiles)
+        cap = g->max_tiles;
+    if (cap <= g->ntiles)
+        return fs_fail(err, FS_NO_MEMORY, "the soil's grid is full: %d tiles of %d nodes ([soil] max_nodes %d)",
+                       g->ntiles, TT, g->d.max_nodes);
+    fs_soil_node *p = realloc(g->pool, (size_t)cap * TT * sizeof *p);
+    if (!p)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's grid (%d tiles)", cap);
+    g->pool = p;
+    if (g->cap_tiles)
+        g->grows++;
+    g->cap_tiles = cap;
+    return FS_OK;
+}
+
+/* The tile (ti, tj), made when first needed: its nodes' undisturbed surface sampled. */
+static fs_status need_tile(fs_soil_grid *g, int ti, int tj, fs_error *err)
+{
+    int *slot = &g->tile[tj * g->tx + ti];
+    if (*slot >= 0)
+        return FS_OK;
+    if (g->ntiles == g->cap_tiles) {
+        fs_status s = grow(g, err);
+        if (s != FS_OK)
+            return s;
+    }
+    fs_soil_node *nd = g->pool + (size_t)g->ntiles * TT;
+    memset(nd, 0, TT * sizeof *nd);
+    for (int j = 0; j < T; j++)
+        for (int i = 0; i < T; i++)
+            nd[j * T + i].h0_m = fs_soil_grid_undisturbed(g, g->x0 + (ti * T + i) * g->dx, g->y0 + (tj * T + j) * g->dx);
+    *slot = g->ntiles++;
+    return FS_OK;
+}
+
+static fs_soil_node *node_at(const fs_soil_grid *g, int i, int j)
+{
+    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny)
+        return NULL;
+    int slot = g->tile[(j / T) * g->tx + i / T];
+    return slot < 0 ? NULL : g->pool + (size_t)slot * TT + (j % T) * T + i % T;
+}
+
+const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j) { return node_at(g, i, j); }
+
+double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y)
+{
+    int i = (int)lround((x - g->x0) / g->dx), j = (int)lround((y - g->y0) / g->dx);
+    const fs_soil_node *n = node_at(g, i, j);
+    if (!n)
+        return fs_soil_grid_undisturbed(g, x, y);
+    double s = n->h0_m - n->sp_m;
+    return n->stamp == g->stamp ? fmin(s, n->zb_m) : s;
+}
+
+/* The node range [i0, i1] x [j0, j1] over a plan box, clipped to the region; 0 when empty. */
+static int node_range(const fs_soil_grid *g, const double box[4], int r[4])
+{
+    r[0] = (int)fmax(0, ceil((box[0] - g->x0) / g->dx));
+    r[1] = (int)fmin(g->nx - 1, floor((box[1] - g->x0) / g->dx));
+    r[2] = (int)fmax(0, ceil((box[2] - g->y0) / g->dx));
+    r[3] = (int)fmin(g->ny - 1, floor((box[3] - g->y0) / g->dx));
+    return r[0] <= r[1] && r[2] <= r[3];
+}
+
+static fs_status need_tiles(fs_soil_grid *g, const int r[4], fs_error *err)
+{
+    for (int tj = r[2] / T; tj <= r[3] / T; tj++)
+        for (int ti = r[0] / T; ti <= r[1] / T; ti++) {
+            fs_status s = need_tile(g, ti, tj, err);
+            if (s != FS_OK)
+                return s;
+        }
+    return FS_OK;
+}
+
+fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (*boxes)[4], int nboxes, fs_error *err)
+{
+    g->terrain = t;
+    g->d = t->def.soil;
+    g->dx = g->d.grid_m;
+    g->tan_phi = tan(g->d.friction_deg * M_PI / 180);
+    g->x0 = t->soil_region[0];
+    g->y0 = t->soil_region[2];
+    g->nx = (int)floor((t->soil_region[1] - t->soil_region[0]) / g->dx) + 2;
+    g->ny = (int)floor((t->soil_region[3] - t->soil_region[2]) / g->dx) + 2;
+    if ((double)g->nx * g->ny > g->d.max_nodes)
+        return fs_fail(err, FS_BAD_INPUT, "%s: the soil's grid has %d x %d nodes, over [soil] max_nodes %d", t->path,
+                       g->nx, g->ny, g->d.max_nodes);
+    g->tx = (g->nx + T - 1) / T;
+    g->ty = (g->ny + T - 1) / T;
+    g->max_tiles = g->tx * g->ty;
+    g->tile = malloc((size_t)g->max_tiles * sizeof *g->tile);
+    if (!g->tile)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's grid");
+    for (int k = 0; k < g->max_tiles; k++)
+        g->tile[k] = -1;
+    /* the highest undisturbed surface, from the terrain's samples or its height function */
+    g->top_m = (fs_terrain_is_heightfield(t) && t->z ? t->zmax : fs_terrain_height(t, g->x0, g->y0)) + g->d.depth_m;
+    if (t->def.kind == FS_TERRAIN_SLOPE || t->def.kind == FS_TERRAIN_STEPPED) /* the region's highest corner or step */
+        for (int i = 0; i <= 64; i++)
+            for (int j = 0; j <= 1; j++)
+                g->top_m = fmax(g->top_m, fs_soil_grid_undisturbed(g, g->x0 + i * (g->nx - 1) * g->dx / 64,
+                                                                   g->y0 + j * (g->ny - 1) * g->dx));
+    /* the pool: the tiles under the shapes at the start, and room to double */
+    int want = 0;
+    for (int b = 0; b < nboxes; b++) {
+        int r[4];
+        if (node_range(g, boxes[b], r))
+            want += (r[1] / T - r[0] / T + 1) * (r[3] / T - r[2] / T + 1);
+    }
+    g->cap_tiles = 0;
+    int cap = want > 8 ? 2 * want : 16;
+    g->cap_tiles = cap > g->max_tiles ? g->max_tiles : cap;
+    g->pool = malloc((size_t)g->cap_tiles * TT * sizeof *g->pool);
+    if (!g->pool)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's grid (%d tiles)", g->cap_tiles);
+    return FS_OK;
+}
+
+void fs_soil_grid_free(fs_soil_grid *g)
+{
+    free(g->tile);
+    free(g->pool);
+    g->tile = NULL;
+    g->pool = NULL;
+}
+
+double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
+{
+    double v = 0, deep = 0;
+    long n = 0;
+    for (long k = 0; k < (long)g->ntiles * TT; k++) {
+        double sp = g->pool[k].sp_m;
+        v += sp;
+        deep = fmax(deep, sp);
+        n += sp > 0;
+    }
+    if (deepest_m)
+        *deepest_m = deep;
+    if (nodes)
+        *nodes = n;
+    return v * g->dx * g->dx;
+}
+
+/* ---- the step ------------------------------------------------------------------------------- */
+
+static void add_force(double f[3], double t[3], const double r[3], const double F[3])
+{
+    for (int k = 0; k < 3; k++)
+        f[k] += F[k];
+    t[0] += r[1] * F[2] - r[2] * F[1];
+    t[1] += r[2] * F[0] - r[0] * F[2];
+    t[2] += r[0] * F[1] - r[1] * F[0];
+}
+
+/* Whether node (i, j) is one of shape s's this step. */
+static int mine(const fs_soil_grid *g, int i, int j, int s)
+{
+    const fs_soil_node *n = node_at(g, i, j);
+    return n && n->stamp == g->stamp && n->shape == s;
+}
+
+/* Past the yield, the law: the normal stress from the elastic trial se (> the node's yield), the
+ * node's yield and print moved. */
+static double plastic(fs_soil_node *nd, double s, double se, double law, double Ke)
+{
+    double sigma = fmin(se, fmax(law, nd->yield_Pa));
+    nd->yield_Pa = sigma;
+    nd->sp_m = fmax(nd->sp_m, s - sigma / Ke);
+    return sigma;
+}
+
+/* The force on one node's element (bekker or rft), N, at point q moving at v: its normal part F and
+ * its shear part S, whose viscous slope (N s/m) is added to *slope. */
+static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, const double v[3], double h, double F[3],
+                       double S[3], double *slope)
+{
+    const fs_soil_def *d = &g->d;
+    double A = g->dx * g->dx, reg = d->slip_speed_m_per_s;
+    double s = fmin(nd->h0_m - nd->zb_m, d->depth_m); /* sinkage below the undisturbed surface, above the bedrock */
+    double vh = sqrt(v[0] * v[0] + v[1] * v[1]);
+    F[0] = F[1] = F[2] = S[0] = S[1] = S[2] = 0;
+    /* the elastic trial: within the yield (unloading, reloading, at rest) no law need be evaluated */
+    double se = d->K_e_Pa_per_m * (s - nd->sp_m);
+    if (se <= 0)
+        return;
+    if (d->model == FS_SOIL_BEKKER) {
+        double sigma = se <= nd->yield_Pa ? se : plastic(nd, s, se, fs_bekker_pressure(d, b, s), d->K_e_Pa_per_m);
+        double total = fmax(0, sigma - d->damping_Pa_s_per_m * v[2]);
+        nd->slip_m += vh * h;
+        double tau = (d->cohesion_Pa + sigma * g->tan_phi) * (1 - exp(-nd->slip_m / d->shear_K_m));
+        double k = tau / fmax(vh, reg);
+        S[0] = -k * v[0] * A, S[1] = -k * v[1] * A, F[2] = total * A;
+        *slope += k * A;
+        nd->sigma_Pa = total;
+        return;
+    }
+    /* rft: beta the element's tilt in the plane of its motion, gamma the motion's angle below horizontal */
+    const double *n = nd->n;
+    double speed = sqrt(vh * vh + v[2] * v[2]);
+    double e[2] = {1, 0}, nh = hypot(n[0], n[1]);
+    if (vh > reg)
+        e[0] = v[0] / vh, e[1] = v[1] / vh;
+    else if (nh > 1e-9)
+        e[0] = n[0] / nh, e[1] = n[1] / nh;
+    double gamma = speed > reg ? atan2(-v[2], vh) : M_PI / 2;
+    double beta = atan2(n[0] * e[0] + n[1] * e[1], fmax(-n[2], 1e-9));
+    double az, ax;
+    fs_rft_alpha(d, beta, fmax(gamma, 0), &az, &ax);
+    double dA = A / fmax(fabs(n[2]), 0.25); /* the element's own area over its plan cell */
+    double law = d->zeta_N_per_m3 * fmax(az, 0) * s;
+    double sigma = se <= nd->yield_Pa ? se : plastic(nd, s, se, law, d->K_e_Pa_per_m);
+    double mob = law > 0 ? sigma / law : 0;
+    double sx = d->zeta_N_per_m3 * ax * s * mob; /* drag, in proportion to the vertical stress mobilised */
+    F[0] = -sx * e[0] * dA, F[1] = -sx * e[1] * dA, F[2] = sigma * dA;
+    double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+    if (vn > 0) { /* moving into the medium: the inertial pressure and its friction */
+        double p = d->inertial_lambda * d->density_kg_per_m3 * vn * vn;
+        double vt[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
+        double vtn = sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]), f = d->friction_mu * p / fmax(vtn, reg);
+        for (int k = 0; k < 3; k++) {
+            F[k] -= p * n[k] * dA;
+            S[k] -= f * vt[k] * dA;
+        }
+        *slope += f * dA;
+    }
+    nd->slip_m += vh * h;
+    nd->sigma_Pa = F[2] / A;
+}
+
+fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double h, fs_error *err)
+{
+    g->stamp++;
+    int range[FS_SOIL_MAX_SHAPES][4], near[FS_SOIL_MAX_SHAPES];
+    /* each node to the lowest shape over it that reaches below its print */
+    for (int s = 0; s < g->nshapes; s++) {
+        const fs_soil_shape *sh = &g->shape[s];
+        const fs_soil_body *b = &bodies[sh->body];
+        double box[4], zmin;
+        shape_bounds(sh, b, box, &zmin);
+        memset(g->force[s], 0, sizeof g->force[s]);
+        memset(g->torque[s], 0, sizeof g->torque[s]);
+        g->nodes[s] = 0;
+        g->b_m[s] = 0;
+        near[s] = zmin < g->top_m && node_range(g, box, range[s]);
+        if (!near[s])
+            continue;
+        fs_status st = need_tiles(g, range[s], err);
+        if (st != FS_OK)
+            return st;
+        const int *r = range[s];
+        placed p;
+        place(sh, b, &p);
+        for (int j = r[2]; j <= r[3]; j++)
+            for (int i = r[0]; i <= r[1]; i++) {
+                fs_soil_node *nd = node_at(g, i, j);
+                double n[3], z = placed_lowest(&p, g->x0 + i * g->dx, g->y0 + j * g->dx, n);
+                if (!(z < nd->h0_m - nd->sp_m) || (nd->stamp == g->stamp && nd->zb_m <= z))
+                    continue;
+                nd->stamp = g->stamp;
+                nd->shape = s;
+                nd->zb_m = z;
+                memcpy(nd->n, n, sizeof n);
+            }
+    }
+    for (int s = 0; s < g->nshapes; s++) {
+        if (!near[s])
+            continue;
+        const int *r = range[s];
+        /* Bekker's b of the shape's loaded patch: twice its area over its perimeter (Chrono's convention) */
+        long cells = 0, edges = 0;
+        for (int j = r[2]; j <= r[3]; j++)
+            for (int i = r[0]; i <= r[1]; i++)
+                if (mine(g, i, j, s)) {
+                    cells++;
+                    edges += !mine(g, i + 1, j, s) + !mine(g, i - 1, j, s) + !mine(g, i, j + 1, s) + !mine(g, i, j - 1, s);
+                }
+        if (!cells)
+            continue;
+        double b = fmax(g->d.b_min_m, 2.0 * (double)cells * g->dx / (double)edges);
+        g->b_m[s] = b;
+        g->nodes[s] = (int)cells;
+        const fs_soil_body *bd = &bodies[g->shape[s].body];
+        double shear[3] = {0, 0, 0}, shear_torque[3] = {0, 0, 0}, slope = 0, work_n = 0, work_s = 0;
+        for (int j = r[2]; j <= r[3]; j++)
+            for (int i = r[0]; i <= r[1]; i++) {
+                if (!mine(g, i, j, s))
+                    continue;
+                fs_soil_node *nd = node_at(g, i, j);
+                double q[3] = {g->x0 + i * g->dx, g->y0 + j * g->dx, nd->zb_m};
+                double rq[3] = {q[0] - bd->p[0], q[1] - bd->p[1], q[2] - bd->p[2]};
+                double v[3] = {bd->v[0] + bd->w[1] * rq[2] - bd->w[2] * rq[1],
+                               bd->v[1] + bd->w[2] * rq[0] - bd->w[0] * rq[2],
+                               bd->v[2] + bd->w[0] * rq[1] - bd->w[1] * rq[0]};
+                double F[3], S[3];
+                node_force(g, nd, b, v, h, F, S, &slope);
+                work_n -= (F[0] * v[0] + F[1] * v[1] + F[2] * v[2]) * h;
+                work_s -= (S[0] * v[0] + S[1] * v[1] + S[2] * v[2]) * h;
+                add_force(g->force[s], g->torque[s], rq, F);
+                add_force(shear, shear_torque, rq, S);
+            }
+        /* the shear as an explicit damper: its slope kept within half the body's mass over the step */
+        double cap = 0.5 * bd->mass_kg / h, k = slope > cap ? cap / slope : 1;
+        for (int c = 0; c < 3; c++) {
+            g->force[s][c] += k * shear[c];
+            g->torque[s][c] += k * shear_torque[c];
+        }
+        g->work_J += work_n + k * work_s;
+    }
+    return FS_OK;
+}

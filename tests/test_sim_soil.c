@@ -1,0 +1,377 @@
+/* The soil (fs_soil.h, fs_soil_grid.h, fs_sim_soil.h) against closed forms, each tolerance derived
+ * from the grid spacing and the step:
+ * - the flat sole under a dead load on two Bekker soils (dry sand, sandy loam) at two loads: z = (p / (k_c/b + k_phi))^(1/n);
+ * - the load removed: the sole rises by the pressure's drop over K_e;
+ * - a print's volume: the surface's dent, the plastic sinkage summed over the nodes, and the sole's
+ *   area times the closed form's plastic sinkage, all three alike;
+ * - halving the grid moves the static sinkage by less than the grid's bound;
+ * - a plate dragged at constant normal load: Janosi's 1 - e^(-j/K) at j = K, 2K, 3K;
+ * - RFT: alpha_z(0, pi/2) = 1, alpha_x(0, pi/2) = 0 (and four values derived from the fit), a plate
+ *   at a depth and tilt against the formula, the inertial term against rho v^2;
+ * - a foot through a thin layer stops on the bedrock;
+ * - validation: n <= 0, a negative modulus, phi of 90 degrees, depth 0, RFT without zeta or density,
+ *   a grid over max_nodes are refused with file:line (or the key) before anything runs. */
+#include "fs_test.h"
+
+#include "footsim/sim/fs_sim.h"
+#include "footsim/sim/fs_sim_soil.h"
+
+#include <stdlib.h>
+#include <unistd.h>
+
+/* ---- the flat sole on Bekker soils ----------------------------------------------------------- */
+
+typedef struct sole_run {
+    double W_N, A_m2, P_m, sink_m, sigma_Pa, rebound_m, print_m3, dent_m3, grid_print_m3, plastic_m;
+    double b_m;
+    long nodes;
+} sole_run;
+
+/* The flat sole's bottom now, m. */
+static double sole_bottom(const fs_sim *sim)
+{
+    dVector3 l;
+    dGeomBoxGetLengths(sim->shape[0], l);
+    return dGeomGetPosition(sim->shape[0])[2] - 0.5 * l[2];
+}
+
+/* Steps until every body is slower than 1e-5 m/s (after the ramp) or 'most' steps. */
+static void settle(fs_sim *sim, int most)
+{
+    fs_error err;
+    for (int k = 0; k < most; k++) {
+        REQUIRE(fs_sim_step(sim, &err) == FS_OK);
+        if (sim->time_s > 0.05 && fs_sim_max_speed(sim) < 1e-5)
+            break;
+    }
+}
+
+/* The flat foot (turning locked, so that the sole stays level whatever the load's point) under
+ * load_kg on a soil file, grid grid_m: its sinkage at rest, then with the load removed, then lifted. */
+static void sole_on(const char *soil, double load_kg, double grid_m, double yaw_deg, sole_run *out)
+{
+    static fs_scenario sc;
+    fs_error err;
+    char terrain[200], load[64], grid[64], yaw[64];
+    snprintf(terrain, sizeof terrain, "scenario.terrain=../terrains/soils/%s", soil);
+    snprintf(load, sizeof load, "load.mass_kg=%g", load_kg);
+    snprintf(grid, sizeof grid, "soil.grid_m=%g", grid_m);
+    snprintf(yaw, sizeof yaw, "start.yaw_deg=%g", yaw_deg);
+    const char *set[] = {"scenario.design=feet/flat.ini", terrain, load, grid, yaw};
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 5, &sc, &err) == FS_OK);
+    fs_sim sim;
+    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+    dBodySetMaxAngularSpeed(sim.body[0], 0);
+    const fs_soil_grid *g = fs_sim_soil_grid(&sim);
+    REQUIRE(g != NULL);
+    settle(&sim, 20000);
+    dVector3 l;
+    dGeomBoxGetLengths(sim.shape[0], l);
+    out->A_m2 = l[0] * l[1];
+    out->P_m = 2 * (l[0] + l[1]);
+    out->W_N = (load_kg + sc.geom.total_mass_kg) * sc.def.gravity_m_per_s2;
+    double depth = sc.terrain.def.soil.depth_m, bottom = sole_bottom(&sim);
+    out->sink_m = depth - bottom;
+    out->b_m = g->b_m[0];
+    out->nodes = g->nodes[0];
+    double f[3];
+    fs_sim_ground_force(&sim, f);
+    out->sigma_Pa = f[2] / out->A_m2;
+    /* the load taken away slowly (over 0.05 s, so that the sole does not spring off its print): it
+     * rises on the unloading line */
+    double load_N = sim.load_N;
+    for (int k = 1; k <= 500; k++) {
+        sim.load_N = load_N * (1 - k / 500.0);
+        REQUIRE(fs_sim_step(&sim, &err) == FS_OK);
+    }
+    settle(&sim, 20000);
+    out->rebound_m = sole_bottom(&sim) - bottom;
+    /* lifted clear: every node shows its print */
+    const dReal *p = dBodyGetPosition(sim.body[0]);
+    dBodySetPosition(sim.body[0], p[0], p[1], p[2] + 0.05);
+    dBodySetLinearVel(sim.body[0], 0, 0, 0);
+    REQUIRE(fs_sim_step(&sim, &err) == FS_OK);
+    CHECK(fs_sim_soil_nodes(&sim, -1) == 0);
+    long marked;
+    out->grid_print_m3 = fs_soil_grid_print(g, &out->plastic_m, &marked);
+    double dent = 0;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            const fs_soil_node *n = fs_soil_grid_node(g, i, j);
+            if (n)
+                dent += n->h0_m - fs_soil_grid_surface(g, g->x0 + i * g->dx, g->y0 + j * g->dx);
+        }
+    out->dent_m3 = dent * g->dx * g->dx;
+    fs_sim_destroy(&sim);
+    fs_scenario_free(&sc);
+}
+
+/* The grid's share of the sole's area: nodes within half a spacing of its edge may fall either way. */
+static double area_bound(const sole_run *r, double grid_m) { return r->P_m * 0.5 * grid_m / r->A_m2 + 1e-3; }
+
+static void sole_sinks_as_bekker_says(void)
+{
+    const char *soils[2] = {"dry_sand.ini", "sandy_loam.ini"};
+    const double n[2] = {1.1, 0.7}, loads[2] = {13, 26}, grid = 1e-3;
+    for (int s = 0; s < 2; s++)
+        for (int k = 0; k < 2; k++) {
+            sole_run r;
+            sole_on(soils[s], loads[k], grid, 0, &r);
+            static fs_terrain t;
+            fs_error err;
+            char path[200];
+            snprintf(path, sizeof path, "terrains/soils/%s", soils[s]);
+            REQUIRE(fs_terrain_load(path, NULL, 0, &t, &err) == FS_OK);
+            double b = r.A_m2 * 2 / r.P_m, p = r.W_N / r.A_m2;
+            double z = fs_bekker_sinkage(&t.def.soil, b, p);
+            /* the grid's area and the patch's b differ from the sole's by the nodes along its edge: the
+             * sinkage, as p^(1/n), by 1/n of that; the rest is 1e-5 m/s for the settling's time */
+            double tol = z * area_bound(&r, grid) / n[s] * 1.5 + 1e-5;
+            printf("  %s, %g kg: sinkage %.3f mm, closed form %.3f mm (b %.4f m, grid's %.4f m), within %.3f mm\n",
+                   soils[s], loads[k], r.sink_m * 1e3, z * 1e3, b, r.b_m, tol * 1e3);
+            CHECK_NEAR(r.sink_m, z, tol);
+            /* load removed: the sole rises by the pressure's drop over K_e, the foot's own weight left */
+            double Ke = t.def.soil.K_e_Pa_per_m, drop = (r.W_N - (r.W_N - loads[k] * 9.81)) / (r.A_m2 * Ke);
+            printf("    rebound %.4f mm, p_max / K_e less the foot's own weight %.4f mm\n", r.rebound_m * 1e3, drop * 1e3);
+            CHECK_NEAR(r.rebound_m, drop, drop * (area_bound(&r, grid) + 0.02));
+            /* the print: its dent in the surface equals the plastic sinkage summed over the nodes, and
+             * the sole's area times the closed form's plastic sinkage z - p / K_e */
+            double sp = z - p / Ke;
+            printf("    print %.4g m^3 (surface %.4g m^3), area x plastic sinkage %.4g m^3\n", r.grid_print_m3, r.dent_m3,
+                   r.A_m2 * sp);
+            CHECK_NEAR(r.dent_m3, r.grid_print_m3, 1e-12);
+            CHECK_NEAR(r.grid_print_m3, r.A_m2 * sp, r.A_m2 * sp * (area_bound(&r, grid) + tol / sp));
+            fs_terrain_free(&t);
+        }
+}
+
+static void halving_the_grid_moves_sinkage_little(void)
+{
+    /* turned 7 degrees, so that the sole's edges cut the grid's rows at every offset (aligned, both
+     * grids would hold the sole's exact area and give the same bits) */
+    sole_run a, b;
+    sole_on("dry_sand.ini", 26, 2e-3, 7, &a);
+    sole_on("dry_sand.ini", 26, 1e-3, 7, &b);
+    /* each grid's area is the sole's to within its edge band: the two differ by at most the sum */
+    double bound = b.sink_m * (area_bound(&a, 2e-3) + area_bound(&b, 1e-3)) / 1.1;
+    printf("  sinkage on a 2 mm grid %.4f mm, on 1 mm %.4f mm: %.4f mm apart, bound %.4f mm\n", a.sink_m * 1e3,
+           b.sink_m * 1e3, fabs(a.sink_m - b.sink_m) * 1e3, bound * 1e3);
+    CHECK(fabs(a.sink_m - b.sink_m) <= bound);
+}
+
+/* ---- a plate meeting the grid directly -------------------------------------------------------- */
+
+/* A grid over [-0.1, 0.1]^2 of the soil in file (its grid_m) with one plate L x W x 2 half as its shape. */
+static void plate_grid(const char *file, const char *const *set, int nset, double L, double W, double half,
+                       fs_terrain *t, fs_soil_grid *g)
+{
+    fs_error err;
+    REQUIRE(fs_terrain_load(file, set, nset, t, &err) == FS_OK);
+    double box[4] = {-0.1, 0.1, -0.1, 0.1};
+    REQUIRE(fs_soil_region(&t->def.soil, box, t->path, t->soil_region, NULL, &err) == FS_OK);
+    memset(g, 0, sizeof *g);
+    REQUIRE(fs_soil_grid_init(g, t, (const double(*)[4])box, 1, &err) == FS_OK);
+    fs_soil_shape *s = &g->shape[g->nshapes++];
+    memset(s, 0, sizeof *s);
+    s->kind = FS_SOIL_BOX;
+    s->half[0] = 0.5 * L, s->half[1] = 0.5 * W, s->half[2] = half;
+    s->R[0] = s->R[4] = s->R[8] = 1;
+}
+
+/* A body at (x, 0, z), turned by beta about y, moving at v, heavy (no cap on the shear). */
+static fs_soil_body plate_body(double x, double z, double beta, double vx, double vz)
+{
+    fs_soil_body b = {.p = {x, 0, z}, .v = {vx, 0, vz}, .mass_kg = 1e6};
+    double c = cos(beta), s = sin(beta);
+    double R[9] = {c, 0, s, 0, 1, 0, -s, 0, c};
+    memcpy(b.R, R, sizeof R);
+    return b;
+}
+
+static void plate_dragged_follows_janosi(void)
+{
+    static fs_terrain t;
+    static fs_soil_grid g;
+    const double L = 0.05, W = 0.03, h = 1e-4, v = 0.01;
+    const char *set[] = {"soil.grid_m=5e-4", "bekker.damping_Pa_s_per_m=0"};
+    plate_grid("terrains/soils/dry_sand.ini", set, 2, L, W, 0.001, &t, &g);
+    double K = t.def.soil.shear_K_m, depth = t.def.soil.depth_m, s0 = 0.02;
+    fs_error err;
+    /* pressed to s0, then dragged along x at v: every node under it yields at sigma = Bekker(s0) */
+    fs_soil_body b = plate_body(-0.06, depth - s0 + 0.001, 0, 0, 0);
+    REQUIRE(fs_soil_grid_step(&g, &b, h, &err) == FS_OK);
+    double sigma = g.force[0][2] / (g.nodes[0] * g.dx * g.dx);
+    double tau_max = fs_soil_shear_strength(&t.def.soil, sigma);
+    double dist = 0;
+    for (int m = 1; m <= 3; m++) {
+        while (dist < m * K - 1e-12) {
+            b.v[0] = v;
+            REQUIRE(fs_soil_grid_step(&g, &b, h, &err) == FS_OK);
+            b.p[0] += v * h;
+            dist += v * h;
+        }
+        double D = dist, e = exp(-D / K);
+        /* nodes under the plate since the start have slipped D; those met since, the distance from
+         * the plate's front to them */
+        double want = ((L - D) * (1 - e) + D - K * (1 - e)) / L;
+        double got = -g.force[0][0] / (tau_max * g.nodes[0] * g.dx * g.dx);
+        /* a node's slip is counted in steps of v h and it enters at a node line: dx / L of the plate */
+        double tol = 2 * g.dx / L + v * h / K;
+        printf("  j = %dK: tau / tau_max %.4f, closed form %.4f (1 - e^(-j/K) = %.4f), within %.4f\n", m, got, want, 1 - e,
+               tol);
+        CHECK_NEAR(got, want, tol);
+    }
+    fs_soil_grid_free(&g);
+    fs_terrain_free(&t);
+}
+
+static void rft_alpha_has_its_symmetries(void)
+{
+    static fs_terrain t;
+    fs_error err;
+    REQUIRE(fs_terrain_load("terrains/soils/granular_close.ini", NULL, 0, &t, &err) == FS_OK);
+    double az, ax;
+    fs_rft_alpha(&t.def.soil, 0, M_PI / 2, &az, &ax);
+    CHECK_NEAR(az, 1.0, 1e-12);
+    CHECK_NEAR(ax, 0.0, 1e-12);
+    /* derived from the fit's nine terms: a plate moving sideways, flat and upright */
+    fs_rft_alpha(&t.def.soil, 0, 0, &az, &ax);
+    CHECK_NEAR(az, 0.375, 1e-12);
+    CHECK_NEAR(ax, 0.136, 1e-12);
+    fs_rft_alpha(&t.def.soil, M_PI / 2, 0, &az, &ax);
+    CHECK_NEAR(az, 0.037, 1e-12);
+    CHECK_NEAR(ax, 0.370, 1e-12);
+    /* pushed straight down, a tilt of either sign gives the same lift and opposite thrust */
+    double az2, ax2;
+    fs_rft_alpha(&t.def.soil, 0.4, M_PI / 2, &az, &ax);
+    fs_rft_alpha(&t.def.soil, -0.4, M_PI / 2, &az2, &ax2);
+    CHECK_NEAR(az, az2, 1e-12);
+    CHECK_NEAR(ax, -ax2, 1e-12);
+    fs_terrain_free(&t);
+}
+
+/* The plate's force pushed down at speed vz with its centre at depth d and tilt beta. */
+static void rft_plate_force(double d, double beta, double vz, double F[3], double *area)
+{
+    static fs_terrain t;
+    static fs_soil_grid g;
+    const double L = 0.04, W = 0.04;
+    const char *set[] = {"soil.grid_m=5e-4"};
+    plate_grid("terrains/soils/granular_close.ini", set, 1, L, W, 1e-4, &t, &g);
+    /* the plate's underside centre at depth d: its body centre 0.1 mm above along its normal */
+    fs_soil_body b = plate_body(0, t.def.soil.depth_m - d + 1e-4 * cos(beta), beta, 0, vz);
+    b.p[0] = 1e-4 * sin(beta);
+    fs_error err;
+    REQUIRE(fs_soil_grid_step(&g, &b, 1e-4, &err) == FS_OK);
+    memcpy(F, g.force[0], 3 * sizeof(double));
+    *area = L * W;
+    fs_soil_grid_free(&g);
+    fs_terrain_free(&t);
+}
+
+static void rft_plate_at_depth_and_tilt(void)
+{
+    static fs_terrain t;
+    fs_error err;
+    REQUIRE(fs_terrain_load("terrains/soils/granular_close.ini", NULL, 0, &t, &err) == FS_OK);
+    double zeta = t.def.soil.zeta_N_per_m3;
+    const double betas[2] = {0, 0.5}, d = 0.03;
+    for (int k = 0; k < 2; k++) {
+        double F[3], A, az, ax;
+        rft_plate_force(d, betas[k], -0.01, F, &A);
+        fs_rft_alpha(&t.def.soil, betas[k], M_PI / 2, &az, &ax);
+        /* over a plate wholly below the surface the depth is linear: its mean is the centre's */
+        double fz = zeta * az * d * A, fx = zeta * ax * d * A;
+        /* the grid's cells along the edge (dx / L each way), the plate's 0.2 mm thickness seen at the
+         * tilt (its end face, twice as deep and seen at 1 / sin(beta) of its plan), and the inertial term
+         * at 1 cm/s (rho v^2 = 0.16 Pa) */
+        double tol = (2 * 5e-4 / 0.04 + 4 * 2e-4 / 0.04 + 1e-4);
+        printf("  RFT plate at %.0f mm, tilt %.2f rad: Fz %.3f N (formula %.3f), Fx %.3f N (formula %.3f)\n", d * 1e3,
+               betas[k], F[2], fz, F[0], fx);
+        CHECK_NEAR(F[2], fz, fz * tol);
+        /* the thrust pushes the plate away from where its underside looks: turned by beta > 0 about y,
+         * its underside's normal leans toward -x, so the push is toward +x */
+        CHECK_NEAR(F[0], fx, fabs(fx) * tol + fz * 1e-9);
+    }
+    /* the inertial term: at 2 m/s the force exceeds the slow one by lambda rho v^2 over the area */
+    double Fs[3], Ff[3], A;
+    rft_plate_force(0.002, 0, -0.01, Fs, &A);
+    rft_plate_force(0.002, 0, -2.0, Ff, &A);
+    double want = t.def.soil.inertial_lambda * t.def.soil.density_kg_per_m3 * 4.0 * A;
+    printf("  inertial: %.3f N at 2 m/s, lambda rho v^2 A = %.3f N\n", Ff[2] - Fs[2], want);
+    CHECK_NEAR(Ff[2] - Fs[2], want, want * (2 * 5e-4 / 0.04) + 1e-6);
+    fs_terrain_free(&t);
+}
+
+/* ---- the bedrock, and refusals --------------------------------------------------------------- */
+
+static void thin_layer_stops_on_the_bedrock(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    const char *set[] = {"scenario.design=feet/flat.ini", "scenario.terrain=../terrains/soils/dry_sand.ini",
+                         "soil.depth_m=0.01", "soil.grid_m=2e-3"};
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 4, &sc, &err) == FS_OK);
+    fs_sim sim;
+    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
+    dBodySetMaxAngularSpeed(sim.body[0], 0);
+    settle(&sim, 20000);
+    /* 26 kg would sink the sole some 40 mm in dry sand: the 10 mm layer ends on the rigid bedrock, whose
+     * contacts then carry what the soil does not */
+    double f[3], soil[3];
+    fs_sim_ground_force(&sim, f);
+    fs_sim_soil_force(&sim, -1, soil);
+    printf("  sole bottom %.3f mm, contacts %d, soil force %.1f N of %.1f N\n", sole_bottom(&sim) * 1e3,
+           sim.contacts_now, soil[2], f[2]);
+    CHECK(sim.contacts_now > 0);
+    CHECK(fabs(sole_bottom(&sim)) < 1e-3);
+    CHECK(soil[2] < f[2]);
+    fs_sim_destroy(&sim);
+    fs_scenario_free(&sc);
+}
+
+static void bad_soils_are_refused(void)
+{
+    const struct { const char *set, *key; } bad[] = {
+        {"bekker.n=0", "n"},
+        {"bekker.k_phi_N_per_m_n2=-1", "k_phi_N_per_m_n2"},
+        {"bekker.K_e_Pa_per_m=-5", "K_e_Pa_per_m"},
+        {"bekker.friction_deg=90", "friction_deg"},
+        {"soil.depth_m=0", "depth_m"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        static fs_terrain t;
+        fs_error err;
+        const char *set[] = {bad[i].set};
+        CHECK(fs_terrain_load("terrains/soils/dry_sand.ini", set, 1, &t, &err) == FS_BAD_INPUT);
+        CHECK(strstr(err.message, bad[i].key) != NULL);
+    }
+    /* an rft soil without its scale or density: file:line of the model */
+    static fs_terrain t;
+    fs_error err;
+    const char *no_zeta[] = {"rft.zeta_N_per_m3=0"}, *no_rho[] = {"rft.density_kg_per_m3=0"};
+    CHECK(fs_terrain_load("terrains/soils/granular_loose.ini", no_zeta, 1, &t, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "zeta_N_per_m3") != NULL);
+    CHECK(fs_terrain_load("terrains/soils/granular_loose.ini", no_rho, 1, &t, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "density_kg_per_m3") != NULL);
+    /* phi given in the file at 90: its file:line */
+    char dir[] = "/tmp/fs_soil_XXXXXX";
+    REQUIRE(mkdtemp(dir) != NULL);
+    char path[300];
+    snprintf(path, sizeof path, "%s/t.ini", dir);
+    FILE *f = fopen(path, "w");
+    REQUIRE(f != NULL);
+    fprintf(f, "[soil]\nmodel = bekker\n\n[bekker]\nfriction_deg = 90\n");
+    fclose(f);
+    CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 5, "[0, 90)");
+    remove(path);
+    rmdir(dir);
+    /* a grid past the memory cap, refused when the scenario is read */
+    static fs_scenario sc;
+    const char *big[] = {"scenario.terrain=../terrains/soils/dry_sand.ini", "soil.grid_m=1e-4", "soil.max_nodes=1000"};
+    CHECK(fs_scenario_load("scenarios/static_load.ini", big, 3, &sc, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "max_nodes") != NULL);
+}
+
+FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_tilt), TEST(plate_dragged_follows_janosi), TEST(bad_soils_are_refused), TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little))

@@ -1,0 +1,90 @@
+/* soil_figures.c: Fig. 11 on soft ground (docs/soil.md): 26 kg set down on the foot on every soil
+ * preset, for both feet: the landing trial's scenario with the rig robot (26 kg on a vertical slide,
+ * so the foot keeps its attitude as under the paper's test load; scenarios/robots/rig.ini), no
+ * drop and no drawn pose, run until at rest or 1 s. (The static-load scenario's bare force at the
+ * ankle turns a foot on soil over: nothing holds its pitch once the heel sinks.) Per run: the
+ * ankle's drop, the deepest print under the foot, the foot's tilt (its ankle body's z axis from
+ * vertical), the time to rest, the area the soil carries the foot on (its nodes times the grid's
+ * cell), and the soil's share of the ground force (the rest on the bedrock).
+ * Built with footsim (`cmake --build build` makes build/soil-figures); run from the source folder:
+ * `build/soil-figures > results/soil/static_load.md`. A Markdown table on stdout. */
+#include "footsim/sim/fs_sim.h"
+#include "footsim/sim/fs_sim_soil.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+static const char *SOILS[] = {"dry_sand", "lete_sand", "sandy_loam", "lean_clay", "snow", "mud", "granular_loose",
+                              "granular_close"};
+
+static int run(const char *foot, const char *soil)
+{
+    static fs_scenario sc;
+    fs_error err;
+    char design[128], terrain[128];
+    snprintf(design, sizeof design, "scenario.design=feet/%s.ini", foot);
+    snprintf(terrain, sizeof terrain, "scenario.terrain=../terrains/soils/%s.ini", soil);
+    const char *set[] = {design, terrain, "robot.design=robots/rig.ini", "start.drop_m=0", "run.duration_s=1",
+                         "landing.x_range_m=0", "landing.y_range_m=0", "landing.yaw_range_deg=0",
+                         "landing.tilt_range_deg=0"};
+    if (fs_scenario_load("scenarios/landing_trial.ini", set, 9, &sc, &err) != FS_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    fs_sim sim;
+    if (fs_sim_build(&sim, &sc, NULL, &err) != FS_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    double a0[3], a[3];
+    fs_sim_ankle(&sim, a0);
+    double rest_since = -1, wall = fs_clock_s();
+    long steps = 0;
+    const char *end = "window";
+    while (sim.time_s < sc.def.duration_s - 1e-9) {
+        if (fs_sim_step(&sim, &err) != FS_OK) {
+            end = "numerical";
+            break;
+        }
+        steps++;
+        int slow = fs_sim_max_speed(&sim) < 1e-3;
+        if (slow && rest_since < 0)
+            rest_since = sim.time_s;
+        if (!slow)
+            rest_since = -1;
+        if (rest_since >= 0 && sim.time_s - rest_since > 0.05) {
+            end = "rest";
+            break;
+        }
+    }
+    wall = fs_clock_s() - wall;
+    fs_sim_ankle(&sim, a);
+    const fs_soil_grid *g = fs_sim_soil_grid(&sim);
+    double R[9], f[3], held[3], deepest;
+    fs_sim_body_pose(&sim, sim.geom->ankle_body, NULL, R);
+    fs_sim_ground_force(&sim, f);
+    fs_sim_soil_force(&sim, -1, held);
+    fs_soil_grid_print(g, &deepest, NULL);
+    double tilt = acos(fmin(1, fmax(-1, R[8]))) * 180 / M_PI;
+    int nodes = fs_sim_soil_nodes(&sim, -1);
+    printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %.1f | %.0f %% | %.2f |\n", foot, soil, (a0[2] - a[2]) * 1e3,
+           deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : sim.time_s,
+           nodes * g->dx * g->dx * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
+    fflush(stdout);
+    fs_sim_destroy(&sim);
+    fs_scenario_free(&sc);
+    return 0;
+}
+
+int main(void)
+{
+    fs_ode_init();
+    printf("| foot | soil | ankle drop (mm) | deepest print (mm) | tilt (deg) | at rest (s) | carried on (cm^2) | "
+           "soil's share | ms a step |\n|---|---|--:|--:|--:|--:|--:|--:|--:|\n");
+    int bad = 0;
+    for (size_t s = 0; s < sizeof SOILS / sizeof SOILS[0]; s++)
+        for (int f = 0; f < 2; f++)
+            bad |= run(f ? "flat" : "biomimetic", SOILS[s]);
+    return bad;
+}
