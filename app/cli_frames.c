@@ -206,6 +206,9 @@ struct cli_frames {
     fs_scene scene;  /* the snapshot, reused for each frame */
     fs_scene neutral;/* the first snapshot: the pose --exaggerate measures displacements from */
     fs_scene drawn;  /* the snapshot as drawn (exaggerated) */
+    double *heights; /* the drawn ground's heights, its own copy: the last frame is drawn again
+                        (cli_frames_finish) after the sim that owned them is gone */
+    size_t nheights;
 };
 
 /* The snapshot as drawn, from the view, with the legend, written as frame index. */
@@ -224,6 +227,17 @@ static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
     if (f->n == 0)
         f->neutral = f->scene;
     cli_frame_scene(&f->o, &f->neutral, &f->scene, &f->drawn);
+    size_t n = (size_t)f->drawn.ground.nx * (size_t)f->drawn.ground.ny;
+    if (f->drawn.ground.heights && n) {
+        if (n > f->nheights) {
+            double *grown = realloc(f->heights, n * sizeof *grown);
+            if (!grown)
+                return fs_fail(err, FS_NO_MEMORY, "out of memory for a frame's ground");
+            f->heights = grown, f->nheights = n;
+        }
+        memcpy(f->heights, f->drawn.ground.heights, n * sizeof *f->heights);
+        f->drawn.ground.heights = f->heights;
+    }
     const fs_scene *first = &f->drawn;
     if (f->n == 0)
         fs_render_view_fit(&f->view, f->o.camera, &first, 1, (double)f->o.width / f->o.height);
@@ -325,6 +339,7 @@ int cli_frames_close(cli_frames *f, int ok, const char *shown_dir)
             s = cli_frames_video(f->dir, f->frames_dir, f->o.fps, f->n, shown_dir);
     }
     fs_render_close(f->r);
+    free(f->heights);
     free(f);
     return s;
 }
