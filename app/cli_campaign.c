@@ -895,12 +895,9 @@ int cli_compare(const cli_args *a)
     /* --json: the JSON alone on stdout, whatever the outcome (the Markdown not printed) */
     fs_status s = fs_campaign_compare_with(a->input, a->input2, &o, a->json ? NULL : stdout, a->json ? &json : NULL,
                                            NULL, &err);
-    char *text = json ? cJSON_Print(json) : NULL;
-    if (text)
-        printf("%s\n", text);
-    free(text);
+    int printed = fs_json_print(stdout, json);
     cJSON_Delete(json);
-    if (a->json && !text && s != FS_NO_MEMORY)
+    if (a->json && !printed && s != FS_NO_MEMORY)
         return cli_report(FS_NO_MEMORY, "compare: out of memory for the JSON");
     return s == FS_OK || s == FS_EXPECTATION_FAILED ? (int)s : fail(&err);
 }

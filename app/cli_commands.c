@@ -125,15 +125,7 @@ int cli_run(const cli_args *a) { return run_once(a); }
 
 /* ---- model ------------------------------------------------------------------------------------ */
 
-static int print_json(cJSON *root)
-{
-    char *text = cJSON_Print(root);
-    if (!text)
-        return cli_report(FS_NO_MEMORY, "out of memory");
-    puts(text);
-    free(text);
-    return 0;
-}
+static int print_json(cJSON *root) { return fs_json_print(stdout, root) ? 0 : cli_report(FS_NO_MEMORY, "out of memory"); }
 
 /* Runs a command that reads a design (model, stiffness) on its scenario (fs_scenario_for_design),
  * which lives on the heap for the command and is freed on every path. */
@@ -470,14 +462,7 @@ static cJSON *trial_json(const fs_trial_result *r)
     return o;
 }
 
-static int fill_json(FILE *f, const void *user)
-{
-    char *text = cJSON_Print((const cJSON *)user);
-    if (text)
-        fprintf(f, "%s\n", text);
-    free(text);
-    return text != NULL;
-}
+static int fill_json(FILE *f, const void *user) { return fs_json_print(f, user); }
 
 /* A command's results in a folder of its own: run(user, observer) with frames of framed (when
  * --frames), then name (the result as JSON, to_json(result)) beside them, swapped in whole at the

@@ -323,12 +323,9 @@ static cJSON *summary_json(const out_ctx *x)
 static int fill_summary_json(FILE *f, const out_ctx *x)
 {
     cJSON *root = summary_json(x);
-    char *text = root ? cJSON_Print(root) : NULL;
-    if (text)
-        fprintf(f, "%s\n", text);
-    free(text);
+    int ok = fs_json_print(f, root);
     cJSON_Delete(root);
-    return text != NULL;
+    return ok;
 }
 
 /* ---- schema.sql: the CSV files as SQLite tables ------------------------------------------- */

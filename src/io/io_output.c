@@ -848,6 +848,15 @@ fs_status fs_outdir_shared(const char *dir, int replace, const char *option, fs_
     return s;
 }
 
+int fs_json_print(FILE *f, const cJSON *root)
+{
+    char *text = root ? cJSON_Print(root) : NULL;
+    if (text)
+        fprintf(f, "%s\n", text);
+    free(text);
+    return text != NULL;
+}
+
 int fs_json_put(cJSON *parent, const char *name, cJSON *item)
 {
     if (item && parent && (name ? cJSON_AddItemToObject(parent, name, item) : cJSON_AddItemToArray(parent, item)))

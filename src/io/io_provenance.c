@@ -276,12 +276,9 @@ static int fill_beside(FILE *f, const void *user)
     int ok = root && cJSON_AddStringToObject(root, "file", b->name) != NULL;
     ok = fs_json_put(root, "provenance", fs_provenance_json(b->p)) && ok;
     ok = fs_json_put(root, "run", run) && ok;
-    char *text = ok ? cJSON_Print(root) : NULL;
-    if (text)
-        fprintf(f, "%s\n", text);
-    free(text);
+    ok = ok && fs_json_print(f, root);
     cJSON_Delete(root);
-    return text != NULL;
+    return ok;
 }
 
 fs_status fs_provenance_write_beside(const char *dir, const char *name, const fs_provenance *p, const cJSON *run,

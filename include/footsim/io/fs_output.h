@@ -137,4 +137,8 @@ fs_status fs_normalise_dir(const char *dir, char *out, size_t size, const char *
 struct cJSON;
 int fs_json_put(struct cJSON *parent, const char *name, struct cJSON *item);
 
+/* Writes root as indented JSON text and a newline to f; 1 when written, 0 when root is NULL or its
+ * text could not be made (out of memory). The one way footsim prints a JSON result. */
+int fs_json_print(FILE *f, const struct cJSON *root);
+
 #endif
