@@ -13,9 +13,12 @@ missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
+updated=""
 for p in $optional; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" && continue
   if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
+    # a fresh machine has no package lists yet: read them once before the first install
+    [ -n "$updated" ] || { DEBIAN_FRONTEND=noninteractive apt-get update -q >/dev/null 2>&1; updated=1; }
     DEBIAN_FRONTEND=noninteractive apt-get install -y -q "$p" >/dev/null 2>&1 ||
       echo "footsim: optional package $p not installed (its test will be skipped)" >&2
   else
@@ -30,5 +33,5 @@ if [ "$(id -u)" -ne 0 ] || ! command -v apt-get >/dev/null 2>&1; then
   exit 1
 fi
 export DEBIAN_FRONTEND=noninteractive
-apt-get update -q >/dev/null
+[ -n "$updated" ] || apt-get update -q >/dev/null
 apt-get install -y -q $missing >/dev/null
