@@ -207,8 +207,9 @@ struct cli_frames {
     fs_scene neutral;/* the first snapshot: the pose --exaggerate measures displacements from */
     fs_scene drawn;  /* the snapshot as drawn (exaggerated) */
     double *heights; /* the drawn ground's heights, its own copy: the last frame is drawn again
-                        (cli_frames_finish) after the sim that owned them is gone */
+                        (cli_frames_finish) after the sim and scenario that owned them are gone */
     size_t nheights;
+    char scenario[256], terrain[256]; /* the drawn names, likewise its own copies */
 };
 
 /* The snapshot as drawn, from the view, with the legend, written as frame index. */
@@ -238,6 +239,9 @@ static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
         memcpy(f->heights, f->drawn.ground.heights, n * sizeof *f->heights);
         f->drawn.ground.heights = f->heights;
     }
+    snprintf(f->scenario, sizeof f->scenario, "%s", f->drawn.scenario ? f->drawn.scenario : "-");
+    snprintf(f->terrain, sizeof f->terrain, "%s", f->drawn.terrain ? f->drawn.terrain : "-");
+    f->drawn.scenario = f->scenario, f->drawn.terrain = f->terrain;
     const fs_scene *first = &f->drawn;
     if (f->n == 0)
         fs_render_view_fit(&f->view, f->o.camera, &first, 1, (double)f->o.width / f->o.height);
