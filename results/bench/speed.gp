@@ -12,12 +12,12 @@ set key noenhanced
 set title 'steps per second on one core (median)'
 set logscale y
 set ylabel 'steps/s'
-plot 'speed.csv' using 8:xtic(1) skip 4 title 'steps/s' lc rgb '#4477aa'
+plot 'speed.csv' using 8:xtic(1) skip 1 title 'steps/s' lc rgb '#4477aa'
 unset logscale y
 set title 'share of a step'
 set ylabel '%'
 set yrange [0:100]
 set style histogram rowstacked
 set key outside right
-plot 'speed.csv' using 12:xtic(1) skip 4 title 'collision' lc rgb '#ddaa33', '' using 13 skip 4 title 'ODE step' lc rgb '#4477aa', '' using 14 skip 4 title 'footsim own code' lc rgb '#bb5566'
+plot 'speed.csv' using 12:xtic(1) skip 1 title 'collision' lc rgb '#ddaa33', '' using 13 skip 1 title 'ODE step' lc rgb '#4477aa', '' using 14 skip 1 title 'footsim own code' lc rgb '#bb5566'
 unset multiplot
