@@ -75,7 +75,7 @@ def _dp(a):
 
 
 def version():
-    """footsim's version and the git description it was built from: "0.1.0 (git abc1234)"."""
+    """footsim's version and the git description it was built from: "1.0.0 (git abc1234)"."""
     return _c.fs_version().decode()
 
 
