@@ -180,4 +180,38 @@ static void options_shape_the_model(void)
     fs_scenario_free(sc);
 }
 
-FS_TEST_MAIN(TEST(masses_add_up), TEST(shapes_and_pose), TEST(sims_from_one_model), TEST(options_shape_the_model))
+/* A warning given while a sim steps (here by a driver's work function, which runs inside the step)
+ * is counted in that sim and in no other. */
+static double warn_once(void *user, const struct fs_sim *sim)
+{
+    int *left = user;
+    (void)sim;
+    if ((*left)-- > 0)
+        fs_warn("a driver's warning");
+    return 0;
+}
+
+static void warnings_are_counted_per_sim(void)
+{
+    fs_scenario *sc = load("scenarios/static_load.ini", NULL, 0);
+    REQUIRE(sc);
+    fs_error err;
+    fs_sim *a, *b;
+    REQUIRE(fs_sim_new(sc, NULL, &a, &err) == FS_OK);
+    REQUIRE(fs_sim_new(sc, NULL, &b, &err) == FS_OK);
+    int left = 1;
+    fs_check_set_work(a, warn_once, &left);
+    long before = fs_warning_count();
+    for (int i = 0; i < 5; i++) {
+        REQUIRE(fs_sim_step(a, &err) == FS_OK);
+        REQUIRE(fs_sim_step(b, &err) == FS_OK);
+    }
+    CHECK(left < 0); /* the work function ran */
+    CHECK(fs_warning_count() == before + 1 && fs_sim_warnings(a) == 1 && fs_sim_warnings(b) == 0);
+    fs_sim_free(a);
+    fs_sim_free(b);
+    fs_scenario_free(sc);
+}
+
+FS_TEST_MAIN(TEST(masses_add_up), TEST(shapes_and_pose), TEST(sims_from_one_model), TEST(options_shape_the_model),
+             TEST(warnings_are_counted_per_sim))

@@ -302,6 +302,12 @@ class Sim(_Handle):
         return bool(_c.fs_sim_dead(self._handle()))
 
     @property
+    def warnings(self):
+        """The warnings the library gave while it built and stepped this simulation (their text
+        went to the warning handler)."""
+        return _c.fs_sim_warnings(self._handle())
+
+    @property
     def nbodies(self):
         return len(self.body_names)
 

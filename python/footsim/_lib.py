@@ -98,6 +98,7 @@ for name, res, *args in [
     ("fs_sim_time", c_double, c_void_p),
     ("fs_sim_step_size", c_double, c_void_p),
     ("fs_sim_dead", c_int, c_void_p),
+    ("fs_sim_warnings", c_long, c_void_p),
     ("fs_sim_body_count", c_int, c_void_p),
     ("fs_sim_body_name", c_char_p, c_void_p, c_int),
     ("fs_sim_body_index", c_int, c_void_p, c_char_p),
