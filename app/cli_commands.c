@@ -11,6 +11,7 @@
 #include "footsim/sim/fs_sim.h"
 
 #include "footsim/base/fs_path.h"
+#include "footsim/export/fs_export.h"
 
 #include <cJSON.h>
 #include <dirent.h>

@@ -3,7 +3,7 @@
 
 #include "footsim/base/fs_path.h"
 #include "footsim/io/fs_output.h"
-#include "footsim/sim/fs_export.h"
+#include "footsim/export/fs_export.h"
 
 #include <errno.h>
 #include <stdio.h>

@@ -2,7 +2,8 @@
 # Installs footsim into a temporary prefix and uses it from elsewhere, as a user would (issue 14):
 # the files are there, the installed command finds its shipped data by name from another folder and
 # writes only there, --data comes first, the man page covers every command, and programs built with
-# pkg-config against libfootsim (and libfootsim-render) compile and run.
+# pkg-config against libfootsim (and libfootsim-render) compile and run; the example steps a sim
+# through its accessors, compiled without ODE's flags and with an ode/ode.h that refuses to compile.
 # Usage: cli_install.sh CMAKE BUILD_DIR LIBDIR VERSION render|norender (run from the source folder).
 cmake=$1 build=$2 libdir=$3 version=$4 renderer=$5
 . "$(dirname "$0")/cli_check.sh"
@@ -14,8 +15,8 @@ fs=$P/bin/footsim
 
 # the files
 check '[ -x "$fs" ]'
-check '[ -L "$P/$libdir/libfootsim.so" ] && [ -L "$P/$libdir/libfootsim.so.0" ] && [ -f "$P/$libdir/libfootsim.so.$version" ]'
-check 'objdump -p "$P/$libdir/libfootsim.so.$version" | grep -q "SONAME *libfootsim.so.0$"'
+check '[ -L "$P/$libdir/libfootsim.so" ] && [ -L "$P/$libdir/libfootsim.so.1" ] && [ -f "$P/$libdir/libfootsim.so.$version" ]'
+check 'objdump -p "$P/$libdir/libfootsim.so.$version" | grep -q "SONAME *libfootsim.so.1$"'
 check '[ -f "$P/$libdir/pkgconfig/footsim.pc" ]'
 check '[ -f "$P/share/footsim/scenarios/static_load.ini" ] && [ -f "$P/share/footsim/scenarios/feet/biomimetic.ini" ]'
 check '[ -f "$P/share/footsim/terrains/heightmaps/dunes.png" ]'
@@ -67,13 +68,20 @@ done
 # a program built against the installed library with pkg-config, run from the prefix's library
 export PKG_CONFIG_PATH="$P/$libdir/pkgconfig"
 flags=$(pkg-config --cflags --libs footsim)
-check '[ $? -eq 0 ] && echo "$flags" | grep -q -- "-lfootsim" && echo "$flags" | grep -q -- "-lode"'
-check 'pkg-config --print-requires footsim | grep -qx "ode"'
-cc -std=c11 -Wall -Wextra -pedantic -Werror -o "$tmp/example" "$src/tests/install/example.c" $flags 2>"$tmp/cc.txt"
+# ODE is private to the library (issue 31: no public header includes it): Requires.private, not
+# Requires, so a program links libfootsim alone
+check '[ $? -eq 0 ] && echo "$flags" | grep -q -- "-lfootsim" && ! echo "$flags" | grep -q -- "-lode"'
+check '[ -z "$(pkg-config --print-requires footsim)" ] && pkg-config --print-requires-private footsim | grep -qx "ode"'
+# the program compiled without ODE's flags, against an ode/ode.h that fails if anything includes it
+# (Debian's ODE headers are in /usr/include: leaving out ODE's -I alone would not show an include)
+mkdir -p "$tmp/poison/ode"
+echo '#error "a footsim public header included ODE'"'"'s header"' >"$tmp/poison/ode/ode.h"
+cc -std=c11 -Wall -Wextra -pedantic -Werror -I"$tmp/poison" -I"$P/include" -o "$tmp/example" \
+    "$src/tests/install/example.c" $(pkg-config --libs footsim) 2>"$tmp/cc.txt"
 check '[ $? -eq 0 ] || { cat "$tmp/cc.txt" >&2; false; }'
 LD_LIBRARY_PATH="$P/$libdir" "$tmp/example" "$P/share/footsim" >"$tmp/example.txt" 2>&1
 check '[ $? -eq 0 ] || { cat "$tmp/example.txt" >&2; false; }'
-check 'LD_LIBRARY_PATH="$P/$libdir" ldd "$tmp/example" | grep -q "libfootsim.so.0 => $P/$libdir/libfootsim.so.0"'
+check 'LD_LIBRARY_PATH="$P/$libdir" ldd "$tmp/example" | grep -q "libfootsim.so.1 => $P/$libdir/libfootsim.so.1"'
 # the library says what the command says: its version and chain 1's analytic stiffness
 check 'grep -qxF "$(cat "$tmp/version.txt")" "$tmp/example.txt"'
 want=$(grep -m1 "exact geometry" "$tmp/stiffness.txt" | sed 's/.*\[/[/')
@@ -82,7 +90,7 @@ check 'grep -Eq "^static_load: 500 steps to t = 0.050 s, ankle at z = " "$tmp/ex
 # every installed header compiles alone with the flags pkg-config gives
 for h in $(cd "$P/include" && find footsim -name '*.h' | sort); do
     [ "$renderer" = render ] && rflags=$(pkg-config --cflags footsim-render) || rflags=
-    printf '#include "%s"\n' "$h" | cc -std=c11 -Wall -Wextra -pedantic -Werror -fsyntax-only -x c - $flags $rflags 2>"$tmp/h.txt"
+    printf '#include "%s"\n' "$h" | cc -std=c11 -Wall -Wextra -pedantic -Werror -fsyntax-only -x c - -I"$tmp/poison" $flags $rflags 2>"$tmp/h.txt"
     check '[ $? -eq 0 ] || { echo "$h:" >&2; cat "$tmp/h.txt" >&2; false; }'
 done
 if [ "$renderer" = render ]; then

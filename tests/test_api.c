@@ -65,7 +65,7 @@ static void sim_settles_and_its_accessors_agree(void)
     fs_sim *sim = fs_sim_open(sc, &err);
     fs_scenario_close(sc); /* the sim keeps its own copy */
     REQUIRE(sim);
-    const fs_foot_geom *g = sim->geom;
+    const fs_foot_geom *g = fs_sim_geom(sim);
     int n = fs_sim_body_count(sim);
     CHECK(n == g->nbodies && n == 12); /* heel, talus and five chains of two; no robot */
     CHECK(fs_sim_body_index(sim, "talus") >= 0 && !strcmp(fs_sim_body_name(sim, fs_sim_body_index(sim, "talus")), "talus"));
@@ -125,8 +125,8 @@ static void sim_settles_and_its_accessors_agree(void)
     CHECK(a[2] > 0.01 && a[2] < 0.1);
     double speed, loop, excess;
     fs_sim_check_worst(sim, &speed, &loop, &excess);
-    CHECK(speed > 0 && speed < sim->sc->def.check_max_speed_m_per_s && loop >= 0 &&
-          loop < sim->sc->def.check_max_loop_error_m);
+    CHECK(speed > 0 && speed < fs_sim_scenario(sim)->def.check_max_speed_m_per_s && loop >= 0 &&
+          loop < fs_sim_scenario(sim)->def.check_max_loop_error_m);
     fs_sim_close(sim);
     fs_sim_close(NULL);
 }
@@ -141,7 +141,7 @@ static void torque_turns_the_foot_and_bad_ones_are_refused(void)
     fs_sim *s[3] = {fs_sim_open(sc, &err), fs_sim_open(sc, &err), fs_sim_open(sc, &err)};
     REQUIRE(s[0] && s[1] && s[2]);
     int n = fs_sim_body_count(s[0]);
-    CHECK(n == s[0]->geom->nbodies + 1 && !strcmp(fs_sim_body_name(s[0], n - 1), "robot"));
+    CHECK(n == fs_sim_geom(s[0])->nbodies + 1 && !strcmp(fs_sim_body_name(s[0], n - 1), "robot"));
     double masses[64];
     fs_sim_body_masses(s[0], masses);
     CHECK(masses[n - 1] == 26); /* single_tall */

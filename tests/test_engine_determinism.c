@@ -13,6 +13,7 @@
 #include "footsim/experiment/fs_trial.h"
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_sim_soil.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <inttypes.h>
 #include <stdint.h>

@@ -3,6 +3,7 @@
 #include "fs_test.h"
 
 #include "footsim/sim/fs_sim.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 /* Runs the undamped foot without ground for 0.5 s; returns the largest energy gain over the start,
  * and the internal (spring + relative kinetic) energy it was given, both J. */

@@ -6,6 +6,7 @@
 #include "footsim/experiment/fs_run.h"
 #include "footsim/sim/fs_sim.h"
 #include "footsim/experiment/fs_trial.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <string.h>
 

@@ -1,7 +1,7 @@
 /* Tests of sim_spring.c: both spring-damper implementations against the damped oscillator. */
 #include "fs_test.h"
 
-#include "footsim/sim/fs_spring.h"
+#include "sim/sim_spring.h"
 #include "footsim/base/fs_error.h"
 
 #include <ode/ode.h>

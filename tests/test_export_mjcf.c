@@ -1,4 +1,4 @@
-/* Tests of sim_export.c (footsim export --mjcf): the MJCF is parsed back with libxml2 and every
+/* Tests of export_mjcf.c (footsim export --mjcf): the MJCF is parsed back with libxml2 and every
  * mass, inertia, pose, joint, anchor, stiffness, damping, rest length and contact shape is
  * compared with the model dump (fs_model_json, what `footsim model --json` prints) or, for a
  * scenario, with the ODE world footsim builds for it.
@@ -12,8 +12,10 @@
 
 #include "export_fixture.h"
 
-#include "footsim/sim/fs_export.h"
+#include "footsim/export/fs_export.h"
 #include "footsim/sim/fs_sim.h"
+#include "footsim/sim/fs_model.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <cJSON.h>
 #include <libxml/parser.h>

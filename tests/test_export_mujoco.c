@@ -1,4 +1,4 @@
-/* MuJoCo loads footsim's MJCF export (sim_export.c): MuJoCo 2.2.2 (Debian 12's libmujoco-dev)
+/* MuJoCo loads footsim's MJCF export (export_mjcf.c): MuJoCo 2.2.2 (Debian 12's libmujoco-dev)
  * compiles it, and its model holds the masses, the tendons (15 springs, and the Achilles tendon
  * of a robot that has one) with their stiffness, damping and rest length, the trace of every
  * inertia (invariant under the principal-axes rotation MuJoCo applies), the loop closure's two
@@ -18,8 +18,9 @@ int main(void)
 
 #include "export_fixture.h"
 
-#include "footsim/sim/fs_export.h"
+#include "footsim/export/fs_export.h"
 #include "footsim/sim/fs_sim.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <cJSON.h>
 #include <mujoco/mujoco.h>

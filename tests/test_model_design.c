@@ -3,6 +3,7 @@
 #include "fs_test.h"
 
 #include "footsim/sim/fs_sim.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <string.h>
 

@@ -5,6 +5,7 @@
 #include "sim/sim_ground.h" /* private to the sim layer: the test reaches in */
 #include "footsim/experiment/fs_run.h"
 #include "footsim/sim/fs_sim.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <stdlib.h>
 #include <string.h>
@@ -54,7 +55,7 @@ static void drop_sphere(const fs_terrain *t, double x, double y, double out[3], 
     dWorldSetContactMaxCorrectingVel(world, MAX_CORRECTING_M_PER_S);
     dSpaceID ground = dHashSpaceCreate(0), space = dSimpleSpaceCreate(0);
     int ok;
-    fs_ground *hf = fs_ground_build(ground, t, 8, &ok);
+    fs_ground *hf = fs_ground_of_terrain(ground, t, 8, &ok);
     CHECK(ok);
     dBodyID b = dBodyCreate(world);
     dMass m;

@@ -10,6 +10,7 @@
 #include "footsim/experiment/fs_run.h"
 #include "footsim/io/fs_input.h"
 #include "footsim/sim/fs_sim.h"
+#include "footsim/export/fs_export.h"
 
 #include <cJSON.h>
 #include <limits.h>

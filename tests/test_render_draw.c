@@ -76,12 +76,12 @@ static void test_size_refused(void)
 static void test_projection(void)
 {
     static fs_scenario sc;
-    static fs_sim sim;
+    fs_sim *sim;
     static fs_scene s, empty;
     fs_error err;
     REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
-    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
-    fs_sim_scene(&sim, &s);
+    REQUIRE(fs_sim_new(&sc, NULL, &sim, &err) == FS_OK);
+    fs_sim_scene(sim, &s);
     empty = s;
     empty.nshapes = empty.nlinks = empty.nsprings = empty.ncontacts = 0;
     empty.ankle[2] = -1; /* the marker under the ground, out of sight */
@@ -123,7 +123,7 @@ static void test_projection(void)
         CHECK(warm >= 13);
     }
     fs_render_close(r);
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
 }
 
 /* The projection puts the view's target in the middle of the picture and x forward to the right
@@ -222,12 +222,12 @@ static double box_span(const fs_render_view *v, int w, int h, const double lo[3]
 static void test_foot_camera(void)
 {
     static fs_scenario sc;
-    static fs_sim sim;
+    fs_sim *sim;
     static fs_scene s;
     fs_error err;
     REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", NULL, 0, &sc, &err) == FS_OK);
-    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
-    fs_sim_scene(&sim, &s);
+    REQUIRE(fs_sim_new(&sc, NULL, &sim, &err) == FS_OK);
+    fs_sim_scene(sim, &s);
     CHECK(s.has_robot);
     double lo[3], hi[3];
     foot_box(&s, lo, hi);
@@ -253,7 +253,7 @@ static void test_foot_camera(void)
     fs_render_view_follow(&follow, &moved);
     CHECK_NEAR(follow.target[0] - foot.target[0], 0.05, 1e-12);
     CHECK_NEAR(follow.eye[0] - foot.eye[0], 0.05, 1e-12);
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
 }
 
 /* v rotated by the inverse of unit quaternion q (w, x, y, z): into the frame q turns into the world. */
@@ -282,12 +282,12 @@ static void in_ankle_frame(const fs_scene *s, int b, double d[3])
 static void test_exaggerate(void)
 {
     static fs_scenario sc;
-    static fs_sim sim;
+    fs_sim *sim;
     static fs_scene neutral, now, out;
     fs_error err;
     REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
-    REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
-    fs_sim_scene(&sim, &neutral);
+    REQUIRE(fs_sim_new(&sc, NULL, &sim, &err) == FS_OK);
+    fs_sim_scene(sim, &neutral);
     REQUIRE(neutral.nbodies > 2);
     fs_render_exaggerate(&neutral, &neutral, 20, &out);
     double worst = 0;
@@ -300,8 +300,8 @@ static void test_exaggerate(void)
                                      fabs(out.spring[i].p2[k] - neutral.spring[i].p2[k])));
     CHECK(worst < 1e-12);
     for (int i = 0; i < 1500; i++) /* 0.15 s: the load ramped in, the arch folding */
-        REQUIRE(fs_sim_step(&sim, &err) == FS_OK);
-    fs_sim_scene(&sim, &now);
+        REQUIRE(fs_sim_step(sim, &err) == FS_OK);
+    fs_sim_scene(sim, &now);
     fs_render_exaggerate(&neutral, &now, 1, &out);
     CHECK(!memcmp(&out, &now, sizeof out));
     const double F = 20;
@@ -333,7 +333,7 @@ static void test_exaggerate(void)
         rigid = fmax(rigid, fabs(sqrt(dn) - sqrt(de)));
     }
     CHECK(rigid < 1e-12);
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
 }
 
 /* The rightmost column of the header's white text (the top 9 rows: 2 px of padding, 7 of text at

@@ -3,6 +3,7 @@
 #include "fs_test.h"
 
 #include "footsim/sim/fs_drive.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 typedef struct counter {
     long seen;       /* steps this hook saw */

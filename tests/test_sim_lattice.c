@@ -320,7 +320,7 @@ static void test_sphere_contacts_exactly_when_overlapping(void)
     /* ODE's test of the same spheres, for comparison only (printed, not checked) */
     dSpaceID space = dHashSpaceCreate(0);
     int ok = 1, ode_many = 0, ode_off = 0, ode_touching = 0;
-    fs_ground *ground = fs_ground_build(space, &t, 8, &ok);
+    fs_ground *ground = fs_ground_heightfield(space, &t, 8, &ok);
     REQUIRE(ok);
     for (int k = 0; k < 4000; k++) {
         double r = uniform(0.003, 0.006);

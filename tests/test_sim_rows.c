@@ -7,6 +7,7 @@
 
 #include "footsim/sim/fs_drive.h"
 #include "footsim/sim/fs_sim.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <math.h>
 

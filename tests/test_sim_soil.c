@@ -15,6 +15,7 @@
 
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_sim_soil.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <stdlib.h>
 #include <unistd.h>

@@ -6,6 +6,7 @@
 
 #include "footsim/experiment/fs_walk.h"
 #include "footsim/sim/fs_sim.h"
+#include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <math.h>
 #include <string.h>

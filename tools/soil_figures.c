@@ -32,47 +32,47 @@ static int run(const char *foot, const char *soil)
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
-    fs_sim sim;
-    if (fs_sim_build(&sim, &sc, NULL, &err) != FS_OK) {
+    fs_sim *sim;
+    if (fs_sim_new(&sc, NULL, &sim, &err) != FS_OK) {
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
     double a0[3], a[3];
-    fs_sim_ankle(&sim, a0);
+    fs_sim_ankle(sim, a0);
     double rest_since = -1, wall = fs_clock_s();
     long steps = 0;
     const char *end = "window";
-    while (sim.time_s < sc.def.duration_s - 1e-9) {
-        if (fs_sim_step(&sim, &err) != FS_OK) {
+    while (fs_sim_time(sim) < sc.def.duration_s - 1e-9) {
+        if (fs_sim_step(sim, &err) != FS_OK) {
             end = "numerical";
             break;
         }
         steps++;
-        int slow = fs_sim_max_speed(&sim) < 1e-3;
+        int slow = fs_sim_max_speed(sim) < 1e-3;
         if (slow && rest_since < 0)
-            rest_since = sim.time_s;
+            rest_since = fs_sim_time(sim);
         if (!slow)
             rest_since = -1;
-        if (rest_since >= 0 && sim.time_s - rest_since > 0.05) {
+        if (rest_since >= 0 && fs_sim_time(sim) - rest_since > 0.05) {
             end = "rest";
             break;
         }
     }
     wall = fs_clock_s() - wall;
-    fs_sim_ankle(&sim, a);
-    const fs_soil_grid *g = fs_sim_soil_grid(&sim);
+    fs_sim_ankle(sim, a);
+    const fs_soil_grid *g = fs_sim_soil_grid(sim);
     double R[9], f[3], held[3], deepest;
-    fs_sim_body_pose(&sim, sim.geom->ankle_body, NULL, R);
-    fs_sim_ground_force(&sim, f);
-    fs_sim_soil_force(&sim, -1, held);
+    fs_sim_body_pose(sim, fs_sim_geom(sim)->ankle_body, NULL, R);
+    fs_sim_ground_force(sim, f);
+    fs_sim_soil_force(sim, -1, held);
     fs_soil_grid_print(g, &deepest, NULL);
     double tilt = acos(fmin(1, fmax(-1, R[8]))) * 180 / M_PI;
-    int nodes = fs_sim_soil_nodes(&sim, -1);
+    int nodes = fs_sim_soil_nodes(sim, -1);
     printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %.1f | %.0f %% | %.2f |\n", foot, soil, (a0[2] - a[2]) * 1e3,
-           deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : sim.time_s,
+           deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : fs_sim_time(sim),
            nodes * g->dx * g->dx * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
     fflush(stdout);
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     fs_scenario_free(&sc);
     return 0;
 }

@@ -301,10 +301,12 @@ static fs_status count_rows(void *user, const fs_sim *sim, fs_error *err)
     c->sum += r.total;
     c->seen++;
     c->max = r.total > c->max ? r.total : c->max;
-    c->found += sim->contacts_found_now;
-    c->kept += sim->contacts_now;
-    c->touching += sim->shapes_touching_now;
-    c->most_found = sim->most_found_now > c->most_found ? sim->most_found_now : c->most_found;
+    int found, touching, most;
+    fs_sim_contact_needs(sim, &found, &touching, &most);
+    c->found += found;
+    c->kept += fs_sim_contact_count(sim);
+    c->touching += touching;
+    c->most_found = most > c->most_found ? most : c->most_found;
     return FS_OK;
 }
 

@@ -112,9 +112,9 @@ static void run_config(const config *c, const fs_scenario *loaded, double durati
     o->status = sc ? fs_scenario_copy(sc, loaded, &err) : fs_fail(&err, FS_NO_MEMORY, "out of memory");
     if (o->status == FS_OK)
         o->status = configure(c, &loaded->design, duration, sc, &err);
-    fs_sim sim;
+    fs_sim *sim = NULL;
     if (o->status == FS_OK)
-        o->status = fs_sim_build(&sim, sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &err);
+        o->status = fs_sim_new(sc, &(fs_sim_options){.with_ground = 1, .record_drift = 1}, &sim, &err);
     if (o->status != FS_OK) {
         snprintf(o->error, sizeof o->error, "%.500s", err.message);
         if (sc)
@@ -124,30 +124,30 @@ static void run_config(const config *c, const fs_scenario *loaded, double durati
     }
     fs_drive_spec spec = {.max_steps = (long)ceil(duration / c->step_s - 1e-9)};
     fs_drive_result r;
-    fs_status s = fs_drive(&sim, &spec, &r, &err);
-    const fs_check *k = &sim.check;
+    fs_status s = fs_drive(sim, &spec, &r, &err);
+    const fs_check *k = fs_sim_checks(sim);
     o->kind = s == FS_OK ? FS_CHECK_OK : k->failure;
     o->drift = k->first_drift;
     o->cls = fs_check_class_of(o->kind != FS_CHECK_OK ? (fs_check_kind)o->kind : k->first_drift);
     snprintf(o->reason, sizeof o->reason, "%s", fs_check_kind_name(o->kind != FS_CHECK_OK ? o->kind : o->drift));
     snprintf(o->where, sizeof o->where, "%s", o->kind != FS_CHECK_OK ? k->failure_where : k->drift_where);
     snprintf(o->drift_where, sizeof o->drift_where, "%s", k->drift_where);
-    if (sim.ode_failed) { /* ODE's own check stopped the step (fs_ode.h): blown up */
+    if (fs_sim_dead(sim)) { /* ODE's own check stopped the step (fs_ode.h): blown up */
         o->cls = FS_CHECK_BLOWN_UP;
         snprintf(o->reason, sizeof o->reason, "ode_error");
         snprintf(o->where, sizeof o->where, "ODE");
     }
     o->time_s = o->kind != FS_CHECK_OK ? k->failure_time_s : o->drift ? k->first_drift_time_s : NAN;
     o->drift_time_s = o->drift ? k->first_drift_time_s : NAN;
-    o->sim_time_s = sim.time_s;
+    o->sim_time_s = fs_sim_time(sim);
     o->steps = k->steps;
     o->loop_m = k->max_loop_error_m;
     o->excess_J = k->max_energy_excess_J;
     o->bound_J = k->energy_bound_J;
     o->speed_m_per_s = k->max_speed_m_per_s;
-    o->limit_s = fs_check_explicit_step_limit(&sim);
+    o->limit_s = fs_check_explicit_step_limit(sim);
     o->iterations = sc->def.iterations;
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     fs_scenario_free(sc);
     free(sc);
 }

@@ -75,7 +75,7 @@ def _dp(a):
 
 
 def version():
-    """footsim's version and the git description it was built from: "0.1.0 (git abc1234)"."""
+    """footsim's version and the git description it was built from: "1.0.0 (git abc1234)"."""
     return _c.fs_version().decode()
 
 
@@ -300,6 +300,12 @@ class Sim(_Handle):
     @property
     def dead(self):
         return bool(_c.fs_sim_dead(self._handle()))
+
+    @property
+    def warnings(self):
+        """The warnings the library gave while it built and stepped this simulation (their text
+        went to the warning handler)."""
+        return _c.fs_sim_warnings(self._handle())
 
     @property
     def nbodies(self):

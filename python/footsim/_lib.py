@@ -4,7 +4,7 @@ Where the library is looked for, first found wins:
   1. $FOOTSIM_LIB (a path to libfootsim.so[.N]); libfootsim-render is looked for beside it;
   2. an installed package: the library folder recorded at install (_paths.py, written by CMake);
   3. the source tree: <repo>/build/libfootsim.so (`make build`), when this package is <repo>/python/footsim;
-  4. the system's loader (ldconfig, LD_LIBRARY_PATH): libfootsim.so.0.
+  4. the system's loader (ldconfig, LD_LIBRARY_PATH): libfootsim.so.1.
 """
 import ctypes
 import os
@@ -12,8 +12,8 @@ from ctypes import POINTER, c_char_p, c_double, c_int, c_long, c_void_p
 from pathlib import Path
 
 _HERE = Path(__file__).resolve().parent
-SONAME = "libfootsim.so.0"
-RENDER_SONAME = "libfootsim-render.so.0"
+SONAME = "libfootsim.so.1"
+RENDER_SONAME = "libfootsim-render.so.1"
 
 try:
     from . import _paths  # written at install: where the library and the data went
@@ -98,6 +98,7 @@ for name, res, *args in [
     ("fs_sim_time", c_double, c_void_p),
     ("fs_sim_step_size", c_double, c_void_p),
     ("fs_sim_dead", c_int, c_void_p),
+    ("fs_sim_warnings", c_long, c_void_p),
     ("fs_sim_body_count", c_int, c_void_p),
     ("fs_sim_body_name", c_char_p, c_void_p, c_int),
     ("fs_sim_body_index", c_int, c_void_p, c_char_p),

@@ -75,6 +75,7 @@ def test_sim_at_rest_carries_its_weight():
     assert sim.body_names[:2] == ("heel", "talus") and sim.nbodies == 12 and len(sim.spring_names) == 15
     sim.step(3000)
     assert sim.time == pytest.approx(0.3, abs=1e-12)
+    assert sim.warnings == 0 and not sim.dead  # a sound run: ODE said nothing
     pos, force = sim.contacts()
     assert pos.shape == force.shape and pos.shape[1] == 3 and len(pos) > 0
     weight = (26 + sim.masses().sum()) * G

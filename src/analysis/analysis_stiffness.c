@@ -84,7 +84,7 @@ static const double SETTLE_S = 2.0, STILL_M_PER_S = 1e-12;
 static void apply_torques(void *user, fs_sim *sim)
 {
     const probe_load *p = user;
-    const fs_foot_geom *g = sim->geom;
+    const fs_foot_geom *g = fs_sim_geom(sim);
     double tau = p->tau;
     for (int i = 0; i < FS_CHAINS; i++) {
         const fs_hinge_geom *h = &g->hinge[p->j == 0 ? g->chain[i].midfoot_hinge : g->chain[i].mtp_hinge];
@@ -99,35 +99,37 @@ static void apply_torques(void *user, fs_sim *sim)
 static int still(void *user, fs_sim *sim)
 {
     (void)user;
-    return sim->time_s > 0.1 && fs_sim_max_speed(sim) < STILL_M_PER_S;
+    return fs_sim_time(sim) > 0.1 && fs_sim_max_speed(sim) < STILL_M_PER_S;
 }
 
 /* Out of time: SETTLE_S simulated. */
 static int out_of_time(void *user, fs_sim *sim)
 {
     (void)user;
-    return sim->time_s >= SETTLE_S;
+    return fs_sim_time(sim) >= SETTLE_S;
 }
 
 /* Torque tau about joint j of every chain, held until still; the joint angles that result. */
 static fs_status probe(const fs_scenario *sc, int j, double tau, double angles[FS_CHAINS][2], fs_error *err)
 {
-    fs_sim sim;
+    fs_sim *sim;
     fs_sim_options opts = {.with_ground = 0, .hold_rear_foot = 1};
-    fs_status s = fs_sim_build(&sim, sc, &opts, err);
-    const fs_foot_geom *g = sim.geom;
+    fs_status s = fs_sim_new(sc, &opts, &sim, err);
+    if (s != FS_OK)
+        return s;
+    const fs_foot_geom *g = fs_sim_geom(sim);
     probe_load load = {j, tau};
     const fs_step_hook hooks[] = {{"still", still, NULL}, {"out of time", out_of_time, NULL}};
     fs_drive_spec spec = {.max_steps = LONG_MAX, .before_step = apply_torques, .before_user = &load, .hooks = hooks,
                           .nhooks = 2};
     fs_drive_result r;
-    if (s == FS_OK && sim.time_s < SETTLE_S)
-        s = fs_drive(&sim, &spec, &r, err);
+    if (s == FS_OK && fs_sim_time(sim) < SETTLE_S)
+        s = fs_drive(sim, &spec, &r, err);
     for (int i = 0; s == FS_OK && i < FS_CHAINS; i++) {
-        angles[i][0] = fs_sim_hinge_angle(&sim, g->chain[i].midfoot_hinge);
-        angles[i][1] = fs_sim_hinge_angle(&sim, g->chain[i].mtp_hinge);
+        angles[i][0] = fs_sim_hinge_angle(sim, g->chain[i].midfoot_hinge);
+        angles[i][1] = fs_sim_hinge_angle(sim, g->chain[i].mtp_hinge);
     }
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     return s;
 }
 
@@ -184,40 +186,42 @@ typedef struct pitch_load {
 static void apply_pitch(void *user, fs_sim *sim)
 {
     const pitch_load *p = user;
-    double rise = p->ramp_s > 0 ? fmin(1, sim->time_s / p->ramp_s) : 1;
+    double rise = p->ramp_s > 0 ? fmin(1, fs_sim_time(sim) / p->ramp_s) : 1;
     const double torque[3] = {0, p->tau * rise, 0};
-    fs_sim_body_add_torque(sim, sim->geom->ankle_body, torque);
+    fs_sim_body_add_torque(sim, fs_sim_geom(sim)->ankle_body, torque);
 }
 
 /* Still, once the load and torque have risen: every body slower than 1e-7 m/s. */
 static int still_after_ramp(void *user, fs_sim *sim)
 {
     const pitch_load *p = user;
-    return sim->time_s > p->ramp_s + 0.1 && fs_sim_max_speed(sim) < 1e-7;
+    return fs_sim_time(sim) > p->ramp_s + 0.1 && fs_sim_max_speed(sim) < 1e-7;
 }
 
 /* The ankle body's pitch at rest under torque tau: the turn of its x axis about the world's y. */
 static fs_status pitch_probe(const fs_scenario *sc, double tau, int in_plane, double *pitch, fs_error *err)
 {
-    fs_sim sim;
+    fs_sim *sim;
     fs_sim_options opts = {.with_ground = 1, .chain_plane_friction = in_plane};
-    fs_status s = fs_sim_build(&sim, sc, &opts, err);
+    fs_status s = fs_sim_new(sc, &opts, &sim, err);
+    if (s != FS_OK)
+        return s;
     pitch_load load = {tau, sc->def.ramp_s};
     const fs_step_hook hooks[] = {{"still", still_after_ramp, &load}, {"out of time", out_of_time, NULL}};
     fs_drive_spec spec = {.max_steps = LONG_MAX, .before_step = apply_pitch, .before_user = &load, .hooks = hooks,
                           .nhooks = 2};
     fs_drive_result r;
     if (s == FS_OK)
-        s = fs_drive(&sim, &spec, &r, err);
+        s = fs_drive(sim, &spec, &r, err);
     if (s == FS_OK && r.stopped_by != 0)
         s = fs_fail(err, FS_NUMERICAL, "%s: the foot did not come to rest within %g s under a pitch torque of %.3g N m",
                     sc->path, SETTLE_S, tau);
     if (s == FS_OK) {
         double R[9];
-        fs_sim_body_pose(&sim, sim.geom->ankle_body, NULL, R);
+        fs_sim_body_pose(sim, fs_sim_geom(sim)->ankle_body, NULL, R);
         *pitch = atan2(-R[6], R[0]);
     }
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     return s;
 }
 

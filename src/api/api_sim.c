@@ -6,11 +6,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A simulation and the copy of its scenario it reads: the handle is the sim's address. */
+/* A simulation and the copy of its scenario it reads. The sim is built on the copy, so the box is
+ * found back from the handle through the scenario the sim names (its first field). */
 typedef struct sim_box {
-    fs_sim sim; /* first: the handle points at it, and at the box */
-    fs_scenario sc;
+    fs_scenario sc; /* first: fs_sim_scenario(sim) is the box's address */
+    fs_sim *sim;
 } sim_box;
+
+static sim_box *box_of(const fs_sim *sim) { return (sim_box *)fs_sim_scenario(sim); }
 
 typedef fs_status (*scenario_loader)(const char *path, const char *const *overrides, int noverrides, fs_scenario *sc,
                                      fs_error *err);
@@ -79,20 +82,20 @@ fs_sim *fs_sim_open(const fs_scenario *sc, fs_error *err)
         free(box);
         return NULL;
     }
-    if (fs_sim_build(&box->sim, &box->sc, NULL, err) != FS_OK) {
+    if (fs_sim_new(&box->sc, NULL, &box->sim, err) != FS_OK) {
         fs_scenario_free(&box->sc);
         free(box);
         return NULL;
     }
-    return &box->sim;
+    return box->sim;
 }
 
 void fs_sim_close(fs_sim *sim)
 {
     if (!sim)
         return;
-    sim_box *box = (sim_box *)sim;
-    fs_sim_destroy(&box->sim);
+    sim_box *box = box_of(sim);
+    fs_sim_free(box->sim);
     fs_scenario_free(&box->sc);
     free(box);
 }
@@ -107,17 +110,12 @@ fs_status fs_sim_advance(fs_sim *sim, long nsteps, fs_error *err)
     return FS_OK;
 }
 
-double fs_sim_time(const fs_sim *sim) { return sim->time_s; }
-double fs_sim_step_size(const fs_sim *sim) { return sim->sc->def.step_s; }
-int fs_sim_dead(const fs_sim *sim) { return sim->ode_failed; }
-
-int fs_sim_body_count(const fs_sim *sim) { return sim->geom->nbodies + (sim->robot || sim->robot_merged); }
 
 const char *fs_sim_body_name(const fs_sim *sim, int i)
 {
     if (i < 0 || i >= fs_sim_body_count(sim))
         return NULL;
-    return i < sim->geom->nbodies ? sim->geom->body[i].name : "robot";
+    return i < fs_sim_geom(sim)->nbodies ? fs_sim_geom(sim)->body[i].name : "robot";
 }
 
 int fs_sim_body_index(const fs_sim *sim, const char *name)
@@ -131,7 +129,7 @@ int fs_sim_body_index(const fs_sim *sim, const char *name)
 void fs_sim_body_masses(const fs_sim *sim, double *mass_kg)
 {
     for (int i = 0; i < fs_sim_body_count(sim); i++)
-        mass_kg[i] = i < sim->geom->nbodies ? sim->geom->body[i].mass_kg : sim->sc->def.robot.mass_kg;
+        mass_kg[i] = i < fs_sim_geom(sim)->nbodies ? fs_sim_geom(sim)->body[i].mass_kg : fs_sim_scenario(sim)->def.robot.mass_kg;
 }
 
 void fs_sim_poses(const fs_sim *sim, double *pos, double *R)
@@ -149,7 +147,7 @@ void fs_sim_velocities(const fs_sim *sim, double *v, double *w)
 fs_status fs_sim_apply_torque(fs_sim *sim, int i, const double torque_N_m[3], fs_error *err)
 {
     if (i < 0 || i >= fs_sim_body_count(sim))
-        return fs_fail(err, FS_BAD_INPUT, "body: %d is not a body of %s; give 0 to %d", i, sim->sc->path,
+        return fs_fail(err, FS_BAD_INPUT, "body: %d is not a body of %s; give 0 to %d", i, fs_sim_scenario(sim)->path,
                        fs_sim_body_count(sim) - 1);
     if (!isfinite(torque_N_m[0]) || !isfinite(torque_N_m[1]) || !isfinite(torque_N_m[2]))
         return fs_fail(err, FS_BAD_INPUT, "torque_N_m: (%g, %g, %g) is not finite; give three finite numbers, N m",
@@ -160,32 +158,18 @@ fs_status fs_sim_apply_torque(fs_sim *sim, int i, const double torque_N_m[3], fs
 
 void fs_sim_ankle_position(const fs_sim *sim, double p[3]) { fs_sim_ankle(sim, p); }
 
-int fs_sim_contact_count(const fs_sim *sim) { return sim->contacts_now; }
 
-int fs_sim_contacts(const fs_sim *sim, double *pos, double *force, int max)
-{
-    int n = sim->contacts_now < max ? sim->contacts_now : max;
-    for (int i = 0; i < n; i++)
-        for (int k = 0; k < 3; k++) {
-            if (pos)
-                pos[3 * i + k] = sim->contact_pos[i][k];
-            if (force)
-                force[3 * i + k] = sim->feedback[i].f1[k]; /* on the foot (body 1), from the ground */
-        }
-    return n < 0 ? 0 : n;
-}
-
-int fs_sim_spring_count(const fs_sim *sim) { return sim->geom->nsprings; }
+int fs_sim_spring_count(const fs_sim *sim) { return fs_sim_geom(sim)->nsprings; }
 
 const char *fs_sim_spring_name(const fs_sim *sim, int i)
 {
-    return i >= 0 && i < sim->geom->nsprings ? sim->geom->spring[i].name : NULL;
+    return i >= 0 && i < fs_sim_geom(sim)->nsprings ? fs_sim_geom(sim)->spring[i].name : NULL;
 }
 
 void fs_sim_spring_forces(const fs_sim *sim, double *force_N, double *length_m)
 {
-    for (int i = 0; i < sim->geom->nsprings; i++) {
-        fs_spring_state st = fs_spring_measure(&sim->spring[i]);
+    for (int i = 0; i < fs_sim_geom(sim)->nsprings; i++) {
+        fs_spring_state st = fs_sim_spring_state(sim, i);
         if (force_N)
             force_N[i] = st.force_N;
         if (length_m)
@@ -201,10 +185,11 @@ double fs_sim_energies(const fs_sim *sim, double *kinetic_J, double *potential_J
 void fs_sim_check_worst(const fs_sim *sim, double *max_speed_m_per_s, double *max_loop_error_m,
                         double *max_energy_excess_J)
 {
+    const fs_check *c = fs_sim_checks(sim);
     if (max_speed_m_per_s)
-        *max_speed_m_per_s = sim->check.max_speed_m_per_s;
+        *max_speed_m_per_s = c->max_speed_m_per_s;
     if (max_loop_error_m)
-        *max_loop_error_m = sim->check.max_loop_error_m;
+        *max_loop_error_m = c->max_loop_error_m;
     if (max_energy_excess_J)
-        *max_energy_excess_J = sim->check.max_energy_excess_J;
+        *max_energy_excess_J = c->max_energy_excess_J;
 }

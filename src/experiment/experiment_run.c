@@ -37,15 +37,15 @@ static void fill_row(const fs_run_result *res, const fs_sim *sim, double *row)
 {
     double p[3];
     fs_sim_ankle(sim, p);
-    row[0] = sim->time_s;
+    row[0] = fs_sim_time(sim);
     row[1] = p[0];
     row[2] = p[1];
     row[3] = p[2];
-    row[4] = sim->contacts_now;
-    for (int i = 0; i < sim->geom->nhinges; i++)
+    row[4] = fs_sim_contact_count(sim);
+    for (int i = 0; i < fs_sim_geom(sim)->nhinges; i++)
         row[5 + i] = fs_sim_hinge_angle(sim, i);
-    for (int i = 0; i < sim->geom->nsprings; i++)
-        row[5 + sim->geom->nhinges + i] = fs_spring_measure(&sim->spring[i]).force_N;
+    for (int i = 0; i < fs_sim_geom(sim)->nsprings; i++)
+        row[5 + fs_sim_geom(sim)->nhinges + i] = fs_sim_spring_state(sim, i).force_N;
     if (res->lean_col)
         row[res->lean_col] = fs_sim_robot_tilt(sim) * 180 / M_PI;
 }
@@ -59,8 +59,8 @@ void fs_log_row(fs_run_result *res, const fs_sim *sim)
 
 void fs_log_begin(fs_run_logger *l, fs_run_result *res, const fs_sim *sim)
 {
-    *l = (fs_run_logger){.res = res, .every = res ? res->every : 1, .timed = sim->saved != NULL,
-                         .interval_s = sim->sc->def.log_interval_s};
+    *l = (fs_run_logger){.res = res, .every = res ? res->every : 1, .timed = fs_sim_adaptive(sim),
+                         .interval_s = fs_sim_scenario(sim)->def.log_interval_s};
     if (!res)
         return;
     fs_log_row(res, sim);
@@ -88,7 +88,7 @@ static void log_crossings(fs_run_logger *l, const fs_sim *sim)
 
 void fs_log_last(fs_run_result *res, const fs_sim *sim)
 {
-    if (res->nrows == 0 || res->rows[(size_t)(res->nrows - 1) * res->ncols] != sim->time_s)
+    if (res->nrows == 0 || res->rows[(size_t)(res->nrows - 1) * res->ncols] != fs_sim_time(sim))
         fs_log_row(res, sim);
 }
 
@@ -131,18 +131,17 @@ static double settle_time(const fs_run_result *res, double band)
 static void measure_end(fs_run_result *res, const fs_sim *sim)
 {
     fs_sim_ankle(sim, res->ankle_end_m);
-    res->end_time_s = sim->time_s;
+    res->end_time_s = fs_sim_time(sim);
     res->ankle_drop_m = res->ankle_start_m[2] - res->ankle_end_m[2];
-    for (int i = 0; i < sim->geom->nhinges; i++)
+    for (int i = 0; i < fs_sim_geom(sim)->nhinges; i++)
         res->hinge_angle_rad[i] = fs_sim_hinge_angle(sim, i);
-    for (int i = 0; i < sim->geom->nsprings; i++) {
-        fs_spring_state st = fs_spring_measure(&sim->spring[i]);
+    for (int i = 0; i < fs_sim_geom(sim)->nsprings; i++) {
+        fs_spring_state st = fs_sim_spring_state(sim, i);
         res->spring_force_N[i] = st.force_N;
         res->spring_length_m[i] = st.length_m;
     }
-    res->contacts_end = sim->contacts_now;
-    res->contacts_total = sim->contacts_total;
-    res->collision_tests = sim->collision_tests;
+    res->contacts_end = fs_sim_contact_count(sim);
+    fs_sim_contact_totals(sim, &res->contacts_total, &res->collision_tests);
     res->energy_end_J = fs_sim_energy(sim, NULL, NULL, NULL);
 }
 
@@ -165,10 +164,10 @@ typedef struct rest_rule {
 static int at_rest(void *user, fs_sim *sim)
 {
     rest_rule *r = user;
-    if (sim->time_s >= r->d->ramp_s && fs_sim_max_speed(sim) < r->d->rest_speed_m_per_s) {
+    if (fs_sim_time(sim) >= r->d->ramp_s && fs_sim_max_speed(sim) < r->d->rest_speed_m_per_s) {
         if (r->since_s < 0)
-            r->since_s = sim->time_s;
-        return sim->time_s - r->since_s >= r->d->rest_hold_s;
+            r->since_s = fs_sim_time(sim);
+        return fs_sim_time(sim) - r->since_s >= r->d->rest_hold_s;
     }
     r->since_s = -1;
     return 0;
@@ -183,27 +182,27 @@ fs_status fs_run(const fs_scenario *sc, const fs_run_observer *obs, fs_run_resul
     if (opened != FS_OK)
         return opened;
     fs_sim_options opts = fs_observer_sim_options(obs);
-    fs_sim sim;
-    fs_status s = fs_sim_build(&sim, sc, &opts, err);
+    fs_sim *sim;
+    fs_status s = fs_sim_new(sc, &opts, &sim, err);
     if (s != FS_OK)
         return s;
-    fs_sim_ankle(&sim, res->ankle_start_m);
-    res->energy_start_J = fs_sim_energy(&sim, NULL, NULL, NULL);
+    fs_sim_ankle(sim, res->ankle_start_m);
+    res->energy_start_J = fs_sim_energy(sim, NULL, NULL, NULL);
     fs_run_logger logger;
-    fs_log_begin(&logger, res, &sim);
+    fs_log_begin(&logger, res, sim);
     rest_rule rest = {d, -1};
     const fs_step_hook hooks[] = {{"logged", fs_log_after_step, &logger}, {"at rest", at_rest, &rest}};
     fs_drive_spec spec = {.max_steps = nsteps, .hooks = hooks, .nhooks = 2, .obs = obs};
     fs_drive_result r;
-    s = fs_drive(&sim, &spec, &r, err);
+    s = fs_drive(sim, &spec, &r, err);
     res->steps = (int)r.steps;
     res->at_rest = r.stopped_by == 1;
     if (s == FS_OK) {
-        fs_log_last(res, &sim);
-        measure_end(res, &sim);
+        fs_log_last(res, sim);
+        measure_end(res, sim);
         res->settle_time_s = settle_time(res, d->settle_band_m);
     }
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     return s;
 }
 

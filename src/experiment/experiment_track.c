@@ -39,7 +39,7 @@ static void sample(const fs_sim *sim, fs_track *t, int i)
     if (i >= t->n)
         return;
     if (t->t_s)
-        t->t_s[i] = sim->time_s;
+        t->t_s[i] = fs_sim_time(sim);
     fs_sim_ankle(sim, t->ankle[i]);
     for (int k = 0; k < t->nangles; k++)
         t->angle[i][k] = fs_sim_hinge_angle(sim, k);
@@ -69,26 +69,26 @@ fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double
     fs_status s = track_alloc(out, h, samples, nangles, timed, err);
     if (s != FS_OK)
         return s;
-    fs_sim sim;
-    s = fs_sim_build(&sim, sc, opts, err);
+    fs_sim *sim = NULL;
+    s = fs_sim_new(sc, opts, &sim, err);
     if (s == FS_OK) {
-        sample(&sim, out, 0);
+        sample(sim, out, 0);
         sampler p = {out, 0};
         const fs_step_hook hooks[] = {{"sampled", sample_step, &p}};
         fs_drive_spec spec = {.max_steps = steps, .hooks = hooks, .nhooks = 1};
         fs_drive_result r;
         double start = fs_clock_s();
-        s = fs_drive(&sim, &spec, &r, err);
+        s = fs_drive(sim, &spec, &r, err);
         out->wall_s = fs_clock_s() - start;
-        out->check_class = fs_check_class_of(sim.check.first_drift);
-        out->first_drift = sim.check.first_drift;
-        out->max_loop_error_m = sim.check.max_loop_error_m;
+        out->check_class = fs_check_class_of(fs_sim_checks(sim)->first_drift);
+        out->first_drift = fs_sim_checks(sim)->first_drift;
+        out->max_loop_error_m = fs_sim_checks(sim)->max_loop_error_m;
         out->n = timed ? p.i + 1 : out->n;
-        out->steps = sim.stats.taken;
-        out->rejected = sim.stats.rejected;
-        out->ode_steps = sim.stats.ode_steps;
+        out->steps = fs_sim_step_stats(sim)->taken;
+        out->rejected = fs_sim_step_stats(sim)->rejected;
+        out->ode_steps = fs_sim_step_stats(sim)->ode_steps;
     }
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     if (s != FS_OK)
         fs_track_free(out);
     return s;

@@ -57,7 +57,7 @@ typedef struct watch {
 /* Each of a biped's feet: its touchdown, and its contacts while the trial watches. */
 static void observe_feet(const fs_sim *sim, watch *w, fs_trial_result *out)
 {
-    for (int f = 0; f < sim->geom->nfeet; f++) {
+    for (int f = 0; f < fs_sim_geom(sim)->nfeet; f++) {
         int n = fs_sim_foot_contacts(sim, f);
         const fs_touch *t = fs_sim_first_touch(sim, f);
         if (!w->foot_touched[f] && t) {
@@ -66,13 +66,13 @@ static void observe_feet(const fs_sim *sim, watch *w, fs_trial_result *out)
             memcpy(w->foot_touch_ankle[f], t->ankle_m, sizeof t->ankle_m);
         }
         if (w->touched)
-            w->foot_contact_sum[f] += n * (sim->step_taken_s / sim->sc->def.step_s);
+            w->foot_contact_sum[f] += n * (fs_sim_step_taken(sim) / fs_sim_scenario(sim)->def.step_s);
     }
 }
 
 static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, double h)
 {
-    if (sim->geom->nfeet > 1)
+    if (fs_sim_geom(sim)->nfeet > 1)
         observe_feet(sim, w, out);
     double f[3];
     fs_sim_ground_force(sim, f);
@@ -82,14 +82,14 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
         /* the first touch of any foot, at the instant its lowest point met the surface (fs_touch);
          * a biped's ankle drop and slip are each foot's, from its own touch (finish) */
         const fs_touch *first = NULL;
-        for (int f = 0; f < (sim->geom->nfeet > 1 ? sim->geom->nfeet : 1); f++) {
+        for (int f = 0; f < (fs_sim_geom(sim)->nfeet > 1 ? fs_sim_geom(sim)->nfeet : 1); f++) {
             const fs_touch *t = fs_sim_first_touch(sim, f);
             if (t && (!first || t->time_s < first->time_s))
                 first = t;
         }
         w->touched = 1;
-        out->touchdown_s = first ? first->time_s : sim->time_s;
-        w->force_from_s = first ? first->found_s : sim->time_s - h;
+        out->touchdown_s = first ? first->time_s : fs_sim_time(sim);
+        w->force_from_s = first ? first->found_s : fs_sim_time(sim) - h;
         if (first)
             memcpy(w->touch_ankle, first->ankle_m, sizeof first->ankle_m);
         else
@@ -98,8 +98,8 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     if (!w->touched)
         return;
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
-    double weight = h / sim->sc->def.step_s; /* exactly 1 with fixed steps: a mean over time */
-    w->contact_sum += sim->contacts_now * weight;
+    double weight = h / fs_sim_scenario(sim)->def.step_s; /* exactly 1 with fixed steps: a mean over time */
+    w->contact_sum += fs_sim_contact_count(sim) * weight;
     w->contact_steps += weight;
     /* the impact: the ground's vertical impulse beyond the weight (and any load) since it first
      * pushed, which is the momentum it has taken out of the fall, at its largest within the window
@@ -112,11 +112,13 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
      * and substeps count alike; the speed then is the touchdown's plus g times up to that step, a
      * bias of at most the weight times the step (0.3 % of a landing's impulse at 1e-4 s). The step
      * that ends the window counts up to its end, its force taken as even over its pushing part. */
-    double start = fmax(sim->time_s - h, w->force_from_s), end = out->touchdown_s + w->impulse_window_s;
-    if (start < end && sim->time_s > start) {
-        double in = fmin(sim->time_s, end) - start;
-        double weight_N = -(w->mass_kg * sim->sc->def.gravity_m_per_s2 + fs_sim_load_now_N(sim)) * sim->down[2];
-        w->momentum_Ns += (f[2] * h / (sim->time_s - start) - weight_N) * in;
+    double start = fmax(fs_sim_time(sim) - h, w->force_from_s), end = out->touchdown_s + w->impulse_window_s;
+    if (start < end && fs_sim_time(sim) > start) {
+        double in = fmin(fs_sim_time(sim), end) - start;
+        double down[3];
+        fs_sim_down(sim, down);
+        double weight_N = -(w->mass_kg * fs_sim_scenario(sim)->def.gravity_m_per_s2 + fs_sim_load_now_N(sim)) * down[2];
+        w->momentum_Ns += (f[2] * h / (fs_sim_time(sim) - start) - weight_N) * in;
         out->impact_impulse_Ns = fmax(out->impact_impulse_Ns, w->momentum_Ns);
     }
 }
@@ -125,16 +127,16 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
 {
     double a[3];
     fs_sim_ankle(sim, a);
-    out->end_time_s = sim->time_s;
+    out->end_time_s = fs_sim_time(sim);
     out->final_tilt_deg = fs_sim_robot_tilt(sim) / DEG;
-    out->final_contacts = sim->contacts_now;
+    out->final_contacts = fs_sim_contact_count(sim);
     out->mean_contacts = w->contact_steps ? w->contact_sum / w->contact_steps : 0;
     if (w->touched) {
         out->ankle_drop_m = w->touch_ankle[2] - a[2];
         out->slip_m = hypot(a[0] - w->touch_ankle[0], a[1] - w->touch_ankle[1]);
-        out->settle_time_s = (w->rest_since >= 0 ? w->rest_since : sim->time_s) - out->touchdown_s;
+        out->settle_time_s = (w->rest_since >= 0 ? w->rest_since : fs_sim_time(sim)) - out->touchdown_s;
     }
-    out->nfeet = sim->geom->nfeet > 1 ? sim->geom->nfeet : 1;
+    out->nfeet = fs_sim_geom(sim)->nfeet > 1 ? fs_sim_geom(sim)->nfeet : 1;
     if (out->nfeet == 1) {
         double f[3];
         fs_sim_ground_force(sim, f);
@@ -169,9 +171,9 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
 static double moving_mass_kg(const fs_sim *sim, const fs_scenario_def *d)
 {
     double mass = 0;
-    for (int i = 0; i < sim->geom->nbodies; i++)
-        mass += sim->geom->body[i].mass_kg;
-    return sim->geom->biped ? mass : mass + d->robot.mass_kg;
+    for (int i = 0; i < fs_sim_geom(sim)->nbodies; i++)
+        mass += fs_sim_geom(sim)->body[i].mass_kg;
+    return fs_sim_geom(sim)->biped ? mass : mass + d->robot.mass_kg;
 }
 
 /* The judge's rules; mass: of everything that moves (moving_mass_kg). */
@@ -195,8 +197,8 @@ static void sample_of(const fs_sim *sim, fs_outcome_sample *s)
 {
     double ke;
     fs_sim_energy(sim, &ke, NULL, NULL);
-    *s = (fs_outcome_sample){sim->time_s, fs_sim_robot_tilt(sim), ke, fs_sim_max_speed(sim), fs_sim_support(sim),
-                             sim->step_taken_s / sim->sc->def.step_s};
+    *s = (fs_outcome_sample){fs_sim_time(sim), fs_sim_robot_tilt(sim), ke, fs_sim_max_speed(sim), fs_sim_support(sim),
+                             fs_sim_step_taken(sim) / fs_sim_scenario(sim)->def.step_s};
 }
 
 /* A trial's state while it runs, for its hook. */
@@ -212,7 +214,7 @@ typedef struct trial_run {
 static int judge_step(void *user, fs_sim *sim)
 {
     trial_run *t = user;
-    observe_step(sim, &t->w, t->out, sim->step_taken_s); /* step_s, or the error-controlled step's */
+    observe_step(sim, &t->w, t->out, fs_sim_step_taken(sim)); /* step_s, or the error-controlled step's */
     sample_of(sim, &t->last);
     int over = fs_judge_step(&t->judge, &t->last);
     if (t->judge.at_rest && t->w.rest_since < 0)
@@ -232,13 +234,13 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
             return opened;
     }
     fs_sim_options opts = fs_observer_sim_options(obs);
-    fs_sim sim;
-    fs_status s = fs_sim_build(&sim, sc, &opts, err);
+    fs_sim *sim;
+    fs_status s = fs_sim_new(sc, &opts, &sim, err);
     if (s != FS_OK)
         return s;
     fs_run_logger logger;
-    fs_log_begin(&logger, log, &sim);
-    trial_run t = {.d = d, .w = {.rest_since = -1, .mass_kg = moving_mass_kg(&sim, d),
+    fs_log_begin(&logger, log, sim);
+    trial_run t = {.d = d, .w = {.rest_since = -1, .mass_kg = moving_mass_kg(sim, d),
                                  .impulse_window_s = d->impulse_window_s},
                    .out = out};
     fs_outcome_rules rules;
@@ -251,13 +253,13 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
                           .nhooks = log ? 2 : 1, .obs = obs};
     fs_drive_result r;
     fs_error step_err;
-    s = fs_drive(&sim, &spec, &r, &step_err);
+    s = fs_drive(sim, &spec, &r, &step_err);
     out->steps = r.steps - r.step_failed;
-    out->rejected_steps = sim.stats.rejected;
-    out->ode_steps = sim.stats.ode_steps;
-    out->step_least_s = sim.stats.least_s;
-    out->step_median_s = fs_sim_median_step_s(&sim);
-    out->step_largest_s = sim.stats.largest_s;
+    out->rejected_steps = fs_sim_step_stats(sim)->rejected;
+    out->ode_steps = fs_sim_step_stats(sim)->ode_steps;
+    out->step_least_s = fs_sim_step_stats(sim)->least_s;
+    out->step_median_s = fs_sim_median_step_s(sim);
+    out->step_largest_s = fs_sim_step_stats(sim)->largest_s;
     if (r.step_failed) { /* a result of the trial, not a failure of the call */
         out->outcome = FS_FAILED_NUMERICS;
         out->rule = FS_RULE_NUMERICS;
@@ -266,19 +268,19 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     }
     if (s != FS_OK) {
         *err = step_err;
-        fs_sim_destroy(&sim);
+        fs_sim_free(sim);
         return s;
     }
-    finish(&sim, &t.w, out);
+    finish(sim, &t.w, out);
     if (log)
-        fs_log_last(log, &sim);
+        fs_log_last(log, sim);
     if (out->outcome != FS_FAILED_NUMERICS) {
-        sample_of(&sim, &t.last);
-        fs_judge_finish(&t.judge, &t.last, fs_sim_penetration(&sim));
+        sample_of(sim, &t.last);
+        fs_judge_finish(&t.judge, &t.last, fs_sim_penetration(sim));
         out->outcome = t.judge.outcome;
         out->rule = t.judge.rule;
     }
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     return FS_OK;
 }
 

@@ -29,7 +29,7 @@ static void carriage_path(const fs_scenario_def *d, double t, double *x, double 
 static double ankle_tilt(const fs_sim *sim)
 {
     double R[9];
-    fs_sim_body_pose(sim, sim->geom->ankle_body, NULL, R);
+    fs_sim_body_pose(sim, fs_sim_geom(sim)->ankle_body, NULL, R);
     return acos(fmax(-1.0, fmin(1.0, R[8])));
 }
 
@@ -50,7 +50,7 @@ static void drive_carriage(void *user, fs_sim *sim)
 {
     walk_run *w = user;
     const fs_scenario_def *d = w->d;
-    double x, z, t = sim->time_s + d->step_s;
+    double x, z, t = fs_sim_time(sim) + d->step_s;
     carriage_path(d, t, &x, &z, &w->step, &w->phase);
     fs_carriage_drive(w->carriage, x, z); /* the step's checks count the carriage's work (fs_carriage.h) */
 }
@@ -77,10 +77,10 @@ static int judge_step(void *user, fs_sim *sim)
         const fs_terrain_def *td = w->td;
         int rough = td->kind == FS_TERRAIN_ROUGH && a[0] >= td->patch_x_min_m && a[0] <= td->patch_x_max_m;
         if (rough) {
-            w->rough_sum += sim->contacts_now;
+            w->rough_sum += fs_sim_contact_count(sim);
             out->rough_steps++;
         } else {
-            w->flat_sum += sim->contacts_now;
+            w->flat_sum += fs_sim_contact_count(sim);
             w->flat_steps++;
         }
     }
@@ -95,23 +95,28 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
         return fs_fail(err, FS_BAD_INPUT, "%s: a walking machine needs [scenario] kind = walk and a [robot] mass_kg > 0",
                        sc->path);
     fs_sim_options opts = fs_observer_sim_options(obs);
-    fs_sim sim;
-    fs_status s = fs_sim_build(&sim, sc, &opts, err);
+    fs_sim *sim;
+    fs_status s = fs_sim_new(sc, &opts, &sim, err);
     if (s != FS_OK)
         return s;
     /* the carriage: kinematic, 0.1 m above the body, joined by a vertical slider and the suspension */
-    fs_carriage carriage;
-    fs_carriage_attach(&carriage, &sim, 0.1, d->suspension_k_N_per_m, d->suspension_c_Ns_per_m);
-    walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = &carriage, .last_step = -1};
+    fs_carriage *carriage;
+    s = fs_carriage_new(sim, 0.1, d->suspension_k_N_per_m, d->suspension_c_Ns_per_m, &carriage, err);
+    if (s != FS_OK) {
+        fs_sim_free(sim);
+        return s;
+    }
+    walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = carriage, .last_step = -1};
     const fs_step_hook hooks[] = {{"judged", judge_step, &w}};
     fs_drive_spec spec = {.max_steps = (long)ceil(d->walk_steps * d->walk_period_s / d->step_s),
                           .before_step = drive_carriage, .before_user = &w, .hooks = hooks, .nhooks = 1, .obs = obs};
     fs_drive_result r;
-    s = fs_drive(&sim, &spec, &r, err);
+    s = fs_drive(sim, &spec, &r, err);
     out->rough_contacts_mean = out->rough_steps ? w.rough_sum / out->rough_steps : 0;
     out->flat_contacts_mean = w.flat_steps ? w.flat_sum / w.flat_steps : 0;
     out->peak_tilt_deg = w.tilt_max / DEG;
-    out->end_time_s = sim.time_s;
-    fs_sim_destroy(&sim);
+    out->end_time_s = fs_sim_time(sim);
+    fs_sim_free(sim);
+    fs_carriage_free(carriage); /* after the sim, which stepped it */
     return s;
 }

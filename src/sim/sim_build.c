@@ -1,5 +1,9 @@
-/* sim_build.c: the foot built in ODE from its geometry (bodies, shapes, joints, springs, the
- * robot, the ground), and taken down again. The step is sim_step.c. */
+/* sim_build.c: a simulation made in ODE from its model (fs_model.h, compiled in sim_model.c): the
+ * world, bodies, shapes, joints, springs, the robot and the ground, and taken down again. Nothing
+ * here decides a number of the model; it only makes ODE's objects of them, in a fixed order. The
+ * step is sim_step.c. */
+#include "footsim/sim/fs_model.h"
+
 #include "sim_internal.h"
 #include "sim_soil.h"
 
@@ -10,248 +14,76 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define DEG (M_PI / 180.0)
+static void put(double out[3], const double in[3]) { memcpy(out, in, 3 * sizeof(double)); }
 
-/* Two materials in contact: friction as the geometric mean, stiffness and damping in series. */
-static double series(double a, double b) { return a > 0 && b > 0 ? a * b / (a + b) : 0; }
-
+/* The contact joints' surface from the model's materials, soft for the scenario's step. */
 static void contact_template(fs_sim *sim)
 {
-    const fs_scenario_def *s = &sim->sc->def;
-    const fs_design_def *d = &sim->sc->design;
-    const fs_terrain_def *m = &sim->sc->terrain.def;
+    const fs_model *m = sim->model;
     dContact *ct = &sim->contact_template;
     memset(ct, 0, sizeof *ct);
     ct->surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
-    ct->surface.mu = sqrt(d->sole_mu * m->mu);
+    ct->surface.mu = m->mu;
     if (m->restitution > 0) {
         ct->surface.mode |= dContactBounce;
         ct->surface.bounce = m->restitution;
-        ct->surface.bounce_vel = 0.01; /* m/s: slower impacts do not bounce */
+        ct->surface.bounce_vel = m->bounce_speed_m_per_s;
     }
-    sim->contact_k_N_per_m = series(d->sole_stiffness_N_per_m, m->stiffness_N_per_m);
-    sim->contact_c_Ns_per_m = series(d->sole_damping_Ns_per_m, m->damping_Ns_per_m);
-    fs_sim_soften_contacts(sim, s->step_s);
-    sim->step_now_s = s->step_s;
+    sim->contact_k_N_per_m = m->contact_k_N_per_m;
+    sim->contact_c_Ns_per_m = m->contact_c_Ns_per_m;
+    fs_sim_soften_contacts(sim, sim->sc->def.step_s);
+    sim->step_now_s = sim->sc->def.step_s;
 }
 
-/* ---- the start pose ------------------------------------------------------------------------ */
-
-static fs_vec3 turn(const fs_sim *sim, fs_vec3 v)
+/* A model body's mass as ODE's dMass, bit for bit what the model kept of it (sim_model.c). */
+static void model_mass(const fs_model_body *b, dMass *mass)
 {
+    dMassSetZero(mass);
+    mass->mass = b->mass_kg;
+    for (int k = 0; k < 3; k++)
+        mass->c[k] = b->centre_m[k];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            mass->I[4 * r + c] = b->inertia_kg_m2[3 * r + c];
+}
+
+/* A body at its start pose (rotation R0) with its mass. */
+static dBodyID make_body(const fs_sim *sim, const fs_model_body *b)
+{
+    dBodyID id = dBodyCreate(sim->world);
+    dMass m;
+    model_mass(b, &m);
+    dBodySetMass(id, &m);
+    dBodySetPosition(id, b->pos_m[0], b->pos_m[1], b->pos_m[2]);
     const double *R = sim->R0;
-    return fs_v3(R[0] * v.x + R[1] * v.y + R[2] * v.z, R[3] * v.x + R[4] * v.y + R[5] * v.z,
-                 R[6] * v.x + R[7] * v.y + R[8] * v.z);
-}
-
-static fs_vec3 place(const fs_sim *sim, fs_vec3 p) { return fs_add(turn(sim, p), fs_v3(sim->t0[0], sim->t0[1], sim->t0[2])); }
-
-/* R0 = Rz(yaw) Ry(pitch) Rx(roll): toe down for positive pitch, left side up for positive roll. */
-static void start_rotation(const fs_scenario_def *s, double R[9])
-{
-    double y = s->yaw_deg * DEG, p = s->pitch_deg * DEG, r = s->roll_deg * DEG;
-    double cy = cos(y), sy = sin(y), cp = cos(p), sp = sin(p), cr = cos(r), sr = sin(r);
-    double M[9] = {cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr,
-                   sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr,
-                   -sp,     cp * sr,                cp * cr};
-    memcpy(R, M, sizeof M);
-}
-
-/* Highest terrain within the disc of radius r around (x, y), from nine samples. */
-static double terrain_top(const fs_terrain *t, double x, double y, double r)
-{
-    double top = fs_terrain_height(t, x, y);
-    for (int k = 0; k < 8; k++)
-        top = fmax(top, fs_terrain_height(t, x + r * cos(k * M_PI / 4), y + r * sin(k * M_PI / 4)));
-    return top;
-}
-
-/* The lift that puts the foot's lowest point drop_m above the terrain under it. */
-static double start_lift(const fs_sim *sim)
-{
-    const fs_foot_geom *g = sim->geom;
-    const fs_terrain *t = &sim->sc->terrain;
-    double lift = -INFINITY;
-    for (int i = 0; i < g->nspheres; i++) {
-        fs_vec3 c = place(sim, g->sphere[i].centre);
-        double r = g->sphere[i].radius_m;
-        lift = fmax(lift, terrain_top(t, c.x, c.y, r) - (c.z - r));
-    }
-    for (int b = 0; b < g->nboxes; b++) {
-        /* the plate's corners, and the terrain under it finer than its lattice (the highest point of
-         * triangulated samples is a sample or on the edge) */
-        const fs_vec3 bc = g->box[b].centre;
-        double lowest = INFINITY, top = -INFINITY;
-        for (int k = 0; k < 8; k++) {
-            fs_vec3 corner = fs_v3(bc.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x,
-                                   bc.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y,
-                                   bc.z + ((k & 4) ? 0.5 : -0.5) * g->box_size.z);
-            lowest = fmin(lowest, place(sim, corner).z);
-        }
-        double spacing = fs_terrain_is_heightfield(t) && t->dx > 0 ? 0.5 * t->dx : 0.002;
-        int nx = (int)ceil(g->box_size.x / spacing) + 1, ny = (int)ceil(g->box_size.y / spacing) + 1;
-        for (int i = 0; i < nx; i++)
-            for (int j = 0; j < ny; j++) {
-                fs_vec3 p = fs_v3(bc.x + (i / (double)(nx - 1) - 0.5) * g->box_size.x,
-                                  bc.y + (j / (double)(ny - 1) - 0.5) * g->box_size.y, 0);
-                p = place(sim, p);
-                top = fmax(top, fs_terrain_height(t, p.x, p.y));
-            }
-        lift = fmax(lift, top - lowest);
-    }
-    if (sim->sc->terrain.def.soil.model != FS_SOIL_NONE) /* drop_m above the soil's surface */
-        lift += sim->sc->terrain.def.soil.depth_m;
-    return lift + sim->sc->def.drop_m;
-}
-
-/* Whether the robot becomes part of the ankle body (a rigid robot, free, not the walking machine's,
- * whose carriage holds the robot's own body): its fixed joint's 6 rows a step saved, the same
- * rigid assembly. */
-static int robot_merges(const fs_sim *sim)
-{
-    const fs_scenario_def *s = &sim->sc->def;
-    return s->robot.mass_kg > 0 && s->robot.kind == FS_ROBOT_SINGLE && s->robot.joint == FS_ROBOT_RIGID && s->robot.mount == FS_ROBOT_FREE &&
-           s->kind != FS_SCENARIO_WALK && sim->geom->npins == 0;
-}
-
-/* The robot's centre of mass in the design frame (its frame is the foot's at the start). */
-static fs_vec3 robot_com(const fs_sim *sim)
-{
-    const fs_robot_def *r = &sim->sc->def.robot;
-    return fs_add(sim->geom->ankle, fs_v3(r->com_forward_m, 0, r->com_height_m));
-}
-
-/* The robot's mass about its centre, in its frame. */
-static void robot_mass(const fs_sim *sim, dMass *m)
-{
-    double I[3];
-    fs_robot_inertia(&sim->sc->def.robot, I);
-    dMassSetParameters(m, sim->sc->def.robot.mass_kg, 0, 0, 0, I[0], I[1], I[2], 0, 0, 0);
-}
-
-/* The smallest eigenvalue of the symmetric 3x3 matrix ODE keeps in a dMass (rows 4 apart):
- * the smallest principal moment of inertia (closed form, trigonometric; Smith 1961). */
-static double smallest_moment(const dReal *I)
-{
-    double a = I[0], b = I[5], c = I[10], d = I[1], e = I[6], f = I[2];
-    double off = d * d + e * e + f * f;
-    if (off == 0)
-        return fmin(a, fmin(b, c));
-    double q = (a + b + c) / 3;
-    double p = sqrt(((a - q) * (a - q) + (b - q) * (b - q) + (c - q) * (c - q) + 2 * off) / 6);
-    /* det((A - q 1) / p) / 2, in [-1, 1] but for rounding */
-    double A = (a - q) / p, B = (b - q) / p, C = (c - q) / p, D = d / p, E = e / p, F = f / p;
-    double r = 0.5 * (A * (B * C - E * E) - D * (D * C - E * F) + F * (D * E - B * F));
-    double phi = acos(fmax(-1.0, fmin(1.0, r))) / 3;
-    return q + 2 * p * cos(phi + 2 * M_PI / 3);
-}
-
-/* [run] min_inertia_kg_m2 (for QuickStep: docs/bench.md, "QuickStep and the mass ratio"): I becomes
- * I + d 1 with d = max(0, floor - smallest principal moment), so that no principal moment is below
- * the floor and none is raised by more than it; the principal axes stay, the moments' triangle
- * inequality holds (each grows by d), and the mass and centre are untouched. Off (0), nothing is done:
- * the bits are those of a build without the key. */
-static void inertia_floor(dMass *m, double floor_kg_m2)
-{
-    if (!(floor_kg_m2 > 0))
-        return;
-    double d = floor_kg_m2 - smallest_moment(m->I);
-    if (d <= 0)
-        return;
-    m->I[0] += d;
-    m->I[5] += d;
-    m->I[10] += d;
-}
-
-/* Body i's mass; for the ankle body with a merged robot, the robot's added at its centre (the two
- * frames are alike), and the body's centre moved to the combined one (ODE keeps a body's centre at
- * its origin): sim->com[i] says where, in the design frame. */
-static void body_mass(fs_sim *sim, int i, dMass *m)
-{
-    const fs_body_geom *g = &sim->geom->body[i];
-    const double *I = g->inertia;
-    dMassSetParameters(m, g->mass_kg, 0, 0, 0, I[0], I[4], I[8], I[1], I[2], I[5]);
-    sim->com[i] = g->com;
-    if (i != sim->geom->ankle_body || !sim->robot_merged)
-        return;
-    dMass r;
-    robot_mass(sim, &r);
-    fs_vec3 d = fs_sub(robot_com(sim), g->com);
-    dMassTranslate(&r, d.x, d.y, d.z);
-    dMassAdd(m, &r);
-    sim->com[i] = fs_add(g->com, fs_v3(m->c[0], m->c[1], m->c[2]));
-    dMassTranslate(m, -m->c[0], -m->c[1], -m->c[2]);
-    fs_vec3 local = fs_sub(robot_com(sim), sim->com[i]);
-    sim->robot_local[0] = local.x;
-    sim->robot_local[1] = local.y;
-    sim->robot_local[2] = local.z;
+    dMatrix3 rot = {R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0};
+    dBodySetRotation(id, rot);
+    return id;
 }
 
 static void build_body(fs_sim *sim, int i)
 {
-    dBodyID b = dBodyCreate(sim->world);
-    dMass m;
-    body_mass(sim, i, &m);
-    inertia_floor(&m, sim->sc->def.min_inertia_kg_m2);
-    dBodySetMass(b, &m);
-    fs_vec3 p = place(sim, sim->com[i]);
-    dBodySetPosition(b, p.x, p.y, p.z);
-    const double *R = sim->R0;
-    dMatrix3 rot = {R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0};
-    dBodySetRotation(b, rot);
-    sim->body[i] = b;
-}
-
-/* Which foot body b belongs to (a biped's legs: -1). */
-static int foot_of_body(const fs_foot_geom *g, int b)
-{
-    if (g->nfeet <= 1)
-        return 0;
-    for (int f = 0; f < g->nfeet; f++)
-        if (b >= g->foot[f].first_body && b < g->foot[f].first_body + g->foot[f].nbodies)
-            return f;
-    return -1;
+    const fs_model_body *b = &sim->model->body[i];
+    sim->com[i] = fs_v3(b->com_design_m[0], b->com_design_m[1], b->com_design_m[2]);
+    sim->body[i] = make_body(sim, b);
 }
 
 static void build_shapes(fs_sim *sim)
 {
-    const fs_foot_geom *g = sim->geom;
-    for (int i = 0; i < g->nspheres; i++) {
-        const fs_sphere_geom *s = &g->sphere[i];
-        sim->shape_foot[sim->nshapes] = foot_of_body(g, s->body);
-        dGeomID geom = dCreateSphere(sim->space, s->radius_m);
+    const fs_model *m = sim->model;
+    for (int i = 0; i < m->nshapes; i++) {
+        const fs_model_shape *s = &m->shape[i];
+        dGeomID geom = s->kind == FS_MODEL_SPHERE ? dCreateSphere(sim->space, s->radius_m)
+                                                  : dCreateBox(sim->space, s->size_m[0], s->size_m[1], s->size_m[2]);
         dGeomSetBody(geom, sim->body[s->body]);
-        const fs_vec3 c = sim->com[s->body];
-        dGeomSetOffsetPosition(geom, s->centre.x - c.x, s->centre.y - c.y, s->centre.z - c.z);
-        sim->match_m[sim->nshapes] = s->radius_m / 4; /* far more than a contact moves in a step */
-        sim->shape[sim->nshapes++] = geom;
+        dGeomSetOffsetPosition(geom, s->offset_m[0], s->offset_m[1], s->offset_m[2]);
+        sim->shape_foot[i] = s->foot;
+        sim->match_m[i] = s->match_m;
+        if (m->chain_plane_friction && s->kind == FS_MODEL_SPHERE)
+            put(sim->grip_dir[i], s->grip_dir);
+        sim->shape[i] = geom;
     }
-    for (int b = 0; b < g->nboxes; b++) {
-        dGeomID box = dCreateBox(sim->space, g->box_size.x, g->box_size.y, g->box_size.z);
-        const int body = g->box[b].body;
-        dGeomSetBody(box, sim->body[body]);
-        const fs_vec3 c = sim->com[body], bc = g->box[b].centre;
-        dGeomSetOffsetPosition(box, bc.x - c.x, bc.y - c.y, bc.z - c.z);
-        sim->shape_foot[sim->nshapes] = foot_of_body(g, body);
-        sim->match_m[sim->nshapes] = fmin(g->box_size.x, g->box_size.y) / 4; /* corners lie farther apart */
-        sim->shape[sim->nshapes++] = box;
-    }
-}
-
-/* With chain_plane_friction: each sphere grips along the horizontal line of its chain's plane
- * (metatarsal and phalanx: midfoot joint to toe), the heel's and talus's along the foot's x. */
-static void grip_directions(fs_sim *sim)
-{
-    const fs_foot_geom *g = sim->geom;
-    for (int i = 0; i < g->nspheres; i++) {
-        fs_vec3 d = fs_v3(1, 0, 0);
-        for (int c = 0; c < FS_CHAINS; c++)
-            if (g->sphere[i].body == g->chain[c].metatarsal || g->sphere[i].body == g->chain[c].phalanx)
-                d = fs_sub(g->chain[c].toe, g->chain[c].midfoot);
-        d = turn(sim, d);
-        double len = hypot(d.x, d.y);
-        sim->grip_dir[i][0] = d.x / len, sim->grip_dir[i][1] = d.y / len, sim->grip_dir[i][2] = 0;
-    }
+    sim->nshapes = m->nshapes;
 }
 
 /* A passive angular spring-damper toward the hinge's angle now (0: its built pose), implicit: a stop
@@ -274,110 +106,65 @@ void fs_sim_spring_init(const fs_sim *sim, fs_spring *s, dBodyID body1, dBodyID 
     s->damping_correction = sim->sc->def.damping_correction;
 }
 
+static dJointID hinge_of(const fs_sim *sim, const fs_model_hinge *h)
+{
+    dJointID j = dJointCreateHinge(sim->world, 0);
+    dJointAttach(j, sim->body[h->body1], h->body2 < 0 ? 0 : sim->body[h->body2]);
+    dJointSetHingeAnchor(j, h->anchor_m[0], h->anchor_m[1], h->anchor_m[2]);
+    dJointSetHingeAxis(j, h->axis[0], h->axis[1], h->axis[2]);
+    return j;
+}
+
+/* A model's spring-damper between ODE bodies b1 and b2. */
+static void spring_of(const fs_sim *sim, fs_spring *s, const fs_model_spring *ms, dBodyID b1, dBodyID b2)
+{
+    fs_sim_spring_init(sim, s, b1, b2, ms->p1_m, ms->p2_m, ms->k_N_per_m, ms->c_Ns_per_m, ms->rest_length_m);
+}
+
 static void build_joints(fs_sim *sim)
 {
-    const fs_foot_geom *g = sim->geom;
-    for (int i = 0; i < g->nhinges; i++) {
-        const fs_hinge_geom *h = &g->hinge[i];
-        dJointID j = dJointCreateHinge(sim->world, 0);
-        dJointAttach(j, sim->body[h->body1], sim->body[h->body2]);
-        fs_vec3 a = place(sim, h->anchor), x = turn(sim, h->axis);
-        dJointSetHingeAnchor(j, a.x, a.y, a.z);
-        dJointSetHingeAxis(j, x.x, x.y, x.z);
-        if (fs_hinge_has_spring(h))
+    const fs_model *m = sim->model;
+    for (int i = 0; i < m->nhinges; i++) {
+        const fs_model_hinge *h = &m->hinge[i];
+        dJointID j = hinge_of(sim, h);
+        if (h->spring)
             angular_spring(sim, j, h->k_N_m_per_rad, h->c_N_m_s_per_rad, sim->sc->def.step_s);
         sim->hinge[i] = j;
     }
-    for (int i = 0; i < g->npins; i++) {
-        dJointID j = dJointCreateHinge(sim->world, 0);
-        dJointAttach(j, sim->body[g->pin[i].body], 0);
-        fs_vec3 a = place(sim, g->pin[i].anchor), x = turn(sim, g->pin[i].axis);
-        dJointSetHingeAnchor(j, a.x, a.y, a.z);
-        dJointSetHingeAxis(j, x.x, x.y, x.z);
-        sim->pin[i] = j;
-    }
-    for (int i = 0; i < g->nsprings; i++) {
-        const fs_spring_geom *s = &g->spring[i];
-        fs_vec3 a = place(sim, s->p1), b = place(sim, s->p2);
-        double p1[3] = {a.x, a.y, a.z}, p2[3] = {b.x, b.y, b.z};
-        fs_sim_spring_init(sim, &sim->spring[i], sim->body[s->body1], sim->body[s->body2], p1, p2, s->k_N_per_m,
-                           s->c_Ns_per_m, s->rest_length_m);
+    for (int i = 0; i < m->npins; i++)
+        sim->pin[i] = hinge_of(sim, &m->pin[i]);
+    for (int i = 0; i < m->nsprings; i++) {
+        const fs_model_spring *s = &m->spring[i];
+        spring_of(sim, &sim->spring[i], s, sim->body[s->body1], sim->body[s->body2]);
     }
 }
 
 /* ---- the robot ---------------------------------------------------------------------------- */
 
-/* The passive body on the ankle (unless merged into the ankle body, body_mass): rigidly fixed, or hinged at the ankle with an Achilles
- * spring-damper from the ankle body, 2 cm behind the joint, to the leg; free, or on a vertical
- * slide to the world (fs_robot.h). (The tendon ends on the
- * talus, not the heel: here the heel turns about the same ankle axis as the leg would, so a
- * heel-to-leg tendon would let leg and heel fold together about it unresisted.) */
+/* The robot's own body on the ankle body (fs_model.h; sim_model.c says how it is decided). */
 static void build_robot(fs_sim *sim)
 {
-    const fs_scenario_def *s = &sim->sc->def;
-    const fs_foot_geom *g = sim->geom;
-    dBodyID ankle_body = sim->body[g->ankle_body];
-    sim->robot = dBodyCreate(sim->world);
-    dMass m;
-    robot_mass(sim, &m);
-    dBodySetMass(sim->robot, &m);
-    fs_vec3 com = place(sim, robot_com(sim));
-    dBodySetPosition(sim->robot, com.x, com.y, com.z);
-    const double *R = sim->R0;
-    dMatrix3 rot = {R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0};
-    dBodySetRotation(sim->robot, rot);
-    if (s->robot.mount == FS_ROBOT_VERTICAL) { /* the carriage's slide: up and down only */
+    const fs_model *m = sim->model;
+    dBodyID ankle_body = sim->body[sim->geom->ankle_body];
+    sim->robot = make_body(sim, &m->body[m->nbodies]);
+    if (m->robot_vertical) { /* the carriage's slide: up and down only */
         dJointID slide = dJointCreateSlider(sim->world, 0);
         dJointAttach(slide, sim->robot, 0);
         dJointSetSliderAxis(slide, 0, 0, 1);
     }
-    if (s->robot.joint == FS_ROBOT_RIGID) {
+    if (m->robot_joint == FS_ROBOT_RIGID) {
         sim->robot_joint = dJointCreateFixed(sim->world, 0);
         dJointAttach(sim->robot_joint, sim->robot, ankle_body);
         dJointSetFixed(sim->robot_joint);
         return;
     }
-    fs_vec3 a = place(sim, g->ankle), axis = turn(sim, fs_v3(0, 1, 0));
+    const double *a = m->robot_hinge_anchor_m, *axis = m->robot_hinge_axis;
     sim->robot_joint = dJointCreateHinge(sim->world, 0);
     dJointAttach(sim->robot_joint, sim->robot, ankle_body);
-    dJointSetHingeAnchor(sim->robot_joint, a.x, a.y, a.z);
-    dJointSetHingeAxis(sim->robot_joint, axis.x, axis.y, axis.z);
-    const double behind = FS_ACHILLES_LEVER_M; /* the tendon's line behind the ankle axis */
-    fs_vec3 heel = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, -0.01)));
-    fs_vec3 leg = place(sim, fs_add(g->ankle, fs_v3(-behind, 0, s->robot.achilles_leg_anchor_m)));
-    double p1[3] = {heel.x, heel.y, heel.z}, p2[3] = {leg.x, leg.y, leg.z};
-    fs_sim_spring_init(sim, &sim->achilles, ankle_body, sim->robot, p1, p2, s->robot.achilles_k_N_per_m,
-                       s->robot.achilles_c_Ns_per_m, fs_norm(fs_sub(leg, heel)));
-    sim->has_achilles = 1;
-}
-
-/* How far each body's points (joints, spring anchors, shapes) lie from its own COM (a merged
- * robot's ankle body too: its speed is taken at the foot's part's COM, fs_sim_body_speed). */
-static void body_reach(fs_sim *sim)
-{
-    const fs_foot_geom *g = sim->geom;
-    for (int i = 0; i < g->nhinges; i++) {
-        const fs_hinge_geom *h = &g->hinge[i];
-        for (int k = 0; k < 2; k++) {
-            int b = k ? h->body2 : h->body1;
-            sim->reach[b] = fmax(sim->reach[b], fs_norm(fs_sub(h->anchor, g->body[b].com)));
-        }
-    }
-    for (int i = 0; i < g->nsprings; i++) {
-        const fs_spring_geom *s = &g->spring[i];
-        sim->reach[s->body1] = fmax(sim->reach[s->body1], fs_norm(fs_sub(s->p1, g->body[s->body1].com)));
-        sim->reach[s->body2] = fmax(sim->reach[s->body2], fs_norm(fs_sub(s->p2, g->body[s->body2].com)));
-    }
-    for (int i = 0; i < g->nspheres; i++) {
-        const fs_sphere_geom *s = &g->sphere[i];
-        double r = fs_norm(fs_sub(s->centre, g->body[s->body].com)) + s->radius_m;
-        sim->reach[s->body] = fmax(sim->reach[s->body], r);
-    }
-    for (int k = 0; k < g->nboxes; k++) {
-        const int b = g->box[k].body;
-        sim->reach[b] = fmax(sim->reach[b], fs_norm(fs_sub(g->box[k].centre, g->body[b].com)) + 0.5 * fs_norm(g->box_size));
-    }
-    sim->reach[g->ankle_body] = fmax(sim->reach[g->ankle_body], fs_norm(fs_sub(g->ankle, g->body[g->ankle_body].com)));
+    dJointSetHingeAnchor(sim->robot_joint, a[0], a[1], a[2]);
+    dJointSetHingeAxis(sim->robot_joint, axis[0], axis[1], axis[2]);
+    spring_of(sim, &sim->achilles, &m->achilles, ankle_body, sim->robot);
+    sim->has_achilles = m->has_achilles;
 }
 
 /* The ground as a grid for fs_sim_scene: a heightfield's own samples, or the plane or steps
@@ -418,36 +205,26 @@ static void auto_disable(dWorldID world, const fs_scenario_def *s)
     dWorldSetAutoDisableTime(world, s->auto_disable_s);
 }
 
-static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
+static fs_status build(fs_sim *sim, const fs_model *m, fs_error *err)
 {
+    const fs_scenario *sc = m->sc;
     snprintf(sim->ode_context, sizeof sim->ode_context, "%s", sc->path);
     fs_ode_context(sim->ode_context); /* ODE's complaints name the scenario */
     sim->feedback = calloc(FS_MAX_STEP_CONTACTS, sizeof *sim->feedback);
     sim->scratch = malloc(sizeof *sim->scratch);
     if (!sim->feedback || !sim->scratch)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sc->path);
+    sim->model = m;
     sim->sc = sc;
-    sim->geom = &sc->geom;
-    sim->check.record_drift = opts->record_drift;
+    sim->geom = m->geom;
+    sim->check.record_drift = m->opts.record_drift;
     const fs_scenario_def *s = &sc->def;
-    int share = 1;
-    if (opts->pinned_chain) {
-        fs_status made = fs_design_pinned_chain(&sc->design, &sc->geom, opts->pinned_chain - 1, &sim->own_geom, err);
-        if (made != FS_OK)
-            return made;
-        sim->geom = &sim->own_geom;
-        share = FS_CHAINS;
-    } else {
-        sim->geom = fs_scenario_geometry(sc, &sim->own_geom); /* a biped's: two feet and the legs */
-    }
-    double tilt = s->tilt_deg * DEG;
-    sim->down[0] = sin(tilt);
-    sim->down[2] = -cos(tilt);
+    put(sim->down, m->down);
     sim->world = dWorldCreate();
     /* quickstep reorders its constraints with ODE's one global random generator: each sim starts
      * its own sequence (fs_sim_step sets and saves it), so a run depends on nothing else in the process */
     sim->rand_seed = 0;
-    dWorldSetGravity(sim->world, s->gravity_m_per_s2 * sim->down[0], 0, s->gravity_m_per_s2 * sim->down[2]);
+    dWorldSetGravity(sim->world, m->gravity_m_per_s2[0], m->gravity_m_per_s2[1], m->gravity_m_per_s2[2]);
     dWorldSetQuickStepNumIterations(sim->world, s->iterations);
     /* ODE's global ERP/CFM only touch hinges and contacts' defaults: keep joints stiff. */
     dWorldSetERP(sim->world, s->joint_erp);
@@ -459,23 +236,21 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         auto_disable(sim->world, s);
     sim->space = dSimpleSpaceCreate(0);
     sim->contact_group = dJointGroupCreate(0);
-    start_rotation(s, sim->R0);
-    sim->t0[0] = s->start_x_m;
-    sim->t0[1] = s->start_y_m;
-    sim->t0[2] = 0;
-    if (opts->with_ground && !opts->pinned_chain) {
-        sim->t0[2] = start_lift(sim);
+    memcpy(sim->R0, m->R0, sizeof sim->R0);
+    put(sim->t0, m->t0);
+    if (m->with_ground) {
         /* a hash space: a heightfield comes as many tiles */
         sim->ground = dHashSpaceCreate(0);
         int ok = 1;
         /* a heightfield is ODE geometry only when ODE tests the shapes against it
            (run.heightfield_contacts = ode; footsim's own tests: sim_lattice.h) */
         if (!fs_terrain_is_heightfield(&sc->terrain) || s->heightfield_ode)
-            sim->heightfield = fs_ground_build(sim->ground, &sc->terrain, s->tile_cells, &ok);
+            sim->heightfield = fs_ground_build(sim->ground, m, &sc->terrain, s->tile_cells, &ok);
         if (!ok)
             return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the terrain", sc->path);
     }
-    sim->robot_merged = !opts->keep_robot_body && robot_merges(sim);
+    sim->robot_merged = m->robot_merged;
+    put(sim->robot_local, m->robot_local_m);
     /* a merged robot's ankle body is made last, as the robot's own body was: the order bodies are
      * made in sets the order of the rows ODE's direct solver pivots through (made in index order,
      * the contact steps of a landing took 16 % more instructions than with the fixed joint; made
@@ -487,25 +262,23 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
         build_body(sim, sim->geom->ankle_body);
     build_shapes(sim);
     build_joints(sim);
-    if (s->robot.mass_kg > 0 && !sim->robot_merged && !sim->geom->biped)
+    if (m->robot_body)
         build_robot(sim);
-    if (opts->hold_rear_foot && sim->geom->kind == FS_FOOT_BIOMIMETIC) {
-        dBodySetKinematic(sim->body[FS_BODY_HEEL]);
-        dBodySetKinematic(sim->body[FS_BODY_TALUS]);
-    }
-    const fs_vec3 a = place(sim, sim->geom->ankle);
-    dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a.x, a.y, a.z, sim->ankle_local);
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        if (m->body[i].kinematic)
+            dBodySetKinematic(sim->body[i]);
+    const double *a = m->ankle_m;
+    dBodyGetPosRelPoint(sim->body[sim->geom->ankle_body], a[0], a[1], a[2], sim->ankle_local);
     for (int f = 0; f < sim->geom->nfeet; f++) {
-        const fs_vec3 fa = place(sim, sim->geom->foot[f].ankle);
-        dBodyGetPosRelPoint(sim->body[sim->geom->foot[f].ankle_body], fa.x, fa.y, fa.z, sim->foot_ankle_local[f]);
+        const double *fa = m->foot_ankle_m[f];
+        dBodyGetPosRelPoint(sim->body[sim->geom->foot[f].ankle_body], fa[0], fa[1], fa[2], sim->foot_ankle_local[f]);
     }
-    sim->load_N = s->load_kg * s->gravity_m_per_s2 / share;
+    sim->load_N = m->load_N;
     contact_template(sim);
-    sim->chain_plane_friction = opts->chain_plane_friction && sim->geom->kind == FS_FOOT_BIOMIMETIC;
-    if (sim->chain_plane_friction)
-        grip_directions(sim);
-    body_reach(sim);
-    sim->profile = opts->profile;
+    sim->chain_plane_friction = m->chain_plane_friction;
+    for (int i = 0; i < sim->geom->nbodies; i++)
+        sim->reach[i] = m->body[i].reach_m;
+    sim->profile = m->opts.profile;
     fs_status made = fs_sim_adapt_init(sim, err);
     if (made == FS_OK)
         made = fs_sim_soil_build(sim, err);
@@ -514,25 +287,81 @@ static fs_status build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options 
 
 typedef struct build_call {
     fs_sim *sim;
-    const fs_scenario *sc;
-    const fs_sim_options *opts;
+    const fs_model *m;
 } build_call;
 
 static fs_status build_guarded(void *arg, fs_error *err)
 {
     build_call *c = arg;
-    return build(c->sim, c->sc, c->opts, err);
+    return build(c->sim, c->m, err);
+}
+
+/* Builds m into sim, which owns own (m, or NULL) from then on, on failure too. */
+static fs_status build_from(fs_sim *sim, const fs_model *m, fs_model *own, struct fs_profile *profile, fs_error *err)
+{
+    memset(sim, 0, sizeof *sim);
+    sim->own_model = own;
+    build_call call = {sim, m};
+    long warned = fs_warning_count();
+    fs_status s = fs_ode_guard(build_guarded, &call, NULL, err); /* an ODE error: FS_NUMERICAL, not an exit */
+    sim->warnings = fs_warning_count() - warned;
+    if (profile)
+        sim->profile = profile;
+    if (s != FS_OK)
+        fs_sim_destroy(sim); /* whatever was made so far: a failed build leaves nothing behind */
+    return s;
 }
 
 fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err)
 {
-    fs_sim_options normal = {.with_ground = 1, .hold_rear_foot = 0};
-    memset(sim, 0, sizeof *sim);
-    build_call call = {sim, sc, opts ? opts : &normal};
-    fs_status s = fs_ode_guard(build_guarded, &call, NULL, err); /* an ODE error: FS_NUMERICAL, not an exit */
-    if (s != FS_OK)
-        fs_sim_destroy(sim); /* whatever was made so far: a failed build leaves nothing behind */
-    return s;
+    fs_model *m;
+    fs_status s = fs_model_compile(sc, opts, &m, err);
+    if (s != FS_OK) {
+        memset(sim, 0, sizeof *sim);
+        return s;
+    }
+    return build_from(sim, m, m, opts ? opts->profile : NULL, err);
+}
+
+/* A new sim made from m, owning own (m, or NULL; freed on failure too). */
+static fs_status new_sim(const fs_model *m, fs_model *own, struct fs_profile *profile, fs_sim **out, fs_error *err)
+{
+    fs_sim *sim = malloc(sizeof *sim);
+    *out = NULL;
+    if (!sim) {
+        fs_model_free(own);
+        return fs_fail(err, FS_NO_MEMORY, "%s: no memory for the simulation", m->sc->path);
+    }
+    fs_status s = build_from(sim, m, own, profile, err);
+    if (s != FS_OK) {
+        free(sim);
+        return s;
+    }
+    *out = sim;
+    return FS_OK;
+}
+
+fs_status fs_sim_create(const fs_model *m, struct fs_profile *profile, fs_sim **out, fs_error *err)
+{
+    return new_sim(m, NULL, profile, out, err);
+}
+
+const fs_model *fs_sim_model(const fs_sim *sim) { return sim->model; }
+
+fs_status fs_sim_new(const fs_scenario *sc, const fs_sim_options *opts, fs_sim **out, fs_error *err)
+{
+    fs_model *m;
+    *out = NULL;
+    fs_status s = fs_model_compile(sc, opts, &m, err);
+    return s == FS_OK ? new_sim(m, m, opts ? opts->profile : NULL, out, err) : s;
+}
+
+void fs_sim_free(fs_sim *sim)
+{
+    if (!sim)
+        return;
+    fs_sim_destroy(sim);
+    free(sim);
 }
 
 void fs_sim_destroy(fs_sim *sim)
@@ -552,5 +381,6 @@ void fs_sim_destroy(fs_sim *sim)
     free(sim->ground_grid);
     fs_sim_soil_destroy(sim);
     fs_ode_context_leave(sim->ode_context);
+    fs_model_free(sim->own_model);
     memset(sim, 0, sizeof *sim);
 }

@@ -4,7 +4,19 @@
 #include "sim_internal.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
+
+typedef struct fs_carriage {
+    fs_sim *sim;
+    dBodyID body;
+    dJointID slider;
+    dJointFeedback slider_feedback; /* the slider's force and torque on the robot over the last step */
+    fs_spring suspension;
+    double start[3];                /* where the carriage started, m */
+    double before[3];               /* the robot body's position before the step, m */
+    double suspension_force_N[3];   /* the suspension's force on the robot over the step, N */
+} fs_carriage;
 
 /* The suspension's force on the robot (its body 2) for the state it is measured in, N. */
 static void suspension_force(const fs_spring *s, double f[3])
@@ -39,9 +51,13 @@ static double carriage_work(void *user, const fs_sim *sim)
     return work;
 }
 
-void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N_per_m, double c_Ns_per_m)
+fs_status fs_carriage_new(fs_sim *sim, double height_m, double k_N_per_m, double c_Ns_per_m, fs_carriage **out,
+                          fs_error *err)
 {
-    memset(c, 0, sizeof *c);
+    fs_carriage *c = calloc(1, sizeof *c);
+    *out = c;
+    if (!c)
+        return fs_fail(err, FS_NO_MEMORY, "%s: no memory for the walking machine's carriage", sim->sc->path);
     c->sim = sim;
     const dReal *p = dBodyGetPosition(sim->robot);
     double robot_at[3] = {p[0], p[1], p[2]};
@@ -58,7 +74,10 @@ void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N
     fs_sim_spring_init(sim, &c->suspension, c->body, sim->robot, c->start, robot_at, k_N_per_m, c_Ns_per_m, height_m);
     sim->suspension = &c->suspension; /* prepared with the sim's springs, at each step and substep */
     fs_check_set_work(sim, carriage_work, c);
+    return FS_OK;
 }
+
+void fs_carriage_free(fs_carriage *c) { free(c); }
 
 void fs_carriage_drive(fs_carriage *c, double dx_m, double dz_m)
 {

@@ -1,6 +1,8 @@
 /* sim_drive.c: the one loop that steps a simulation (fs_drive.h) and its observer (fs_observer.h). */
 #include "footsim/sim/fs_drive.h"
 
+#include "sim_internal.h"
+
 #include <math.h>
 
 fs_sim_options fs_observer_sim_options(const fs_run_observer *obs)

@@ -1,10 +1,10 @@
 /* sim_ground.c: a terrain built as ODE geoms: planes, boxes or a heightfield. */
 #include "sim_ground.h"
 
+#include "sim_internal.h"
+
 #include <math.h>
 #include <stdlib.h>
-
-#define DEG (M_PI / 180.0)
 
 
 /* One tile: the samples [i0, i0 + nx) x [j0, j0 + ny) of the terrain's lattice, copied in ODE's
@@ -48,7 +48,7 @@ static void build_tile(dSpaceID space, const fs_terrain *t, tile *k)
 /* Samples along one side of the tile that starts at sample first, of a lattice of n samples. */
 static int tile_side(int first, int cells, int n) { return (first + cells < n - 1 ? cells : n - 1 - first) + 1; }
 
-static fs_ground *build_heightfield(dSpaceID space, const fs_terrain *t, int cells, int *ok)
+fs_ground *fs_ground_heightfield(dSpaceID space, const fs_terrain *t, int cells, int *ok)
 {
     int tx = (t->nx - 1 + cells - 1) / cells, ty = (t->ny - 1 + cells - 1) / cells;
     fs_ground *g = malloc(sizeof *g + (size_t)tx * ty * sizeof g->tiles[0]);
@@ -90,38 +90,31 @@ void fs_ground_destroy(fs_ground *g)
     free(g);
 }
 
-/* Steps as boxes (sharp edges) on a plane at the lowest level. */
-static void build_steps(dSpaceID space, const fs_terrain *t)
-{
-    const fs_terrain_def *d = &t->def;
-    const double far = 100.0; /* m: the steps' ends and sides reach beyond any trial */
-    int k = d->step_pattern == FS_STEPS_UP_DOWN ? 2 * d->step_count : d->step_count;
-    double base = d->step_pattern == FS_STEPS_DOWN ? -d->step_rise_m * d->step_count : 0;
-    dGeomID plane = dCreatePlane(space, 0, 0, 1, base);
-    (void)plane;
-    for (int i = -1; i <= k; i++) {
-        double x0 = i < 0 ? d->step_start_x_m - far : d->step_start_x_m + i * d->step_run_m;
-        double x1 = i < 0 ? d->step_start_x_m : i == k ? x0 + far : x0 + d->step_run_m;
-        double level = fs_terrain_height(t, 0.5 * (x0 + x1), 0);
-        if (level <= base)
-            continue;
-        double depth = level - base + 0.05;
-        dGeomID box = dCreateBox(space, x1 - x0, 2 * far, depth);
-        dGeomSetPosition(box, 0.5 * (x0 + x1), 0, level - 0.5 * depth);
-    }
-}
-
-fs_ground *fs_ground_build(dSpaceID space, const fs_terrain *t, int tile_cells, int *ok)
+fs_ground *fs_ground_build(dSpaceID space, const fs_model *m, const fs_terrain *t, int tile_cells, int *ok)
 {
     *ok = 1;
-    switch (t->def.kind) {
-    case FS_TERRAIN_FLAT: dCreatePlane(space, 0, 0, 1, 0); return NULL;
-    case FS_TERRAIN_SLOPE: {
-        double a = t->def.slope_deg * DEG;
-        dCreatePlane(space, -sin(a), 0, cos(a), 0);
+    for (int i = 0; i < m->nplanes; i++) {
+        const fs_model_plane *p = &m->plane[i];
+        dCreatePlane(space, p->normal[0], p->normal[1], p->normal[2], p->offset_m);
+    }
+    for (int i = 0; i < m->nblocks; i++) {
+        const fs_model_block *b = &m->block[i];
+        dGeomID box = dCreateBox(space, b->size_m[0], b->size_m[1], b->size_m[2]);
+        dGeomSetPosition(box, b->pos_m[0], b->pos_m[1], b->pos_m[2]);
+    }
+    return m->heightfield ? fs_ground_heightfield(space, t, tile_cells, ok) : NULL;
+}
+
+fs_ground *fs_ground_of_terrain(dSpaceID space, const fs_terrain *t, int tile_cells, int *ok)
+{
+    fs_model *m = calloc(1, sizeof *m);
+    fs_error err;
+    if (!m || fs_model_ground(m, t, &err) != FS_OK) {
+        fs_model_free(m);
+        *ok = 0;
         return NULL;
     }
-    case FS_TERRAIN_STEPPED: build_steps(space, t); return NULL;
-    default: return build_heightfield(space, t, tile_cells, ok);
-    }
+    fs_ground *g = fs_ground_build(space, m, t, tile_cells, ok);
+    fs_model_free(m);
+    return g;
 }

@@ -1,5 +1,5 @@
 /* sim_spring.c: spring-damper joints, implicit (soft DBall) and explicit (forces). */
-#include "footsim/sim/fs_spring.h"
+#include "sim_spring.h"
 
 #include <math.h>
 #include <string.h>

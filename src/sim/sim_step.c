@@ -106,5 +106,8 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err)
                        "destroyed (build a new one to run again)", sim->ode_context, sim->time_s);
     fs_sim_lap(sim, FS_STAGE_CALLER);
     fs_ode_context(sim->ode_context); /* this sim is the one ODE may complain about now */
-    return fs_ode_guard(step, sim, &sim->ode_failed, err);
+    long warned = fs_warning_count();
+    fs_status s = fs_ode_guard(step, sim, &sim->ode_failed, err);
+    sim->warnings += fs_warning_count() - warned; /* ODE's messages while it stepped this sim */
+    return s;
 }

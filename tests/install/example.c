@@ -1,7 +1,9 @@
 /* example.c: a program built against an installed footsim, as a user would build one
  * (tests/cli_install.sh: cc example.c $(pkg-config --cflags --libs footsim)). It computes the
  * analytic joint stiffness of the shipped biomimetic design and steps the shipped static-load
- * scenario for 0.05 s. Usage: example PREFIX/share/footsim */
+ * scenario for 0.05 s through the simulation's accessors (fs_sim is opaque: the program needs
+ * neither its size nor ODE's header; cli_install.sh compiles it with an ode/ode.h that fails).
+ * Usage: example PREFIX/share/footsim */
 #include "footsim/analysis/fs_analysis.h"
 #include "footsim/base/fs_version.h"
 #include "footsim/sim/fs_sim.h"
@@ -21,7 +23,7 @@ int main(int argc, char **argv)
         return 2;
     }
     static fs_scenario sc;
-    static fs_sim sim;
+    fs_sim *sim;
     fs_error err;
     char path[1024];
     printf("footsim %s\n", fs_version());
@@ -39,16 +41,16 @@ int main(int argc, char **argv)
     if (fs_scenario_load(path, NULL, 0, &sc, &err) != FS_OK)
         return fail(&err);
     fs_ode_init();
-    if (fs_sim_build(&sim, &sc, NULL, &err) != FS_OK)
+    if (fs_sim_new(&sc, NULL, &sim, &err) != FS_OK)
         return fail(&err);
     int steps = (int)(0.05 / sc.def.step_s + 0.5);
     for (int i = 0; i < steps; i++)
-        if (fs_sim_step(&sim, &err) != FS_OK)
+        if (fs_sim_step(sim, &err) != FS_OK)
             return fail(&err);
     double ankle[3];
-    fs_sim_ankle(&sim, ankle);
-    printf("static_load: %d steps to t = %.3f s, ankle at z = %.6f m\n", steps, sim.time_s, ankle[2]);
-    fs_sim_destroy(&sim);
+    fs_sim_ankle(sim, ankle);
+    printf("static_load: %d steps to t = %.3f s, ankle at z = %.6f m\n", steps, fs_sim_time(sim), ankle[2]);
+    fs_sim_free(sim);
     fs_scenario_free(&sc);
     fs_ode_close();
     return 0;

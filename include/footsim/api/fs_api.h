@@ -63,6 +63,8 @@ fs_status fs_sim_advance(fs_sim *sim, long nsteps, fs_error *err);
 double fs_sim_time(const fs_sim *sim);
 double fs_sim_step_size(const fs_sim *sim);
 int fs_sim_dead(const fs_sim *sim);
+/* The warnings (fs_warning_handler's) given while this simulation was built and stepped. */
+long fs_sim_warnings(const fs_sim *sim);
 
 /* Bodies: the foot's, then the robot's when it has a body of its own or is merged into the ankle
  * body (named "robot"; its pose is then the ankle body's). Names are the design's ("heel",

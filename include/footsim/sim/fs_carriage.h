@@ -9,26 +9,22 @@
  * applied; implicit: after, as backward Euler applies it). Before each step, fs_carriage_drive sets
  * the carriage's velocity so that it reaches start + (dx, 0, dz) at the step's end; fs_sim_step
  * prepares the suspension with the sim's own springs (fs_sim.suspension). The carriage lives in the
- * sim's world and goes with fs_sim_destroy; c must stay where it is (ODE writes the slider's feedback
- * into it) until then. Nothing here allocates. */
+ * sim's world and goes with fs_sim_free; the carriage's memory (ODE writes the slider's feedback
+ * into it) must stay until then. Only fs_carriage_new allocates. */
 #ifndef FS_CARRIAGE_H
 #define FS_CARRIAGE_H
 
 #include "footsim/sim/fs_sim.h"
 
-typedef struct fs_carriage {
-    fs_sim *sim;
-    dBodyID body;
-    dJointID slider;
-    dJointFeedback slider_feedback; /* the slider's force and torque on the robot over the last step */
-    fs_spring suspension;
-    double start[3];                /* where the carriage started, m */
-    double before[3];               /* the robot body's position before the step, m */
-    double suspension_force_N[3];   /* the suspension's force on the robot over the step, N */
-} fs_carriage;
+/* Opaque: its ODE body and joint are the sim layer's (sim_carriage.c). */
+typedef struct fs_carriage fs_carriage;
 
-/* Attaches c above sim's robot body (the sim must have one). */
-void fs_carriage_attach(fs_carriage *c, fs_sim *sim, double height_m, double k_N_per_m, double c_Ns_per_m);
+/* Attaches a new carriage (*out) above sim's robot body (the sim must have one); FS_NO_MEMORY when
+ * there is no memory for it. It lives in the sim's world: free it (fs_carriage_free) only after the
+ * sim (fs_sim_free), which steps it until then. */
+fs_status fs_carriage_new(fs_sim *sim, double height_m, double k_N_per_m, double c_Ns_per_m, fs_carriage **out,
+                          fs_error *err);
+void fs_carriage_free(fs_carriage *c);
 
 /* Before a step: the carriage is to move from where it is to start + (dx_m, 0, dz_m) over it. */
 void fs_carriage_drive(fs_carriage *c, double dx_m, double dz_m);

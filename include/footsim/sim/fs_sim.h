@@ -1,7 +1,9 @@
 /* fs_sim.h: a foot built in ODE from its geometry, over a ground, and stepped.
  *
  * The geometry (fs_foot_geom) and the scenario are the constant model; everything that changes
- * during a run lives in the ODE world that fs_sim_build creates. All memory is taken at build
+ * during a run lives in the ODE world that fs_sim_new creates. fs_sim is opaque: no ODE type
+ * appears in this header (or any under include/footsim/); its state is read through functions
+ * (time, bodies, contacts, springs, energy, checks), which copy nothing the step keeps. All memory is taken at build
  * time: fs_sim_step allocates nothing (ODE's own step works in its preallocated arena).
  *
  * One step is a fixed sequence of stages: external loads, springs, collision (foot against
@@ -26,12 +28,13 @@
 #include "footsim/model/fs_scenario.h"
 #include "footsim/sim/fs_ode.h"
 #include "footsim/sim/fs_scene.h"
-#include "footsim/sim/fs_spring.h"
-
-#include <ode/ode.h>
 
 enum { FS_MAX_SHAPES = FS_MAX_SPHERES + FS_MAX_BOXES };
 enum { FS_MAX_CONTACTS = FS_MAX_SHAPE_CONTACTS, FS_MAX_STEP_CONTACTS = FS_MAX_SHAPES * 64 };
+
+/* The spring-dampers' implementation ([run] springs): an ODE row made soft, stable at any step, or
+ * the force from the state, added each step (src/sim/sim_spring.h). */
+typedef enum fs_spring_impl { FS_SPRING_IMPLICIT = 0, FS_SPRING_EXPLICIT = 1 } fs_spring_impl;
 
 typedef struct fs_sim_options {
     int with_ground;        /* 0: no ground (the stiffness probes) */
@@ -75,90 +78,17 @@ typedef struct fs_step_stats {
     long at_level[FS_STEP_LEVELS]; /* steps accepted at each level (one cut short: at the level it was cut from) */
 } fs_step_stats;
 
-typedef struct fs_sim {
-    const fs_scenario *sc;
-    const fs_foot_geom *geom; /* the scenario's, or own_geom for a pinned chain */
-    fs_foot_geom own_geom;
-    dWorldID world;
-    dSpaceID space;        /* the foot's shapes */
-    dSpaceID ground;       /* the terrain's shapes (plane, boxes or heightfield); NULL without ground */
-    struct fs_ground *heightfield; /* the heightfield tiles' data, or NULL */
-    double R0[9], t0[3];   /* the start pose: world = R0 * design + t0 */
-    dJointGroupID contact_group;
-    dBodyID body[FS_MAX_BODIES];
-    dJointID hinge[FS_MAX_HINGES];
-    dJointID pin[2];       /* a pinned chain's hinges to the world */
-    dGeomID shape[FS_MAX_SHAPES];
-    int shape_foot[FS_MAX_SHAPES]; /* which foot each shape is on (a biped's: 0 right, 1 left) */
-    int nshapes;
-    fs_spring spring[FS_MAX_SPRINGS];
-    dBodyID robot;         /* the passive body on the ankle, or NULL (none, or merged) */
-    dJointID robot_joint;  /* fixed, or the ankle hinge */
-    int robot_merged;      /* 1: a rigid, free robot is part of the ankle body (no body, no joint) */
-    dVector3 robot_local;  /* a merged robot's centre of mass on the ankle body */
-    fs_vec3 com[FS_MAX_BODIES]; /* each ODE body's centre in the design frame: the geometry's, or
-                                   the ankle body's and a merged robot's together */
-    fs_spring achilles;    /* with robot.joint = achilles */
-    fs_spring *suspension; /* a carriage's (fs_carriage.h), prepared first at each step and substep, or NULL */
-    int has_achilles;
-    double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
-    dVector3 ankle_local;  /* the load's point on the ankle body */
-    dVector3 foot_ankle_local[FS_MAX_FEET]; /* each foot's ankle on its ankle body (fs_foot_geom.foot) */
-    dVector3 down;         /* unit direction of the load and gravity */
-    dContact contact_template;  /* every contact joint's surface, soft for step_now_s */
-    double contact_k_N_per_m, contact_c_Ns_per_m; /* the sole and terrain in series: what that softness is made of */
-    double step_now_s;     /* the step the contacts' and the stops' softness is set for: the scenario's, or
-                              a substep's (fs_sim_set_step) */
-    int substeps_now;      /* the substeps the last step was taken in (1: whole; run.impact_substeps) */
-    double impact_until_s; /* steps are taken in substeps until time_s reaches this */
-    unsigned char touched_before[FS_MAX_SHAPES]; /* with substeps: each shape had contact in the step before */
-    double step_force[FS_MAX_FEET + 1][3]; /* after a step in substeps: the ground's mean force over them on
-                                              every foot (0) and on each (1 + foot), N */
-    double torque_again[FS_MAX_BODIES + 1][3]; /* the torques added for the coming step, per body (the
-                                                 robot's last): added again in each of its substeps */
-    int torque_added;      /* any added since the last step */
-    double match_m[FS_MAX_SHAPES]; /* how far a shape's contact may move in a step and still
-                                           continue the last step's (its friction bound) */
-    int chain_plane_friction;          /* fs_sim_options.chain_plane_friction */
-    double grip_dir[FS_MAX_SPHERES][3]; /* with it: each sphere's direction of grip, horizontal, world */
-    double time_s;
-    double load_N;         /* the load's weight; fs_sim_step ramps it in */
-    int contacts_now;      /* contact points in the last step */
-    dJointFeedback *feedback; /* FS_MAX_STEP_CONTACTS, filled by the last step */
-    double contact_pos[FS_MAX_STEP_CONTACTS][3];
-    double contact_depth_m[FS_MAX_STEP_CONTACTS];
-    fs_touch touch[FS_MAX_FEET]; /* each foot's first touch of the ground (fs_sim_first_touch) */
-    struct fs_ground_grid *ground_grid; /* planes and steps sampled for fs_sim_scene on its first
-                                           call (heightfields use theirs), or NULL */
-    fs_scene_ground scene_ground;
-    long contacts_total, collision_tests;
-    /* the last step's contacts before merging and capping (ODE's and the box's lattice vertices),
-       how many foot shapes touched, and the most one shape found: what each shape really needs */
-    int contacts_found_now, shapes_touching_now, most_found_now;
-    fs_check check;        /* the state checks' reference and worst values (fs_check.h) */
-    struct fs_contact_scratch *scratch; /* one shape's contacts while a step gathers them */
-    unsigned long rand_seed; /* this sim's state of ODE's random generator, which QuickStep draws on */
-    char ode_context[FS_PATH_MAX]; /* what ODE's complaints name while this sim steps: its scenario */
-    int ode_failed;        /* an ODE error interrupted a step: the sim may only be destroyed (fs_ode.h) */
-    struct fs_profile *profile; /* where the step's time goes, or NULL (fs_sim_options.profile) */
-    double profile_mark;   /* when the last timed stage ended, s (0: no step yet) */
-    /* run.tolerance_m > 0: the error-controlled step (sim_adapt.c) */
-    struct fs_sim_saved *saved; /* the state before the step being tried; NULL with fixed steps */
-    int level;             /* the next step tried is step_max_s / 2^level */
-    int level_held;        /* steps accepted in a row since the level last changed */
-    double horizon_s;      /* the next step ends at or before this time, s (fs_sim_set_horizon); 0: none */
-    double step_taken_s;   /* the time the last fs_sim_step advanced by, s */
-    double step_error_m;   /* the last accepted step's error estimate, m (0 with fixed steps) */
-    double damped_step_s;  /* the least c / k of the springs and hinge springs: the ODE step is at most this */
-    double damped_contact_s; /* c / k of the contacts: and at most this while a foot touches the ground */
-    int cruise_left;       /* steps still to take singly at the dampers' bound before the next doubled one */
-    fs_step_stats stats;
-    struct fs_sim_soil *soil; /* the terrain's soil layer (fs_sim_soil.h), or NULL: rigid ground only */
-} fs_sim;
+/* The simulation: opaque. Its layout (the ODE world, bodies, joints, the step's scratch) is the sim
+ * layer's own (src/sim/sim_internal.h), so this header needs no ODE header and a program built on
+ * it does not depend on the struct's size. Made by fs_sim_new (or fs_sim_create from a model,
+ * fs_model.h) and freed by fs_sim_free; read through the functions below. */
+typedef struct fs_sim fs_sim;
 
-/* Builds sc's foot in a new ODE world. opts may be NULL for a normal run. */
-fs_status fs_sim_build(fs_sim *sim, const fs_scenario *sc, const fs_sim_options *opts, fs_error *err);
-void fs_sim_destroy(fs_sim *sim);
+/* Builds sc's foot in a new ODE world into a new simulation (*out; NULL on failure, when nothing is
+ * left behind). opts may be NULL for a normal run. sc must outlive the simulation. */
+fs_status fs_sim_new(const fs_scenario *sc, const fs_sim_options *opts, fs_sim **out, fs_error *err);
+/* Frees a simulation (NULL: nothing), the ODE world and everything it made. */
+void fs_sim_free(fs_sim *sim);
 
 /* Advances by the scenario's step, whole or, near a touchdown with run.impact_substeps N > 1, in N
  * equal substeps (from a step in which a foot shape without contact could reach the ground within
@@ -284,8 +214,48 @@ double fs_sim_penetration(const fs_sim *sim);
 /* Joint angle of hinge i from the neutral pose, rad (positive: distal link turned up). */
 double fs_sim_hinge_angle(const fs_sim *sim, int i);
 
-/* The model as ODE holds it after building sc (masses, inertias, poses, joints, springs,
- * shapes), in SI units and world coordinates; the caller frees it with cJSON_Delete. */
-struct cJSON *fs_model_json(const fs_scenario *sc, fs_error *err);
+/* ---- reading the state: functions, not copies; each reads the sim as the last step left it ---- */
+
+/* The scenario the simulation was built from, and the foot's geometry it simulates (the scenario's,
+ * a biped's two feet and legs, or a pinned chain's own). */
+const fs_scenario *fs_sim_scenario(const fs_sim *sim);
+const fs_foot_geom *fs_sim_geom(const fs_sim *sim);
+/* Simulated time, s; the scenario's step, s; the time the last fs_sim_step advanced by, s; 1 once
+ * an ODE error killed the simulation (it may then only be freed). */
+double fs_sim_time(const fs_sim *sim);
+double fs_sim_step_size(const fs_sim *sim);
+double fs_sim_step_taken(const fs_sim *sim);
+int fs_sim_dead(const fs_sim *sim);
+/* 1 with the error-controlled step (run.tolerance_m > 0), whose steps vary in length. */
+int fs_sim_adaptive(const fs_sim *sim);
+/* The unit direction of the load and gravity (world frame). */
+void fs_sim_down(const fs_sim *sim, double down[3]);
+/* The bodies fs_sim_body_pose and fs_sim_body_velocity take: the foot's, then the robot's when it
+ * has a body of its own or is merged into the ankle body. */
+int fs_sim_body_count(const fs_sim *sim);
+/* The ground's contact points in the last step; the first max of them, each a point, m (pos: max x
+ * 3), and the force on the foot from the ground over the last step, N (force: max x 3), either may
+ * be NULL; returns how many were written. */
+int fs_sim_contact_count(const fs_sim *sim);
+int fs_sim_contacts(const fs_sim *sim, double *pos, double *force, int max);
+/* The contacts of every step so far, and the collision tests made for them. */
+void fs_sim_contact_totals(const fs_sim *sim, long *contacts, long *collision_tests);
+/* The last step's contacts before merging and capping, the foot shapes that touched, and the most
+ * one shape found (what each shape really needs; bench speed). Any may be NULL. */
+void fs_sim_contact_needs(const fs_sim *sim, int *found, int *shapes_touching, int *most_found);
+/* Spring-damper i of the foot's geometry (0 .. fs_sim_geom(sim)->nsprings - 1) now: length, rate,
+ * force (tension positive) and stored energy. */
+typedef struct fs_spring_state {
+    double length_m, rate_m_per_s, force_N, energy_J;
+} fs_spring_state;
+fs_spring_state fs_sim_spring_state(const fs_sim *sim, int i);
+/* The state checks' reference and worst values so far (fs_check.h). */
+const fs_check *fs_sim_checks(const fs_sim *sim);
+/* The steps taken so far (fs_step_stats). */
+const fs_step_stats *fs_sim_step_stats(const fs_sim *sim);
+/* The warnings (fs_warn, fs_error.h: ODE's messages among them) given while this simulation was
+ * built and stepped; the program's handler had their text. */
+long fs_sim_warnings(const fs_sim *sim);
+
 
 #endif

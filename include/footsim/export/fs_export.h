@@ -1,6 +1,8 @@
-/* fs_export.h: the foot as footsim builds it in ODE, written as MuJoCo MJCF (docs/export.md).
+/* fs_export.h: a scenario's model (fs_model.h) written out: as MuJoCo MJCF (docs/export.md) and as
+ * the JSON of `footsim model --json`. The export layer sits above the sim layer and reads the
+ * model, never an ODE world.
  *
- * The model is read from an fs_sim built from the scenario, so every number is the one ODE
+ * The model is the one a simulation is made of (fs_model_compile), so every number is the one ODE
  * simulates: each body with its mass and full inertia about its centre of mass (its frame is
  * ODE's body frame), the hinges as a kinematic tree rooted at the heel (or the robot when there
  * is one) with a free joint (a slide for a robot on the vertical carriage), a hinge that would
@@ -25,6 +27,11 @@
 
 #include <stddef.h>
 
+/* sc's model at the design pose (no ground; masses, inertias, poses, joints, springs, shapes) as
+ * JSON, in SI units and world coordinates (`footsim model --json`); read from the model, as a
+ * simulation is made of it. The caller frees it with cJSON_Delete; NULL with err set on failure. */
+struct cJSON *fs_model_json(const fs_scenario *sc, fs_error *err);
+
 /* The impedance the export gives every contact (solimp dmin = dmax), docs/export.md. */
 #define FS_MJCF_IMPEDANCE 0.95
 
@@ -37,8 +44,8 @@ typedef struct fs_mjcf {
     size_t hfield_len;
 } fs_mjcf;
 
-/* Builds sc's model and writes it as MJCF; hfield_file is the name the XML gives the heightfield
- * file (relative to the XML's folder). FS_NUMERICAL, FS_NO_MEMORY as fs_sim_build. */
+/* Compiles sc's model and writes it as MJCF; hfield_file is the name the XML gives the heightfield
+ * file (relative to the XML's folder). FS_BAD_INPUT, FS_NO_MEMORY as fs_model_compile. */
 fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hfield_file, fs_mjcf *out,
                         fs_error *err);
 void fs_mjcf_free(fs_mjcf *m);

@@ -1,4 +1,4 @@
-/* fs_spring.h: footsim's linear spring-damper between an anchor on each of two bodies.
+/* sim_spring.h (private to the sim layer): footsim's linear spring-damper between an anchor on each of two bodies.
  *
  * Force along the line between the anchors: f = k (d - rest) + c dd/dt, tension positive,
  * pulling the anchors together. Two implementations behind this one interface:
@@ -7,12 +7,12 @@
  * - FS_SPRING_EXPLICIT: the force from the current state, added to both bodies each step;
  *   stable only for steps below about 2m/c of the lightest body it acts on.
  * body2 may be NULL: its anchor is then fixed in the world. Nothing here allocates. */
-#ifndef FS_SPRING_H
-#define FS_SPRING_H
+#ifndef SIM_SPRING_H
+#define SIM_SPRING_H
+
+#include "footsim/sim/fs_sim.h" /* fs_spring_state */
 
 #include <ode/ode.h>
-
-typedef enum fs_spring_impl { FS_SPRING_IMPLICIT = 0, FS_SPRING_EXPLICIT = 1 } fs_spring_impl;
 
 typedef struct fs_spring {
     fs_spring_impl impl;
@@ -23,10 +23,6 @@ typedef struct fs_spring {
     dJointID joint;          /* implicit only */
     double step;             /* the h its ERP and CFM were set for */
 } fs_spring;
-
-typedef struct fs_spring_state {
-    double length_m, rate_m_per_s, force_N, energy_J;
-} fs_spring_state;
 
 /* Sets up s between world anchors p1 (on body1) and p2 (on body2, or the world). */
 void fs_spring_init(fs_spring *s, dWorldID world, fs_spring_impl impl, dBodyID body1, dBodyID body2,

@@ -1,8 +1,9 @@
-/* sim_export.c: the model ODE holds, written as MuJoCo MJCF (fs_export.h, docs/export.md). */
-#include "footsim/sim/fs_export.h"
+/* export_mjcf.c: a scenario's model (fs_model.h) written as MuJoCo MJCF (fs_export.h,
+ * docs/export.md): read from the model a simulation is made of, not from an ODE world. */
+#include "footsim/export/fs_export.h"
 
 #include "footsim/io/fs_output.h"
-#include "footsim/sim/fs_sim.h"
+#include "footsim/sim/fs_model.h"
 
 #include <libxml/xmlwriter.h>
 #include <math.h>
@@ -12,11 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { NODES = FS_MAX_BODIES + 1, EDGES = FS_MAX_HINGES + 1 };
+enum { NODES = FS_MODEL_MAX_BODIES, EDGES = FS_MAX_HINGES + 1 };
 
-/* A body of the tree: a foot body, or the robot (index nbodies). */
+/* A body of the tree: a foot body, or the robot (index nbodies): the model's body of its index. */
 typedef struct node {
-    dBodyID id;
     const char *name;
     double p[3], q[4], R[9]; /* world pose: position of the COM, quaternion (w x y z), rotation */
     int parent, edge;        /* parent node and the joint to it (-1: the root, or welded) */
@@ -26,12 +26,12 @@ typedef struct node {
 typedef struct edge {
     int a, b, hinge;
     const char *name;
-    dVector3 anchor, axis; /* world */
+    double anchor[3], axis[3]; /* world */
     int in_tree;
 } edge;
 
 typedef struct exporter {
-    const fs_sim *sim;
+    const fs_model *m;
     const fs_scenario *sc;
     int with_scenario;
     const char *hfield_file;
@@ -123,64 +123,41 @@ static void quat_rel(const double a[4], const double b[4], double q[4])
     q[3] = w * b[3] + x * b[2] - y * b[1] + z * b[0];
 }
 
-static void pose_of(node *n, const double *p, const double *q, const double *R12)
-{
-    memcpy(n->p, p, sizeof n->p);
-    memcpy(n->q, q, sizeof n->q);
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            n->R[3 * r + c] = R12[4 * r + c];
-}
-
-static int node_of(const exporter *x, dBodyID b)
-{
-    for (int i = 0; i < x->nnodes; i++)
-        if (x->node[i].id == b)
-            return i;
-    return -1;
-}
-
 /* The bodies, the joints between them, and a spanning tree by breadth-first search from the root
  * (the robot when there is one, else the first body): edges outside it close loops. */
 static void gather(exporter *x)
 {
-    const fs_sim *sim = x->sim;
-    const fs_foot_geom *g = sim->geom;
-    for (int i = 0; i < g->nbodies; i++) {
+    const fs_model *m = x->m;
+    for (int i = 0; i < m->nbodies + m->robot_body; i++) {
         node *n = &x->node[x->nnodes++];
-        n->id = sim->body[i];
-        n->name = g->body[i].name;
-        pose_of(n, dBodyGetPosition(n->id), dBodyGetQuaternion(n->id), dBodyGetRotation(n->id));
+        n->name = m->body[i].name;
+        memcpy(n->p, m->body[i].pos_m, sizeof n->p);
+        memcpy(n->q, m->q0_wxyz, sizeof n->q);
+        memcpy(n->R, m->R0, sizeof n->R);
     }
-    if (sim->robot) {
-        node *n = &x->node[x->nnodes++];
-        n->id = sim->robot;
-        n->name = "robot";
-        pose_of(n, dBodyGetPosition(n->id), dBodyGetQuaternion(n->id), dBodyGetRotation(n->id));
-    }
-    for (int i = 0; i < g->nhinges; i++) {
+    for (int i = 0; i < m->nhinges; i++) {
         edge *e = &x->edge[x->nedges++];
-        dJointID j = sim->hinge[i];
-        e->a = node_of(x, dJointGetBody(j, 0));
-        e->b = node_of(x, dJointGetBody(j, 1));
+        const fs_model_hinge *h = &m->hinge[i];
+        e->a = h->body1;
+        e->b = h->body2;
         e->hinge = 1;
-        e->name = g->hinge[i].name;
-        dJointGetHingeAnchor(j, e->anchor);
-        dJointGetHingeAxis(j, e->axis);
+        e->name = m->geom->hinge[i].name;
+        memcpy(e->anchor, h->anchor_m, sizeof e->anchor);
+        memcpy(e->axis, h->axis, sizeof e->axis);
     }
-    if (sim->robot) {
+    if (m->robot_body) {
         edge *e = &x->edge[x->nedges++];
         e->a = x->nnodes - 1;
-        e->b = node_of(x, sim->body[g->ankle_body]);
-        e->hinge = dJointGetType(sim->robot_joint) == dJointTypeHinge;
+        e->b = m->geom->ankle_body;
+        e->hinge = m->robot_joint != FS_ROBOT_RIGID;
         e->name = "robot_ankle";
         if (e->hinge) {
-            dJointGetHingeAnchor(sim->robot_joint, e->anchor);
-            dJointGetHingeAxis(sim->robot_joint, e->axis);
+            memcpy(e->anchor, m->robot_hinge_anchor_m, sizeof e->anchor);
+            memcpy(e->axis, m->robot_hinge_axis, sizeof e->axis);
         }
     }
     int queue[NODES], head = 0, tail = 0, seen[NODES] = {0};
-    int root = sim->robot ? x->nnodes - 1 : 0;
+    int root = m->robot_body ? x->nnodes - 1 : 0;
     for (int i = 0; i < x->nnodes; i++)
         x->node[i].parent = x->node[i].edge = -1;
     queue[tail++] = root;
@@ -211,19 +188,18 @@ static void gather(exporter *x)
  * one, the box four). */
 static void contact_parameters(exporter *x)
 {
-    const fs_sim *sim = x->sim;
-    const fs_foot_geom *g = sim->geom;
-    const dSurfaceParameters *s = &sim->contact_template.surface;
-    double h = sim->sc->def.step_s;
-    double k = s->soft_erp / (h * s->soft_cfm), c = (1 - s->soft_erp) / s->soft_cfm;
+    const fs_model *mo = x->m;
+    const fs_foot_geom *g = mo->geom;
+    double h = x->sc->def.step_s, erp = mo->contact_erp, cfm = mo->contact_cfm;
+    double k = erp / (h * cfm), c = (1 - erp) / cfm;
     double mass = g->total_mass_kg;
     if (x->with_scenario)
-        mass += sim->sc->def.load_kg + (sim->robot ? sim->sc->def.robot.mass_kg : 0);
+        mass += x->sc->def.load_kg + (mo->robot_body ? x->sc->def.robot.mass_kg : 0);
     int points = g->nspheres + 4 * g->nboxes;
     double m = mass / (points > 0 ? points : 1);
     x->solref[0] = -k / m;
     x->solref[1] = -c / m;
-    x->mu = s->mu;
+    x->mu = mo->mu;
 }
 
 static void contact_attrs(exporter *x)
@@ -238,20 +214,19 @@ static void contact_attrs(exporter *x)
 
 /* ---- the foot ------------------------------------------------------------------------------ */
 
-static void inertial(exporter *x, dBodyID b)
+static void inertial(exporter *x, int i)
 {
-    dMass m;
-    dBodyGetMass(b, &m);
+    const fs_model_body *b = &x->m->body[i];
     start(x, "inertial");
     const double zero[3] = {0, 0, 0};
     attr_num(x, "pos", zero, 3);
-    attr1(x, "mass", m.mass);
-    const double *I = m.I; /* 3 x 4, row-major, about the COM in the body frame */
-    if (I[1] == 0 && I[2] == 0 && I[6] == 0) {
-        const double d[3] = {I[0], I[5], I[10]};
+    attr1(x, "mass", b->mass_kg);
+    const double *I = b->inertia_kg_m2; /* 3 x 3, row-major, about the COM in the body frame */
+    if (I[1] == 0 && I[2] == 0 && I[5] == 0) {
+        const double d[3] = {I[0], I[4], I[8]};
         attr_num(x, "diaginertia", d, 3);
     } else {
-        const double f[6] = {I[0], I[5], I[10], I[1], I[2], I[6]};
+        const double f[6] = {I[0], I[4], I[8], I[1], I[2], I[5]};
         attr_num(x, "fullinertia", f, 6);
     }
     end(x);
@@ -270,76 +245,78 @@ static void site(exporter *x, const node *n, const char *name, const double worl
 /* The sites of the springs (and the Achilles tendon) that end on node i. */
 static void sites(exporter *x, int i)
 {
-    const fs_sim *sim = x->sim;
+    const fs_model *m = x->m;
     const node *n = &x->node[i];
     char name[96];
-    for (int k = 0; k < sim->geom->nsprings; k++) {
-        double p1[3], p2[3];
-        fs_spring_anchors(&sim->spring[k], p1, p2);
-        if (sim->spring[k].body1 == n->id) {
-            snprintf(name, sizeof name, "%s_1", sim->geom->spring[k].name);
-            site(x, n, name, p1);
+    for (int k = 0; k < m->nsprings; k++) {
+        const fs_model_spring *s = &m->spring[k];
+        if (s->body1 == i) {
+            snprintf(name, sizeof name, "%s_1", s->name);
+            site(x, n, name, s->p1_m);
         }
-        if (sim->spring[k].body2 == n->id) {
-            snprintf(name, sizeof name, "%s_2", sim->geom->spring[k].name);
-            site(x, n, name, p2);
+        if (s->body2 == i) {
+            snprintf(name, sizeof name, "%s_2", s->name);
+            site(x, n, name, s->p2_m);
         }
     }
-    if (sim->has_achilles) {
-        double p1[3], p2[3];
-        fs_spring_anchors(&sim->achilles, p1, p2);
-        if (sim->achilles.body1 == n->id)
-            site(x, n, "achilles_1", p1);
-        if (sim->achilles.body2 == n->id)
-            site(x, n, "achilles_2", p2);
+    if (m->has_achilles) {
+        if (m->achilles.body1 == i)
+            site(x, n, "achilles_1", m->achilles.p1_m);
+        if (m->achilles.body2 == i)
+            site(x, n, "achilles_2", m->achilles.p2_m);
     }
+}
+
+/* A geom's box size (MuJoCo's is half lengths), from its edges. */
+static void half_size(exporter *x, const double edges[3])
+{
+    const double half[3] = {0.5 * edges[0], 0.5 * edges[1], 0.5 * edges[2]};
+    attr_num(x, "size", half, 3);
+}
+
+/* A geom's place and class, and its end. */
+static void geom_placed(exporter *x, const double pos[3], const double q[4], const char *cls)
+{
+    attr_num(x, "pos", pos, 3);
+    attr_num(x, "quat", q, 4);
+    attr(x, "class", cls);
+    end(x);
 }
 
 /* The contact shapes on node i: spheres and the sole box (MuJoCo's box size is half lengths). */
 static void shapes(exporter *x, int i)
 {
-    const fs_sim *sim = x->sim;
+    const fs_model *m = x->m;
     const node *n = &x->node[i];
     int count = 0;
-    for (int k = 0; k < sim->nshapes; k++) {
-        dGeomID g = sim->shape[k];
-        if (dGeomGetBody(g) != n->id)
+    for (int k = 0; k < m->nshapes; k++) {
+        const fs_model_shape *g = &m->shape[k];
+        if (g->body != i || i >= m->nbodies)
             continue;
-        dQuaternion gq;
-        dGeomGetQuaternion(g, gq);
-        double p[3], q[4], wq[4] = {gq[0], gq[1], gq[2], gq[3]};
-        to_local(n, dGeomGetPosition(g), 1, p);
-        quat_rel(n->q, wq, q);
+        /* in the body's frame: the model's offset, turned as the body is */
+        const double *p = g->offset_m, q[4] = {1, 0, 0, 0};
         start(x, "geom");
-        if (dGeomGetClass(g) == dSphereClass) {
+        if (g->kind == FS_MODEL_SPHERE) {
             attrf(x, "name", "%s_sphere%d", n->name, ++count);
             attr(x, "type", "sphere");
-            attr1(x, "size", dGeomSphereGetRadius(g));
+            attr1(x, "size", g->radius_m);
         } else {
-            dVector3 l;
-            dGeomBoxGetLengths(g, l);
-            const double half[3] = {0.5 * l[0], 0.5 * l[1], 0.5 * l[2]};
             attrf(x, "name", "%s_box", n->name);
             attr(x, "type", "box");
-            attr_num(x, "size", half, 3);
+            half_size(x, g->size_m);
         }
-        attr_num(x, "pos", p, 3);
-        attr_num(x, "quat", q, 4);
-        attr(x, "class", "foot");
-        end(x);
+        geom_placed(x, p, q, "foot");
     }
 }
 
 /* The static load: a point mass welded at the ankle (its weight is the load; it is not ramped). */
 static void load_body(exporter *x, int i)
 {
-    const fs_sim *sim = x->sim;
-    if (!x->with_scenario || sim->sc->def.load_kg <= 0 || x->node[i].id != sim->body[sim->geom->ankle_body])
+    const fs_model *m = x->m;
+    if (!x->with_scenario || x->sc->def.load_kg <= 0 || i != m->geom->ankle_body)
         return;
-    dVector3 a;
     double p[3];
-    dBodyGetRelPointPos(x->node[i].id, sim->ankle_local[0], sim->ankle_local[1], sim->ankle_local[2], a);
-    to_local(&x->node[i], a, 1, p);
+    to_local(&x->node[i], m->ankle_m, 1, p);
     comment(x, " the scenario's static load as a point mass at the ankle (footsim ramps its weight in over "
                "ramp_s) ");
     start(x, "body");
@@ -348,9 +325,9 @@ static void load_body(exporter *x, int i)
     start(x, "inertial");
     const double zero[3] = {0, 0, 0};
     attr_num(x, "pos", zero, 3);
-    attr1(x, "mass", sim->sc->def.load_kg);
+    attr1(x, "mass", x->sc->def.load_kg);
     /* a point mass: MuJoCo wants some inertia; a 1 mm sphere of that mass */
-    double I = 0.4 * sim->sc->def.load_kg * 1e-6;
+    double I = 0.4 * x->sc->def.load_kg * 1e-6;
     const double d[3] = {I, I, I};
     attr_num(x, "diaginertia", d, 3);
     end(x);
@@ -361,7 +338,7 @@ static void joint_to_parent(exporter *x, int i)
 {
     node *n = &x->node[i];
     if (n->parent < 0) { /* the root: free, or the walking machine's vertical slide */
-        if (n->id == x->sim->robot && x->sim->sc->def.robot.mount == FS_ROBOT_VERTICAL) {
+        if (x->m->robot_body && i == x->m->nbodies && x->m->robot_vertical) {
             const double up[3] = {0, 0, 1};
             double v[3];
             to_local(n, up, 0, v);
@@ -372,7 +349,7 @@ static void joint_to_parent(exporter *x, int i)
             end(x);
         } else {
             start(x, "freejoint"); /* "root"; a body no joint holds (a cut loop's) is free on its own */
-            if (i == (x->sim->robot ? x->nnodes - 1 : 0))
+            if (i == (x->m->robot_body ? x->nnodes - 1 : 0))
                 attr(x, "name", "root");
             else
                 attrf(x, "name", "%s_free", n->name);
@@ -411,7 +388,7 @@ static void body(exporter *x, int i)
     attr_num(x, "pos", p, 3);
     attr_num(x, "quat", q, 4);
     joint_to_parent(x, i);
-    inertial(x, n->id);
+    inertial(x, i);
     shapes(x, i);
     sites(x, i);
     load_body(x, i);
@@ -452,52 +429,37 @@ static void hfield_geom(exporter *x)
 
 static int has_hfield(const exporter *x)
 {
-    return x->with_scenario && x->sim->ground && fs_terrain_is_heightfield(&x->sc->terrain) && x->sc->terrain.z;
+    return x->with_scenario && x->m->with_ground && fs_terrain_is_heightfield(&x->sc->terrain) && x->sc->terrain.z;
 }
 
 static void ground(exporter *x)
 {
-    const fs_sim *sim = x->sim;
-    if (!sim->ground)
+    const fs_model *m = x->m;
+    if (!m->with_ground)
         return;
-    int n = dSpaceGetNumGeoms(sim->ground), planes = 0, boxes = 0;
     if (has_hfield(x)) /* the lattice, whether or not ODE has it as tiles */
         hfield_geom(x);
-    for (int i = 0; i < n; i++) {
-        dGeomID g = dSpaceGetGeom(sim->ground, i);
-        int cls = dGeomGetClass(g);
-        if (cls == dPlaneClass) {
-            dVector4 r;
-            dGeomPlaneGetParams(g, r);
-            double pos[3] = {r[3] * r[0], r[3] * r[1], r[3] * r[2]};
-            /* the rotation taking z to the normal: (1 + n_z, -n_y, n_x, 0), normalised */
-            double q[4] = {1 + r[2], -r[1], r[0], 0}, s = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-            for (int k = 0; k < 4; k++)
-                q[k] /= s;
-            const double size[3] = {0, 0, 0.05};
-            start(x, "geom");
-            attrf(x, "name", "plane%d", ++planes);
-            attr(x, "type", "plane");
-            attr_num(x, "size", size, 3);
-            attr_num(x, "pos", pos, 3);
-            attr_num(x, "quat", q, 4);
-            attr(x, "class", "ground");
-            end(x);
-        } else if (cls == dBoxClass) {
-            dVector3 l;
-            dQuaternion gq;
-            dGeomBoxGetLengths(g, l);
-            dGeomGetQuaternion(g, gq);
-            const double half[3] = {0.5 * l[0], 0.5 * l[1], 0.5 * l[2]}, q[4] = {gq[0], gq[1], gq[2], gq[3]};
-            start(x, "geom");
-            attrf(x, "name", "step%d", ++boxes);
-            attr(x, "type", "box");
-            attr_num(x, "size", half, 3);
-            attr_num(x, "pos", dGeomGetPosition(g), 3);
-            attr_num(x, "quat", q, 4);
-            attr(x, "class", "ground");
-            end(x);
-        }
+    for (int i = 0; i < m->nplanes; i++) {
+        const double *r = m->plane[i].normal, d = m->plane[i].offset_m;
+        double pos[3] = {d * r[0], d * r[1], d * r[2]};
+        /* the rotation taking z to the normal: (1 + n_z, -n_y, n_x, 0), normalised */
+        double q[4] = {1 + r[2], -r[1], r[0], 0}, s = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        for (int k = 0; k < 4; k++)
+            q[k] /= s;
+        const double size[3] = {0, 0, 0.05};
+        start(x, "geom");
+        attrf(x, "name", "plane%d", i + 1);
+        attr(x, "type", "plane");
+        attr_num(x, "size", size, 3);
+        geom_placed(x, pos, q, "ground");
+    }
+    for (int i = 0; i < m->nblocks; i++) {
+        const double q[4] = {1, 0, 0, 0};
+        start(x, "geom");
+        attrf(x, "name", "step%d", i + 1);
+        attr(x, "type", "box");
+        half_size(x, m->block[i].size_m);
+        geom_placed(x, m->block[i].pos_m, q, "ground");
     }
 }
 
@@ -551,16 +513,16 @@ static void defaults(exporter *x)
     end(x);
 }
 
-static void tendon(exporter *x, const char *name, const fs_spring *s)
+static void tendon(exporter *x, const char *name, const fs_model_spring *s)
 {
     char a[96], b[96];
     snprintf(a, sizeof a, "%s_1", name);
     snprintf(b, sizeof b, "%s_2", name);
     start(x, "spatial");
     attr(x, "name", name);
-    attr1(x, "stiffness", s->k);
-    attr1(x, "damping", s->c);
-    attr1(x, "springlength", s->rest);
+    attr1(x, "stiffness", s->k_N_per_m);
+    attr1(x, "damping", s->c_Ns_per_m);
+    attr1(x, "springlength", s->rest_length_m);
     attr(x, "width", "0.0005");
     start(x, "site");
     attr(x, "site", a);
@@ -604,7 +566,7 @@ static void loop_closures(exporter *x)
 
 static void document(exporter *x)
 {
-    const fs_sim *sim = x->sim;
+    const fs_model *m = x->m;
     const fs_scenario *sc = x->sc;
     if (xmlTextWriterStartDocument(x->w, NULL, "UTF-8", NULL) < 0)
         x->ok = 0;
@@ -624,8 +586,8 @@ static void document(exporter *x)
     end(x);
     start(x, "option");
     attr1(x, "timestep", sc->def.step_s);
-    double gvec[3] = {sc->def.gravity_m_per_s2 * sim->down[0], sc->def.gravity_m_per_s2 * sim->down[1],
-                      sc->def.gravity_m_per_s2 * sim->down[2]};
+    double gvec[3] = {sc->def.gravity_m_per_s2 * m->down[0], sc->def.gravity_m_per_s2 * m->down[1],
+                      sc->def.gravity_m_per_s2 * m->down[2]};
     attr_num(x, "gravity", gvec, 3);
     /* damping implicit, as footsim's implicit springs are (their stiffness stays explicit) */
     attr(x, "integrator", "implicit");
@@ -652,10 +614,10 @@ static void document(exporter *x)
             body(x, i);
     end(x);
     start(x, "tendon");
-    for (int k = 0; k < sim->geom->nsprings; k++)
-        tendon(x, sim->geom->spring[k].name, &sim->spring[k]);
-    if (sim->has_achilles)
-        tendon(x, "achilles", &sim->achilles);
+    for (int k = 0; k < m->nsprings; k++)
+        tendon(x, m->spring[k].name, &m->spring[k]);
+    if (m->has_achilles)
+        tendon(x, "achilles", &m->achilles);
     end(x);
     loop_closures(x);
     end(x); /* mujoco */
@@ -671,11 +633,11 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
         return fs_fail(err, FS_BAD_INPUT, "%s: kind = biped: the biped is not exported (its leg joints' angular "
                        "spring-dampers, ODE hinge stops, have no counterpart in this export yet): export the foot "
                        "with a single robot (robots/single_tall.ini), or without --scenario", sc->def.robot_path);
-    fs_sim sim;
+    fs_model *model;
     /* the robot as its own body, welded to the ankle body as footsim's fixed joint welds it: a reader
        sees the robot apart (footsim's merge of the two is a speed cut, docs/bench.md) */
     fs_sim_options opts = {.with_ground = with_scenario, .keep_robot_body = 1};
-    fs_status s = fs_sim_build(&sim, sc, &opts, err);
+    fs_status s = fs_model_compile(sc, &opts, &model, err);
     if (s != FS_OK)
         return s;
     exporter *x = calloc(1, sizeof *x);
@@ -685,10 +647,10 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
     if (!x || !buf || !x->w) {
         free(x);
         xmlBufferFree(buf);
-        fs_sim_destroy(&sim);
+        fs_model_free(model);
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the MJCF document", sc->path);
     }
-    x->sim = &sim;
+    x->m = model;
     x->sc = sc;
     x->with_scenario = with_scenario;
     x->hfield_file = hfield_file ? hfield_file : "terrain.hfield.bin";
@@ -703,7 +665,7 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
         ok = out->hfield != NULL;
     }
     free(x);
-    fs_sim_destroy(&sim);
+    fs_model_free(model);
     if (ok) {
         size_t len = (size_t)xmlBufferLength(buf);
         out->xml = malloc(len + 1);
