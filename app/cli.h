@@ -91,10 +91,9 @@ int cli_trial(const cli_args *a);
 int cli_walk(const cli_args *a);
 int cli_campaign(const cli_args *a);  /* app/cli_campaign.c */
 int cli_optimize(const cli_args *a);  /* app/cli_optimize.c */
-/* Runs every trial of c in `jobs` worker processes into results (by trial index), with progress on
- * stderr under the name who; a dead worker's trial is failed_numerics, a worker the watchdog killed
- * makes its trial hung (app/cli_campaign.c). Returns
- * an fs_status. */
+/* Runs every trial of c in `jobs` worker processes into results (by trial index) through the
+ * library (fs_campaign_run_trials), with progress and its messages on stderr under the name who
+ * (app/cli_campaign.c). Returns an fs_status. */
 struct fs_campaign;
 struct fs_trial_result;
 struct fs_error;

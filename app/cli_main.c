@@ -42,6 +42,7 @@ typedef struct cli_option {
     const char *value;  /* what its value is called in usage ("DIR"; a pair's "X Y") */
     unsigned commands;  /* the commands that take it */
     unsigned as_file;   /* of those, the ones whose value is a FILE, not value (export --out) */
+    unsigned required;  /* of those, the ones it must be given to (usage shows it unbracketed) */
     size_t field, field2; /* where it goes in cli_args (field2: a pair's second value) */
     const char *help;   /* what it does, for --help, docs/commands.md and the man page */
 } cli_option;
@@ -56,55 +57,56 @@ enum {
 };
 
 static const cli_option options[] = {
-    {"--mjcf", ARG_FLAG, NULL, CMD_EXPORT, 0, FIELD(mjcf), 0, "export as MuJoCo MJCF (the one format export writes)"},
-    {"--scenario", ARG_VALUE, "SCENARIO", CMD_TERRAIN | CMD_EXPORT, 0, FIELD(scenario), 0,
+    {"--mjcf", ARG_FLAG, NULL, CMD_EXPORT, 0, CMD_EXPORT, FIELD(mjcf), 0,
+     "export as MuJoCo MJCF (the one format export writes)"},
+    {"--scenario", ARG_VALUE, "SCENARIO", CMD_TERRAIN | CMD_EXPORT, 0, 0, FIELD(scenario), 0,
      "a scenario: terrain describes the terrain over its region; export puts the foot in its start pose on its ground"},
-    {"--out", ARG_VALUE, "DIR", CMD_OUTS, CMD_EXPORT, FIELD(out), 0,
+    {"--out", ARG_VALUE, "DIR", CMD_OUTS, CMD_EXPORT, 0, FIELD(out), 0,
      "where the results go (export: the file). A results folder is replaced whole, and only when footsim made it "
      "(its .footsim-results marker says so, never its files' names); a path too long to use whole (over PATH_MAX "
      "less 512 characters, or a name over NAME_MAX less 32) is refused, exit 2"},
-    {"--replace", ARG_FLAG, NULL, CMD_OUTS | CMD_TERRAIN, 0, FIELD(replace), 0,
+    {"--replace", ARG_FLAG, NULL, CMD_OUTS | CMD_TERRAIN, 0, 0, FIELD(replace), 0,
      "replace on purpose a folder (or a file) footsim did not make"},
-    {"-j", ARG_VALUE, "N", CMD_CAMPAIGN | CMD_OPTIMIZE | CMD_BENCH, 0, FIELD(jobs), 0,
+    {"-j", ARG_VALUE, "N", CMD_CAMPAIGN | CMD_OPTIMIZE | CMD_BENCH, 0, 0, FIELD(jobs), 0,
      "worker processes, 1 to 1024 (also -jN); default: the CPUs this process may use (bench equivalence: 1); "
      "the results do not depend on it"},
-    {"--seed", ARG_VALUE, "N", CMD_TRIAL, 0, FIELD(seed), 0, "the trial's seed (default 1)"},
-    {"--json", ARG_FLAG, NULL, CMD_MODEL | CMD_STIFFNESS | CMD_TRIAL | CMD_COMPARE | CMD_WALK, 0, FIELD(json), 0,
+    {"--seed", ARG_VALUE, "N", CMD_TRIAL, 0, 0, FIELD(seed), 0, "the trial's seed (default 1)"},
+    {"--json", ARG_FLAG, NULL, CMD_MODEL | CMD_STIFFNESS | CMD_TRIAL | CMD_COMPARE | CMD_WALK, 0, 0, FIELD(json), 0,
      "print the result as JSON"},
-    {"--quick", ARG_FLAG, NULL, CMD_BENCH, 0, FIELD(quick), 0, "a smaller sweep: minutes instead of tens of minutes"},
-    {"--force", ARG_FLAG, NULL, CMD_COMPARE, 0, FIELD(force), 0,
+    {"--quick", ARG_FLAG, NULL, CMD_BENCH, 0, 0, FIELD(quick), 0, "a smaller sweep: minutes instead of tens of minutes"},
+    {"--force", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(force), 0,
      "compare results made of other seeds, overrides or input files (reported, not refused)"},
-    {"--equivalence", ARG_FLAG, NULL, CMD_COMPARE, 0, FIELD(equivalence), 0,
+    {"--equivalence", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(equivalence), 0,
      "judge RESULT, run at another setting, against BASELINE as a reference campaign (docs/bench.md)"},
-    {"--all", ARG_FLAG, NULL, CMD_COMPARE, 0, FIELD(all), 0,
+    {"--all", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(all), 0,
      "list every quantity of every cell with its verdict, not only those outside what the baseline allows"},
-    {"--shard", ARG_VALUE, "I/N", CMD_CAMPAIGN, 0, FIELD(shard), 0,
+    {"--shard", ARG_VALUE, "I/N", CMD_CAMPAIGN, 0, 0, FIELD(shard), 0,
      "run only the trials whose index is I-1 modulo N (any N, 1/1 too) and write them to DIR/trials.journal, "
      "for merge"},
-    {"--fresh", ARG_FLAG, NULL, CMD_CAMPAIGN, 0, FIELD(fresh), 0,
+    {"--fresh", ARG_FLAG, NULL, CMD_CAMPAIGN, 0, 0, FIELD(fresh), 0,
      "start a campaign over: the journal of an interrupted run is removed, a finished folder run again"},
-    {"--reference", ARG_VALUE, "S", CMD_BENCH, 0, FIELD(reference), 0, "bench equivalence: the reference step, s (1e-5)"},
-    {"--steps", ARG_VALUE, "S1,S2,...", CMD_BENCH, 0, FIELD(steps), 0,
+    {"--reference", ARG_VALUE, "S", CMD_BENCH, 0, 0, FIELD(reference), 0, "bench equivalence: the reference step, s (1e-5)"},
+    {"--steps", ARG_VALUE, "S1,S2,...", CMD_BENCH, 0, 0, FIELD(steps), 0,
      "bench equivalence: the steps to judge, s (1e-4,2e-4,5e-4,1e-3,2e-3,5e-3,1e-2)"},
-    {"--height", ARG_PAIR, "X Y", CMD_TERRAIN, 0, FIELD(height_x), FIELD(height_y),
+    {"--height", ARG_PAIR, "X Y", CMD_TERRAIN, 0, 0, FIELD(height_x), FIELD(height_y),
      "print the surface height, m, at (X, Y), m: the surface the foot collides with"},
-    {"--png", ARG_VALUE, "FILE", CMD_TERRAIN, 0, FIELD(png), 0, "write a shaded top-down picture of the terrain"},
-    {"--frames", ARG_FLAG, NULL, CMD_RUN | CMD_TRIAL | CMD_WALK, 0, FIELD(frames), 0,
+    {"--png", ARG_VALUE, "FILE", CMD_TERRAIN, 0, 0, FIELD(png), 0, "write a shaded top-down picture of the terrain"},
+    {"--frames", ARG_FLAG, NULL, CMD_RUN | CMD_TRIAL | CMD_WALK, 0, 0, FIELD(frames), 0,
      "also draw DIR/frames/000000.png, ... (renderer builds only)"},
-    {"--frames-of", ARG_VALUE, "SELECTORS", CMD_CAMPAIGN, 0, FIELD(frames_of), 0,
+    {"--frames-of", ARG_VALUE, "SELECTORS", CMD_CAMPAIGN, 0, 0, FIELD(frames_of), 0,
      "also draw the chosen trials (foot=F,terrain=T,robot=R,seed=N; any of them; seed=1/3 for several) into "
      "DIR/frames/<foot>-<terrain>-<robot>-seed<N>/"},
-    {"--fps", ARG_VALUE, "N", CMD_FRAMES_TAKERS, 0, FIELD(fps), 0, "frames per simulated second (60)"},
-    {"--size", ARG_VALUE, "WxH", CMD_FRAMES_TAKERS, 0, FIELD(size), 0, "the frames' size in pixels (1280x720)"},
-    {"--camera", ARG_VALUE, "NAME", CMD_FRAMES_TAKERS, 0, FIELD(camera), 0,
+    {"--fps", ARG_VALUE, "N", CMD_FRAMES_TAKERS, 0, 0, FIELD(fps), 0, "frames per simulated second (60)"},
+    {"--size", ARG_VALUE, "WxH", CMD_FRAMES_TAKERS, 0, 0, FIELD(size), 0, "the frames' size in pixels (1280x720)"},
+    {"--camera", ARG_VALUE, "NAME", CMD_FRAMES_TAKERS, 0, 0, FIELD(camera), 0,
      "foot (the foot filling the frame, the default), side, front, three-quarter or follow"},
-    {"--exaggerate", ARG_VALUE, "F", CMD_FRAMES_TAKERS, 0, FIELD(exaggerate), 0,
+    {"--exaggerate", ARG_VALUE, "F", CMD_FRAMES_TAKERS, 0, 0, FIELD(exaggerate), 0,
      "draw each body's displacement from its first pose, in the ankle body's frame, times F (said on every frame)"},
-    {"--video", ARG_FLAG, NULL, CMD_RUN | CMD_RENDER_COMPARE | CMD_TRIAL | CMD_WALK, 0, FIELD(video), 0,
+    {"--video", ARG_FLAG, NULL, CMD_RUN | CMD_RENDER_COMPARE | CMD_TRIAL | CMD_WALK, 0, 0, FIELD(video), 0,
      "also encode DIR/video.mp4 with ffmpeg (implies --frames)"},
-    {"--set", ARG_REPEAT, "section.key=value", CMD_SETS, 0, FIELD(set), 0,
+    {"--set", ARG_REPEAT, "section.key=value", CMD_SETS, 0, 0, FIELD(set), 0,
      "override one value of the file without editing it, checked like the file; repeatable"},
-    {"--data", ARG_VALUE, "DIR", CMD_SETS | CMD_DEMO, 0, FIELD(data), 0,
+    {"--data", ARG_VALUE, "DIR", CMD_SETS | CMD_DEMO, 0, 0, FIELD(data), 0,
      "where relative data files are looked for first (then the current folder, then the installed data)"},
 };
 enum { NOPTIONS = sizeof options / sizeof options[0] };
@@ -330,10 +332,11 @@ static void command_help(const command *c)
         const cli_option *o = &options[k];
         if (!takes(c, o))
             continue;
+        const char *open = o->required & c->id ? "" : "[", *close = o->required & c->id ? "" : "]";
         if (o->arg == ARG_FLAG)
-            printf(" [%s]", o->name);
+            printf(" %s%s%s", open, o->name, close);
         else
-            printf(" [%s %s]%s", o->name, value_of(c, o), o->arg == ARG_REPEAT ? "..." : "");
+            printf(" %s%s %s%s%s", open, o->name, value_of(c, o), close, o->arg == ARG_REPEAT ? "..." : "");
     }
     printf("\n\n  %s\n", c->help);
     int any = 0;
