@@ -91,10 +91,9 @@ int cli_trial(const cli_args *a);
 int cli_walk(const cli_args *a);
 int cli_campaign(const cli_args *a);  /* app/cli_campaign.c */
 int cli_optimize(const cli_args *a);  /* app/cli_optimize.c */
-/* Runs every trial of c in `jobs` worker processes into results (by trial index), with progress on
- * stderr under the name who; a dead worker's trial is failed_numerics, a worker the watchdog killed
- * makes its trial hung (app/cli_campaign.c). Returns
- * an fs_status. */
+/* Runs every trial of c in `jobs` worker processes into results (by trial index) through the
+ * library (fs_campaign_run_trials), with progress and its messages on stderr under the name who
+ * (app/cli_campaign.c). Returns an fs_status. */
 struct fs_campaign;
 struct fs_trial_result;
 struct fs_error;
@@ -256,5 +255,53 @@ int cli_results_dir(const cli_args *a, const char *kind, const char *name, char 
  * lives from one call to the next. NULL after "footsim: out of memory" on stderr (the caller
  * returns FS_NO_MEMORY). */
 void *cli_zalloc(size_t size);
+
+/* A command's results in a folder of its own: run(user, observer) with frames of framed (when
+ * --frames), then name (the result as JSON, to_json(result)) beside them, swapped in whole at the
+ * end; dir_out gets the folder as shown. */
+typedef struct cli_folder_job {
+    const char *dir;                 /* the folder asked for */
+    const fs_scenario *framed;       /* the scenario the frames are framed on */
+    fs_status (*run)(void *user, const fs_run_observer *obs, fs_error *err);
+    void *user;
+    const char *name;                /* the JSON file */
+    struct cJSON *(*to_json)(const void *result, fs_error *err); /* NULL: err set */
+    const void *result;
+    const struct fs_provenance *provenance; /* what made the result, put into the JSON (NULL: none) */
+    /* more files beside the JSON (a trial's trajectory.csv), written into dir; NULL: none */
+    fs_status (*write_more)(void *user, const char *dir, fs_error *err);
+    /* what every frame says (a trial's seed), and the last once the run ended (and its outcome);
+       NULL: nothing */
+    void (*frame_label)(const void *user, const void *result, int ended, char *label, size_t size);
+} cli_folder_job;
+/* Runs j into its folder j->dir (out: the caller's results folder, on the heap with the rest of its
+ * work, aborted here when not committed); dir_out gets the folder as shown. 0 or an exit status. */
+typedef struct fs_outdir fs_outdir;
+int cli_in_folder(const cli_args *a, const cli_folder_job *j, fs_outdir *out, char *dir_out, size_t size);
+
+/* Prints root as JSON on stdout: 0, or exit 5 said. */
+struct cJSON;
+int cli_print_json(struct cJSON *root);
+/* Runs a command that reads a design (model, stiffness) on its scenario (fs_scenario_for_design),
+ * which lives on the heap for the command and is freed on every path. */
+int cli_with_design(const cli_args *a, int (*command)(const cli_args *a, const fs_scenario *sc));
+
+/* What campaign and merge add to the library's files (app/cli_campaign.c): the --frames-of trials
+ * (frames_of, or NULL) and the chart drawn by gnuplot, into the partial folder before it is put in
+ * place (an fs_campaign_extra_fn, user a cli_campaign_files; drawn says whether the chart was). */
+typedef struct fs_campaign_row fs_campaign_row;
+typedef struct cli_campaign_files {
+    cli_progress progress; /* first: campaign's progress callback's user */
+    cli_frames_of *frames_of;
+    int drawn;
+} cli_campaign_files;
+int cli_campaign_files_add(const char *partial, const char *shown, const struct fs_campaign *c,
+                           const struct fs_trial_result *results, const fs_campaign_row *rows, void *user);
+/* A finished campaign's rows and expectations on stdout, and where its files are; exit 1 when an
+ * expectation fails. */
+int cli_campaign_report(const struct fs_campaign *c, const fs_campaign_row *rows, const char *dir, int drawn);
+/* The command that runs a campaign of a (input, -j, --shard, --set, --data) again into dir, quoted
+ * for a POSIX shell, into buf. */
+void cli_campaign_command(const cli_args *a, const char *dir, char *buf, size_t size);
 
 #endif

@@ -1,4 +1,9 @@
-/* cli_main.c: the footsim command: subcommands, --help, and argument checks. */
+/* cli_main.c: the footsim command: its subcommands, their options, --help, and argument checks.
+ *
+ * One typed table of options (cli_options) drives everything about them: which commands take each
+ * option, what its argument is (none, one value, two values, a repeatable value), where it goes in
+ * cli_args, its line in 'footsim --help' and in each command's usage, and through
+ * tools/gen-commands-doc.sh docs/commands.md and the man page's OPTIONS section. */
 #include "cli.h"
 
 #include "footsim/base/fs_error.h"
@@ -8,49 +13,144 @@
 #include "footsim/io/fs_output.h"
 #include "footsim/sim/fs_ode.h"
 
+#include <cjson/cJSON.h>
 #include <signal.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+/* The commands, one bit each, for the options table. */
+enum {
+    CMD_RUN = 1 << 0, CMD_RENDER_COMPARE = 1 << 1, CMD_MODEL = 1 << 2, CMD_STIFFNESS = 1 << 3, CMD_TERRAIN = 1 << 4,
+    CMD_TRIAL = 1 << 5, CMD_CAMPAIGN = 1 << 6, CMD_MERGE = 1 << 7, CMD_OPTIMIZE = 1 << 8, CMD_COMPARE = 1 << 9,
+    CMD_PLOT = 1 << 10, CMD_WALK = 1 << 11, CMD_BENCH = 1 << 12, CMD_EXPORT = 1 << 13, CMD_KEYS = 1 << 14,
+    CMD_DEMO = 1 << 15
+};
+
+/* What an option takes. */
+typedef enum cli_arg {
+    ARG_FLAG,   /* nothing: sets an int to 1 */
+    ARG_VALUE,  /* one value: a const char * */
+    ARG_PAIR,   /* two values: two const char * */
+    ARG_REPEAT  /* one value, repeatable: appended to cli_args.set */
+} cli_arg;
+
+typedef struct cli_option {
+    const char *name;   /* "--out" */
+    cli_arg arg;
+    const char *value;  /* what its value is called in usage ("DIR"; a pair's "X Y") */
+    unsigned commands;  /* the commands that take it */
+    unsigned as_file;   /* of those, the ones whose value is a FILE, not value (export --out) */
+    unsigned required;  /* of those, the ones it must be given to (usage shows it unbracketed) */
+    size_t field, field2; /* where it goes in cli_args (field2: a pair's second value) */
+    const char *help;   /* what it does, for --help, docs/commands.md and the man page */
+} cli_option;
+
+#define FIELD(f) offsetof(cli_args, f)
+enum {
+    CMD_FRAMES_TAKERS = CMD_RUN | CMD_RENDER_COMPARE | CMD_TRIAL | CMD_CAMPAIGN | CMD_WALK,
+    CMD_SETS = CMD_RUN | CMD_RENDER_COMPARE | CMD_MODEL | CMD_STIFFNESS | CMD_TERRAIN | CMD_TRIAL | CMD_CAMPAIGN |
+               CMD_OPTIMIZE | CMD_WALK | CMD_BENCH | CMD_EXPORT,
+    CMD_OUTS = CMD_RUN | CMD_RENDER_COMPARE | CMD_TRIAL | CMD_CAMPAIGN | CMD_MERGE | CMD_OPTIMIZE | CMD_PLOT | CMD_WALK |
+               CMD_BENCH | CMD_EXPORT
+};
+
+static const cli_option options[] = {
+    {"--mjcf", ARG_FLAG, NULL, CMD_EXPORT, 0, CMD_EXPORT, FIELD(mjcf), 0,
+     "export as MuJoCo MJCF (the one format export writes)"},
+    {"--scenario", ARG_VALUE, "SCENARIO", CMD_TERRAIN | CMD_EXPORT, 0, 0, FIELD(scenario), 0,
+     "a scenario: terrain describes the terrain over its region; export puts the foot in its start pose on its ground"},
+    {"--out", ARG_VALUE, "DIR", CMD_OUTS, CMD_EXPORT, 0, FIELD(out), 0,
+     "where the results go (export: the file). A results folder is replaced whole, and only when footsim made it "
+     "(its .footsim-results marker says so, never its files' names); a path too long to use whole (over PATH_MAX "
+     "less 512 characters, or a name over NAME_MAX less 32) is refused, exit 2"},
+    {"--replace", ARG_FLAG, NULL, CMD_OUTS | CMD_TERRAIN, 0, 0, FIELD(replace), 0,
+     "replace on purpose a folder (or a file) footsim did not make"},
+    {"-j", ARG_VALUE, "N", CMD_CAMPAIGN | CMD_OPTIMIZE | CMD_BENCH, 0, 0, FIELD(jobs), 0,
+     "worker processes, 1 to 1024 (also -jN); default: the CPUs this process may use (bench equivalence: 1); "
+     "the results do not depend on it"},
+    {"--seed", ARG_VALUE, "N", CMD_TRIAL, 0, 0, FIELD(seed), 0, "the trial's seed (default 1)"},
+    {"--json", ARG_FLAG, NULL, CMD_MODEL | CMD_STIFFNESS | CMD_TRIAL | CMD_COMPARE | CMD_WALK, 0, 0, FIELD(json), 0,
+     "print the result as JSON"},
+    {"--quick", ARG_FLAG, NULL, CMD_BENCH, 0, 0, FIELD(quick), 0, "a smaller sweep: minutes instead of tens of minutes"},
+    {"--force", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(force), 0,
+     "compare results made of other seeds, overrides or input files (reported, not refused)"},
+    {"--equivalence", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(equivalence), 0,
+     "judge RESULT, run at another setting, against BASELINE as a reference campaign (docs/bench.md)"},
+    {"--all", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(all), 0,
+     "list every quantity of every cell with its verdict, not only those outside what the baseline allows"},
+    {"--shard", ARG_VALUE, "I/N", CMD_CAMPAIGN, 0, 0, FIELD(shard), 0,
+     "run only the trials whose index is I-1 modulo N (any N, 1/1 too) and write them to DIR/trials.journal, "
+     "for merge"},
+    {"--fresh", ARG_FLAG, NULL, CMD_CAMPAIGN, 0, 0, FIELD(fresh), 0,
+     "start a campaign over: the journal of an interrupted run is removed, a finished folder run again"},
+    {"--reference", ARG_VALUE, "S", CMD_BENCH, 0, 0, FIELD(reference), 0, "bench equivalence: the reference step, s (1e-5)"},
+    {"--steps", ARG_VALUE, "S1,S2,...", CMD_BENCH, 0, 0, FIELD(steps), 0,
+     "bench equivalence: the steps to judge, s (1e-4,2e-4,5e-4,1e-3,2e-3,5e-3,1e-2)"},
+    {"--height", ARG_PAIR, "X Y", CMD_TERRAIN, 0, 0, FIELD(height_x), FIELD(height_y),
+     "print the surface height, m, at (X, Y), m: the surface the foot collides with"},
+    {"--png", ARG_VALUE, "FILE", CMD_TERRAIN, 0, 0, FIELD(png), 0, "write a shaded top-down picture of the terrain"},
+    {"--frames", ARG_FLAG, NULL, CMD_RUN | CMD_TRIAL | CMD_WALK, 0, 0, FIELD(frames), 0,
+     "also draw DIR/frames/000000.png, ... (renderer builds only)"},
+    {"--frames-of", ARG_VALUE, "SELECTORS", CMD_CAMPAIGN, 0, 0, FIELD(frames_of), 0,
+     "also draw the chosen trials (foot=F,terrain=T,robot=R,seed=N; any of them; seed=1/3 for several) into "
+     "DIR/frames/<foot>-<terrain>-<robot>-seed<N>/"},
+    {"--fps", ARG_VALUE, "N", CMD_FRAMES_TAKERS, 0, 0, FIELD(fps), 0, "frames per simulated second (60)"},
+    {"--size", ARG_VALUE, "WxH", CMD_FRAMES_TAKERS, 0, 0, FIELD(size), 0, "the frames' size in pixels (1280x720)"},
+    {"--camera", ARG_VALUE, "NAME", CMD_FRAMES_TAKERS, 0, 0, FIELD(camera), 0,
+     "foot (the foot filling the frame, the default), side, front, three-quarter or follow"},
+    {"--exaggerate", ARG_VALUE, "F", CMD_FRAMES_TAKERS, 0, 0, FIELD(exaggerate), 0,
+     "draw each body's displacement from its first pose, in the ankle body's frame, times F (said on every frame)"},
+    {"--video", ARG_FLAG, NULL, CMD_RUN | CMD_RENDER_COMPARE | CMD_TRIAL | CMD_WALK, 0, 0, FIELD(video), 0,
+     "also encode DIR/video.mp4 with ffmpeg (implies --frames)"},
+    {"--set", ARG_REPEAT, "section.key=value", CMD_SETS, 0, 0, FIELD(set), 0,
+     "override one value of the file without editing it, checked like the file; repeatable"},
+    {"--data", ARG_VALUE, "DIR", CMD_SETS | CMD_DEMO, 0, 0, FIELD(data), 0,
+     "where relative data files are looked for first (then the current folder, then the installed data)"},
+};
+enum { NOPTIONS = sizeof options / sizeof options[0] };
+
 typedef struct command {
     const char *name;
     int (*run)(const cli_args *);
-    const char *input;   /* what the positional argument is, or NULL when there is none */
-    const char *options; /* the options it takes, for checks and --help */
+    unsigned id;          /* its bit */
+    const char *input;    /* what the positional arguments are, or NULL when there are none */
+    int npositional;      /* how many it takes: 0, 1, 2, or -1: one or more */
+    cli_data_kind data;   /* what kind of data file its positional arguments are */
     const char *help;
 } command;
 
 static const command commands[] = {
-    {"run", cli_run, "SCENARIO", "--out --replace --set --frames --fps --size --camera --exaggerate --video --data",
+    {"run", cli_run, CMD_RUN, "SCENARIO", 1, CLI_DATA_SCENARIO,
      "Runs a scenario until the foot is at rest and writes DIR/metrics.json and DIR/trajectory.csv\n"
      "  (default DIR: results/runs/<scenario name>/).\n"
      "  --frames writes DIR/frames/000000.png, ... at --fps (60) frames per simulated second, --size WxH\n"
      "  (1280x720), seen by --camera foot|side|front|three-quarter|follow (foot: the foot filling the\n"
      "  frame); --exaggerate F multiplies each body's displacement from its first pose, in the ankle\n"
      "  body's frame, by F (said on every frame); --video also encodes DIR/video.mp4 with ffmpeg."},
-    {"render-compare", cli_render_compare, "SCENARIO_A SCENARIO_B", "--out --replace --set --fps --size --camera --exaggerate --video --data",
+    {"render-compare", cli_render_compare, CMD_RENDER_COMPARE, "SCENARIO_A SCENARIO_B", 2, CLI_DATA_SCENARIO,
      "Runs both scenarios and writes their frames side by side (A left, B right) to DIR/frames/ and key\n"
      "  frames from touch-down to rest to DIR/filmstrip.png (default DIR: results/compare/A-foot_vs_B-foot/).\n"
      "  --set a:KEY=V changes A only, b:KEY=V B only, KEY=V both. Frame options as for run."},
-    {"model", cli_model, "DESIGN", "--json --set --data",
+    {"model", cli_model, CMD_MODEL, "DESIGN", 1, CLI_DATA_DESIGN,
      "Prints the built model in SI units and world coordinates: bodies, joints, springs, geoms."},
-    {"stiffness", cli_stiffness, "DESIGN", "--json --set --data",
+    {"stiffness", cli_stiffness, CMD_STIFFNESS, "DESIGN", 1, CLI_DATA_DESIGN,
      "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
      "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
      "  Exit 1 when analytic and measured differ by more than 1 %."},
-    {"terrain", cli_terrain, "TERRAIN", "--height --png --replace --scenario --set --data",
+    {"terrain", cli_terrain, CMD_TERRAIN, "TERRAIN", 1, CLI_DATA_TERRAIN,
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"
      "  foot collides with; --png FILE writes a shaded top-down picture; with neither, a summary.\n"
      "  --scenario S: both over S's region (the foot's footprint at its start and the margin), the\n"
      "  picture with the footprint drawn."},
-    {"trial", cli_trial, "SCENARIO", "--seed --json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
+    {"trial", cli_trial, CMD_TRIAL, "SCENARIO", 1, CLI_DATA_SCENARIO,
      "Runs one landing trial of a trial scenario (scenarios/landing_trial.ini) for --seed N (1):\n"
      "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
      "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json, its time series\n"
      "  DIR/trajectory.csv (with the robot's lean: footsim plot DIR draws it) and the frames of\n"
      "  exactly that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
-    {"campaign", cli_campaign, "CAMPAIGN", "-j --out --replace --set --frames-of --fps --size --camera --exaggerate --data --shard --fresh",
+    {"campaign", cli_campaign, CMD_CAMPAIGN, "CAMPAIGN", 1, CLI_DATA_SCENARIO,
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
      "  trials.csv, schema.sql and success.png (default DIR: results/campaigns/<campaign name>/). Exit 1 when an\n"
@@ -65,18 +165,18 @@ static const command commands[] = {
      "  stops the workers, keeps the journal, prints the command that continues; exit 130 or 143.\n"
      "  --shard I/N runs only the trials whose index is I-1 modulo N and writes DIR/trials.journal;\n"
      "  'footsim merge' makes the campaign's files of the N shard folders."},
-    {"merge", cli_merge, "DIR...", "--out --replace",
+    {"merge", cli_merge, CMD_MERGE, "DIR...", -1, CLI_DATA_NONE,
      "Merges the shard folders of one campaign (footsim campaign --shard I/N) into its result files,\n"
      "  the same bytes as the campaign run on one machine (default DIR: results/campaigns/<name>/).\n"
      "  Refused (exit 2, saying which) when the shards come from other campaigns, inputs, overrides or\n"
      "  versions, or when trials are missing or repeated. Exit 1 when an expectation fails."},
-    {"optimize", cli_optimize, "FILE", "-j --out --replace --set --data",
+    {"optimize", cli_optimize, CMD_OPTIMIZE, "FILE", 1, CLI_DATA_SCENARIO,
      "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
      "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"
      "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
      "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
      "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
-    {"compare", cli_compare, "RESULT BASELINE", "--force --equivalence --json --all",
+    {"compare", cli_compare, CMD_COMPARE, "RESULT BASELINE", 2, CLI_DATA_NONE,
      "Compares two summary.json files and prints, as Markdown, what is outside what the baseline\n"
      "  allows (--all: every quantity of every cell, with its verdict), or with --json one JSON object:\n"
      "  every quantity with its baseline, result, allowed range and verdict, the provenance's\n"
@@ -90,18 +190,17 @@ static const command commands[] = {
      "  against BASELINE as a reference campaign of the same seeds and inputs: exit 1 unless every\n"
      "  cell's success intervals overlap and its medians of impulse, final lean, ankle drop at rest,\n"
      "  settle time and contacts lie within 5 % or a floor (docs/bench.md)."},
-    {"plot", cli_plot, "RUN_DIR|CAMPAIGN_DIR", "--out --replace",
+    {"plot", cli_plot, CMD_PLOT, "RUN_DIR|CAMPAIGN_DIR", 1, CLI_DATA_NONE,
      "Draws a results folder with gnuplot (PNG). A run's folder (footsim run): its trajectory.csv as\n"
      "  DIR/plot.png: ankle drop, contact points, every chain's joint angles and spring-damper forces\n"
      "  against time (script DIR/plot.gp). A campaign's folder: its chart drawn again from summary.json\n"
      "  as DIR/success.png (chart.dat, chart.gp). DIR is the folder itself unless --out DIR."},
-    {"walk", cli_walk, "SCENARIO", "--json --out --replace --frames --fps --size --camera --exaggerate --video --set --data",
+    {"walk", cli_walk, CMD_WALK, "SCENARIO", 1, CLI_DATA_SCENARIO,
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force. With --frames (or\n"
      "  --out DIR) it also writes DIR/walk.json and the frames of the walk (default DIR:\n"
      "  results/walks/<scenario>/), whole."},
-    {"bench", cli_bench, "precision|stability|speed|equivalence [CAMPAIGN]",
-     "-j --quick --out --replace --set --reference --steps --data",
+    {"bench", cli_bench, CMD_BENCH, "precision|stability|speed|equivalence [CAMPAIGN]", 2, CLI_DATA_NONE,
      "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
      "  refreshed only with --out results/bench):\n"
      "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
@@ -119,26 +218,109 @@ static const command commands[] = {
      "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
      "  worker processes (default: the CPUs it may use; the results do not depend on N), and each\n"
      "  campaign of equivalence in N (default 1, so that wall times compare)."},
-    {"export", cli_export, "DESIGN", "--mjcf --scenario --out --replace --set --data",
+    {"export", cli_export, CMD_EXPORT, "DESIGN", 1, CLI_DATA_DESIGN,
      "Writes the foot as MuJoCo MJCF (docs/export.md) to --out FILE (default results/export/<design>.xml;\n"
      "  a file there that footsim did not export is kept unless --replace):\n"
      "  bodies with their masses and inertias, the hinges as a tree, the springs as spatial tendons, the\n"
      "  contact spheres and box; with --scenario S, in S's start pose with its ground (a heightfield's\n"
      "  samples in FILE's name with .hfield.bin), gravity, step, robot and load."},
-    {"keys", cli_keys, NULL, "",
+    {"keys", cli_keys, CMD_KEYS, NULL, 0, CLI_DATA_NONE,
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
-    {"demo", cli_demo, NULL, "--data",
+    {"demo", cli_demo, CMD_DEMO, NULL, 0, CLI_DATA_NONE,
      "Runs the paper's first experiments (static load, 10 degree tilt) and the stiffness check,\n"
      "  and says where the results went."},
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 
+static int takes(const command *c, const cli_option *o) { return (o->commands & c->id) != 0; }
+
+/* The option called name (exact), or NULL. */
+static const cli_option *option_named(const char *name)
+{
+    for (int k = 0; k < NOPTIONS; k++)
+        if (!strcmp(options[k].name, name))
+            return &options[k];
+    return NULL;
+}
+
+/* The option's value as a command's usage names it. */
+static const char *value_of(const command *c, const cli_option *o)
+{
+    return o->as_file & c->id ? "FILE" : o->value;
+}
+
+/* The names of the options c takes, separated by spaces, into buf. */
+static const char *option_names(const command *c, char *buf, size_t size)
+{
+    size_t n = 0;
+    buf[0] = 0;
+    for (int k = 0; k < NOPTIONS && n < size; k++)
+        if (takes(c, &options[k]))
+            n += (size_t)snprintf(buf + n, size - n, "%s%s", n ? " " : "", options[k].name);
+    return buf;
+}
+
+/* Prints text wrapped to `width` columns, each line after `indent` spaces (the first's already there). */
+static void print_wrapped(FILE *out, const char *text, int indent, int width)
+{
+    int col = indent;
+    const char *p = text;
+    while (*p) {
+        size_t w = strcspn(p, " ");
+        if (col > indent && col + 1 + (int)w > width) {
+            fprintf(out, "\n%*s", indent, "");
+            col = indent;
+        } else if (col > indent) {
+            fputc(' ', out);
+            col++;
+        }
+        fprintf(out, "%.*s", (int)w, p);
+        col += (int)w;
+        p += w;
+        while (*p == ' ')
+            p++;
+    }
+    fputc('\n', out);
+}
+
+/* One option's line of a list: name and value, then its help wrapped beside them; with commands,
+ * which commands take it. */
+static void print_option(FILE *out, const cli_option *o, const char *value, int with_commands)
+{
+    char head[64], text[1024];
+    snprintf(head, sizeof head, "  %s%s%s", o->name, value ? " " : "", value ? value : "");
+    size_t n = (size_t)snprintf(text, sizeof text, "%s", o->help);
+    if (with_commands) {
+        n += (size_t)snprintf(text + n, sizeof text - n, " [");
+        for (int i = 0, first = 1; i < NCOMMANDS && n < sizeof text; i++)
+            if (takes(&commands[i], o)) {
+                n += (size_t)snprintf(text + n, sizeof text - n, "%s%s", first ? "" : ", ", commands[i].name);
+                first = 0;
+            }
+        if (n < sizeof text)
+            snprintf(text + n, sizeof text - n, "]");
+    }
+    int len = (int)strlen(head);
+    enum { COL = 26 };
+    if (len + 2 > COL)
+        fprintf(out, "%s\n%*s", head, COL, "");
+    else
+        fprintf(out, "%s%*s", head, COL - len, "");
+    print_wrapped(out, text, COL, 100);
+}
+
 static void usage(FILE *out)
 {
     fprintf(out, "usage: footsim COMMAND [ARGS] [OPTIONS]\n       footsim --version\n\ncommands:\n");
+    char names[512];
     for (int i = 0; i < NCOMMANDS; i++)
         fprintf(out, "  %-10s %s %s\n", commands[i].name, commands[i].input ? commands[i].input : "",
-                commands[i].options);
+                option_names(&commands[i], names, sizeof names));
+    fprintf(out, "\noptions [the commands that take each]:\n");
+    for (int k = 0; k < NOPTIONS; k++)
+        print_option(out, &options[k], options[k].value, 1);
+    fprintf(out, "  --help, -h                this help; after a command, the command's\n"
+                 "  --version                 the version and the git description footsim was built from\n");
     fprintf(out, "\n'footsim COMMAND --help' says more. Exit status: 0 ok, 1 expectations failed, 2 bad input,\n"
                  "3 numerical failure, 4 results could not be written, 5 out of memory.\n");
 }
@@ -146,57 +328,43 @@ static void usage(FILE *out)
 static void command_help(const command *c)
 {
     printf("usage: footsim %s%s%s", c->name, c->input ? " " : "", c->input ? c->input : "");
-    if (strstr(c->options, "--mjcf"))
-        printf(" --mjcf [--scenario SCENARIO] [--out FILE [--replace]]");
-    else if (strstr(c->options, "--replace") && strstr(c->options, "--out"))
-        printf(" [--out DIR [--replace]]");
-    else if (strstr(c->options, "--out"))
-        printf(" [--out DIR]");
-    if (strstr(c->options, "-j "))
-        printf(" [-j N]");
-    if (strstr(c->options, "--seed"))
-        printf(" [--seed N]");
-    if (strstr(c->options, "--json"))
-        printf(" [--json]");
-    if (strstr(c->options, "--quick"))
-        printf(" [--quick]");
-    if (strstr(c->options, "--force"))
-        printf(" [--force]");
-    if (strstr(c->options, "--equivalence"))
-        printf(" [--equivalence] [--all]");
-    if (strstr(c->options, "--shard"))
-        printf(" [--shard I/N] [--fresh]");
-    if (strstr(c->options, "--steps"))
-        printf(" [--reference S] [--steps S1,S2,...]");
-    if (strstr(c->options, "--height"))
-        printf(" [--height X Y] [--png FILE [--replace]] [--scenario SCENARIO]");
-    if (strstr(c->options, "--frames "))
-        printf(" [--frames [--fps N] [--size WxH] [--camera NAME] [--exaggerate F] [--video]]");
-    if (strstr(c->options, "--frames-of"))
-        printf(" [--frames-of SELECTORS [--fps N] [--size WxH] [--camera NAME] [--exaggerate F]]");
-    if (strstr(c->options, "--set"))
-        printf(" [--set section.key=value]...");
-    if (strstr(c->options, "--data"))
-        printf(" [--data DIR]");
+    for (int k = 0; k < NOPTIONS; k++) {
+        const cli_option *o = &options[k];
+        if (!takes(c, o))
+            continue;
+        const char *open = o->required & c->id ? "" : "[", *close = o->required & c->id ? "" : "]";
+        if (o->arg == ARG_FLAG)
+            printf(" %s%s%s", open, o->name, close);
+        else
+            printf(" %s%s %s%s%s", open, o->name, value_of(c, o), close, o->arg == ARG_REPEAT ? "..." : "");
+    }
     printf("\n\n  %s\n", c->help);
-    if (strstr(c->options, "--replace") && (!strcmp(c->name, "bench") || !strcmp(c->name, "plot")))
+    int any = 0;
+    for (int k = 0; k < NOPTIONS; k++)
+        if (takes(c, &options[k])) {
+            if (!any++)
+                printf("\n  options:\n");
+            print_option(stdout, &options[k], options[k].arg == ARG_FLAG ? NULL : value_of(c, &options[k]), 0);
+        }
+    const cli_option *out = option_named("--out"), *replace = option_named("--replace");
+    if (takes(c, replace) && (c->id & (CMD_BENCH | CMD_PLOT)))
         printf("\n  DIR is written file by file, each whole, never replaced as a folder; a non-empty folder\n"
                "  without footsim's %s marker or only %s files in it is refused unless --replace.\n", FS_MARKER,
                c->name);
-    else if (strstr(c->options, "--replace") && !strstr(c->options, "--out"))
-        printf("\n  An existing FILE is replaced only when it is a PNG already; anything else there (a user's\n"
-               "  notes, data) is refused unless --replace is given.\n");
-    else if (strstr(c->options, "--replace"))
+    else if (takes(c, replace) && (!takes(c, out) || (out->as_file & c->id)))
+        printf("\n  An existing FILE is replaced only when it is %s already; anything else there (a user's\n"
+               "  notes, data) is refused unless --replace is given.\n", c->id & CMD_EXPORT ? "footsim's export" : "a PNG");
+    else if (takes(c, replace))
         printf("\n  DIR is replaced whole, and only when footsim made it (its %s marker, or an earlier\n"
                "  version's files): a non-empty folder of anything else is refused unless --replace is given.\n",
                FS_MARKER);
-    if (strstr(c->options, "--data"))
+    if (takes(c, option_named("--data")))
         printf("\n  A relative design, scenario, terrain or campaign path not found as given is looked for under\n"
                "  --data DIR, then the current folder, then the installed data (%s), each\n"
                "  as given and in its scenarios/, scenarios/feet/ or terrains/ folder ('footsim run static_load.ini'\n"
                "  works anywhere); the shipped scenarios demo and bench run are found the same way.\n",
                cli_data_installed());
-    if (strstr(c->options, "--set"))
+    if (takes(c, option_named("--set")))
         printf("\n  --set overrides one value of the file (or, for a scenario, of its design) without editing\n"
                "  it, checked like the file itself; repeat it for several. 'footsim keys' lists them all.\n"
                "  Paths: a relative path in --set (--set scenario.design=myfoot.ini) is looked for from the\n"
@@ -205,15 +373,12 @@ static void command_help(const command *c)
                "  folder and the installed data, each in scenarios/, terrains/ and itself.\n");
 }
 
-/* Whether the space-separated options list names option as a whole word (--frames is not
- * --frames-of). */
-static int takes_option(const char *options, const char *option)
+static int unknown_option(const command *c, const char *arg)
 {
-    size_t n = strlen(option);
-    for (const char *p = strstr(options, option); p; p = strstr(p + 1, option))
-        if ((p == options || p[-1] == ' ') && (p[n] == ' ' || p[n] == 0))
-            return 1;
-    return 0;
+    char names[512];
+    option_names(c, names, sizeof names);
+    fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg, *names ? names : "no options");
+    return FS_BAD_INPUT;
 }
 
 /* Parses argv after the command name into a, refusing what c does not take. */
@@ -225,119 +390,72 @@ static int parse_args(const command *c, int argc, char **argv, cli_args *a)
             command_help(c);
             return -1;
         }
-        int takes_value = !strcmp(arg, "--out") || !strcmp(arg, "--data") || !strcmp(arg, "--set") || !strcmp(arg, "--fps") ||
-                          !strcmp(arg, "--size") || !strcmp(arg, "--camera") || !strcmp(arg, "--png") ||
-                          !strcmp(arg, "--scenario") || !strcmp(arg, "--height") || !strcmp(arg, "-j") ||
-                          !strcmp(arg, "--seed") || !strcmp(arg, "--exaggerate") || !strcmp(arg, "--frames-of") ||
-                          !strcmp(arg, "--shard") || !strcmp(arg, "--reference") || !strcmp(arg, "--steps");
-        if (!strcmp(arg, "-j") && !strstr(c->options, "-j ")) {
-            fprintf(stderr, "footsim %s: unknown option -j; it takes: %s\n", c->name, *c->options ? c->options : "no options");
-            return 2;
+        const cli_option *o = option_named(arg);
+        const char *attached = NULL; /* -jN */
+        if (!o && !strncmp(arg, "-j", 2) && arg[2]) {
+            o = option_named("-j");
+            attached = arg + 2;
         }
-        if (arg[0] == '-' && arg[1] == '-' && !takes_option(c->options, arg)) {
-            fprintf(stderr, "footsim %s: unknown option %s; it takes: %s\n", c->name, arg,
-                    *c->options ? c->options : "no options");
-            return 2;
+        if (o && !takes(c, o))
+            return unknown_option(c, arg);
+        if (!o && arg[0] == '-' && arg[1] == '-')
+            return unknown_option(c, arg);
+        if (!o) { /* a positional argument */
+            if (c->npositional != 0 && !a->input)
+                a->input = arg;
+            else if (c->npositional == 2 && !a->input2)
+                a->input2 = arg;
+            else if (c->npositional < 0 && a->nmore < CLI_MAX_SET)
+                a->more[a->nmore++] = arg;
+            else {
+                fprintf(stderr, "footsim %s: unexpected argument '%s'; see 'footsim %s --help'\n", c->name, arg,
+                        c->name);
+                return FS_BAD_INPUT;
+            }
+            continue;
         }
-        if (takes_value && i + 1 >= argc) {
-            fprintf(stderr, "footsim %s: %s needs a value\n", c->name, arg);
-            return 2;
+        int nvalues = o->arg == ARG_FLAG || attached ? 0 : o->arg == ARG_PAIR ? 2 : 1;
+        if (i + nvalues >= argc) {
+            if (o->arg == ARG_PAIR)
+                fprintf(stderr, "footsim %s: %s needs two values, %s\n", c->name, arg, o->value);
+            else
+                fprintf(stderr, "footsim %s: %s needs a value\n", c->name, arg);
+            return FS_BAD_INPUT;
         }
-        if (!strcmp(arg, "--height") && i + 2 >= argc) {
-            fprintf(stderr, "footsim %s: --height needs two values, X and Y in metres\n", c->name);
-            return 2;
-        }
-        if (!strcmp(arg, "--out") && a->out) {
-            fprintf(stderr, "footsim %s: --out given twice (%s and %s); give one folder\n", c->name, a->out, argv[i + 1]);
-            return 2;
-        }
-        if (!strcmp(arg, "--out"))
-            a->out = argv[++i];
-        else if (!strcmp(arg, "--height")) {
-            a->height_x = argv[++i];
-            a->height_y = argv[++i];
-        } else if (!strcmp(arg, "--data"))
-            a->data = argv[++i];
-        else if (!strcmp(arg, "--png"))
-            a->png = argv[++i];
-        else if (!strcmp(arg, "--scenario"))
-            a->scenario = argv[++i];
-        else if (!strcmp(arg, "--seed"))
-            a->seed = argv[++i];
-        else if (!strcmp(arg, "-j"))
-            a->jobs = argv[++i];
-        else if (!strncmp(arg, "-j", 2) && strstr(c->options, "-j "))
-            a->jobs = arg + 2;
-        else if (!strcmp(arg, "--shard"))
-            a->shard = argv[++i];
-        else if (!strcmp(arg, "--reference"))
-            a->reference = argv[++i];
-        else if (!strcmp(arg, "--steps"))
-            a->steps = argv[++i];
-        else if (!strcmp(arg, "--fresh"))
-            a->fresh = 1;
-        else if (!strcmp(arg, "--replace"))
-            a->replace = 1;
-        else if (!strcmp(arg, "--quick"))
-            a->quick = 1;
-        else if (!strcmp(arg, "--force") && strstr(c->options, "--force"))
-            a->force = 1;
-        else if (!strcmp(arg, "--equivalence") && strstr(c->options, "--equivalence"))
-            a->equivalence = 1;
-        else if (!strcmp(arg, "--all") && strstr(c->options, "--all"))
-            a->all = 1;
-        else if (!strcmp(arg, "--json"))
-            a->json = 1;
-        else if (!strcmp(arg, "--mjcf"))
-            a->mjcf = 1;
-        else if (!strcmp(arg, "--frames"))
-            a->frames = 1;
-        else if (!strcmp(arg, "--video"))
-            a->video = a->frames = 1;
-        else if (!strcmp(arg, "--fps"))
-            a->fps = argv[++i];
-        else if (!strcmp(arg, "--size"))
-            a->size = argv[++i];
-        else if (!strcmp(arg, "--camera"))
-            a->camera = argv[++i];
-        else if (!strcmp(arg, "--exaggerate"))
-            a->exaggerate = argv[++i];
-        else if (!strcmp(arg, "--frames-of"))
-            a->frames_of = argv[++i];
-        else if (!strcmp(arg, "--set")) {
+        char *base = (char *)a;
+        const char **field = (const char **)(void *)(base + o->field);
+        switch (o->arg) {
+        case ARG_FLAG:
+            *(int *)(void *)(base + o->field) = 1;
+            break;
+        case ARG_VALUE:
+            if (*field && o->field == FIELD(out)) {
+                fprintf(stderr, "footsim %s: --out given twice (%s and %s); give one folder\n", c->name, a->out,
+                        argv[i + 1]);
+                return FS_BAD_INPUT;
+            }
+            *field = attached ? attached : argv[++i];
+            break;
+        case ARG_PAIR:
+            *field = argv[++i];
+            *(const char **)(void *)(base + o->field2) = argv[++i];
+            break;
+        case ARG_REPEAT:
             if (a->nset == CLI_MAX_SET) {
-                fprintf(stderr, "footsim %s: at most %d --set options\n", c->name, CLI_MAX_SET);
-                return 2;
+                fprintf(stderr, "footsim %s: at most %d %s options\n", c->name, CLI_MAX_SET, o->name);
+                return FS_BAD_INPUT;
             }
             a->set[a->nset++] = argv[++i];
-        } else if (c->input && !a->input)
-            a->input = arg;
-        else if (c->input && strchr(c->input, ' ') && !a->input2)
-            a->input2 = arg;
-        else if (c->input && strstr(c->input, "...") && a->nmore < CLI_MAX_SET)
-            a->more[a->nmore++] = arg;
-        else {
-            fprintf(stderr, "footsim %s: unexpected argument '%s'; see 'footsim %s --help'\n", c->name, arg, c->name);
-            return 2;
+            break;
         }
     }
+    if (a->video)
+        a->frames = 1;
     if (c->input && !a->input) {
         fprintf(stderr, "footsim %s: give a %s file; see 'footsim %s --help'\n", c->name, c->input, c->name);
-        return 2;
+        return FS_BAD_INPUT;
     }
     return 0;
-}
-
-/* What kind of data file a command's positional arguments are (compare's are results, bench's a name). */
-static cli_data_kind data_kind(const char *command)
-{
-    static const char *const scenarios[] = {"run", "render-compare", "trial", "walk", "campaign", "optimize"};
-    for (size_t i = 0; i < sizeof scenarios / sizeof *scenarios; i++)
-        if (!strcmp(command, scenarios[i]))
-            return CLI_DATA_SCENARIO;
-    if (!strcmp(command, "model") || !strcmp(command, "stiffness") || !strcmp(command, "export"))
-        return CLI_DATA_DESIGN;
-    return !strcmp(command, "terrain") ? CLI_DATA_TERRAIN : CLI_DATA_NONE;
 }
 
 int cli_report(int status, const char *message)
@@ -360,6 +478,24 @@ void *cli_zalloc(size_t size)
     if (!p)
         cli_report(FS_NO_MEMORY, "out of memory");
     return p;
+}
+
+int cli_print_json(cJSON *root)
+{
+    return fs_json_print(stdout, root) ? 0 : cli_report(FS_NO_MEMORY, "out of memory");
+}
+
+int cli_with_design(const cli_args *a, int (*command)(const cli_args *a, const fs_scenario *sc))
+{
+    fs_scenario *sc = cli_zalloc(sizeof *sc);
+    if (!sc)
+        return FS_NO_MEMORY;
+    fs_error err;
+    int s = fs_scenario_for_design(a->input, a->set, a->nset, sc, &err) != FS_OK ? cli_report(err.status, err.message)
+                                                                                  : command(a, sc);
+    fs_scenario_free(sc);
+    free(sc);
+    return s;
 }
 
 /* The library's warnings (fs_warn), said on stderr. */
@@ -397,7 +533,7 @@ int main(int argc, char **argv)
             return s;
         cli_data_folders();
         /* relative data files not found as given: --data, here, the installed data */
-        cli_data_kind kind = data_kind(a.command);
+        cli_data_kind kind = commands[i].data;
         char input[FS_PATH_MAX], input2[FS_PATH_MAX], scenario[FS_PATH_MAX]; /* live until the command ends */
         a.input = cli_data_find(a.input, kind, input, sizeof input);
         a.input2 = cli_data_find(a.input2, kind, input2, sizeof input2);

@@ -31,5 +31,5 @@ if command -v xmllint >/dev/null; then
 else
     echo "cli_export: no xmllint (Debian libxml2-utils); well-formedness is test_export_mjcf's" >&2
 fi
-check '"$fs" export --help | grep -q -- "--mjcf \[--scenario SCENARIO\] \[--out FILE \[--replace\]\]"'
+check '"$fs" export --help | grep -q -- "export DESIGN --mjcf \[--scenario SCENARIO\] \[--out FILE\] \[--replace\]"'
 finish

@@ -5,6 +5,7 @@
 
 #include "footsim/api/fs_api.h"
 #include "footsim/experiment/fs_trial.h"
+#include "footsim/io/fs_output.h"
 #include "footsim/sim/fs_sim.h"
 
 #include <stdlib.h>
@@ -244,6 +245,63 @@ static void stiffness_and_law(void)
     fs_scenario_close(sc);
 }
 
+/* What the campaign's scalar callback saw. */
+typedef struct campaign_seen {
+    int calls, last_done, total, stop_at;
+} campaign_seen;
+
+static int campaign_progress(int done, int total, int failed, const char *say, void *user)
+{
+    campaign_seen *s = user;
+    (void)failed;
+    if (say)
+        return 1;
+    s->calls++, s->last_done = done, s->total = total;
+    return !(s->stop_at && done >= s->stop_at);
+}
+
+/* A campaign behind its handle: counted, refused with file:line, stopped by its callback's 0 (the
+ * journal kept, no folder), then finished by the same call; run again, nothing to do. */
+static void campaign_runs_stops_and_resumes(void)
+{
+    char dir[64], ini[128], out[128];
+    snprintf(dir, sizeof dir, "/tmp/fs_api_campaign_XXXXXX");
+    REQUIRE(mkdtemp(dir) != NULL);
+    snprintf(ini, sizeof ini, "%s/two.ini", dir);
+    snprintf(out, sizeof out, "%s/out", dir);
+    FILE *f = fopen(ini, "w");
+    REQUIRE(f != NULL);
+    fprintf(f, "[campaign]\ntrial = %s/scenarios/campaign_test_trial.ini\nseeds = 2\n[foot.bio]\nfile = %s/scenarios/feet/"
+            "biomimetic.ini\n[foot.flat]\nfile = %s/scenarios/feet/flat.ini\n[terrain.flat]\nfile = %s/terrains/flat.ini\n",
+            FS_SOURCE_DIR, FS_SOURCE_DIR, FS_SOURCE_DIR, FS_SOURCE_DIR);
+    fclose(f);
+    fs_error err;
+    const char *bad[] = {"campaign.seeds=0"};
+    CHECK(fs_campaign_open(ini, bad, 1, &err) == NULL && err.status == FS_BAD_INPUT && strstr(err.message, "seeds"));
+    const char *sets[] = {"run.duration_s=0.1"};
+    fs_campaign_handle *c = fs_campaign_open(ini, sets, 1, &err);
+    REQUIRE(c != NULL);
+    CHECK(!strcmp(fs_campaign_title(c), "two") && fs_campaign_trial_count(c) == 4 && fs_campaign_cell_count(c) == 2);
+    int how = -5;
+    CHECK(fs_campaign_execute(c, out, 2, 3, 2, 0, campaign_progress, NULL, &how, &err) == FS_BAD_INPUT &&
+          how == FS_CAMPAIGN_FAILED);
+    campaign_seen stop = {.stop_at = 1};
+    CHECK(fs_campaign_execute(c, out, 2, 0, 0, 0, campaign_progress, &stop, &how, &err) == FS_OK);
+    CHECK(how == FS_CAMPAIGN_STOPPED && stop.total == 4 && access(out, F_OK) != 0);
+    char journal[160];
+    snprintf(journal, sizeof journal, "%s.journal/journal", out);
+    CHECK(access(journal, F_OK) == 0);
+    campaign_seen go = {0};
+    CHECK(fs_campaign_execute(c, out, 2, 0, 0, 0, campaign_progress, &go, &how, &err) == FS_OK);
+    CHECK(how == FS_CAMPAIGN_DONE && go.last_done == 4 && access(journal, F_OK) != 0);
+    char summary[160];
+    snprintf(summary, sizeof summary, "%s/summary.json", out);
+    CHECK(access(summary, F_OK) == 0);
+    CHECK(fs_campaign_execute(c, out, 1, 0, 0, 0, NULL, NULL, &how, &err) == FS_OK && how == FS_CAMPAIGN_ALREADY);
+    fs_campaign_close(c);
+    fs_remove_tree(dir);
+}
+
 FS_TEST_MAIN(TEST(scenario_opens_with_overrides_and_refuses_bad_input), TEST(sim_settles_and_its_accessors_agree),
              TEST(torque_turns_the_foot_and_bad_ones_are_refused), TEST(trial_is_the_library_s_and_named),
-             TEST(stiffness_and_law))
+             TEST(stiffness_and_law), TEST(campaign_runs_stops_and_resumes))

@@ -5,6 +5,7 @@
  * campaign's summary.json (fs_campaign_write_summary) must each be either whole (the text made
  * without any refusal) or refused with FS_NO_MEMORY and nothing written; never one short of a field. */
 #include "fs_test.h"
+#include "fs_test_refuse.h"
 
 #include "footsim/campaign/fs_campaign.h"
 #include "footsim/experiment/fs_run.h"
@@ -17,62 +18,18 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-static long allocs_left = LONG_MAX; /* allocations cJSON gets before the one refused */
-static int refused;                 /* whether one was */
-
-static void *refusing_malloc(size_t n)
-{
-    if (allocs_left-- == 0) {
-        refused = 1;
-        return NULL;
-    }
-    return malloc(n);
-}
-
-/* Refuses the k-th allocation cJSON makes from now on, and only that one (k = 0: the first; LONG_MAX:
- * none), so that each allocation, the print included, is refused in turn. */
-static void refuse_after(long k)
-{
-    allocs_left = k;
-    refused = 0;
-}
+static cJSON *model_of(const void *sc, fs_error *err) { return fs_model_json(sc, err); }
 
 static void model_dump_is_whole_or_refused(void)
 {
     static fs_scenario sc;
     fs_error err;
     REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &sc, &err) == FS_OK);
-    cJSON *whole = fs_model_json(&sc, &err);
-    REQUIRE(whole != NULL);
-    char *want = cJSON_Print(whole);
-    REQUIRE(want != NULL);
-    cJSON_Delete(whole);
-    cJSON_Hooks hooks = {refusing_malloc, free};
-    cJSON_InitHooks(&hooks);
-    int refusals = 0, partial = 0;
-    for (long k = 0; k < 100000; k++) {
-        refuse_after(k);
-        fs_error e = {FS_OK, ""};
-        cJSON *root = fs_model_json(&sc, &e);
-        int was_refused = refused;
-        refuse_after(LONG_MAX);
-        if (!root) {
-            refusals++;
-            CHECK(was_refused && e.status == FS_NO_MEMORY);
-            continue;
-        }
-        char *got = cJSON_Print(root);
-        cJSON_Delete(root);
-        partial += strcmp(got, want) != 0;
-        free(got);
-        if (!was_refused)
-            break; /* every allocation the build makes has been refused once */
-    }
-    cJSON_InitHooks(NULL);
+    int partial;
+    int refusals = fs_json_whole_or_refused(model_of, &sc, &partial);
     printf("  model dump: %d builds refused, %d partial\n", refusals, partial);
     CHECK(refusals > 100); /* the dump makes hundreds of nodes: each refusal was tried */
     CHECK(partial == 0);
-    free(want);
     fs_scenario_free(&sc);
 }
 

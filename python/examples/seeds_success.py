@@ -5,8 +5,8 @@
 
 Each trial is footsim's own (Scenario.trial): the pose drawn from the seed, the outcome judged by
 footsim's rules. The pitch-stiffness law's verdict for each foot under the robot is printed beside
-its rate. Campaigns (many cells, statistics, resumable runs in a pool of workers) are the command's
-`footsim campaign` until they move into the library (issue 31, item 3)."""
+its rate. A campaign (many cells, statistics, resumable runs in a pool of workers) runs from Python
+too: campaign_success.py."""
 import argparse
 
 import matplotlib

@@ -15,12 +15,20 @@ Errors are FootsimError with footsim's own message ("file:line: what is wrong, a
 right") and its status (2 bad input, 3 numerical failure, 5 no memory). The library's warnings
 (a heightmap covering part of the reach, ODE's messages) arrive as FootsimWarning.
 
-Campaigns are not here yet: running one lives in the footsim command until it moves into the
-library (issue 31, item 3). Loop over trials (Scenario.trial) meanwhile, or run
-`footsim campaign`.
+Campaigns run in the library's pool of worker processes, as `footsim campaign` runs them (the same
+files, byte for byte), with a progress callback whose False stops the campaign cleanly and
+resumably; Ctrl-C does the same and is raised again as KeyboardInterrupt once the workers are gone:
+
+    c = footsim.Campaign("landing_ci.ini", set={"campaign.seeds": 3})
+    res = c.run("out/landing", jobs=2, progress=lambda p: print(p.done, p.total) or True)
+    print(res.rows[0]["success_rate"])
 """
 import ctypes
+import json
 import math
+import os
+import signal
+import threading
 import warnings
 from collections import namedtuple
 from ctypes import byref, c_char_p, c_double, c_int
@@ -31,8 +39,8 @@ import numpy as np
 from . import _lib
 from ._lib import Error as _Error, lib as _c
 
-__all__ = ["FootsimError", "FootsimWarning", "Scenario", "Sim", "TrialResult", "PitchLaw", "version",
-           "find_data", "has_renderer", "metric_names"]
+__all__ = ["FootsimError", "FootsimWarning", "Scenario", "Sim", "TrialResult", "PitchLaw", "Campaign",
+           "CampaignProgress", "CampaignResult", "version", "find_data", "has_renderer", "metric_names"]
 
 STATUS_NAMES = {1: "expectation failed", 2: "bad input", 3: "numerical failure", 4: "cannot write",
                 5: "no memory"}
@@ -131,34 +139,40 @@ class _Handle:
             raise ValueError(f"the {self._kind} is closed")
         return self._h
 
+    _closer = None  # the C function that releases the handle
+
+    def close(self):
+        if getattr(self, "_h", None):
+            getattr(_c, self._closer)(self._h)
+            self._h = None
+
+    def _open_file(self, opener, path, set):
+        """Opens a file with overrides through opener (fs_scenario_open, fs_campaign_open, ...)."""
+        self.path = find_data(path)
+        sets = [s.encode() for s in _overrides(set)]
+        arr = (c_char_p * max(len(sets), 1))(*sets)
+        err = _Error()
+        self._h = opener(self.path.encode(), arr, len(sets), byref(err))
+        if not self._h:
+            _raise(err)
+        self.overrides = tuple(s.decode() for s in sets)
+
 
 class Scenario(_Handle):
     """A scenario file loaded with overrides: footsim.Scenario("landing_trial.ini",
     set={"run.step_s": 2e-4}) (set may also be a list of "section.key=value"), checked as the
     command's --set is: anything wrong raises FootsimError before anything runs."""
     _kind = "scenario"
+    _closer = "fs_scenario_close"
 
     def __init__(self, path, set=None, _open=None):
-        self.path = find_data(path)
-        sets = [s.encode() for s in _overrides(set)]
-        arr = (c_char_p * max(len(sets), 1))(*sets)
-        err = _Error()
-        self._h = (_open or _c.fs_scenario_open)(self.path.encode(), arr, len(sets), byref(err))
-        if not self._h:
-            _raise(err)
-        self.overrides = tuple(s.decode() for s in sets)
+        self._open_file(_open or _c.fs_scenario_open, path, set)
 
     @classmethod
     def for_design(cls, path, set=None):
         """A design file (a foot) alone, every other key at its default, for the stiffness model and
         the law: footsim.Scenario.for_design("feet/biomimetic.ini", set={"springs.k_d1_N_per_m": 9000})."""
         return cls(path, set, _open=_c.fs_scenario_open_design)
-
-    def close(self):
-        if getattr(self, "_h", None):
-            _c.fs_scenario_close(self._h)
-            self._h = None
-
 
     @property
     def name(self):
@@ -425,3 +439,117 @@ class Sim(_Handle):
 
     def __repr__(self):
         return f"Sim(t={self.time:.4f} s, {self.nbodies} bodies)" if self._h else "Sim(closed)"
+
+
+CampaignProgress = namedtuple("CampaignProgress", "done total failed say")
+CampaignProgress.__doc__ = """What a campaign's progress callback is given: trials done (a resumed
+journal's included) of total, failed (numerically, or their worker lost) and say (a line worth
+saying: a lost worker, a resume; else None)."""
+
+
+class CampaignResult:
+    """How Campaign.run ended: status "done", "stopped" (the callback returned False: the finished
+    trials are kept in dir + ".journal" and the same run goes on from there) or "already" (dir held
+    these results; nothing ran); dir, the results folder; summary, its summary.json (None unless
+    written); rows, the summary's rows (a dict a cell: foot, terrain, robot, trials, landed,
+    success_rate, ci_low, ci_high, medians ...)."""
+
+    __slots__ = ("status", "dir", "summary")
+
+    def __init__(self, status, dir):
+        self.status, self.dir = status, dir
+        path = Path(dir) / "summary.json"
+        self.summary = json.loads(path.read_text()) if status != "stopped" and path.is_file() else None
+
+    @property
+    def stopped(self):
+        return self.status == "stopped"
+
+    @property
+    def rows(self):
+        return self.summary["rows"] if self.summary else []
+
+    def __repr__(self):
+        return f"CampaignResult({self.status!r}, {str(self.dir)!r}, {len(self.rows)} rows)"
+
+
+class Campaign(_Handle):
+    """A campaign file loaded with overrides: footsim.Campaign("landing_ci.ini",
+    set={"campaign.seeds": 3, "run.step_s": 2e-4}); a campaign section's key changes the campaign
+    file, any other goes to every trial (as the command's --set). Every trial scenario is loaded and
+    checked here: anything wrong raises FootsimError before anything runs."""
+    _kind = "campaign"
+    _closer = "fs_campaign_close"
+
+    def __init__(self, path, set=None):
+        self._open_file(_c.fs_campaign_open, path, set)
+
+    @property
+    def name(self):
+        return _c.fs_campaign_title(self._handle()).decode()
+
+    @property
+    def ntrials(self):
+        return _c.fs_campaign_trial_count(self._handle())
+
+    @property
+    def ncells(self):
+        return _c.fs_campaign_cell_count(self._handle())
+
+    def __repr__(self):
+        return f"Campaign({self.path!r}, set={list(self.overrides)!r})" if self._h else "Campaign(closed)"
+
+    def run(self, out=None, jobs=None, progress=None, shard=None, fresh=False, replace=False):
+        """Runs every trial in `jobs` worker processes (None: the CPUs it may use) and writes the
+        campaign's files into out (default results/campaigns/<name>, as the command), the same bytes
+        as `footsim campaign FILE --out OUT` (no success.png: gnuplot's, drawn by the command).
+        progress(CampaignProgress) is called after every trial and at least every 0.2 s; its False
+        stops the campaign cleanly (the finished trials kept in OUT.journal; run again to go on).
+        Ctrl-C stops it the same way, then raises KeyboardInterrupt. shard=(i, n) runs the i-th of n
+        shares (OUT/trials.journal; `footsim merge` joins them); fresh starts over. Returns a
+        CampaignResult; a refusal or failure raises FootsimError."""
+        out = str(out) if out is not None else os.path.join("results", "campaigns", self.name)
+        i, n = (0, 0) if shard is None else (int(shard[0]), int(shard[1]))
+        interrupted = []
+        raised = []
+
+        def relay(done, total, failed, say, _user):
+            if interrupted or raised:
+                return 0
+            if progress is None:
+                return 1
+            try:
+                p = CampaignProgress(done, total, failed, say.decode(errors="replace") if say else None)
+                return 0 if progress(p) is False else 1
+            except BaseException as e:  # noqa: BLE001 - raised again once the library is out
+                raised.append(e)
+                return 0
+
+        # While C code runs, Python's SIGINT handler runs only when the callback next enters Python;
+        # there it must not raise through ctypes: a handler of our own notes Ctrl-C, the callback
+        # stops the campaign, and the handler that was there runs once the workers are gone.
+        previous = None
+        if threading.current_thread() is threading.main_thread():
+            previous = signal.getsignal(signal.SIGINT)
+            if previous in (signal.SIG_IGN, None):
+                previous = None
+            else:
+                signal.signal(signal.SIGINT, lambda signum, frame: interrupted.append(signum))
+        fn = _lib.PROGRESS_FN(relay)
+        how, err = c_int(), _Error()
+        flags = (1 if fresh else 0) | (2 if replace else 0)
+        try:
+            status = _c.fs_campaign_execute(self._handle(), out.encode(), int(jobs or 0), i, n, flags, fn, None,
+                                            byref(how), byref(err))
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
+        if raised:
+            raise raised[0]
+        if status != 0:
+            _raise(err)
+        if interrupted:
+            if callable(previous):
+                previous(signal.SIGINT, None)  # Python's own raises KeyboardInterrupt
+            raise KeyboardInterrupt(f"campaign {self.name} stopped; its finished trials are kept in {out}.journal")
+        return CampaignResult({0: "done", 1: "stopped", 2: "already"}.get(how.value, "done"), out)

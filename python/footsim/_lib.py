@@ -74,6 +74,7 @@ class Error(ctypes.Structure):
 ERR = POINTER(Error)
 DP = POINTER(c_double)
 WARNING_FN = ctypes.CFUNCTYPE(None, c_char_p, c_void_p)
+PROGRESS_FN = ctypes.CFUNCTYPE(c_int, c_int, c_int, c_int, c_char_p, c_void_p)
 
 
 def _sig(l, name, restype, *argtypes):
@@ -126,6 +127,13 @@ for name, res, *args in [
     ("fs_scenario_chain_stiffness", c_int, c_void_p, c_int, DP, DP, ERR),
     ("fs_scenario_pitch_stiffness", c_int, c_void_p, c_double, DP, ERR),
     ("fs_scenario_pitch_law", c_int, c_void_p, c_double, DP, DP, DP, DP, POINTER(c_int), ERR),
+    ("fs_campaign_open", c_void_p, c_char_p, POINTER(c_char_p), c_int, ERR),
+    ("fs_campaign_close", None, c_void_p),
+    ("fs_campaign_title", c_char_p, c_void_p),
+    ("fs_campaign_trial_count", c_int, c_void_p),
+    ("fs_campaign_cell_count", c_int, c_void_p),
+    ("fs_campaign_execute", c_int, c_void_p, c_char_p, c_int, c_int, c_int, c_int, PROGRESS_FN, c_void_p,
+     POINTER(c_int), ERR),
 ]:
     _sig(lib, name, res, *args)
 

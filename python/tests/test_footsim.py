@@ -171,6 +171,9 @@ def test_examples_run(tmp_path):
     assert "touchdown at t = 0.03" in text
     text = _example("seeds_success", ["--seeds", "1"], tmp_path)
     assert "biomimetic" in text and "flat" in text
+    text = _example("campaign_success", ["--seeds", "1", "-j", "2", "--set", "run.duration_s=0.3", "--dir",
+                                         str(tmp_path / "camp")], tmp_path)
+    assert text.count(" landed ") == 12 and (tmp_path / "camp" / "summary.json").is_file()
 
 
 def test_installed_package_finds_its_library_and_data(tmp_path):

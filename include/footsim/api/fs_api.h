@@ -17,8 +17,8 @@
  *   fs_sim_close may follow); warnings go to the handler of fs_warning_handler (fs_error.h).
  * - Handles are not shared between threads: one thread steps one simulation at a time.
  *
- * What is not here yet: campaigns. Running one (its pool of workers, resume, shards) lives in the
- * command (app/cli_campaign.c) until it moves into the library (issue 31, item 3). */
+ * - A campaign runs its trials in forked worker processes that run only C code and leave with
+ *   _exit (sound after a fork from Python); its progress callback runs in the caller's process. */
 #ifndef FS_API_H
 #define FS_API_H
 
@@ -140,5 +140,34 @@ fs_status fs_scenario_pitch_stiffness(const fs_scenario *sc, double load_N, doub
  * (each may be NULL). FS_BAD_INPUT for a scenario without a robot. */
 fs_status fs_scenario_pitch_law(const fs_scenario *sc, double K_foot, double *K, double *demand,
                                 double *critical_height_m, double *lean_rad, int *stands, fs_error *err);
+
+/* ---- campaigns (fs_campaign_run.h) --------------------------------------------------------- */
+
+/* Loads a campaign file with overrides (as the command's --set: a campaign section's key goes to
+ * the campaign file, any other to every trial), every trial scenario loaded and checked: NULL with
+ * err set when anything is wrong, before anything runs. */
+typedef struct fs_campaign_handle fs_campaign_handle;
+fs_campaign_handle *fs_campaign_open(const char *path, const char *const *overrides, int noverrides, fs_error *err);
+void fs_campaign_close(fs_campaign_handle *h);
+/* The file's base name without .ini; its trials (feet x terrains x robots x seeds) and cells. */
+const char *fs_campaign_title(const fs_campaign_handle *h);
+int fs_campaign_trial_count(const fs_campaign_handle *h);
+int fs_campaign_cell_count(const fs_campaign_handle *h);
+
+/* Told the trials done (a resumed journal's included), the total and the failures after every
+ * trial and at least every 0.2 s, and each line worth saying in `say` (else NULL); its 0 stops the
+ * campaign cleanly and resumably. */
+typedef int (*fs_campaign_progress_cb)(int done, int total, int failed, const char *say, void *user);
+enum { FS_CAMPAIGN_FRESH = 1, FS_CAMPAIGN_REPLACE = 2 };        /* flags */
+enum { FS_CAMPAIGN_FAILED = -1, FS_CAMPAIGN_DONE = 0, FS_CAMPAIGN_STOPPED = 1, FS_CAMPAIGN_ALREADY = 2 }; /* *how */
+/* Runs the campaign into the results folder dir as `footsim campaign FILE --out DIR -j jobs` does
+ * (the same files, byte for byte; no success.png: that is gnuplot's, run by the command): jobs
+ * worker processes (<= 0: the CPUs it may use), shard/nshards (0/0: the whole campaign; else
+ * DIR/trials.journal), flags FS_CAMPAIGN_FRESH (start over) and FS_CAMPAIGN_REPLACE (replace a
+ * folder footsim did not make); resumed from DIR.journal/ when a run stopped. *how: DONE, STOPPED
+ * (the callback's 0: the finished trials kept in DIR.journal/; the same call goes on), ALREADY
+ * (DIR holds these results: nothing ran). */
+fs_status fs_campaign_execute(fs_campaign_handle *h, const char *dir, int jobs, int shard, int nshards, int flags,
+                              fs_campaign_progress_cb progress, void *user, int *how, fs_error *err);
 
 #endif

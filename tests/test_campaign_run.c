@@ -1,0 +1,270 @@
+/* Tests of campaign_run.c (fs_campaign_run.h), the campaign runner the command and Python share: a
+ * small campaign (2 feet x 1 terrain x 3 seeds, short trials) run in two workers writes the same
+ * bytes as run in one; a progress callback that returns 0 stops it with its finished trials in the
+ * journal and nothing else written, and the same call finishes it into the same bytes; its shards
+ * merged are the same bytes too, and a missing shard is named; a journal of other overrides is
+ * refused and kept; a folder holding the results runs nothing; a worker that exits with status 3
+ * makes its trial failed_numerics, said through the callback. */
+#include "fs_test.h"
+
+#include "footsim/campaign/fs_campaign_run.h"
+#include "footsim/io/fs_output.h"
+
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static char tmp[64];
+static const char *const FILES[] = {"summary.json", "summary.csv", "summary.md", "trials.csv", "schema.sql",
+                                    "chart.dat", "chart.gp"};
+enum { NFILES = sizeof FILES / sizeof FILES[0], NTRIALS = 6 };
+static const char *const SETS[] = {"run.duration_s=0.15"};
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    REQUIRE(f != NULL);
+    fputs(text, f);
+    fclose(f);
+}
+
+/* $tmp/trial.ini (the campaign tests' trial, paths absolute) and $tmp/small.ini. */
+static void make_campaign(void)
+{
+    if (tmp[0])
+        return;
+    snprintf(tmp, sizeof tmp, "/tmp/fs_campaign_run_XXXXXX");
+    REQUIRE(mkdtemp(tmp) != NULL);
+    char path[256], text[2048];
+    snprintf(path, sizeof path, "%s/trial.ini", tmp);
+    snprintf(text, sizeof text, "[scenario]\ndesign = %s/scenarios/feet/biomimetic.ini\nterrain = %s/terrains/flat.ini\n"
+             "[start]\ndrop_m = 0.001\n[load]\nmass_kg = 0\n[robot]\ndesign = %s/scenarios/robots/drop_weight.ini\n"
+             "[run]\nduration_s = 1.0\nstep_s = 1e-4\ncontact_layer_m = 5e-4\n[landing]\nlanded_tilt_deg = 15\n",
+             FS_SOURCE_DIR, FS_SOURCE_DIR, FS_SOURCE_DIR);
+    write_text(path, text);
+    snprintf(path, sizeof path, "%s/small.ini", tmp);
+    snprintf(text, sizeof text, "[campaign]\ntrial = trial.ini\nseeds = 3\n[foot.bio]\nfile = %s/scenarios/feet/biomimetic.ini\n"
+             "[foot.flat]\nfile = %s/scenarios/feet/flat.ini\n[terrain.bumpy]\nfile = %s/terrains/simply_uneven.ini\n",
+             FS_SOURCE_DIR, FS_SOURCE_DIR, FS_SOURCE_DIR);
+    write_text(path, text);
+}
+
+/* The campaign loaded with sets, its head for shard/nshards (1/1: whole). */
+typedef struct loaded {
+    fs_campaign c;
+    fs_journal_head h;
+} loaded;
+
+static loaded *load(const char *const *sets, int nsets, int shard, int nshards)
+{
+    make_campaign();
+    char path[256];
+    snprintf(path, sizeof path, "%s/small.ini", tmp);
+    loaded *l = calloc(1, sizeof *l);
+    fs_error err;
+    REQUIRE(l != NULL);
+    REQUIRE(fs_campaign_load(path, sets, nsets, &l->c, &err) == FS_OK);
+    REQUIRE(fs_journal_head_of(&l->c, path, sets, nsets, shard, nshards, &l->h, &err) == FS_OK);
+    return l;
+}
+
+static void unload(loaded *l)
+{
+    fs_journal_head_free(&l->h);
+    fs_campaign_free(&l->c);
+    free(l);
+}
+
+/* What the callbacks saw. */
+typedef struct seen {
+    int calls, last_done, total, went_back, stop_at;
+    char said[8][512];
+    int nsaid;
+} seen;
+
+static int watch(const fs_campaign_progress *p, void *user)
+{
+    seen *s = user;
+    if (p->say) {
+        if (s->nsaid < 8)
+            snprintf(s->said[s->nsaid++], sizeof s->said[0], "%s", p->say);
+        return 1;
+    }
+    s->went_back += p->done < s->last_done;
+    s->last_done = p->done;
+    s->total = p->total;
+    s->calls++;
+    return !(s->stop_at > 0 && p->done >= s->stop_at);
+}
+
+static int run_into(loaded *l, const char *name, int jobs, seen *s, const fs_campaign_test_hooks *t,
+                    fs_campaign_row *rows, fs_campaign_state *st, fs_error *err)
+{
+    char dir[256];
+    snprintf(dir, sizeof dir, "%s/%s", tmp, name);
+    fs_campaign_run_opts o = {.jobs = jobs, .shard = l->h.nshards > 1 ? l->h.shard : 0,
+                              .nshards = l->h.nshards > 1 ? l->h.nshards : 0, .progress = watch, .user = s, .test = t};
+    return fs_campaign_run(&l->c, &l->h, dir, &o, rows, st, err);
+}
+
+/* Whether every file of folders a and b (under tmp) is the same bytes. */
+static int same_files(const char *a, const char *b)
+{
+    int same = 1;
+    for (int i = 0; i < NFILES; i++) {
+        char pa[256], pb[256];
+        snprintf(pa, sizeof pa, "%s/%s/%s", tmp, a, FILES[i]);
+        snprintf(pb, sizeof pb, "%s/%s/%s", tmp, b, FILES[i]);
+        FILE *fa = fopen(pa, "rb"), *fb = fopen(pb, "rb");
+        int ca = 0, cb = 0;
+        if (!fa || !fb)
+            same = 0;
+        while (fa && fb && same && (ca = fgetc(fa)) == (cb = fgetc(fb)) && ca != EOF)
+            ;
+        if (fa && fb && ca != cb) {
+            fprintf(stderr, "  %s differs between %s and %s\n", FILES[i], a, b);
+            same = 0;
+        }
+        if (fa)
+            fclose(fa);
+        if (fb)
+            fclose(fb);
+    }
+    return same;
+}
+
+static int exists(const char *name)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", tmp, name);
+    struct stat st;
+    return lstat(path, &st) == 0;
+}
+
+static void test_workers_do_not_change_the_bytes(void)
+{
+    loaded *l = load(SETS, 1, 1, 1);
+    fs_campaign_row rows[2];
+    fs_campaign_state st;
+    fs_error err;
+    seen two = {0}, one = {0};
+    REQUIRE(run_into(l, "two", 2, &two, NULL, rows, &st, &err) == FS_OK);
+    CHECK(st.committed && !st.stopped && !st.finished_already && !st.journal_kept && st.total == NTRIALS);
+    CHECK(two.last_done == NTRIALS && two.total == NTRIALS && !two.went_back && two.calls >= NTRIALS);
+    CHECK(rows[0].trials == 3 && rows[1].trials == 3 && rows[0].foot == 0 && rows[1].foot == 1);
+    CHECK(!exists("two.journal"));
+    REQUIRE(run_into(l, "one", 1, &one, NULL, rows, &st, &err) == FS_OK);
+    CHECK(same_files("two", "one"));
+    /* run again: the folder holds these results, nothing runs */
+    seen again = {0};
+    REQUIRE(run_into(l, "two", 2, &again, NULL, rows, &st, &err) == FS_OK);
+    CHECK(st.finished_already && !st.committed && again.calls == 0);
+    unload(l);
+}
+
+static void test_a_stop_is_resumed_into_the_same_bytes(void)
+{
+    loaded *l = load(SETS, 1, 1, 1);
+    fs_campaign_row rows[2];
+    fs_campaign_state st;
+    fs_error err;
+    seen stop = {.stop_at = 2};
+    REQUIRE(run_into(l, "stopped", 2, &stop, NULL, rows, &st, &err) == FS_OK);
+    CHECK(st.stopped && !st.committed && st.journal_kept && st.total == NTRIALS);
+    CHECK(st.kept >= 2 && st.kept < NTRIALS);
+    CHECK(!exists("stopped") && exists("stopped.journal/journal"));
+    /* a journal of other overrides is refused, and kept */
+    static const char *const other[] = {"run.duration_s=0.2"};
+    loaded *o = load(other, 1, 1, 1);
+    seen refused = {0};
+    CHECK(run_into(o, "stopped", 2, &refused, NULL, rows, &st, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "another run of this campaign") != NULL && strstr(err.message, "--fresh") != NULL);
+    CHECK(exists("stopped.journal/journal") && refused.calls == 0);
+    unload(o);
+    int kept = 0;
+    {
+        char want[64];
+        seen go = {0};
+        REQUIRE(run_into(l, "stopped", 2, &go, NULL, rows, &st, &err) == FS_OK);
+        CHECK(st.committed && !st.stopped && !exists("stopped.journal"));
+        for (int i = 0; i < go.nsaid; i++)
+            for (int k = 2; k < NTRIALS; k++) {
+                snprintf(want, sizeof want, ": %d of %d trials done, %d to run", k, NTRIALS, NTRIALS - k);
+                if (!strncmp(go.said[i], "resuming from ", 14) && strstr(go.said[i], want))
+                    kept = k;
+            }
+    }
+    CHECK(kept >= 2);
+    seen whole = {0};
+    REQUIRE(run_into(l, "whole", 1, &whole, NULL, rows, &st, &err) == FS_OK);
+    CHECK(same_files("stopped", "whole"));
+    unload(l);
+}
+
+static void test_shards_merge_into_the_same_bytes(void)
+{
+    fs_campaign_state st;
+    fs_error err;
+    const char *names[2] = {"s1", "s2"};
+    for (int k = 0; k < 2; k++) {
+        loaded *l = load(SETS, 1, k + 1, 2);
+        seen s = {0};
+        REQUIRE(run_into(l, names[k], 2, &s, NULL, NULL, &st, &err) == FS_OK);
+        CHECK(st.committed && st.total == NTRIALS / 2);
+        char journal[64];
+        snprintf(journal, sizeof journal, "%s/trials.journal", names[k]);
+        CHECK(exists(journal) && !exists("s1/summary.json"));
+        unload(l);
+    }
+    char d1[256], d2[256], out[256];
+    snprintf(d1, sizeof d1, "%s/s1", tmp);
+    snprintf(d2, sizeof d2, "%s/s2", tmp);
+    snprintf(out, sizeof out, "%s/merged", tmp);
+    const char *both[2] = {d1, d2};
+    fs_campaign_merged *m = calloc(1, sizeof *m);
+    REQUIRE(m != NULL);
+    /* one shard missing: named */
+    CHECK(fs_campaign_merge(both, 1, m, &err) == FS_BAD_INPUT);
+    CHECK(m->missing_shard == 2 && m->head.nshards == 2 && strstr(err.message, "3 of 6 trials missing") != NULL);
+    fs_campaign_merge_free(m);
+    REQUIRE(fs_campaign_merge(both, 2, m, &err) == FS_OK);
+    /* into a shard's own folder: refused */
+    CHECK(fs_campaign_merge_write(m, d1, 0, NULL, NULL, &st, &err) == FS_BAD_INPUT);
+    CHECK(fs_campaign_merge_write(m, out, 0, NULL, NULL, &st, &err) == FS_OK && st.committed);
+    fs_campaign_merge_free(m);
+    free(m);
+    if (!exists("one")) { /* alone: make the whole run to compare with */
+        loaded *l = load(SETS, 1, 1, 1);
+        seen s = {0};
+        REQUIRE(run_into(l, "one", 1, &s, NULL, NULL, &st, &err) == FS_OK);
+        unload(l);
+    }
+    CHECK(same_files("merged", "one"));
+}
+
+static void test_a_crashed_worker_is_failed_numerics(void)
+{
+    loaded *l = load(SETS, 1, 1, 1);
+    fs_campaign_row rows[2];
+    fs_campaign_state st;
+    fs_error err;
+    fs_campaign_test_hooks t = {.crash_seed = 2, .stop_seed = -1, .kill_seed = -1};
+    seen s = {0};
+    REQUIRE(run_into(l, "crash", 2, &s, &t, rows, &st, &err) == FS_OK);
+    CHECK(st.committed && rows[0].failed_numerics == 1 && rows[1].failed_numerics == 1);
+    int told = 0;
+    for (int i = 0; i < s.nsaid; i++)
+        told += strstr(s.said[i], "seed 2, exited with status 3; counted as failed_numerics") != NULL;
+    CHECK(told == 2);
+    unload(l);
+}
+
+static void test_cleanup(void)
+{
+    if (tmp[0])
+        fs_remove_tree(tmp);
+}
+
+FS_TEST_MAIN(TEST(test_workers_do_not_change_the_bytes), TEST(test_a_stop_is_resumed_into_the_same_bytes),
+             TEST(test_shards_merge_into_the_same_bytes), TEST(test_a_crashed_worker_is_failed_numerics),
+             TEST(test_cleanup))
