@@ -45,7 +45,7 @@ static const slice SLICES[NSLICES] = {
      {0, 0.02}, 4, 2, {NULL}},
     /* the soil's explicit forces (docs/soil.md, Stability): the stiff elastic (unloading and reloading)
      * branch K_e against the step, the flat foot under the drop weight landing on dry sand */
-    {"soil", "scenarios/landing_trial.ini", "soil's elastic slope K_e (flat foot, drop weight, dry sand)", "Pa/m", 1,
+    {"soil", "scenarios/landing_trial.ini", "elastic slope K_e of dry sand (flat foot, drop weight)", "Pa/m", 1,
      {2e7, 2e8, 2e9}, {2e8}, 3, 1,
      {"scenario.design=feet/flat.ini", "scenario.terrain=../terrains/soils/dry_sand.ini",
       "robot.design=robots/drop_weight.ini"}},
