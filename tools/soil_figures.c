@@ -67,10 +67,10 @@ static int run(const char *foot, const char *soil)
     fs_sim_soil_force(sim, -1, held);
     fs_soil_grid_print(g, &deepest, NULL);
     double tilt = acos(fmin(1, fmax(-1, R[8]))) * 180 / M_PI;
-    int nodes = fs_sim_soil_nodes(sim, -1);
+    double area = fs_sim_soil_area(sim, -1);
     printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %.1f | %.0f %% | %.2f |\n", foot, soil, (a0[2] - a[2]) * 1e3,
            deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : fs_sim_time(sim),
-           nodes * g->dx * g->dx * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
+           area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
     fflush(stdout);
     fs_sim_free(sim);
     fs_scenario_free(&sc);

@@ -25,7 +25,7 @@
 #include <time.h>
 #include <unistd.h>
 
-enum { NSLICES = 4, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64 };
+enum { NSLICES = 5, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, MAX_SET = 4 };
 
 /* A swept quantity and its values (full sweep, then --quick). */
 typedef struct slice {
@@ -33,15 +33,22 @@ typedef struct slice {
     int log_axis;
     double full[MAX_VALUES], quick[MAX_VALUES];
     int nfull, nquick;
+    const char *set[MAX_SET];   /* overrides of its scenario, NULL after the last */
 } slice;
 
 static const slice SLICES[NSLICES] = {
     {"stiffness", "scenarios/static_load.ini", "spring stiffness k, all 15 springs", "N/m", 1,
-     {1e3, 1e4, 1e5, 1e6, 1e7}, {1e3, 1e5, 1e7}, 5, 3},
-    {"load", "scenarios/static_load.ini", "load at the ankle", "kg", 1, {1, 5, 26, 100, 500}, {1, 26, 500}, 5, 3},
-    {"mass", "scenarios/static_load.ini", "link mass scale (every link)", "", 1, {0.01, 0.1, 1, 10}, {0.01, 1}, 4, 2},
+     {1e3, 1e4, 1e5, 1e6, 1e7}, {1e3, 1e5, 1e7}, 5, 3, {NULL}},
+    {"load", "scenarios/static_load.ini", "load at the ankle", "kg", 1, {1, 5, 26, 100, 500}, {1, 26, 500}, 5, 3, {NULL}},
+    {"mass", "scenarios/static_load.ini", "link mass scale (every link)", "", 1, {0.01, 0.1, 1, 10}, {0.01, 1}, 4, 2, {NULL}},
     {"drop", "scenarios/landing_trial.ini", "drop height of the 26 kg robot", "m", 0, {0, 0.005, 0.02, 0.05},
-     {0, 0.02}, 4, 2},
+     {0, 0.02}, 4, 2, {NULL}},
+    /* the soil's explicit forces (docs/soil.md, Stability): the stiff elastic (unloading and reloading)
+     * branch K_e against the step, the flat foot under the drop weight landing on dry sand */
+    {"soil", "scenarios/landing_trial.ini", "elastic slope K_e of dry sand (flat foot, drop weight)", "Pa/m", 1,
+     {2e7, 2e8, 2e9}, {2e8}, 3, 1,
+     {"scenario.design=feet/flat.ini", "scenario.terrain=../terrains/soils/dry_sand.ini",
+      "robot.design=robots/drop_weight.ini"}},
 };
 /* finer around the explicit springs' limit (4e-5 to 8e-5 s for the default foot) */
 static const double STEPS_FULL[] = {1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 6e-5, 8e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
@@ -99,6 +106,8 @@ static fs_status configure(const config *c, const fs_design_def *base, double du
     }
     if (!strcmp(s->name, "drop"))
         d->drop_m = c->value;
+    if (!strcmp(s->name, "soil"))
+        sc->terrain.def.soil.K_e_Pa_per_m = c->value;
     return fs_scenario_compile(sc, err);
 }
 
@@ -254,7 +263,8 @@ static int fill_csv(FILE *f, const void *user)
     const config *cfg = x->cfg;
     const outcome *out = x->out;
     int n = x->n;
-    fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,class,class_code,reason,"
+    fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,K_e_Pa_per_m,class,"
+               "class_code,reason,"
                "where,time_s,drift_reason,drift_time_s,steps,max_loop_err_m,max_energy_excess_J,energy_bound_J,"
                "max_speed_m_per_s,explicit_limit_s\n");
     for (int i = 0; i < n; i++) {
@@ -263,10 +273,13 @@ static int fill_csv(FILE *f, const void *user)
         const char *sl = SLICES[c->slice].name;
         double k = !strcmp(sl, "stiffness") ? c->value : 12000, load = !strcmp(sl, "load") ? c->value : 26;
         double scale = !strcmp(sl, "mass") ? c->value : 1, drop = !strcmp(sl, "drop") ? c->value : 0;
+        char ke[32] = ""; /* the soil's K_e; empty for a rigid slice */
+        if (!strcmp(sl, "soil"))
+            snprintf(ke, sizeof ke, "%g", c->value);
         /* a quantity the run did not have (no failure: its time; a blow-up's non-finite figures): empty */
         char b[7][32], q[2][128];
-        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s\n", sl,
-                STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop,
+        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s\n", sl,
+                STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop, ke,
                 fs_check_class_name((fs_check_class)o->cls), o->cls, cli_csv_text(q[0], sizeof q[0], o->reason),
                 cli_csv_text(q[1], sizeof q[1], o->where),
                 cli_csv_num(b[0], sizeof b[0], "%.6g", o->time_s), fs_check_kind_name((fs_check_kind)o->drift),
@@ -300,10 +313,10 @@ static fs_status write_script(const char *dir, int s, fs_error *err)
         const char *st = STEPPERS[combo / 2], *sp = SPRINGS[combo % 2];
         n += snprintf(text + n, sizeof text - (size_t)n,
                       "set title '%s springs, %s'\n"
-                      "ok(p) = strcol(1) eq '%s' && strcol(2) eq '%s' && strcol(4) eq '%s' && column(11) == p\n"
+                      "ok(p) = strcol(1) eq '%s' && strcol(2) eq '%s' && strcol(4) eq '%s' && column(12) == p\n"
                       "plot for [p=0:2] 'stability.csv' every ::1 using (ok(p) ? $5 : NaN):%d:(11 + p) with points "
                       "pt 5 ps 1.8 lc variable title word('stable drifting blown_up', p + 1), \\\n"
-                      "     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && '%s' eq 'explicit' ? $22 : NaN):%d "
+                      "     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && '%s' eq 'explicit' ? $23 : NaN):%d "
                       "with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'\n",
                       sp, st, sl->name, st, sp, value_column(s), sp, value_column(s));
     }
@@ -463,15 +476,19 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     fs_provenance prov = {.ninputs = 0};
     fs_status s = FS_OK;
     for (int i = 0; i < NSLICES && s == FS_OK; i++) {
-        for (int j = 0; j < i && !loaded[i]; j++)
-            if (!strcmp(SLICES[j].scenario, SLICES[i].scenario))
+        for (int j = 0; j < i && !loaded[i] && !SLICES[i].set[0]; j++)
+            if (!strcmp(SLICES[j].scenario, SLICES[i].scenario) && !SLICES[j].set[0])
                 loaded[i] = loaded[j];
         if (loaded[i])
             continue;
         if (!(loaded[i] = calloc(1, sizeof *loaded[i])))
             s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
-        else
-            s = fs_scenario_load(cli_data_path(SLICES[i].scenario), NULL, 0, loaded[i], &err);
+        else {
+            int nset = 0;
+            while (nset < MAX_SET && SLICES[i].set[nset])
+                nset++;
+            s = fs_scenario_load(cli_data_path(SLICES[i].scenario), SLICES[i].set, nset, loaded[i], &err);
+        }
     }
     if (s == FS_OK)
         s = cli_bench_provenance(&prov, (const fs_scenario *const *)loaded, NSLICES, "each row's stepper, springs "

@@ -17,6 +17,8 @@ const fs_soil_grid *fs_sim_soil_grid(const fs_sim *sim) { return sim->soil ? &si
 
 int fs_sim_soil_nodes(const fs_sim *sim, int foot) { return sim->soil ? sim->soil->foot_nodes[1 + foot] : 0; }
 
+double fs_sim_soil_area(const fs_sim *sim, int foot) { return sim->soil ? sim->soil->foot_area_m2[1 + foot] : 0; }
+
 int fs_sim_support(const fs_sim *sim) { return sim->contacts_now + (sim->soil ? sim->soil->foot_nodes[0] : 0); }
 
 double fs_sim_ground_surface(const fs_sim *sim, double x, double y)
@@ -139,6 +141,12 @@ fs_status fs_sim_soil_build(fs_sim *sim, fs_error *err)
     if (!sim->soil)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the soil", sim->sc->path);
     make_shapes(sim);
+    /* a shape wide enough (the flat sole) on the coarser grid, a small one (a link) on the fine one */
+    for (int s = 0; s < sim->soil->g.nshapes; s++) {
+        fs_soil_shape *sh = &sim->soil->g.shape[s];
+        double w = sh->kind == FS_SOIL_BOX ? 2 * fmin(sh->half[0], sh->half[1]) : 2 * sh->radius_m;
+        sh->stride = fs_soil_stride(&sim->sc->terrain.def.soil, w);
+    }
     read_bodies(sim);
     /* the pool sized for the tiles under the shapes at the start */
     double boxes[FS_SOIL_MAX_SHAPES][4];
@@ -178,6 +186,7 @@ fs_status fs_sim_soil_apply(fs_sim *sim, double h, fs_error *err)
         return st;
     memset(so->foot_force, 0, sizeof so->foot_force);
     memset(so->foot_nodes, 0, sizeof so->foot_nodes);
+    memset(so->foot_area_m2, 0, sizeof so->foot_area_m2);
     for (int s = 0; s < so->g.nshapes; s++) {
         if (!so->g.nodes[s])
             continue;
@@ -192,6 +201,8 @@ fs_status fs_sim_soil_apply(fs_sim *sim, double h, fs_error *err)
         }
         so->foot_nodes[0] += so->g.nodes[s];
         so->foot_nodes[1 + f] += so->g.nodes[s];
+        so->foot_area_m2[0] += so->g.area_m2[s];
+        so->foot_area_m2[1 + f] += so->g.area_m2[s];
     }
     /* a foot's first soil contact is its touchdown, at the start of this (sub)step */
     int nfeet = sim->geom->nfeet > 1 ? sim->geom->nfeet : 1;

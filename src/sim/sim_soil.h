@@ -10,6 +10,7 @@ typedef struct fs_sim_soil {
     fs_soil_body body[FS_MAX_BODIES];
     double foot_force[FS_MAX_FEET + 1][3]; /* the last (sub)step's: every foot (0), each (1 + foot) */
     int foot_nodes[FS_MAX_FEET + 1];
+    double foot_area_m2[FS_MAX_FEET + 1];
 } fs_sim_soil;
 
 /* Makes sim->soil when its terrain has a soil (sim->soil stays NULL otherwise): each foot body's

@@ -79,7 +79,11 @@ static double box_lowest(const double c[3], const double R[9], const double h[3]
 }
 
 /* A shape where its body is now: world ends (capsule) or centre and axes (box). */
-typedef struct placed { int kind; double A[3], B[3], R[9], r, half[3]; } placed;
+typedef struct placed {
+    int kind;
+    double A[3], B[3], R[9], r, half[3];
+    double cA[3], cB[3]; /* capsule: the part of its segment whose balls reach below a height (clip_below) */
+} placed;
 
 static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
 {
@@ -88,6 +92,8 @@ static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
     memcpy(p->half, s->half, sizeof p->half);
     to_world(body, s->a, p->A);
     to_world(body, s->b, p->B);
+    memcpy(p->cA, p->A, sizeof p->A);
+    memcpy(p->cB, p->B, sizeof p->B);
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++)
             p->R[3 * r + c] = body->R[3 * r] * s->R[c] + body->R[3 * r + 1] * s->R[3 + c] + body->R[3 * r + 2] * s->R[6 + c];
@@ -103,6 +109,25 @@ double fs_soil_shape_lowest(const fs_soil_shape *s, const fs_soil_body *body, do
     placed p;
     place(s, body, &p);
     return placed_lowest(&p, x, y, n);
+}
+
+/* A capsule's segment cut to the balls that reach below z_top (cA, cB): nothing above z_top meets
+ * the soil, so the plan of what is left holds every node the capsule can press. */
+static void clip_below(placed *p, double z_top)
+{
+    double Dz = p->B[2] - p->A[2], t0 = 0, t1 = 1;
+    if (p->kind != FS_SOIL_CAPSULE || fabs(Dz) < 1e-12)
+        return;
+    double t = (z_top + p->r - p->A[2]) / Dz + (Dz > 0 ? 1e-9 : -1e-9); /* the ball at t touches z_top */
+    if (Dz > 0)
+        t1 = fmax(0, fmin(1, t));
+    else
+        t0 = fmax(0, fmin(1, t));
+    for (int k = 0; k < 3; k++) {
+        double d = p->B[k] - p->A[k];
+        p->cA[k] = p->A[k] + t0 * d;
+        p->cB[k] = p->A[k] + t1 * d;
+    }
 }
 
 /* A shape's plan extent now and its lowest point, from its bounding box. */
@@ -153,32 +178,84 @@ static fs_status grow(fs_soil_grid *g, fs_error *err)
     return FS_OK;
 }
 
-/* The tile (ti, tj), made when first needed: its nodes' undisturbed surface sampled. */
-static fs_status need_tile(fs_soil_grid *g, int ti, int tj, fs_error *err)
+/* Where a tile of stride st keeps its node (li, lj) (both multiples of st): its nodes packed row by
+ * row, (T / st)^2 of them, so that a coarse tile's nodes lie together in memory. */
+static int packed(int li, int lj, int st) { return st == 1 ? lj * T + li : (lj / st) * (T / st) + li / st; }
+
+/* The stored node (i, j) of a tile (NULL outside the region, in a tile not made, or between a coarse
+ * tile's nodes). */
+static fs_soil_node *stored_at(const fs_soil_grid *g, int i, int j)
+{
+    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny)
+        return NULL;
+    int k = (j / T) * g->tx + i / T, slot = g->tile[k], st = g->stride[k];
+    if (slot < 0 || (st > 1 && (i % st || j % st)))
+        return NULL;
+    return g->pool + (size_t)slot * TT + packed(i % T, j % T, st);
+}
+
+/* The node that (i, j) reads: itself, or in a coarse tile of stride st the stored node whose st x st
+ * cell, centred on it, holds (i, j) (in the next tile when that one has the same stride; when it has
+ * not, NULL: no node stands for (i, j), which no shape has pressed). */
+static fs_soil_node *node_at(const fs_soil_grid *g, int i, int j)
+{
+    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny)
+        return NULL;
+    int k = (j / T) * g->tx + i / T, slot = g->tile[k], st = g->stride[k];
+    if (slot < 0)
+        return NULL;
+    if (st == 1)
+        return g->pool + (size_t)slot * TT + (j % T) * T + i % T;
+    int ri = (i + st / 2) / st * st, rj = (j + st / 2) / st * st;
+    fs_soil_node *n = stored_at(g, ri, rj);
+    return n && g->stride[(rj / T) * g->tx + ri / T] == st ? n : NULL;
+}
+
+/* Tile (ti, tj)'s nodes at stride st, packed into nd: the undisturbed surface sampled, and the state
+ * of the node each was read from before (from, NULL: none, a new tile). */
+static void fill_tile(const fs_soil_grid *g, int ti, int tj, int st, const fs_soil_grid *from, fs_soil_node *nd)
+{
+    memset(nd, 0, TT * sizeof *nd);
+    for (int j = 0; j < T; j += st)
+        for (int i = 0; i < T; i += st) {
+            fs_soil_node *n = &nd[packed(i, j, st)];
+            int gi = ti * T + i, gj = tj * T + j;
+            n->h0_m = fs_soil_grid_undisturbed(g, g->x0 + gi * g->dx, g->y0 + gj * g->dx);
+            const fs_soil_node *o = from ? node_at(from, gi, gj) : NULL;
+            if (o) {
+                n->sp_m = o->sp_m;
+                n->yield_Pa = o->yield_Pa;
+                n->slip_m = o->slip_m;
+            }
+        }
+}
+
+/* The tile (ti, tj) for a shape of stride st, made when first needed (its nodes' undisturbed surface
+ * sampled, at stride st), or made finer when st is finer than its own: each node it gains takes the
+ * print, yield and slip of the node it was read from (fs_soil_grid_node). */
+static fs_status need_tile(fs_soil_grid *g, int ti, int tj, int st, fs_error *err)
 {
     int *slot = &g->tile[tj * g->tx + ti];
-    if (*slot >= 0)
+    unsigned char *ts = &g->stride[tj * g->tx + ti];
+    if (*slot >= 0) {
+        if (st < *ts) {
+            fs_soil_node keep[TT];
+            fill_tile(g, ti, tj, st, g, keep);
+            memcpy(g->pool + (size_t)*slot * TT, keep, sizeof keep);
+            *ts = (unsigned char)st;
+        }
         return FS_OK;
+    }
     if (g->ntiles == g->cap_tiles) {
         fs_status s = grow(g, err);
         if (s != FS_OK)
             return s;
     }
-    fs_soil_node *nd = g->pool + (size_t)g->ntiles * TT;
-    memset(nd, 0, TT * sizeof *nd);
-    for (int j = 0; j < T; j++)
-        for (int i = 0; i < T; i++)
-            nd[j * T + i].h0_m = fs_soil_grid_undisturbed(g, g->x0 + (ti * T + i) * g->dx, g->y0 + (tj * T + j) * g->dx);
+    fill_tile(g, ti, tj, st, NULL, g->pool + (size_t)g->ntiles * TT);
+    g->slot_tile[g->ntiles] = tj * g->tx + ti;
     *slot = g->ntiles++;
+    *ts = (unsigned char)st;
     return FS_OK;
-}
-
-static fs_soil_node *node_at(const fs_soil_grid *g, int i, int j)
-{
-    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny)
-        return NULL;
-    int slot = g->tile[(j / T) * g->tx + i / T];
-    return slot < 0 ? NULL : g->pool + (size_t)slot * TT + (j % T) * T + i % T;
 }
 
 const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j) { return node_at(g, i, j); }
@@ -203,15 +280,23 @@ static int node_range(const fs_soil_grid *g, const double box[4], int r[4])
     return r[0] <= r[1] && r[2] <= r[3];
 }
 
-static fs_status need_tiles(fs_soil_grid *g, const int r[4], fs_error *err)
+static fs_status need_tiles(fs_soil_grid *g, const int r[4], int st, fs_error *err)
 {
     for (int tj = r[2] / T; tj <= r[3] / T; tj++)
         for (int ti = r[0] / T; ti <= r[1] / T; ti++) {
-            fs_status s = need_tile(g, ti, tj, err);
+            fs_status s = need_tile(g, ti, tj, st, err);
             if (s != FS_OK)
                 return s;
         }
     return FS_OK;
+}
+
+int fs_soil_stride(const fs_soil_def *d, double width_m)
+{
+    int s = 1;
+    while (2 * s <= T && 2 * s * d->grid_m <= d->coarse_grid_m * (1 + 1e-9) && 16 * 2 * s * d->grid_m <= width_m)
+        s *= 2;
+    return s;
 }
 
 fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (*boxes)[4], int nboxes, fs_error *err)
@@ -231,7 +316,9 @@ fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (
     g->ty = (g->ny + T - 1) / T;
     g->max_tiles = g->tx * g->ty;
     g->tile = malloc((size_t)g->max_tiles * sizeof *g->tile);
-    if (!g->tile)
+    g->stride = calloc((size_t)g->max_tiles, 1);
+    g->slot_tile = malloc((size_t)g->max_tiles * sizeof *g->slot_tile);
+    if (!g->tile || !g->stride || !g->slot_tile)
         return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's grid");
     for (int k = 0; k < g->max_tiles; k++)
         g->tile[k] = -1;
@@ -261,8 +348,12 @@ fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (
 void fs_soil_grid_free(fs_soil_grid *g)
 {
     free(g->tile);
+    free(g->stride);
+    free(g->slot_tile);
     free(g->pool);
     g->tile = NULL;
+    g->stride = NULL;
+    g->slot_tile = NULL;
     g->pool = NULL;
 }
 
@@ -270,11 +361,15 @@ double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
 {
     double v = 0, deep = 0;
     long n = 0;
-    for (long k = 0; k < (long)g->ntiles * TT; k++) {
-        double sp = g->pool[k].sp_m;
-        v += sp;
-        deep = fmax(deep, sp);
-        n += sp > 0;
+    for (int t = 0; t < g->ntiles; t++) {
+        const fs_soil_node *nd = g->pool + (size_t)t * TT;
+        int st = g->stride[g->slot_tile[t]];
+        for (int k = 0; k < (T / st) * (T / st); k++) {
+            double sp = nd[k].sp_m;
+            v += st > 1 ? sp * st * st : sp;
+            deep = fmax(deep, sp);
+            n += sp > 0 ? st * st : 0;
+        }
     }
     if (deepest_m)
         *deepest_m = deep;
@@ -294,11 +389,99 @@ static void add_force(double f[3], double t[3], const double r[3], const double 
     t[2] += r[0] * F[1] - r[1] * F[0];
 }
 
-/* Whether node (i, j) is one of shape s's this step. */
+/* Whether stored node (i, j) is one of shape s's this step. */
 static int mine(const fs_soil_grid *g, int i, int j, int s)
 {
-    const fs_soil_node *n = node_at(g, i, j);
+    const fs_soil_node *n = stored_at(g, i, j);
     return n && n->stamp == g->stamp && n->shape == s;
+}
+
+/* The x extent of a convex plan polygon's row y, widened into [*lo, *hi]: the row against its edges
+ * (pt[e[2k]] to pt[e[2k + 1]], k < ne). */
+static void row_edges(const double (*pt)[2], const int *e, int ne, double y, double *lo, double *hi)
+{
+    for (int k = 0; k < ne; k++) {
+        const double *a = pt[e[2 * k]], *b = pt[e[2 * k + 1]];
+        if ((y - a[1]) * (y - b[1]) > 0)
+            continue;
+        double x = a[1] == b[1] ? a[0] : a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+        double x2 = a[1] == b[1] ? b[0] : x;
+        *lo = fmin(*lo, fmin(x, x2));
+        *hi = fmax(*hi, fmax(x, x2));
+    }
+}
+
+/* Where a shape's plan meets row y: [*lo, *hi] (lo > hi when it does not). The plan of a capsule is
+ * the hull of its ends' disks (the disks and the band between them), a box's the hull of its
+ * corners, whose edges are among its twelve edges' plans: the row meets a convex plan in the
+ * interval between its crossings of those boundaries. A node outside this interval has no lowest
+ * point (placed_lowest), so visiting only the interval changes no result. */
+static void row_span(const placed *p, double y, double *lo, double *hi)
+{
+    *lo = INFINITY, *hi = -INFINITY;
+    if (p->kind == FS_SOIL_CAPSULE) {
+        const double *ends[2] = {p->cA, p->cB};
+        for (int k = 0; k < 2; k++) {
+            double dy = y - ends[k][1];
+            if (fabs(dy) < p->r) {
+                double w = sqrt(p->r * p->r - dy * dy);
+                *lo = fmin(*lo, ends[k][0] - w), *hi = fmax(*hi, ends[k][0] + w);
+            }
+        }
+        double Dx = p->cB[0] - p->cA[0], Dy = p->cB[1] - p->cA[1], L = hypot(Dx, Dy);
+        if (L > 0) {
+            double nx = -Dy / L * p->r, ny = Dx / L * p->r;
+            const double pt[4][2] = {{p->cA[0] + nx, p->cA[1] + ny}, {p->cB[0] + nx, p->cB[1] + ny},
+                                     {p->cB[0] - nx, p->cB[1] - ny}, {p->cA[0] - nx, p->cA[1] - ny}};
+            static const int e[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+            row_edges(pt, e, 4, y, lo, hi);
+        }
+        return;
+    }
+    double pt[8][2];
+    for (int c = 0; c < 8; c++) {
+        double sx = c & 1 ? 1 : -1, sy = c & 2 ? 1 : -1, sz = c & 4 ? 1 : -1;
+        for (int k = 0; k < 2; k++)
+            pt[c][k] = p->A[k] + p->R[3 * k] * sx * p->half[0] + p->R[3 * k + 1] * sy * p->half[1] +
+                       p->R[3 * k + 2] * sz * p->half[2];
+    }
+    static const int e[24] = {0, 1, 2, 3, 4, 5, 6, 7, 0, 2, 1, 3, 4, 6, 5, 7, 0, 4, 1, 5, 2, 6, 3, 7};
+    row_edges((const double(*)[2])pt, e, 12, y, lo, hi);
+}
+
+/* The nodes [*i0, *i1] of row j that a shape's plan may cover, within its box's range r; 0 when none. */
+static int row_nodes(const fs_soil_grid *g, const placed *p, const int r[4], int j, int *i0, int *i1)
+{
+    double lo, hi, pad = 1e-7 + 1e-9 * g->dx * g->nx;
+    row_span(p, g->y0 + j * g->dx, &lo, &hi);
+    if (!(lo <= hi))
+        return 0;
+    *i0 = (int)fmax(r[0], ceil((lo - pad - g->x0) / g->dx));
+    *i1 = (int)fmin(r[1], floor((hi + pad - g->x0) / g->dx));
+    return *i0 <= *i1;
+}
+
+/* A row's stored nodes in one tile: base[(i - off) >> sh] for i = a, a + st, ... b (st = 2^sh). */
+typedef struct seg { fs_soil_node *base; int off, a, b, st, sh; } seg;
+
+/* Row j's stored nodes from i0 to i1 in tile column ti; 0 when there are none. */
+static int segment(const fs_soil_grid *g, int j, int i0, int i1, int ti, seg *q)
+{
+    int k = (j / T) * g->tx + ti, slot = g->tile[k];
+    if (slot < 0)
+        return 0;
+    int st = g->stride[k];
+    if (j % st)
+        return 0;
+    q->off = ti * T;
+    q->a = i0 > q->off ? i0 : q->off;
+    q->b = i1 < q->off + T - 1 ? i1 : q->off + T - 1;
+    q->a = (q->a + st - 1) / st * st;
+    q->st = st;
+    for (q->sh = 0; (1 << q->sh) < st; q->sh++)
+        ;
+    q->base = g->pool + (size_t)slot * TT + packed(0, j % T, st);
+    return q->a <= q->b;
 }
 
 /* Past the yield, the law: the normal stress from the elastic trial se (> the node's yield), the
@@ -311,13 +494,53 @@ static double plastic(fs_soil_node *nd, double s, double se, double law, double 
     return sigma;
 }
 
+/* A walk over the stored nodes a shape's plan may cover, in rows of (every rows-th of its box's
+ * range), tile by tile along each row, node by node: the same order as the grid's rows. */
+typedef struct walk {
+    const fs_soil_grid *g;
+    const placed *p;
+    const int *r;
+    int rows, j, i0, i1, ti, i, in_seg;
+    seg q;
+} walk;
+
+static void walk_start(walk *w, const fs_soil_grid *g, const placed *p, const int r[4], int rows)
+{
+    *w = (walk){.g = g, .p = p, .r = r, .rows = rows, .j = (r[2] + rows - 1) / rows * rows - rows, .i1 = -1};
+    w->ti = 0;
+}
+
+/* The next node (w->i, w->j in its tile's segment w->q), or NULL after the last. */
+static fs_soil_node *walk_next(walk *w)
+{
+    for (;;) {
+        if (w->in_seg) {
+            w->i += w->q.st;
+            if (w->i <= w->q.b)
+                return w->q.base + ((w->i - w->q.off) >> w->q.sh);
+            w->in_seg = 0;
+        }
+        while (!w->in_seg && ++w->ti <= w->i1 / T)
+            if (segment(w->g, w->j, w->i0, w->i1, w->ti, &w->q))
+                w->in_seg = 1, w->i = w->q.a - w->q.st;
+        if (w->in_seg)
+            continue;
+        do {
+            w->j += w->rows;
+            if (w->j > w->r[3])
+                return NULL;
+        } while (!row_nodes(w->g, w->p, w->r, w->j, &w->i0, &w->i1));
+        w->ti = w->i0 / T - 1;
+    }
+}
+
 /* The force on one node's element (bekker or rft), N, at point q moving at v: its normal part F and
  * its shear part S, whose viscous slope (N s/m) is added to *slope. */
-static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, const double v[3], double h, double F[3],
-                       double S[3], double *slope)
+static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, double A, const double v[3], double h,
+                       double F[3], double S[3], double *slope)
 {
     const fs_soil_def *d = &g->d;
-    double A = g->dx * g->dx, reg = d->slip_speed_m_per_s;
+    double reg = d->slip_speed_m_per_s;
     double s = fmin(nd->h0_m - nd->zb_m, d->depth_m); /* sinkage below the undisturbed surface, above the bedrock */
     double vh = sqrt(v[0] * v[0] + v[1] * v[1]);
     F[0] = F[1] = F[2] = S[0] = S[1] = S[2] = 0;
@@ -372,74 +595,96 @@ static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, const double
 fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double h, fs_error *err)
 {
     g->stamp++;
-    int range[FS_SOIL_MAX_SHAPES][4], near[FS_SOIL_MAX_SHAPES];
-    /* each node to the lowest shape over it that reaches below its print */
+    int range[FS_SOIL_MAX_SHAPES][4], near[FS_SOIL_MAX_SHAPES], rows[FS_SOIL_MAX_SHAPES];
+    placed pl[FS_SOIL_MAX_SHAPES];
+    /* the tiles under every shape, each as fine as the finest shape over it, before any is solved */
     for (int s = 0; s < g->nshapes; s++) {
         const fs_soil_shape *sh = &g->shape[s];
-        const fs_soil_body *b = &bodies[sh->body];
         double box[4], zmin;
-        shape_bounds(sh, b, box, &zmin);
+        shape_bounds(sh, &bodies[sh->body], box, &zmin);
         memset(g->force[s], 0, sizeof g->force[s]);
         memset(g->torque[s], 0, sizeof g->torque[s]);
         g->nodes[s] = 0;
+        g->area_m2[s] = 0;
         g->b_m[s] = 0;
         near[s] = zmin < g->top_m && node_range(g, box, range[s]);
         if (!near[s])
             continue;
-        fs_status st = need_tiles(g, range[s], err);
+        fs_status st = need_tiles(g, range[s], sh->stride > 1 ? sh->stride : 1, err);
         if (st != FS_OK)
             return st;
-        const int *r = range[s];
-        placed p;
-        place(sh, b, &p);
-        for (int j = r[2]; j <= r[3]; j++)
-            for (int i = r[0]; i <= r[1]; i++) {
-                fs_soil_node *nd = node_at(g, i, j);
-                double n[3], z = placed_lowest(&p, g->x0 + i * g->dx, g->y0 + j * g->dx, n);
-                if (!(z < nd->h0_m - nd->sp_m) || (nd->stamp == g->stamp && nd->zb_m <= z))
-                    continue;
-                nd->stamp = g->stamp;
-                nd->shape = s;
-                nd->zb_m = z;
-                memcpy(nd->n, n, sizeof n);
-            }
     }
+    /* the rows that hold stored nodes under each shape: every rows[s]-th, the finest stride of its tiles */
+    for (int s = 0; s < g->nshapes; s++) {
+        const int *r = range[s];
+        rows[s] = T;
+        for (int tj = r[2] / T; near[s] && tj <= r[3] / T; tj++)
+            for (int ti = r[0] / T; ti <= r[1] / T; ti++)
+                rows[s] = g->stride[tj * g->tx + ti] < rows[s] ? g->stride[tj * g->tx + ti] : rows[s];
+    }
+    /* each node to the lowest shape over it that reaches below its print */
+    walk w;
+    fs_soil_node *nd;
     for (int s = 0; s < g->nshapes; s++) {
         if (!near[s])
             continue;
-        const int *r = range[s];
-        /* Bekker's b of the shape's loaded patch: twice its area over its perimeter (Chrono's convention) */
-        long cells = 0, edges = 0;
-        for (int j = r[2]; j <= r[3]; j++)
-            for (int i = r[0]; i <= r[1]; i++)
-                if (mine(g, i, j, s)) {
-                    cells++;
-                    edges += !mine(g, i + 1, j, s) + !mine(g, i - 1, j, s) + !mine(g, i, j + 1, s) + !mine(g, i, j - 1, s);
-                }
+        placed *p = &pl[s];
+        place(&g->shape[s], &bodies[g->shape[s].body], p);
+        clip_below(p, g->top_m);
+        for (walk_start(&w, g, p, range[s], rows[s]); (nd = walk_next(&w));) {
+            double n[3], z = placed_lowest(p, g->x0 + w.i * g->dx, g->y0 + w.j * g->dx, n);
+            if (!(z < nd->h0_m - nd->sp_m) || (nd->stamp == g->stamp && nd->zb_m <= z))
+                continue;
+            nd->stamp = g->stamp;
+            nd->shape = s;
+            nd->zb_m = z;
+            memcpy(nd->n, n, sizeof n);
+        }
+    }
+    const long now = g->stamp;
+#define OURS(n) ((n)->stamp == now && (n)->shape == s)
+    for (int s = 0; s < g->nshapes; s++) {
+        if (!near[s])
+            continue;
+        /* Bekker's b of the shape's loaded patch: twice its area over its perimeter (Chrono's convention),
+         * in units of dx^2 and dx (a node of stride st covers st^2 and each of its open sides st) */
+        long cells = 0, area = 0, edges = 0;
+        for (walk_start(&w, g, &pl[s], range[s], rows[s]); (nd = walk_next(&w));) {
+            if (!OURS(nd))
+                continue;
+            /* its neighbours st away: in the same tile (the same stride) read directly */
+            const int i = w.i, j = w.j, st = w.q.st, li = i - w.q.off, lj = j % T, row = T / st;
+            int open = !(li + st < T ? OURS(nd + 1) : mine(g, i + st, j, s)) +
+                       !(li >= st ? OURS(nd - 1) : mine(g, i - st, j, s)) +
+                       !(lj + st < T ? OURS(nd + row) : mine(g, i, j + st, s)) +
+                       !(lj >= st ? OURS(nd - row) : mine(g, i, j - st, s));
+            cells++;
+            area += st * st;
+            edges += st * open;
+        }
         if (!cells)
             continue;
-        double b = fmax(g->d.b_min_m, 2.0 * (double)cells * g->dx / (double)edges);
+        double b = fmax(g->d.b_min_m, 2.0 * (double)area * g->dx / (double)edges);
         g->b_m[s] = b;
         g->nodes[s] = (int)cells;
+        g->area_m2[s] = (double)area * g->dx * g->dx;
         const fs_soil_body *bd = &bodies[g->shape[s].body];
         double shear[3] = {0, 0, 0}, shear_torque[3] = {0, 0, 0}, slope = 0, work_n = 0, work_s = 0;
-        for (int j = r[2]; j <= r[3]; j++)
-            for (int i = r[0]; i <= r[1]; i++) {
-                if (!mine(g, i, j, s))
-                    continue;
-                fs_soil_node *nd = node_at(g, i, j);
-                double q[3] = {g->x0 + i * g->dx, g->y0 + j * g->dx, nd->zb_m};
-                double rq[3] = {q[0] - bd->p[0], q[1] - bd->p[1], q[2] - bd->p[2]};
-                double v[3] = {bd->v[0] + bd->w[1] * rq[2] - bd->w[2] * rq[1],
-                               bd->v[1] + bd->w[2] * rq[0] - bd->w[0] * rq[2],
-                               bd->v[2] + bd->w[0] * rq[1] - bd->w[1] * rq[0]};
-                double F[3], S[3];
-                node_force(g, nd, b, v, h, F, S, &slope);
-                work_n -= (F[0] * v[0] + F[1] * v[1] + F[2] * v[2]) * h;
-                work_s -= (S[0] * v[0] + S[1] * v[1] + S[2] * v[2]) * h;
-                add_force(g->force[s], g->torque[s], rq, F);
-                add_force(shear, shear_torque, rq, S);
-            }
+        for (walk_start(&w, g, &pl[s], range[s], rows[s]); (nd = walk_next(&w));) {
+            if (!OURS(nd))
+                continue;
+            const double ds = w.q.st * g->dx, A = ds * ds;
+            double qp[3] = {g->x0 + w.i * g->dx, g->y0 + w.j * g->dx, nd->zb_m};
+            double rq[3] = {qp[0] - bd->p[0], qp[1] - bd->p[1], qp[2] - bd->p[2]};
+            double v[3] = {bd->v[0] + bd->w[1] * rq[2] - bd->w[2] * rq[1], bd->v[1] + bd->w[2] * rq[0] - bd->w[0] * rq[2],
+                           bd->v[2] + bd->w[0] * rq[1] - bd->w[1] * rq[0]};
+            double F[3], S[3];
+            node_force(g, nd, b, A, v, h, F, S, &slope);
+            work_n -= (F[0] * v[0] + F[1] * v[1] + F[2] * v[2]) * h;
+            work_s -= (S[0] * v[0] + S[1] * v[1] + S[2] * v[2]) * h;
+            add_force(g->force[s], g->torque[s], rq, F);
+            add_force(shear, shear_torque, rq, S);
+        }
         /* the shear as an explicit damper: its slope kept within half the body's mass over the step */
         double cap = 0.5 * bd->mass_kg / h, k = slope > cap ? cap / slope : 1;
         for (int c = 0; c < 3; c++) {
@@ -448,5 +693,6 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
         }
         g->work_J += work_n + k * work_s;
     }
+#undef OURS
     return FS_OK;
 }

@@ -20,6 +20,10 @@ const fs_soil_grid *fs_sim_soil_grid(const fs_sim *sim);
 /* The soil nodes carrying foot (0, 1; -1: every foot) in the last (sub)step; 0 without a soil. */
 int fs_sim_soil_nodes(const fs_sim *sim, int foot);
 
+/* The area the soil carries foot on (-1: every foot) in the last (sub)step, m^2: its nodes, each
+ * with its cell (a coarse node's too: fs_soil_shape.stride); 0 without a soil. */
+double fs_sim_soil_area(const fs_sim *sim, int foot);
+
 /* What holds the feet now: contact points plus soil nodes (the outcome rules' support). */
 int fs_sim_support(const fs_sim *sim);
 

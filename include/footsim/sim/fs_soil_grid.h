@@ -10,9 +10,15 @@
  * a run, said in docs/soil.md. Prints persist for the whole run (a node never forgets its plastic
  * sinkage).
  *
+ * A shape wide enough (the flat sole) is met on a coarser grid (fs_soil_shape.stride, [soil]
+ * coarse_grid_m): a tile it makes keeps only every stride-th node each way, each standing for
+ * stride x stride nodes (its area, its print); a tile under a finer shape is made finer, its new
+ * nodes taking the state of the coarse node they were read from. docs/soil.md, Speed, says why.
+ *
  * Each step (and each substep) fs_soil_grid_step casts a vertical line through every node under a
- * shape's bounding box, finds the shape's lowest surface there (capsules and boxes in closed form),
- * gives a node to the lowest shape over it, and computes per node (SCM's way, explicit):
+ * shape's plan (its bounding box's rows, each cut to where the row meets the plan of the shape's part
+ * that reaches below the soil's top), finds the shape's lowest surface there (capsules and boxes in
+ * closed form), gives a node to the lowest shape over it, and computes per node (SCM's way, explicit):
  * - bekker: the elastic trial K_e (s - s_p); past the yield pressure, Bekker's (k_c / b + k_phi) s^n
  *   with b = 2 A / P of the shape's loaded patch (at least b_min_m), the yield raised and the plastic
  *   sinkage moved to s - sigma / K_e; damping - R v_z added, never tension; Janosi shear from the slip
@@ -48,6 +54,8 @@ typedef struct fs_soil_shape {
     double half[3];         /* box: half lengths along its axes */
     double R[9];            /* box: its axes in the body frame (columns), row-major */
     double plan_area_m2;    /* the area it presents from below at rest (stated, docs/soil.md) */
+    int stride;             /* its nodes are every stride-th of the grid's, each carrying (stride dx)^2: a power of
+                             * two dividing FS_SOIL_TILE (0 or 1: every node; fs_soil_stride) */
 } fs_soil_shape;
 
 /* A body's state: its origin, rotation (row-major, world = R body), velocity and spin (world), and
@@ -73,6 +81,9 @@ typedef struct fs_soil_grid {
     int nx, ny;             /* nodes over the region */
     int tx, ty;             /* tiles over it */
     int *tile;              /* tx * ty: the pool slot of each tile, or -1 */
+    unsigned char *stride;  /* tx * ty: the spacing of a made tile's nodes, in grid nodes (1: every node; s: only
+                             * nodes with i and j multiples of s exist, each standing for s x s nodes) */
+    int *slot_tile;         /* the tile index of each pool slot */
     fs_soil_node *pool;     /* ntiles * FS_SOIL_TILE^2 nodes */
     int ntiles, cap_tiles, max_tiles;
     int grows;              /* how many times the pool grew during the run */
@@ -83,6 +94,7 @@ typedef struct fs_soil_grid {
     /* the last step's results, per shape: force and torque about its body's origin (world), nodes */
     double force[FS_SOIL_MAX_SHAPES][3], torque[FS_SOIL_MAX_SHAPES][3];
     int nodes[FS_SOIL_MAX_SHAPES];
+    double area_m2[FS_SOIL_MAX_SHAPES]; /* ... and their area (nodes times their cells) */
     double b_m[FS_SOIL_MAX_SHAPES];
     double tan_phi;         /* tan of the friction angle, once */
     double work_J;          /* work the soil's forces have taken out of the bodies (sum of -F.v h) */
@@ -98,8 +110,14 @@ void fs_soil_grid_free(fs_soil_grid *g);
  * when the pool cannot grow (then no force is given). */
 fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double h, fs_error *err);
 
+/* The stride for a shape at least width_m wide on the narrowest side of its plan: the largest power of
+ * two s <= FS_SOIL_TILE with s grid_m <= coarse_grid_m and at least 16 of its nodes across the width
+ * (1 when coarse_grid_m is 0). */
+int fs_soil_stride(const fs_soil_def *d, double width_m);
+
 /* The soil's surface at node (i, j) now (the print, or the shape pressing it this step), m; its
- * undisturbed surface and plastic sinkage; NULL node when (i, j) lies outside the region. */
+ * undisturbed surface and plastic sinkage; NULL node when (i, j) lies outside the region. In a tile
+ * of stride s every node reads the stored node nearest it (each stands for s x s nodes). */
 const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j);
 double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y);
 /* The undisturbed surface at (x, y): the terrain plus the layer's depth. */
