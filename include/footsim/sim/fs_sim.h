@@ -63,7 +63,9 @@ typedef struct fs_touch {
 } fs_touch;
 
 /* The steps a sim has taken: with run.tolerance_m > 0 the error-controlled step's (fs_sim_step), a
- * step being a pair of half steps of ODE's whose size is step_max_s / 2^level; else the fixed steps. */
+ * step being a pair of half steps of ODE's whose size is step_max_s / 2^level (with the embedded
+ * estimate one ODE step of that size, or of the dampers' bound when less: counted at its level);
+ * else the fixed steps. */
 enum { FS_STEP_LEVELS = 48 };
 typedef struct fs_step_stats {
     long taken;            /* steps accepted */
@@ -182,7 +184,12 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err);
  * (fs_spring_soft; docs/bench.md). Where that bound, not the error, sets the step, a doubled step
  * accepted at once is followed by 8 single ODE steps of the bound, each put back and doubled if the
  * set of shapes touching the ground changed. The time advanced is
- * sim->step_taken_s; the ground force read after it is the mean over its two half steps. */
+ * sim->step_taken_s; the ground force read after it is the mean over its two half steps.
+ * With run.error_estimate = embedded, a step is one ODE step of step_max_s / 2^level (cut to the
+ * dampers' bound), its error h / 2 times each body's change of velocity over the step and that
+ * change's difference from the last step's (its centre's, and its angular velocity's times its
+ * reach): rejected and retried smaller, grown, bounded and ended on the horizon as above, without
+ * doubling or cruising (sim_adapt.c). */
 void fs_sim_set_horizon(fs_sim *sim, double t_s);
 /* The median of the accepted steps, s: the level at which half of them had been taken (a step cut
  * short at a horizon counted at its level); the fixed step with fixed steps; 0 before any. */
