@@ -92,7 +92,10 @@ void fs_sim_count_step(fs_sim *sim, double h, int level)
     s->least_s = s->taken ? fmin(s->least_s, h) : h;
     s->largest_s = s->taken ? fmax(s->largest_s, h) : h;
     s->taken++;
-    s->at_level[level < FS_STEP_LEVELS ? level : FS_STEP_LEVELS - 1]++;
+    if (level < 0) /* the embedded estimate's step cut to the dampers' bound */
+        s->at_bound++, s->bound_s = h;
+    else
+        s->at_level[level < FS_STEP_LEVELS ? level : FS_STEP_LEVELS - 1]++;
     sim->step_taken_s = h;
 }
 
@@ -102,10 +105,18 @@ double fs_sim_median_step_s(const fs_sim *sim)
     if (!sim->saved)
         return s->taken ? sim->sc->def.step_s : 0;
     long seen = 0;
-    for (int k = FS_STEP_LEVELS - 1; k >= 0; k--) /* from the least step up */
-        if ((seen += s->at_level[k]) * 2 >= s->taken && s->taken)
-            return sim->sc->def.step_max_s / ldexp(1, k);
-    return 0;
+    int bound_counted = 0;
+    for (int k = FS_STEP_LEVELS - 1; k >= 0 && s->taken; k--) { /* from the least step up */
+        double h = sim->sc->def.step_max_s / ldexp(1, k);
+        if (!bound_counted && s->at_bound && h > s->bound_s) { /* the steps cut to the bound, in their place */
+            bound_counted = 1;
+            if ((seen += s->at_bound) * 2 >= s->taken)
+                return s->bound_s;
+        }
+        if ((seen += s->at_level[k]) * 2 >= s->taken)
+            return h;
+    }
+    return s->taken ? s->bound_s : 0;
 }
 
 /* ---- the state, saved and put back ------------------------------------------------------------ */
@@ -263,15 +274,16 @@ static double to_horizon(const fs_sim *sim, double h)
     return h;
 }
 
-/* A step of h taken in `substeps` ODE steps, kept with error e: counted, and the next one a level
- * larger after GROW_AFTER in a row within a quarter of the tolerance (never above top_level). */
-static void keep_step(fs_sim *sim, double h, double e, int substeps, int top_level)
+/* A step of h taken in `substeps` ODE steps, kept with error e: counted (at its level, or as the
+ * dampers' bound's when cut to it), and the next one a level larger after GROW_AFTER in a row within
+ * a quarter of the tolerance (never above top_level). */
+static void keep_step(fs_sim *sim, double h, double e, int substeps, int top_level, int at_bound)
 {
     double tol = sim->sc->def.tolerance_m;
     sim->substeps_now = substeps;
     sim->step_error_m = e;
     sim->stats.missed += e > tol;
-    fs_sim_count_step(sim, h, sim->level);
+    fs_sim_count_step(sim, h, at_bound ? -1 : sim->level);
     if (e <= tol / 4 && ++sim->level_held >= GROW_AFTER && sim->level > top_level)
         sim->level--, sim->level_held = 0;
 }
@@ -346,7 +358,8 @@ static fs_status embedded_step(fs_sim *sim, double bound, fs_error *err)
     sim->level = sim->level > least ? least : sim->level < bound_level ? bound_level : sim->level;
     fs_sim_save_state(sim);
     for (int tries = 0;; tries++) {
-        double h = to_horizon(sim, fmin(d->step_max_s / ldexp(1, sim->level), bound));
+        double level_h = d->step_max_s / ldexp(1, sim->level), h = to_horizon(sim, fmin(level_h, bound));
+        int at_bound = bound < level_h && h == bound;
         int at_least = sim->level >= least;
         fs_error trial_err;
         fs_status st = one(sim, h, tries > 0, &trial_err);
@@ -358,7 +371,7 @@ static fs_status embedded_step(fs_sim *sim, double bound, fs_error *err)
         }
         if (st == FS_OK && (e <= tol || at_least)) {
             remember_change(sim, s->body, after, h);
-            keep_step(sim, h, e, 1, bound_level);
+            keep_step(sim, h, e, 1, bound_level, at_bound);
             return FS_OK;
         }
         if (st != FS_OK && at_least) { /* the checks fail at the least step: a failure of the run */
@@ -432,7 +445,7 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
         }
         if (st == FS_OK && (e <= tol || at_least)) {
             sim->time_s = t0 + h; /* as a whole step of h ends */
-            keep_step(sim, h, e, 2, 0);
+            keep_step(sim, h, e, 2, 0, 0);
             sim->cruise_left = capped && tries == 1 ? CRUISE_STEPS : 0; /* accepted at once at the bound */
             return FS_OK;
         }

@@ -75,6 +75,8 @@ typedef struct fs_step_stats {
     long cruised;          /* steps taken singly at the dampers' bound, not doubled */
     double least_s, largest_s; /* of the steps accepted (a step cut short to end on a horizon included) */
     long at_level[FS_STEP_LEVELS]; /* steps accepted at each level (one cut short: at the level it was cut from) */
+    long at_bound;         /* of those, the embedded estimate's steps cut to the dampers' bound ... */
+    double bound_s;        /* ... which was this long (the last such step's) */
 } fs_step_stats;
 
 typedef struct fs_sim {
@@ -192,7 +194,8 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err);
  * doubling or cruising (sim_adapt.c). */
 void fs_sim_set_horizon(fs_sim *sim, double t_s);
 /* The median of the accepted steps, s: the level at which half of them had been taken (a step cut
- * short at a horizon counted at its level); the fixed step with fixed steps; 0 before any. */
+ * short at a horizon counted at its level, one cut to the dampers' bound as the bound's own); the
+ * fixed step with fixed steps; 0 before any. */
 double fs_sim_median_step_s(const fs_sim *sim);
 
 /* The load's force now (it rises over ramp_s), N; it acts along down. */
