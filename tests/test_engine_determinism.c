@@ -118,18 +118,26 @@ static void rough_landings_hash_to_their_committed_value(void)
  * under drop_weight, seed 1, from the drop to rest), its state after every accepted step hashed to
  * tests/determinism_landing_tolerance.txt: the steps it takes, rejects and the states it restores
  * are the same bits every run. */
-static void variable_step_trial_hashes_to_its_committed_value(void)
+static void variable_step_trial(const char *estimate, const char *file)
 {
     uint64_t h = 1469598103934665603ULL;
     fs_run_observer obs = {.interval_s = 1e-12, .fn = hash_state, .user = &h};
-    const char *set[] = {"robot.design=robots/drop_weight.ini", "run.tolerance_m=1e-5"};
+    const char *set[] = {"robot.design=robots/drop_weight.ini", "run.tolerance_m=1e-5", estimate};
     fs_trial_result r;
     fs_error err;
-    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 2, 1, &obs, &r, &err) == FS_OK);
+    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 3, 1, &obs, &r, &err) == FS_OK);
     CHECK(r.rejected_steps > 0 && r.steps > 50);
     h = (h ^ (uint64_t)r.steps) * 1099511628211ULL;
     h = (h ^ (uint64_t)r.rejected_steps) * 1099511628211ULL;
-    check_hash("tests/determinism_landing_tolerance.txt", "variable-step landing trial", h);
+    check_hash(file, "variable-step landing trial", h);
+}
+
+/* ... and the same trial under the embedded estimate (run.error_estimate = embedded):
+ * tests/determinism_landing_embedded.txt. */
+static void variable_step_trial_hashes_to_its_committed_value(void)
+{
+    variable_step_trial("run.error_estimate=doubling", "tests/determinism_landing_tolerance.txt");
+    variable_step_trial("run.error_estimate=embedded", "tests/determinism_landing_embedded.txt");
 }
 
 /* A landing on soil (issue 29): the biomimetic foot under drop_weight onto dry sand, 0.2 s from the

@@ -74,11 +74,11 @@ static int same(const snapshot *a, const snapshot *b)
  * then take (the touchdown's rejections among them) must keep them identical. A restore that missed
  * any piece the next step reads (the last step's normal forces, which bound friction; a touch; the
  * checks' work) would part them. */
-static void a_restored_state_is_the_state(void)
+static void restored(const char *estimate)
 {
     static fs_scenario sc;
-    const char *set[] = {"robot.design=robots/drop_weight.ini", "run.tolerance_m=1e-5"};
-    load("scenarios/landing_trial.ini", set, 2, &sc);
+    const char *set[] = {"robot.design=robots/drop_weight.ini", "run.tolerance_m=1e-5", estimate};
+    load("scenarios/landing_trial.ini", set, 3, &sc);
     fs_error err;
     fs_sim a, b;
     REQUIRE(fs_sim_build(&a, &sc, NULL, &err) == FS_OK);
@@ -116,59 +116,110 @@ static void a_restored_state_is_the_state(void)
     fs_scenario_free(&sc);
 }
 
-/* The drop of the biomimetic foot under drop_weight at a tolerance of 1e-5 m. In free fall the two
- * ends differ only by gravity's share, g h^2 / 4 in position (the velocities agree), so the step
- * grows (doubling after four steps within a quarter of the tolerance) to the level with
- * sqrt(tol / g) < h <= 2 sqrt(tol / g). At the touchdown the contact's force comes on within a step:
- * the step is rejected and shrinks at least eightfold. At rest (nothing moves, the error far
- * below the tolerance) it is the largest the contacts' dampers allow: an ODE step of at most c / k
- * of the sole on the ground, taken singly (cruising) or as a pair h with c/k < h <= 2 c/k. */
-static void the_step_follows_the_motion(void)
+static void a_restored_state_is_the_state(void)
+{
+    restored("run.error_estimate=doubling");
+    restored("run.error_estimate=embedded"); /* its single steps rejected and put back the same way */
+}
+
+/* What a drop of the biomimetic foot under drop_weight at a tolerance of 1e-5 m did, stepped to 0.5 s:
+ * its last free-fall step and that step's estimate, the touchdown, the least step and the rejections
+ * within 5 ms of it, the least and largest step at rest (0.4 to 0.49 s). */
+typedef struct drop {
+    double fall_h, fall_e, touchdown, touch_min, rest_min, rest_max, ck;
+    long rejected_at_touch;
+    fs_step_stats stats;
+    double median_s;
+} drop;
+
+static void step_the_drop(const char *estimate, drop *out)
 {
     static fs_scenario sc;
-    const char *set[] = {"robot.design=robots/drop_weight.ini", "run.tolerance_m=1e-5", "run.rest_hold_s=100"};
-    load("scenarios/landing_trial.ini", set, 3, &sc);
+    const char *set[] = {"robot.design=robots/drop_weight.ini", "run.tolerance_m=1e-5", "run.rest_hold_s=100",
+                         estimate};
+    load("scenarios/landing_trial.ini", set, 4, &sc);
     fs_error err;
     fs_sim sim;
     REQUIRE(fs_sim_build(&sim, &sc, NULL, &err) == FS_OK);
-    double tol = sc.def.tolerance_m, g = sc.def.gravity_m_per_s2, fall_h = 0, touch_min = 1, rest_min = 1;
-    double touchdown = -1;
-    long rejected_at_touch = 0;
+    drop d = {.touchdown = -1, .touch_min = 1, .rest_min = 1};
     while (sim.time_s < 0.5) {
         long rejected = sim.stats.rejected;
         REQUIRE(fs_sim_step(&sim, &err) == FS_OK);
         double h = sim.step_taken_s;
-        if (touchdown < 0 && sim.contacts_now == 0)
-            fall_h = h; /* the last free-fall step */
-        if (touchdown < 0 && sim.contacts_now > 0)
-            touchdown = sim.time_s;
-        if (touchdown > 0 && sim.time_s < touchdown + 5e-3) {
-            touch_min = fmin(touch_min, h);
-            rejected_at_touch += sim.stats.rejected - rejected;
+        if (d.touchdown < 0 && sim.contacts_now == 0)
+            d.fall_h = h, d.fall_e = sim.step_error_m; /* the last free-fall step */
+        if (d.touchdown < 0 && sim.contacts_now > 0)
+            d.touchdown = sim.time_s;
+        if (d.touchdown > 0 && sim.time_s < d.touchdown + 5e-3) {
+            d.touch_min = fmin(d.touch_min, h);
+            d.rejected_at_touch += sim.stats.rejected - rejected;
         }
         if (sim.time_s > 0.4 && sim.time_s < 0.49)
-            rest_min = fmin(rest_min, h);
+            d.rest_min = fmin(d.rest_min, h), d.rest_max = fmax(d.rest_max, h);
     }
-    printf("  free fall %.3g s (sqrt(tol/g) = %.3g s), touchdown at %.4f s: least step %.3g s, %ld rejected; at rest "
-           "%.3g s; %ld steps, median %.3g s\n", fall_h, sqrt(tol / g), touchdown, touch_min, rejected_at_touch,
-           rest_min, sim.stats.taken, fs_sim_median_step_s(&sim));
-    CHECK(fall_h > sqrt(tol / g) && fall_h <= 2 * sqrt(tol / g));
-    CHECK(touchdown > 0);
-    CHECK(touch_min <= fall_h / 8);
-    CHECK(rejected_at_touch > 0);
-    double ck = sim.contact_c_Ns_per_m / sim.contact_k_N_per_m;
-    printf("  contacts' c/k %.3g s\n", ck);
-    CHECK(rest_min >= ck * (1 - 1e-12) && rest_min <= 2 * ck);
-    CHECK(sim.stats.cruised > 0); /* single steps at the bound, between doubled ones */
-    CHECK(rest_min >= 16 * touch_min);
-    CHECK(sim.stats.least_s <= touch_min && sim.stats.largest_s >= rest_min);
+    d.ck = sim.contact_c_Ns_per_m / sim.contact_k_N_per_m;
+    d.stats = sim.stats;
+    d.median_s = fs_sim_median_step_s(&sim);
+    printf("  %s: free fall %.3g s (estimate %.3g m), touchdown at %.4f s: least step %.3g s, %ld rejected; at rest "
+           "%.3g to %.3g s (contacts' c/k %.3g s); %ld steps, %ld rejected, %ld ODE steps, median %.3g s\n", estimate,
+           d.fall_h, d.fall_e, d.touchdown, d.touch_min, d.rejected_at_touch, d.rest_min, d.rest_max, d.ck,
+           d.stats.taken, d.stats.rejected, d.stats.ode_steps, d.median_s);
     fs_sim_destroy(&sim);
     fs_scenario_free(&sc);
+    *out = d;
+}
+
+/* The drop under step doubling. In free fall the two ends differ only by gravity's share, g h^2 / 4
+ * in position (the velocities agree), so the step grows (doubling after four steps within a quarter
+ * of the tolerance) to the level with sqrt(tol / g) < h <= 2 sqrt(tol / g). At the touchdown the
+ * contact's force comes on within a step: the step is rejected and shrinks at least eightfold. At
+ * rest (nothing moves, the error far below the tolerance) it is the largest the contacts' dampers
+ * allow: an ODE step of at most c / k of the sole on the ground, taken singly (cruising) or as a
+ * pair h with c/k < h <= 2 c/k. */
+static void the_step_follows_the_motion(void)
+{
+    drop d;
+    step_the_drop("run.error_estimate=doubling", &d);
+    const double tol = 1e-5, g = 9.81;
+    CHECK(d.fall_h > sqrt(tol / g) && d.fall_h <= 2 * sqrt(tol / g));
+    CHECK(d.touchdown > 0);
+    CHECK(d.touch_min <= d.fall_h / 8);
+    CHECK(d.rejected_at_touch > 0);
+    CHECK(d.rest_min >= d.ck * (1 - 1e-12) && d.rest_min <= 2 * d.ck);
+    CHECK(d.stats.cruised > 0); /* single steps at the bound, between doubled ones */
+    CHECK(d.rest_min >= 16 * d.touch_min);
+    CHECK(d.stats.least_s <= d.touch_min && d.stats.largest_s >= d.rest_min);
+}
+
+/* The same drop under the embedded estimate (run.error_estimate = embedded): one ODE step a try. In
+ * free fall every body's velocity changes by g h, the same each step, and nothing turns, so the
+ * estimate is g h^2 / 2 exactly and the step grows (as above) to the level with
+ * sqrt(tol / (2 g)) < h <= sqrt(2 tol / g). At the touchdown the toes' and heel's velocities change
+ * within a step: rejected, the step shrinks at least eightfold. At rest every step is the dampers'
+ * bound itself, c / k of the sole on the ground, and so is the median step. */
+static void the_embedded_estimate_follows_the_motion(void)
+{
+    drop d;
+    step_the_drop("run.error_estimate=embedded", &d);
+    const double tol = 1e-5, g = 9.81;
+    CHECK(d.fall_h > sqrt(tol / (2 * g)) && d.fall_h <= sqrt(2 * tol / g));
+    CHECK(fabs(d.fall_e - 0.5 * g * d.fall_h * d.fall_h) <= 1e-9 * d.fall_e);
+    CHECK(d.touchdown > 0);
+    CHECK(d.touch_min <= d.fall_h / 8);
+    CHECK(d.rejected_at_touch > 0);
+    CHECK(d.rest_min >= d.ck * (1 - 1e-12) && d.rest_max <= d.ck * (1 + 1e-12));
+    CHECK(d.stats.ode_steps == d.stats.taken + d.stats.rejected); /* one ODE step a try */
+    CHECK(d.stats.cruised == 0);
+    /* most of the 0.5 s is spent on the ground at the bound: the median is the bound's step, counted
+     * as such, not its level's (1.25 ms) */
+    CHECK(d.stats.at_bound * 2 > d.stats.taken);
+    CHECK(fabs(d.median_s - d.ck) <= 1e-12 * d.ck);
 }
 
 /* The pinned chain (bench precision's chain scene: smooth, no contact) against the planar dynamic
- * reference at rk8pd's 1e-10: with the error-controlled step the ankle stays within the tolerance of
- * it at every step, for tolerances of 1e-5 and 1e-6 m, and errs less at the smaller. The tolerance
+ * reference at rk8pd's 1e-10: with the error-controlled step, under either estimate, the ankle stays
+ * within the tolerance of it at every step, for tolerances of 1e-5 and 1e-6 m, and errs less at the
+ * smaller. The tolerance
  * bounds each step's local error, not the path's: the chain, damped and loaded toward a rest, does
  * not add them up much (at 1e-7 m the largest error was 1.11e-7 m here, so the bound is not a
  * global one and 1e-7 is not tested against it). */
@@ -183,23 +234,26 @@ static void the_chain_stays_within_the_tolerance(void)
     fs_track ref;
     REQUIRE(fs_track_reference(&sc.design, &sc.geom, &def, 1e-5, 20001, &ref, &err) == FS_OK);
     const double tols[] = {1e-5, 1e-6};
+    for (int est = 0; est < 2; est++) { /* step doubling, the embedded estimate */
     double last = INFINITY;
     for (int k = 0; k < 2; k++) {
         fs_scenario_def keep = sc.def;
         sc.def.tolerance_m = tols[k];
+        sc.def.error_estimate = est;
         fs_sim_options opts = {.with_ground = 1, .pinned_chain = 3};
         fs_track run;
         fs_track_error e;
         REQUIRE(fs_track_run(&sc, &opts, 0.2, &run, &err) == FS_OK);
         REQUIRE(fs_track_compare(&run, &ref, &e, &err) == FS_OK);
-        printf("  tolerance %g m: largest ankle error %.3g m over %d samples, %ld steps (%ld rejected)\n", tols[k],
-               e.max_m, e.compared, run.steps, run.rejected);
+        printf("  %s, tolerance %g m: largest ankle error %.3g m over %d samples, %ld steps (%ld rejected)\n",
+               est ? "embedded" : "doubling", tols[k], e.max_m, e.compared, run.steps, run.rejected);
         CHECK(e.compared == run.n - 1 || e.compared == run.n);
         CHECK(e.max_m <= tols[k]);
         CHECK(e.max_m < last); /* and less at the smaller tolerance */
         last = e.max_m;
         fs_track_free(&run);
         sc.def = keep;
+    }
     }
     fs_track_free(&ref);
     fs_scenario_free(&sc);
@@ -217,7 +271,13 @@ static void settings_and_refusals(void)
     fs_scenario_settings(&b, sb, sizeof sb);
     CHECK(!strstr(sa, "tolerance"));
     CHECK(strstr(sb, "tolerance_m 1e-05, step_max_s 0.01, step_min_s 1e-05") != NULL);
+    CHECK(!strstr(sb, "error_estimate")); /* doubling, the default, is not said */
     fs_scenario_free(&a);
+    fs_scenario_free(&b);
+    const char *embedded[] = {"run.tolerance_m=1e-5", "run.error_estimate=embedded"};
+    load("scenarios/landing_trial.ini", embedded, 2, &b);
+    fs_scenario_settings(&b, sb, sizeof sb);
+    CHECK(strstr(sb, "step_min_s 1e-05, error_estimate embedded") != NULL);
     fs_scenario_free(&b);
     const char *bad[][2] = {{"run.tolerance_m=1e-5", "run.impact_substeps=4"},
                             {"run.tolerance_m=1e-5", "run.auto_disable_s=0.05"},
@@ -235,4 +295,5 @@ static void settings_and_refusals(void)
 }
 
 FS_TEST_MAIN(TEST(a_restored_state_is_the_state), TEST(the_step_follows_the_motion),
+             TEST(the_embedded_estimate_follows_the_motion),
              TEST(the_chain_stays_within_the_tolerance), TEST(settings_and_refusals))

@@ -9,7 +9,10 @@
  * all; and the trial as `footsim trial --seed 1` runs it (fs_trial_run_scenario: until the judge
  * decides), its outcome, settle time, impulse and wall time, the median of `runs` runs (default 3),
  * every configuration taking turns run by run so that other load hits all alike, and its real-time
- * factor as a ratio to the fixed default step's from the same runs. Markdown on stdout. */
+ * factor as a ratio to the fixed default step's from the same runs. A tolerance written with a
+ * leading 'e' (e3e-6) uses the embedded estimate (run.error_estimate = embedded), else step doubling.
+ * Then where each configuration's steps went over the 0.5 s: in flight (before the touchdown), the
+ * impact (its first 20 ms), settling (to 0.25 s) and the rest. Markdown on stdout. */
 #include "cli.h"
 
 #include "footsim/base/fs_stats.h"
@@ -30,6 +33,8 @@ static const char *const ROBOTS[] = {"robots/drop_weight.ini", "robots/single_ta
 typedef struct conf {
     double tolerance_m;          /* 0: the fixed step (REF_STEP_S for the reference row, else 1e-4) */
     double step_s;
+    int estimate;                /* fs_error_estimate */
+    long phase_steps[4], phase_rejected[4], phase_ode[4]; /* flight, impact, settling, rest */
     fs_track_error e;
     long steps, rejected, ode_steps;
     fs_trial_result trial;
@@ -46,6 +51,32 @@ static void settings(fs_scenario *sc, const conf *c)
 {
     sc->def.step_s = c->step_s;
     sc->def.tolerance_m = c->tolerance_m;
+    sc->def.error_estimate = c->estimate;
+}
+
+enum { PHASES = 4 };
+static const char *const PHASE[PHASES] = {"flight", "impact (20 ms)", "settling (to 0.25 s)", "rest (to 0.5 s)"};
+
+/* Steps the scene's sim over DURATION_S, counting the accepted steps, rejections and ODE steps of
+ * each phase (a step counted where it ends). */
+static fs_status phases(const fs_scenario *sc, conf *c, fs_error *err)
+{
+    static fs_sim sim;
+    fs_status s = fs_sim_build(&sim, sc, NULL, err);
+    double touchdown = -1;
+    while (s == FS_OK && sim.time_s < DURATION_S - 1e-9) {
+        long taken = sim.stats.taken, rejected = sim.stats.rejected, ode = sim.stats.ode_steps;
+        if ((s = fs_sim_step(&sim, err)) != FS_OK)
+            break;
+        if (touchdown < 0 && sim.contacts_now > 0)
+            touchdown = sim.time_s;
+        int p = touchdown < 0 ? 0 : sim.time_s < touchdown + 0.02 ? 1 : sim.time_s < 0.25 ? 2 : 3;
+        c->phase_steps[p] += sim.stats.taken - taken;
+        c->phase_rejected[p] += sim.stats.rejected - rejected;
+        c->phase_ode[p] += sim.stats.ode_steps - ode;
+    }
+    fs_sim_destroy(&sim);
+    return s;
 }
 
 int main(int argc, char **argv)
@@ -56,10 +87,13 @@ int main(int argc, char **argv)
         return 2;
     }
     double tols[MAX_CONF] = {1e-4, 3e-5, 1e-5, 3e-6, 1e-6};
-    int ntols = 5;
+    int ntols = 5, embedded[MAX_CONF] = {0};
     if (argc > 2)
-        for (ntols = 0; ntols + 2 < argc && ntols < MAX_CONF - 2; ntols++)
-            tols[ntols] = atof(argv[ntols + 2]);
+        for (ntols = 0; ntols + 2 < argc && ntols < MAX_CONF - 2; ntols++) {
+            const char *a = argv[ntols + 2];
+            embedded[ntols] = a[0] == 'e';
+            tols[ntols] = atof(a + embedded[ntols]);
+        }
     fs_ode_init();
     char machine[512];
     cli_machine(machine, sizeof machine);
@@ -74,7 +108,7 @@ int main(int argc, char **argv)
         int n = 0;
         c[n++] = (conf){.step_s = trial.def.step_s};
         for (int k = 0; k < ntols; k++)
-            c[n++] = (conf){.step_s = trial.def.step_s, .tolerance_m = tols[k]};
+            c[n++] = (conf){.step_s = trial.def.step_s, .tolerance_m = tols[k], .estimate = embedded[k]};
         fs_sim_options opts = {.with_ground = 1, .record_drift = 1};
         fs_track ref;
         sc = scene;
@@ -91,6 +125,8 @@ int main(int argc, char **argv)
                 return fail(s, &err);
             c[i].steps = t.steps, c[i].rejected = t.rejected, c[i].ode_steps = t.ode_steps;
             fs_track_free(&t);
+            if ((s = phases(&sc, &c[i], &err)) != FS_OK)
+                return fail(s, &err);
         }
         for (int r = 0; r < runs; r++)
             for (int i = 0; i < n; i++) {
@@ -117,13 +153,29 @@ int main(int argc, char **argv)
             double rtf = t->end_time_s / c[i].wall_s, rtf0 = c[0].trial.end_time_s / c[0].wall_s;
             char what[64];
             if (c[i].tolerance_m > 0)
-                snprintf(what, sizeof what, "tolerance %g m", c[i].tolerance_m);
+                snprintf(what, sizeof what, "%s %g m", c[i].estimate ? "embedded" : "tolerance", c[i].tolerance_m);
             else
                 snprintf(what, sizeof what, "fixed %g s", c[i].step_s);
             printf("| %s | %.4f | %ld (%ld) | %ld | %s (%s) | %.4f | %.3f | %ld (%ld) | %.2e | %.1f | %.2f |\n", what,
                    c[i].e.max_m * 1e3, c[i].steps, c[i].rejected, c[i].ode_steps, fs_outcome_name(t->outcome),
                    fs_rule_name(t->rule), t->settle_time_s, t->impact_impulse_Ns, t->steps, t->rejected_steps,
                    t->step_median_s, rtf, rtf / rtf0);
+        }
+        printf("\nWhere the steps went over %g s: accepted steps (rejected), ODE steps.\n\n| step |", DURATION_S);
+        for (int p = 0; p < PHASES; p++)
+            printf(" %s |", PHASE[p]);
+        printf("\n|---|");
+        for (int p = 0; p < PHASES; p++)
+            printf("--:|");
+        printf("\n");
+        for (int i = 0; i < n; i++) {
+            if (c[i].tolerance_m > 0)
+                printf("| %s %g m |", c[i].estimate ? "embedded" : "tolerance", c[i].tolerance_m);
+            else
+                printf("| fixed %g s |", c[i].step_s);
+            for (int p = 0; p < PHASES; p++)
+                printf(" %ld (%ld), %ld |", c[i].phase_steps[p], c[i].phase_rejected[p], c[i].phase_ode[p]);
+            printf("\n");
         }
         fs_track_free(&ref);
     }

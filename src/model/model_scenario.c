@@ -48,6 +48,11 @@ const fs_key fs_scenario_keys[] = {
     NUM("run", "step_min_s", step_min_s, FS_STEP_MIN_S, FS_STEP_MAX_S, 0, "s", "1e-5",
         "with tolerance_m: the least ODE step (half the least pair); a step that misses the tolerance at it is kept "
         "and counted"),
+    {"run", "error_estimate", FS_KEY_CHOICE, F(error_estimate), 0, 0, 0, 0, "doubling|embedded", "", "doubling",
+     "with tolerance_m: doubling: each step taken whole and as two half steps, their ends compared (3 ODE steps a "
+     "step); embedded: one ODE step, its error from each body's change of velocity over it (ODE's semi-implicit "
+     "Euler against the explicit Euler step it embeds) and that change's own change since the last step "
+     "(docs/bench.md)"},
     {"run", "stepper", FS_KEY_CHOICE, F(stepper), 0, 0, 0, 0, "step|quickstep", "", "step",
      "step: dWorldStep (direct); quickstep: dWorldQuickStep (iterative)"},
     {"run", "iterations", FS_KEY_INTEGER, F(iterations), 1, 10000, 0, 0, NULL, "", "50", "dWorldQuickStep iterations"},
@@ -357,8 +362,8 @@ void fs_scenario_settings(const fs_scenario *sc, char *buf, size_t size)
         snprintf(buf + used, size - used, ", damping_correction 0");
     used = strlen(buf);
     if (d->tolerance_m > 0 && used < size) /* the same */
-        snprintf(buf + used, size - used, ", tolerance_m %.6g, step_max_s %.6g, step_min_s %.6g", d->tolerance_m,
-                 d->step_max_s, d->step_min_s);
+        snprintf(buf + used, size - used, ", tolerance_m %.6g, step_max_s %.6g, step_min_s %.6g%s", d->tolerance_m,
+                 d->step_max_s, d->step_min_s, d->error_estimate == FS_ESTIMATE_EMBEDDED ? ", error_estimate embedded" : "");
     used = strlen(buf);
     if (d->impact_substeps > 1 && used < size) /* the same */
         snprintf(buf + used, size - used, ", impact_substeps %d, impact_window_s %.6g", d->impact_substeps,

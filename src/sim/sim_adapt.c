@@ -1,4 +1,5 @@
-/* sim_adapt.c: the error-controlled step (run.tolerance_m > 0), by step doubling.
+/* sim_adapt.c: the error-controlled step (run.tolerance_m > 0), by step doubling or, with
+ * run.error_estimate = embedded, by the embedded Euler pair (one ODE step a try: embedded_m below).
  *
  * A step of h = step_max_s / 2^level is tried whole from the saved state, the state put back, and
  * then taken as two half steps; the two ends' difference estimates the half steps' local error
@@ -37,6 +38,9 @@ struct fs_sim_saved {
     double contact_pos[FS_MAX_STEP_CONTACTS][3], contact_depth_m[FS_MAX_STEP_CONTACTS];
     short shape[FS_MAX_STEP_CONTACTS];
     double normal[FS_MAX_STEP_CONTACTS][3];
+    /* the embedded estimate's memory: each body's change of velocity and angular velocity over the
+     * last accepted step, and that step (0 before the first) */
+    double dv[FS_MAX_BODIES + 1][6], h_before;
 };
 
 /* Growth waits for this many accepted steps in a row with the error below a quarter of the
@@ -88,7 +92,10 @@ void fs_sim_count_step(fs_sim *sim, double h, int level)
     s->least_s = s->taken ? fmin(s->least_s, h) : h;
     s->largest_s = s->taken ? fmax(s->largest_s, h) : h;
     s->taken++;
-    s->at_level[level < FS_STEP_LEVELS ? level : FS_STEP_LEVELS - 1]++;
+    if (level < 0) /* the embedded estimate's step cut to the dampers' bound */
+        s->at_bound++, s->bound_s = h;
+    else
+        s->at_level[level < FS_STEP_LEVELS ? level : FS_STEP_LEVELS - 1]++;
     sim->step_taken_s = h;
 }
 
@@ -98,10 +105,18 @@ double fs_sim_median_step_s(const fs_sim *sim)
     if (!sim->saved)
         return s->taken ? sim->sc->def.step_s : 0;
     long seen = 0;
-    for (int k = FS_STEP_LEVELS - 1; k >= 0; k--) /* from the least step up */
-        if ((seen += s->at_level[k]) * 2 >= s->taken && s->taken)
-            return sim->sc->def.step_max_s / ldexp(1, k);
-    return 0;
+    int bound_counted = 0;
+    for (int k = FS_STEP_LEVELS - 1; k >= 0 && s->taken; k--) { /* from the least step up */
+        double h = sim->sc->def.step_max_s / ldexp(1, k);
+        if (!bound_counted && s->at_bound && h > s->bound_s) { /* the steps cut to the bound, in their place */
+            bound_counted = 1;
+            if ((seen += s->at_bound) * 2 >= s->taken)
+                return s->bound_s;
+        }
+        if ((seen += s->at_level[k]) * 2 >= s->taken)
+            return h;
+    }
+    return s->taken ? s->bound_s : 0;
 }
 
 /* ---- the state, saved and put back ------------------------------------------------------------ */
@@ -250,18 +265,137 @@ static fs_status one(fs_sim *sim, double h, int again, fs_error *err)
     return fs_sim_step_by(sim, h, err);
 }
 
+/* A step of h ending past the horizon is cut to end on it (never a sliver short of it). */
+static double to_horizon(const fs_sim *sim, double h)
+{
+    double t0 = sim->time_s;
+    if (sim->horizon_s > t0 && t0 + h > sim->horizon_s - 0.5 * sim->sc->def.step_min_s)
+        return sim->horizon_s - t0;
+    return h;
+}
+
+/* A step of h taken in `substeps` ODE steps, kept with error e: counted (at its level, or as the
+ * dampers' bound's when cut to it), and the next one a level larger after GROW_AFTER in a row within
+ * a quarter of the tolerance (never above top_level). */
+static void keep_step(fs_sim *sim, double h, double e, int substeps, int top_level, int at_bound)
+{
+    double tol = sim->sc->def.tolerance_m;
+    sim->substeps_now = substeps;
+    sim->step_error_m = e;
+    sim->stats.missed += e > tol;
+    fs_sim_count_step(sim, h, at_bound ? -1 : sim->level);
+    if (e <= tol / 4 && ++sim->level_held >= GROW_AFTER && sim->level > top_level)
+        sim->level--, sim->level_held = 0;
+}
+
+/* A step beyond the tolerance (error e), or whose checks failed (st) above the least level: the
+ * state put back and the next try smaller, by as many levels as the error asks when far beyond
+ * (each takes it down about 4 times). */
+static void reject_step(fs_sim *sim, fs_status st, double e, int least)
+{
+    sim->stats.rejected++;
+    fs_sim_restore_state(sim);
+    sim->level_held = 0;
+    sim->level++;
+    for (double r = st == FS_OK ? e / sim->sc->def.tolerance_m / 4 : 0; r > 1 && sim->level < least; r /= 4)
+        sim->level++;
+}
+
+/* The embedded estimate (run.error_estimate = embedded), the two terms step doubling weighs, from
+ * one ODE step. Position: how far apart ODE's semi-implicit Euler step (position from the velocity
+ * at the step's end) and the explicit Euler step it embeds (from the velocity at its start) put a
+ * body's points, halved: h/2 times the centre's change of velocity dv, plus the reach times the
+ * change of angular velocity; under an acceleration a this is h^2 |a| / 2, the semi-implicit step's
+ * own local error in position. Velocity (times h, as doubling weighs it): h/2 times the change of
+ * acceleration, dv less the last accepted step's dv scaled to this step (h^2 |da/dt| h / 2). A force
+ * that comes on within the step (a touchdown, a toe that sticks) shows in both. The largest over the
+ * bodies; it costs no ODE step beyond the step itself. */
+static double embedded_m(const fs_sim *sim, const body_state *before, const body_state *after, double h)
+{
+    const struct fs_sim_saved *s = sim->saved;
+    double worst = 0, q = s->h_before > 0 ? h / s->h_before : 0;
+    for (int i = 0; i < nbodies_saved(sim); i++) {
+        double r = reach_of(sim, i), dv[6], jerk[2] = {0, 0};
+        for (int k = 0; k < 3; k++) {
+            dv[k] = after[i].v[k] - before[i].v[k];
+            dv[3 + k] = after[i].w[k] - before[i].w[k];
+        }
+        for (int k = 0; q > 0 && k < 6; k++) /* the change of acceleration: the velocity's own error */
+            jerk[k / 3] += (dv[k] - q * s->dv[i][k]) * (dv[k] - q * s->dv[i][k]);
+        double e = 0.5 * h * (sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]) + sqrt(jerk[0]) +
+                              r * (sqrt(dv[3] * dv[3] + dv[4] * dv[4] + dv[5] * dv[5]) + sqrt(jerk[1])));
+        worst = isfinite(e) ? fmax(worst, e) : INFINITY;
+    }
+    return worst;
+}
+
+/* Keeps each body's change of velocity over the step just accepted, for the next estimate. */
+static void remember_change(fs_sim *sim, const body_state *before, const body_state *after, double h)
+{
+    struct fs_sim_saved *s = sim->saved;
+    for (int i = 0; i < nbodies_saved(sim); i++)
+        for (int k = 0; k < 3; k++) {
+            s->dv[i][k] = after[i].v[k] - before[i].v[k];
+            s->dv[i][3 + k] = after[i].w[k] - before[i].w[k];
+        }
+    s->h_before = h;
+}
+
+/* One step under the embedded estimate: a single ODE step of h = step_max_s / 2^level, at most the
+ * dampers' bound, kept within the tolerance (or at the least level), else put back and tried smaller,
+ * as the doubled step is. */
+static fs_status embedded_step(fs_sim *sim, double bound, fs_error *err)
+{
+    const fs_scenario_def *d = &sim->sc->def;
+    struct fs_sim_saved *s = sim->saved;
+    double tol = d->tolerance_m;
+    int least = 0; /* the level of the least ODE step */
+    while (d->step_max_s / ldexp(1, least + 1) >= d->step_min_s * (1 - 1e-9) && least < FS_STEP_LEVELS - 1)
+        least++;
+    int bound_level = 0; /* the largest level step the bound cuts to the bound itself */
+    while (d->step_max_s / ldexp(1, bound_level) > 2 * bound && bound_level < least)
+        bound_level++;
+    sim->level = sim->level > least ? least : sim->level < bound_level ? bound_level : sim->level;
+    fs_sim_save_state(sim);
+    for (int tries = 0;; tries++) {
+        double level_h = d->step_max_s / ldexp(1, sim->level), h = to_horizon(sim, fmin(level_h, bound));
+        int at_bound = bound < level_h && h == bound;
+        int at_least = sim->level >= least;
+        fs_error trial_err;
+        fs_status st = one(sim, h, tries > 0, &trial_err);
+        double e = INFINITY;
+        body_state after[FS_MAX_BODIES + 1];
+        if (st == FS_OK) {
+            read_bodies(sim, after);
+            e = embedded_m(sim, s->body, after, h);
+        }
+        if (st == FS_OK && (e <= tol || at_least)) {
+            remember_change(sim, s->body, after, h);
+            keep_step(sim, h, e, 1, bound_level, at_bound);
+            return FS_OK;
+        }
+        if (st != FS_OK && at_least) { /* the checks fail at the least step: a failure of the run */
+            *err = trial_err;
+            return st;
+        }
+        reject_step(sim, st, e, least);
+    }
+}
+
 fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
 {
     const fs_scenario_def *d = &sim->sc->def;
     struct fs_sim_saved *s = sim->saved;
     double tol = d->tolerance_m;
+    /* the dampers' limit (damped_step): while a foot touches, the contacts' too */
+    double bound = fmin(sim->damped_step_s, sim->contacts_now > 0 ? sim->damped_contact_s : INFINITY);
+    if (d->error_estimate == FS_ESTIMATE_EMBEDDED)
+        return embedded_step(sim, bound, err);
     int least = 0; /* the level whose half step is the least ODE step */
     while (d->step_max_s / ldexp(1, least + 1) / 2 >= d->step_min_s * (1 - 1e-9) && least < FS_STEP_LEVELS - 1)
         least++;
     if (sim->level > least)
         sim->level = least;
-    /* the dampers' limit (damped_step): while a foot touches, the contacts' too */
-    double bound = fmin(sim->damped_step_s, sim->contacts_now > 0 ? sim->damped_contact_s : INFINITY);
     int bound_level = 0; /* the largest step the dampers allow */
     while (d->step_max_s / ldexp(1, bound_level) > 2 * bound && bound_level < least)
         bound_level++;
@@ -272,9 +406,7 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
     int tries = 0;
     if (capped && sim->cruise_left > 0 && sim->contacts_now > 0) {
         /* cruising at the dampers' bound: one ODE step of it, kept unless the contact set changed */
-        double h = bound, t0 = sim->time_s;
-        if (sim->horizon_s > t0 && t0 + h > sim->horizon_s - 0.5 * d->step_min_s)
-            h = sim->horizon_s - t0;
+        double h = to_horizon(sim, bound);
         uint64_t before = touching(sim);
         fs_error trial_err;
         fs_status st = one(sim, h, tries++ > 0, &trial_err);
@@ -290,9 +422,7 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
         sim->cruise_left = 0;
     }
     for (;;) {
-        double h = d->step_max_s / ldexp(1, sim->level), t0 = sim->time_s;
-        if (sim->horizon_s > t0 && t0 + h > sim->horizon_s - 0.5 * d->step_min_s)
-            h = sim->horizon_s - t0; /* end on the horizon (never a sliver short of it) */
+        double t0 = sim->time_s, h = to_horizon(sim, d->step_max_s / ldexp(1, sim->level));
         int at_least = sim->level >= least;
         fs_error trial_err;
         fs_status st = one(sim, h, tries++ > 0, &trial_err);
@@ -315,12 +445,7 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
         }
         if (st == FS_OK && (e <= tol || at_least)) {
             sim->time_s = t0 + h; /* as a whole step of h ends */
-            sim->substeps_now = 2;
-            sim->step_error_m = e;
-            sim->stats.missed += e > tol;
-            fs_sim_count_step(sim, h, sim->level);
-            if (e <= tol / 4 && ++sim->level_held >= GROW_AFTER && sim->level > 0)
-                sim->level--, sim->level_held = 0;
+            keep_step(sim, h, e, 2, 0, 0);
             sim->cruise_left = capped && tries == 1 ? CRUISE_STEPS : 0; /* accepted at once at the bound */
             return FS_OK;
         }
@@ -328,13 +453,6 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err)
             *err = trial_err;
             return st;
         }
-        /* beyond the tolerance, or the checks failed at a larger step: back, and smaller */
-        sim->stats.rejected++;
-        fs_sim_restore_state(sim);
-        sim->level_held = 0;
-        sim->level++;
-        /* far beyond: as many levels as the error asks (each takes it down about 4 times) */
-        for (double r = st == FS_OK ? e / tol / 4 : 0; r > 1 && sim->level < least; r /= 4)
-            sim->level++;
+        reject_step(sim, st, e, least); /* beyond the tolerance, or the checks failed at a larger step */
     }
 }

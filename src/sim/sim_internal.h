@@ -189,7 +189,8 @@ void fs_sim_add_torques_again(fs_sim *sim);
  * sim->step_taken_s. */
 fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err);
 
-/* Records an accepted step of h taken at level (sim->stats; sim_adapt.c), and sets step_taken_s. */
+/* Records an accepted step of h taken at level (-1: the embedded estimate's step cut to the dampers'
+ * bound) (sim->stats; sim_adapt.c), and sets step_taken_s. */
 void fs_sim_count_step(fs_sim *sim, double h, int level);
 
 /* The state a step changes, saved (into sim->saved) and put back bit for bit: every body's position,

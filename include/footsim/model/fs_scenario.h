@@ -27,6 +27,10 @@ enum { FS_MAX_SHAPE_CONTACTS = 256 };
 
 typedef enum fs_stepper { FS_STEPPER_STEP = 0, FS_STEPPER_QUICKSTEP = 1 } fs_stepper;
 
+/* [run] error_estimate: how the error-controlled step (tolerance_m) estimates a step's error (the
+ * order of the key's choices; sim_adapt.c). */
+typedef enum fs_error_estimate { FS_ESTIMATE_DOUBLING = 0, FS_ESTIMATE_EMBEDDED = 1 } fs_error_estimate;
+
 /* [scenario] kind: what the scenario is run by (the order of the key's choices). */
 typedef enum fs_scenario_kind { FS_SCENARIO_EXPERIMENT = 0, FS_SCENARIO_WALK = 1 } fs_scenario_kind;
 
@@ -46,6 +50,7 @@ typedef struct fs_scenario_def {
     double impact_window_s;    /* ... from a touchdown foreseen within the step until this long after it */
     double tolerance_m;        /* > 0: an error-controlled step (fs_sim_step) of at most step_max_s ... */
     double step_max_s, step_min_s; /* ... and an ODE step of at least step_min_s; 0: fixed steps of step_s */
+    int error_estimate;        /* fs_error_estimate: with tolerance_m, step doubling or the embedded pair */
     int stepper, iterations;
     int springs;               /* fs_spring_impl */
     int damping_correction;    /* 1: soft rows' dampers less k h (fs_spring_soft), 0: plain implicit Euler */

@@ -66,7 +66,9 @@ typedef struct fs_touch {
 } fs_touch;
 
 /* The steps a sim has taken: with run.tolerance_m > 0 the error-controlled step's (fs_sim_step), a
- * step being a pair of half steps of ODE's whose size is step_max_s / 2^level; else the fixed steps. */
+ * step being a pair of half steps of ODE's whose size is step_max_s / 2^level (with the embedded
+ * estimate one ODE step of that size, or of the dampers' bound when less: counted at its level);
+ * else the fixed steps. */
 enum { FS_STEP_LEVELS = 48 };
 typedef struct fs_step_stats {
     long taken;            /* steps accepted */
@@ -76,6 +78,8 @@ typedef struct fs_step_stats {
     long cruised;          /* steps taken singly at the dampers' bound, not doubled */
     double least_s, largest_s; /* of the steps accepted (a step cut short to end on a horizon included) */
     long at_level[FS_STEP_LEVELS]; /* steps accepted at each level (one cut short: at the level it was cut from) */
+    long at_bound;         /* of those, the embedded estimate's steps cut to the dampers' bound ... */
+    double bound_s;        /* ... which was this long (the last such step's) */
 } fs_step_stats;
 
 /* The simulation: opaque. Its layout (the ODE world, bodies, joints, the step's scratch) is the sim
@@ -112,10 +116,16 @@ fs_status fs_sim_step(fs_sim *sim, fs_error *err);
  * (fs_spring_soft; docs/bench.md). Where that bound, not the error, sets the step, a doubled step
  * accepted at once is followed by 8 single ODE steps of the bound, each put back and doubled if the
  * set of shapes touching the ground changed. The time advanced is
- * sim->step_taken_s; the ground force read after it is the mean over its two half steps. */
+ * sim->step_taken_s; the ground force read after it is the mean over its two half steps.
+ * With run.error_estimate = embedded, a step is one ODE step of step_max_s / 2^level (cut to the
+ * dampers' bound), its error h / 2 times each body's change of velocity over the step and that
+ * change's difference from the last step's (its centre's, and its angular velocity's times its
+ * reach): rejected and retried smaller, grown, bounded and ended on the horizon as above, without
+ * doubling or cruising (sim_adapt.c). */
 void fs_sim_set_horizon(fs_sim *sim, double t_s);
 /* The median of the accepted steps, s: the level at which half of them had been taken (a step cut
- * short at a horizon counted at its level); the fixed step with fixed steps; 0 before any. */
+ * short at a horizon counted at its level, one cut to the dampers' bound as the bound's own); the
+ * fixed step with fixed steps; 0 before any. */
 double fs_sim_median_step_s(const fs_sim *sim);
 
 /* The load's force now (it rises over ramp_s), N; it acts along down. */
