@@ -61,21 +61,23 @@ static const char *const PHASE[PHASES] = {"flight", "impact (20 ms)", "settling 
  * each phase (a step counted where it ends). */
 static fs_status phases(const fs_scenario *sc, conf *c, fs_error *err)
 {
-    static fs_sim sim;
-    fs_status s = fs_sim_build(&sim, sc, NULL, err);
+    fs_sim *sim = NULL;
+    fs_status s = fs_sim_new(sc, NULL, &sim, err);
     double touchdown = -1;
-    while (s == FS_OK && sim.time_s < DURATION_S - 1e-9) {
-        long taken = sim.stats.taken, rejected = sim.stats.rejected, ode = sim.stats.ode_steps;
-        if ((s = fs_sim_step(&sim, err)) != FS_OK)
+    const fs_step_stats *st = s == FS_OK ? fs_sim_step_stats(sim) : NULL;
+    while (s == FS_OK && fs_sim_time(sim) < DURATION_S - 1e-9) {
+        long taken = st->taken, rejected = st->rejected, ode = st->ode_steps;
+        if ((s = fs_sim_step(sim, err)) != FS_OK)
             break;
-        if (touchdown < 0 && sim.contacts_now > 0)
-            touchdown = sim.time_s;
-        int p = touchdown < 0 ? 0 : sim.time_s < touchdown + 0.02 ? 1 : sim.time_s < 0.25 ? 2 : 3;
-        c->phase_steps[p] += sim.stats.taken - taken;
-        c->phase_rejected[p] += sim.stats.rejected - rejected;
-        c->phase_ode[p] += sim.stats.ode_steps - ode;
+        double t = fs_sim_time(sim);
+        if (touchdown < 0 && fs_sim_contact_count(sim) > 0)
+            touchdown = t;
+        int p = touchdown < 0 ? 0 : t < touchdown + 0.02 ? 1 : t < 0.25 ? 2 : 3;
+        c->phase_steps[p] += st->taken - taken;
+        c->phase_rejected[p] += st->rejected - rejected;
+        c->phase_ode[p] += st->ode_steps - ode;
     }
-    fs_sim_destroy(&sim);
+    fs_sim_free(sim);
     return s;
 }
 
