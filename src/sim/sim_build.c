@@ -302,6 +302,8 @@ static void build_joints(fs_sim *sim)
         double p1[3] = {a.x, a.y, a.z}, p2[3] = {b.x, b.y, b.z};
         fs_sim_spring_init(sim, &sim->spring[i], sim->body[s->body1], sim->body[s->body2], p1, p2, s->k_N_per_m,
                            s->c_Ns_per_m, s->rest_length_m);
+        if (!fs_spring_law_is_linear(&s->law)) /* Table I's linear springs: as they always were */
+            fs_spring_set_law(&sim->spring[i], &s->law);
     }
 }
 
@@ -544,6 +546,8 @@ void fs_sim_destroy(fs_sim *sim)
         dSpaceDestroy(sim->space); /* destroys the shapes it holds */
     if (sim->contact_group)
         dJointGroupDestroy(sim->contact_group);
+    for (int i = 0; sim->geom && i < sim->geom->nsprings; i++)
+        fs_spring_free(&sim->spring[i]); /* a cable's joint group */
     if (sim->world)
         dWorldDestroy(sim->world);
     free(sim->feedback);

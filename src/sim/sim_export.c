@@ -551,6 +551,40 @@ static void defaults(exporter *x)
     end(x);
 }
 
+/* The mass a spring's line moves, as if its two bodies were free: 1/m = the sum over both of
+ * 1/m_b + (r_b x u)^T I_b^-1 (r_b x u), r_b its anchor from the body's COM, u the line (the world's
+ * anchor adds nothing). */
+static double line_mass(const fs_spring *s)
+{
+    double p[2][3], u[3], len = 0, inv = 0;
+    fs_spring_anchors(s, p[0], p[1]);
+    for (int i = 0; i < 3; i++) {
+        u[i] = p[1][i] - p[0][i];
+        len += u[i] * u[i];
+    }
+    len = sqrt(len);
+    for (int i = 0; i < 3; i++)
+        u[i] /= len;
+    dBodyID body[2] = {s->body1, s->body2};
+    for (int e = 0; e < 2; e++) {
+        if (!body[e])
+            continue;
+        dMass m;
+        dBodyGetMass(body[e], &m);
+        const dReal *c = dBodyGetPosition(body[e]);
+        dVector3 r = {p[e][0] - c[0], p[e][1] - c[1], p[e][2] - c[2], 0}, w, wl;
+        dCalcVectorCross3(w, r, u);
+        dBodyVectorFromWorld(body[e], w[0], w[1], w[2], wl); /* I is in the body's frame */
+        dMatrix3 I;
+        dReal Iw[3];
+        dInvertPDMatrix(m.I, I, 3); /* ODE's 3 x 3 in rows of 4 */
+        for (int r3 = 0; r3 < 3; r3++)
+            Iw[r3] = I[4 * r3] * wl[0] + I[4 * r3 + 1] * wl[1] + I[4 * r3 + 2] * wl[2];
+        inv += 1 / m.mass + wl[0] * Iw[0] + wl[1] * Iw[1] + wl[2] * Iw[2];
+    }
+    return 1 / inv;
+}
+
 static void tendon(exporter *x, const char *name, const fs_spring *s)
 {
     char a[96], b[96];
@@ -558,9 +592,21 @@ static void tendon(exporter *x, const char *name, const fs_spring *s)
     snprintf(b, sizeof b, "%s_2", name);
     start(x, "spatial");
     attr(x, "name", name);
-    attr1(x, "stiffness", s->k);
-    attr1(x, "damping", s->c);
-    attr1(x, "springlength", s->rest);
+    if (s->law.tension_only) {
+        /* a cable: no spring of its own, a limit at its rest length instead (one-sided: it acts only
+           while the tendon is longer), as soft as the spring for the mass its line moves, in the
+           direct form (docs/export.md) */
+        const double range[2] = {0, s->rest}, imp[3] = {FS_MJCF_IMPEDANCE, FS_MJCF_IMPEDANCE, 0.001};
+        double m = line_mass(s), ref[2] = {-s->k / m, -s->c / m};
+        attr(x, "limited", "true");
+        attr_num(x, "range", range, 2);
+        attr_num(x, "solreflimit", ref, 2);
+        attr_num(x, "solimplimit", imp, 3);
+    } else {
+        attr1(x, "stiffness", s->k);
+        attr1(x, "damping", s->c);
+        attr1(x, "springlength", s->rest);
+    }
     attr(x, "width", "0.0005");
     start(x, "site");
     attr(x, "site", a);
@@ -671,6 +717,15 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
         return fs_fail(err, FS_BAD_INPUT, "%s: kind = biped: the biped is not exported (its leg joints' angular "
                        "spring-dampers, ODE hinge stops, have no counterpart in this export yet): export the foot "
                        "with a single robot (robots/single_tall.ini), or without --scenario", sc->def.robot_path);
+    for (int i = 0; i < sc->geom.nsprings; i++) {
+        const fs_spring_law *law = &sc->geom.spring[i].law;
+        if (law->kind != FS_LAW_LINEAR)
+            return fs_fail(err, FS_BAD_INPUT,
+                           "%s: spring %s's law is %s, which MuJoCo 2.2.2's tendons cannot express (one linear spring "
+                           "and one rest length each): export a design whose springs are linear (tension-only ones "
+                           "map, as limited tendons; docs/export.md)",
+                           sc->def.design_path, sc->geom.spring[i].name, fs_spring_law_name(law));
+    }
     fs_sim sim;
     /* the robot as its own body, welded to the ankle body as footsim's fixed joint welds it: a reader
        sees the robot apart (footsim's merge of the two is a speed cut, docs/bench.md) */
