@@ -27,7 +27,7 @@
 #include <time.h>
 #include <unistd.h>
 
-enum { NSLICES = 5, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64 };
+enum { NSLICES = 5, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, LAW_SLICE = 4 };
 
 /* A swept quantity and its values (full sweep, then --quick). */
 typedef struct slice {
@@ -283,9 +283,9 @@ static int fill_csv(FILE *f, const void *user)
     const config *cfg = x->cfg;
     const outcome *out = x->out;
     int n = x->n;
-    fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,law,class,class_code,reason,"
+    fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,class,class_code,reason,"
                "where,time_s,drift_reason,drift_time_s,steps,max_loop_err_m,max_energy_excess_J,energy_bound_J,"
-               "max_speed_m_per_s,explicit_limit_s\n");
+               "max_speed_m_per_s,explicit_limit_s,law\n");
     for (int i = 0; i < n; i++) {
         const config *c = &cfg[i];
         const outcome *o = &out[i];
@@ -297,21 +297,22 @@ static int fill_csv(FILE *f, const void *user)
             drop = 0.02;
         /* a quantity the run did not have (no failure: its time; a blow-up's non-finite figures): empty */
         char b[7][32], q[2][128];
-        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%g,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s\n", sl,
-                STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop, law,
+        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s,%g\n", sl,
+                STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop,
                 fs_check_class_name((fs_check_class)o->cls), o->cls, cli_csv_text(q[0], sizeof q[0], o->reason),
                 cli_csv_text(q[1], sizeof q[1], o->where),
                 cli_csv_num(b[0], sizeof b[0], "%.6g", o->time_s), fs_check_kind_name((fs_check_kind)o->drift),
                 cli_csv_num(b[1], sizeof b[1], "%.6g", o->drift_time_s), o->steps,
                 cli_csv_num(b[2], sizeof b[2], "%.4g", o->loop_m), cli_csv_num(b[3], sizeof b[3], "%.4g", o->excess_J),
                 cli_csv_num(b[4], sizeof b[4], "%.4g", o->bound_J),
-                cli_csv_num(b[5], sizeof b[5], "%.4g", o->speed_m_per_s), cli_csv_num(b[6], sizeof b[6], "%.4g", o->limit_s));
+                cli_csv_num(b[5], sizeof b[5], "%.4g", o->speed_m_per_s), cli_csv_num(b[6], sizeof b[6], "%.4g", o->limit_s),
+                law);
     }
     return 1;
 }
 
-/* The column of a slice's quantity in stability.csv (1-based, for gnuplot). */
-static int value_column(int s) { return 6 + s; }
+/* The column of a slice's quantity in stability.csv (1-based, for gnuplot): the law's is the last. */
+static int value_column(int s) { return s == LAW_SLICE ? 23 : 6 + s; }
 
 /* One chart per slice: step size against the quantity, a panel per spring x stepper, each run a
  * square coloured by its class, the explicit springs' predicted limit as crosses. */
