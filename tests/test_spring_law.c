@@ -225,7 +225,7 @@ static void stiffness_model_takes_the_tangent(void)
     static fs_scenario lin, prog, cab;
     fs_error err;
     const char *p[] = {"springs.d1_law=progressive", "springs.d2_law=progressive", "springs.d3_law=progressive",
-                       "springs.d1_x0_m=1e-4", "springs.d2_x0_m=0.002", "springs.d3_x0_m=0.002"};
+                       "springs.d1_x0_m=0.002", "springs.d2_x0_m=0.002", "springs.d3_x0_m=0.002"};
     const char *c[] = {"springs.d3_tension_only=yes"};
     REQUIRE(fs_scenario_load("scenarios/static_load.ini", NULL, 0, &lin, &err) == FS_OK);
     REQUIRE(fs_scenario_load("scenarios/static_load.ini", p, 6, &prog, &err) == FS_OK);
@@ -308,13 +308,13 @@ static void landing_keeps_its_energy_for_each_law(void)
     const char *sets[][7] = {
         {"springs.d1_law=linear"},
         {"springs.d1_law=progressive", "springs.d2_law=progressive", "springs.d3_law=progressive",
-         "springs.d1_x0_m=1e-4", "springs.d2_x0_m=5e-4", "springs.d3_x0_m=5e-4"},
+         "springs.d1_x0_m=5e-4", "springs.d2_x0_m=5e-4", "springs.d3_x0_m=5e-4"},
         {"springs.d1_law=bilinear", "springs.d2_law=bilinear", "springs.d3_law=bilinear", "springs.d1_stop_m=2e-4",
          "springs.d2_stop_m=2e-4", "springs.d3_stop_m=2e-4", "springs.d1_k2_N_per_m=48000"},
         {"springs.d1_law=curve", "springs.d1_curve_m=-0.001, 0, 0.0002, 0.001",
          "springs.d1_curve_N=-20, 0, 2.4, 40"},
         {"springs.d3_tension_only=yes", "springs.d1_tension_only=yes", "springs.d1_law=progressive",
-         "springs.d1_x0_m=1e-4"},
+         "springs.d1_x0_m=5e-4"},
     };
     const int nsets[] = {1, 6, 7, 3, 4};
     for (int l = 0; l < 5; l++) {
