@@ -121,6 +121,7 @@ static void prepare_law(fs_spring *s, double h)
        anchor 2, the depth the shifted stretch f(x) / k plus the world's surface layer, which ODE
        takes off every contact's depth */
     dJointGroupEmpty(s->cable);
+    s->cable_row = x > 0;
     if (x <= 0)
         return;
     dContact ct;

@@ -35,6 +35,7 @@ typedef struct fs_spring {
     double step;             /* the h its ERP and CFM were set for */
     fs_spring_law law;       /* linear of k unless fs_spring_set_law gave another */
     dJointGroupID cable;     /* implicit cable: the group its one-sided row is made in each step */
+    int cable_row;           /* 1 while that row exists (the cable started this step taut) */
 } fs_spring;
 
 typedef struct fs_spring_state {
