@@ -218,6 +218,75 @@ static void static_loads_run(void)
     }
 }
 
+/* A tension-only d3 (a cable) is a limited tendon with no spring of its own, limited to its rest
+ * length. MuJoCo holds it so, and the limit is one-sided: each chain's MTP joint turned 0.05 rad
+ * either way from the design pose (the rest length), the turn that stretches the tendon makes a
+ * tendon-limit row in MuJoCo's constraints pulling (force > 0), the turn that shortens it none. The
+ * force against k times the stretch is printed: MuJoCo's soft limit works per unit of the mass it
+ * moves (docs/export.md); d1 and d2 stay two-sided springs. Nonlinear laws are refused. */
+static void cable_is_a_one_sided_limit(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    const char *set[] = {"springs.d3_tension_only=yes"};
+    REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", set, 1, &sc, &err) == FS_OK);
+    mjModel *m = load(&sc, 0);
+    REQUIRE(m);
+    mjData *d = mj_makeData(m);
+    REQUIRE(d);
+    for (int i = 0; i < FS_CHAINS; i++) {
+        const fs_spring_geom *s = &sc.geom.spring[sc.geom.chain[i].spring[2]];
+        const fs_spring_geom *s1 = &sc.geom.spring[sc.geom.chain[i].spring[0]];
+        int id = mj_name2id(m, mjOBJ_TENDON, s->name), id1 = mj_name2id(m, mjOBJ_TENDON, s1->name);
+        REQUIRE(id >= 0 && id1 >= 0);
+        CHECK(m->tendon_limited[id] == 1 && m->tendon_stiffness[id] == 0 && m->tendon_damping[id] == 0);
+        CHECK(m->tendon_range[2 * id] == 0);
+        EXACT(m->tendon_range[2 * id + 1], s->rest_length_m);
+        CHECK(m->tendon_limited[id1] == 0);
+        EXACT(m->tendon_stiffness[id1], s1->k_N_per_m);
+        char joint[32];
+        snprintf(joint, sizeof joint, "%s", sc.geom.hinge[sc.geom.chain[i].mtp_hinge].name);
+        int j = mj_name2id(m, mjOBJ_JOINT, joint);
+        REQUIRE(j >= 0);
+        int stretched = 0, shortened = 0;
+        for (int sign = -1; sign <= 1; sign += 2) {
+            mju_copy(d->qpos, m->qpos0, m->nq);
+            mju_zero(d->qvel, m->nv);
+            d->qpos[m->jnt_qposadr[j]] += sign * 0.05;
+            mj_forward(m, d);
+            double stretch = d->ten_length[id] - s->rest_length_m, force = 0;
+            int rows = 0;
+            for (int r = 0; r < d->nefc; r++)
+                if (d->efc_type[r] == mjCNSTR_LIMIT_TENDON && d->efc_id[r] == id) {
+                    rows++;
+                    force = d->efc_force[r];
+                }
+            if (stretch > 0) {
+                stretched++;
+                CHECK(rows == 1 && force > 0);
+                if (i == 0)
+                    printf("  cable d3 of chain 1 stretched %.3f mm: MuJoCo's limit pulls %.4g N, k x = %.4g N "
+                           "(ratio %.3g)\n", stretch * 1e3, force, s->k_N_per_m * stretch,
+                           force / (s->k_N_per_m * stretch));
+            } else {
+                shortened++;
+                CHECK(rows == 0);
+            }
+        }
+        CHECK(stretched == 1 && shortened == 1);
+    }
+    mj_deleteData(d);
+    mj_deleteModel(m);
+    fs_scenario_free(&sc);
+    /* a law MuJoCo 2.2.2's tendons cannot express: refused, naming the spring and the law */
+    const char *prog[] = {"springs.d1_law=progressive"};
+    REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", prog, 1, &sc, &err) == FS_OK);
+    fs_mjcf out;
+    CHECK(fs_mjcf_build(&sc, 0, NULL, &out, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "d1_chain1's law is progressive") != NULL);
+    fs_scenario_free(&sc);
+}
+
 FS_TEST_MAIN(TEST(static_loads_run), TEST(biomimetic_foot), TEST(flat_foot_on_static_load), TEST(landing_trial_robots),
-             TEST(walking_heightfield), TEST(loop_closure))
+             TEST(walking_heightfield), TEST(loop_closure), TEST(cable_is_a_one_sided_limit))
 #endif

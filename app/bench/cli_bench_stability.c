@@ -4,8 +4,10 @@
  *
  * Four slices, each a grid of step size against one quantity, each for 2 springs x 2 steppers:
  * stiffness (all fifteen springs, static_load.ini), load (static_load.ini), mass (every link mass
- * scaled, static_load.ini) and drop (the landing robot let fall, landing_trial.ini at its mean
- * pose). A run steps its scenario for a fixed time with the run-time checks of fs_check.h, which
+ * scaled, static_load.ini), drop (the landing robot let fall, landing_trial.ini at its mean
+ * pose) and law (the landing robot dropped 2 cm on a foot whose three spring kinds all follow one
+ * law: 0 linear, 1 progressive, 2 bilinear, 3 curve, 4 linear tension-only; the parameters in
+ * set_law). A run steps its scenario for a fixed time with the run-time checks of fs_check.h, which
  * record a drift and stop at a blow-up: the classifier and the run-time checks are one piece of
  * code. The runs go to footsim's pool of worker processes (fs_pool.h): an ODE error (which exits
  * the process), a crash or a hang (killed by the pool's watchdog) is a blown-up run and the sweep
@@ -25,7 +27,7 @@
 #include <time.h>
 #include <unistd.h>
 
-enum { NSLICES = 5, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, MAX_SET = 4 };
+enum { NSLICES = 6, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, MAX_SET = 4, LAW_SLICE = 5 };
 
 /* A swept quantity and its values (full sweep, then --quick). */
 typedef struct slice {
@@ -49,7 +51,30 @@ static const slice SLICES[NSLICES] = {
      {2e7, 2e8, 2e9}, {2e8}, 3, 1,
      {"scenario.design=feet/flat.ini", "scenario.terrain=../terrains/soils/dry_sand.ini",
       "robot.design=robots/drop_weight.ini"}},
+    {"law", "scenarios/landing_trial.ini", "spring law (0 linear, 1 progressive, 2 bilinear, 3 curve, 4 cable)", "", 0,
+     {0, 1, 2, 3, 4}, {1, 4}, 5, 2, {NULL}},
 };
+
+/* The law slice's value v for every spring kind: progressive doubling its stiffness at 0.5 mm;
+ * bilinear 4 k beyond a 0.3 mm stop; a curve of slope k to 0.2 mm and 4 k beyond (points at 0,
+ * +-0.2 and +-0.6 mm, extended past them); and linear tension-only (a cable). Drop 2 cm. */
+static void set_law(fs_design_def *d, int v)
+{
+    static const double x[] = {-0.0006, -0.0002, 0, 0.0002, 0.0006};
+    for (int k = 0; k < 3; k++) {
+        double kk = d->k_N_per_m[k];
+        d->law[k] = v == 4 ? FS_LAW_LINEAR : v;
+        d->tension_only[k] = v == 4;
+        d->x0_m[k] = 5e-4;
+        d->stop_m[k] = 3e-4;
+        d->k2_N_per_m[k] = 4 * kk;
+        d->curve_m[k].n = d->curve_N[k].n = 5;
+        for (int i = 0; i < 5; i++) {
+            d->curve_m[k].v[i] = x[i];
+            d->curve_N[k].v[i] = kk * (fabs(x[i]) <= 2e-4 ? x[i] : copysign(2e-4 + 4 * (fabs(x[i]) - 2e-4), x[i]));
+        }
+    }
+}
 /* finer around the explicit springs' limit (4e-5 to 8e-5 s for the default foot) */
 static const double STEPS_FULL[] = {1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 6e-5, 8e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
 static const double STEPS_QUICK[] = {2e-5, 1e-4, 5e-4, 2e-3, 1e-2};
@@ -108,6 +133,10 @@ static fs_status configure(const config *c, const fs_design_def *base, double du
         d->drop_m = c->value;
     if (!strcmp(s->name, "soil"))
         sc->terrain.def.soil.K_e_Pa_per_m = c->value;
+    if (!strcmp(s->name, "law")) {
+        d->drop_m = 0.02;
+        set_law(&sc->design, (int)c->value);
+    }
     return fs_scenario_compile(sc, err);
 }
 
@@ -266,7 +295,7 @@ static int fill_csv(FILE *f, const void *user)
     fprintf(f, "slice,stepper,iterations,springs,step_s,k_N_per_m,load_kg,mass_scale,drop_m,K_e_Pa_per_m,class,"
                "class_code,reason,"
                "where,time_s,drift_reason,drift_time_s,steps,max_loop_err_m,max_energy_excess_J,energy_bound_J,"
-               "max_speed_m_per_s,explicit_limit_s\n");
+               "max_speed_m_per_s,explicit_limit_s,law\n");
     for (int i = 0; i < n; i++) {
         const config *c = &cfg[i];
         const outcome *o = &out[i];
@@ -276,9 +305,12 @@ static int fill_csv(FILE *f, const void *user)
         char ke[32] = ""; /* the soil's K_e; empty for a rigid slice */
         if (!strcmp(sl, "soil"))
             snprintf(ke, sizeof ke, "%g", c->value);
+        double law = !strcmp(sl, "law") ? c->value : 0;
+        if (!strcmp(sl, "law"))
+            drop = 0.02;
         /* a quantity the run did not have (no failure: its time; a blow-up's non-finite figures): empty */
         char b[7][32], q[2][128];
-        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s\n", sl,
+        fprintf(f, "%s,%s,%d,%s,%g,%g,%g,%g,%g,%s,%s,%d,%s,%s,%s,%s,%s,%ld,%s,%s,%s,%s,%s,%g\n", sl,
                 STEPPERS[c->stepper], o->iterations, SPRINGS[c->springs], c->step_s, k, load, scale, drop, ke,
                 fs_check_class_name((fs_check_class)o->cls), o->cls, cli_csv_text(q[0], sizeof q[0], o->reason),
                 cli_csv_text(q[1], sizeof q[1], o->where),
@@ -286,13 +318,14 @@ static int fill_csv(FILE *f, const void *user)
                 cli_csv_num(b[1], sizeof b[1], "%.6g", o->drift_time_s), o->steps,
                 cli_csv_num(b[2], sizeof b[2], "%.4g", o->loop_m), cli_csv_num(b[3], sizeof b[3], "%.4g", o->excess_J),
                 cli_csv_num(b[4], sizeof b[4], "%.4g", o->bound_J),
-                cli_csv_num(b[5], sizeof b[5], "%.4g", o->speed_m_per_s), cli_csv_num(b[6], sizeof b[6], "%.4g", o->limit_s));
+                cli_csv_num(b[5], sizeof b[5], "%.4g", o->speed_m_per_s), cli_csv_num(b[6], sizeof b[6], "%.4g", o->limit_s),
+                law);
     }
     return 1;
 }
 
-/* The column of a slice's quantity in stability.csv (1-based, for gnuplot). */
-static int value_column(int s) { return 6 + s; }
+/* The column of a slice's quantity in stability.csv (1-based, for gnuplot): the law's is the last. */
+static int value_column(int s) { return s == LAW_SLICE ? 24 : 6 + s; }
 
 /* One chart per slice: step size against the quantity, a panel per spring x stepper, each run a
  * square coloured by its class, the explicit springs' predicted limit as crosses. */

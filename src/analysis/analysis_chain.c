@@ -91,6 +91,7 @@ void fs_chain2d_setup(fs_chain2d *c, const fs_design_def *d, const fs_foot_geom 
         c->p1[k] = to_local(c, link_of[q->body1], &J0, q->p1);
         c->p2[k] = to_local(c, link_of[q->body2], &J0, q->p2);
         c->k[k] = q->k_N_per_m;
+        c->law[k] = q->law;
         c->c[k] = q->c_Ns_per_m;
         c->rest[k] = q->rest_length_m;
     }

@@ -22,7 +22,8 @@ typedef struct fs_chain2d {
     double mass[4], inertia[4];  /* the chain's share; inertia about the COM and the plane normal */
     fs_chain_pt com[4];
     fs_chain_pt p1[3], p2[3];    /* spring anchors: d1, d2, d3 */
-    double k[3], c[3], rest[3];
+    double k[3], c[3], rest[3];  /* k: each law's stiffness at its rest length */
+    fs_spring_law law[3];
     int frictionless, nfree;     /* the statics' contact model, and how many angles are free */
     double load, gx, gz;         /* per-chain load (N) and gravity vector */
     double down[2];              /* the load's direction */

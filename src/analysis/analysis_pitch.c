@@ -162,7 +162,7 @@ static double energy(foot3d *m, const double q[NQ])
         const fs_spring_geom *sp = &g->spring[s];
         double stretch = fs_norm(fs_sub(place(&body[sp->body2], sp->p2), place(&body[sp->body1], sp->p1))) -
                          sp->rest_length_m;
-        E += 0.5 * sp->k_N_per_m * stretch * stretch;
+        E += fs_spring_law_energy(&sp->law, stretch);
     }
     return E;
 }

@@ -68,7 +68,7 @@ static double energy(const planar *c, const double *q, double b[4])
     fs_chain2d_joints(c, b, &J);
     for (int i = 0; i < 3; i++) {
         double s = spring_length(c, &J, b, i) - c->rest[i];
-        E += 0.5 * c->k[i] * s * s;
+        E += fs_spring_law_energy(&c->law[i], s);
     }
     for (int k = 0; k < 4; k++) {
         double p[2];
@@ -183,6 +183,6 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
     out->mtp_rad = (b[3] - b[2]) - (c.beta0[3] - c.beta0[2]);
     out->ball_clearance_m = J.p[3][1] - c.r_ball;
     for (int k = 0; k < 3; k++)
-        out->spring_force_N[k] = c.k[k] * (spring_length(&c, &J, b, k) - c.rest[k]);
+        out->spring_force_N[k] = fs_spring_law_force(&c.law[k], spring_length(&c, &J, b, k) - c.rest[k], NULL);
     return FS_OK;
 }

@@ -189,7 +189,7 @@ static void open_chain(const chain_dyn *m, const pose *p, double t, double M[4][
     for (int i = 0; i < 3; i++) {
         spring_state s;
         spring(m, p, i, &s);
-        double T = c->k[i] * (s.L - c->rest[i]) + c->c[i] * s.Ld;
+        double T = fs_spring_law_total(&c->law[i], s.L - c->rest[i], s.Ld, c->c[i]);
         double Fp[2] = {T * s.u[0], T * s.u[1]}, Fq[2] = {-Fp[0], -Fp[1]};
         add_force(s.rp, c->p1[i].link, Fp, Q);
         add_force(s.rq, c->p2[i].link, Fq, Q);
@@ -290,7 +290,7 @@ static void observe(const chain_dyn *m, const pose *p, double t, fs_reference_st
     for (int i = 0; i < 3; i++) {
         spring_state s;
         spring(m, p, i, &s);
-        E += 0.5 * c->k[i] * (s.L - c->rest[i]) * (s.L - c->rest[i]);
+        E += fs_spring_law_energy(&c->law[i], s.L - c->rest[i]);
     }
     double f = load_now(m, t);
     out->energy_J = E - f * (c->down[0] * p->J.p[1][0] + c->down[1] * p->J.p[1][1]);

@@ -36,11 +36,16 @@ static fs_vec3 on_axis(const fs_foot_geom *g, int i, int body, fs_vec3 p)
     return fs_add(from, fs_scale(e, fs_dot(fs_sub(p, from), e)));
 }
 
-static void stiffness_from_G(const fs_foot_geom *g, int i, const double G[3][2], double K[2][2])
+/* K = G^T Kdd G, each spring's stiffness its law's tangent at x_m[spring] (NULL: at its rest length,
+ * k_N_per_m). */
+static void stiffness_from_G(const fs_foot_geom *g, int i, const double G[3][2], const double *x_m, double K[2][2])
 {
     memset(K, 0, 4 * sizeof(double));
     for (int k = 0; k < 3; k++) {
-        double kk = g->spring[g->chain[i].spring[k]].k_N_per_m;
+        const fs_spring_geom *s = &g->spring[g->chain[i].spring[k]];
+        double kk = s->k_N_per_m;
+        if (x_m)
+            fs_spring_law_force(&s->law, x_m[g->chain[i].spring[k]], &kk);
         for (int r = 0; r < 2; r++)
             for (int c = 0; c < 2; c++)
                 K[r][c] += kk * G[k][r] * G[k][c];
@@ -60,15 +65,22 @@ static void chain_G(const fs_foot_geom *g, int i, int paper, double G[3][2])
     }
 }
 
-void fs_stiffness_analytic(const fs_foot_geom *g, fs_chain_stiffness out[FS_CHAINS])
+static void stiffness_at(const fs_foot_geom *g, const double *x_m, fs_chain_stiffness out[FS_CHAINS])
 {
     for (int i = 0; i < FS_CHAINS; i++) {
         double Gp[3][2];
         chain_G(g, i, 0, out[i].G);
         chain_G(g, i, 1, Gp);
-        stiffness_from_G(g, i, (const double(*)[2])out[i].G, out[i].exact);
-        stiffness_from_G(g, i, (const double(*)[2])Gp, out[i].eq4);
+        stiffness_from_G(g, i, (const double(*)[2])out[i].G, x_m, out[i].exact);
+        stiffness_from_G(g, i, (const double(*)[2])Gp, x_m, out[i].eq4);
     }
+}
+
+void fs_stiffness_analytic(const fs_foot_geom *g, fs_chain_stiffness out[FS_CHAINS]) { stiffness_at(g, NULL, out); }
+
+void fs_stiffness_tangent(const fs_foot_geom *g, const double x_m[FS_MAX_SPRINGS], fs_chain_stiffness out[FS_CHAINS])
+{
+    stiffness_at(g, x_m, out);
 }
 
 /* ---- measured in ODE ------------------------------------------------------------------------ */

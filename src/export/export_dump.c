@@ -72,6 +72,10 @@ static cJSON *springs_json(const fs_model *m)
         ok &= cJSON_AddNumberToObject(o, "k_N_per_m", s->k_N_per_m) != NULL;
         ok &= cJSON_AddNumberToObject(o, "c_Ns_per_m", s->c_Ns_per_m) != NULL;
         ok &= cJSON_AddNumberToObject(o, "rest_length_m", s->rest_length_m) != NULL;
+        if (!fs_spring_law_is_linear(&s->law)) { /* k above: the law's stiffness at the rest length */
+            ok &= cJSON_AddStringToObject(o, "law", fs_spring_law_name(&s->law)) != NULL;
+            ok &= cJSON_AddBoolToObject(o, "tension_only", s->law.tension_only) != NULL;
+        }
         ok &= fs_json_put(arr, NULL, o);
     }
     return complete(arr, ok);

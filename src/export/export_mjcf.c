@@ -513,16 +513,69 @@ static void defaults(exporter *x)
     end(x);
 }
 
-static void tendon(exporter *x, const char *name, const fs_model_spring *s)
+/* The mass a spring's line moves, as if its two bodies were free: 1/m = the sum over both of
+ * 1/m_b + (r_b x u)^T I_b^-1 (r_b x u), r_b its anchor from the body's centre, u the line (the
+ * world's anchor adds nothing), from the model at the start pose (every body at rotation R0, its
+ * inertia in the body's frame). */
+static double line_mass(const fs_model *m, const fs_model_spring *s)
+{
+    const double *p[2] = {s->p1_m, s->p2_m};
+    const int body[2] = {s->body1, s->body2};
+    double u[3], len = 0, inv = 0;
+    for (int i = 0; i < 3; i++) {
+        u[i] = p[1][i] - p[0][i];
+        len += u[i] * u[i];
+    }
+    len = sqrt(len);
+    for (int i = 0; i < 3; i++)
+        u[i] /= len;
+    for (int e = 0; e < 2; e++) {
+        if (body[e] < 0)
+            continue;
+        const fs_model_body *b = &m->body[body[e]];
+        double r[3], w[3], wl[3];
+        for (int i = 0; i < 3; i++)
+            r[i] = p[e][i] - b->pos_m[i];
+        w[0] = r[1] * u[2] - r[2] * u[1];
+        w[1] = r[2] * u[0] - r[0] * u[2];
+        w[2] = r[0] * u[1] - r[1] * u[0];
+        for (int i = 0; i < 3; i++) /* into the body's frame: R0 transposed */
+            wl[i] = m->R0[i] * w[0] + m->R0[3 + i] * w[1] + m->R0[6 + i] * w[2];
+        /* I^-1 wl by the adjugate (I symmetric, positive definite) */
+        const double *I = b->inertia_kg_m2;
+        double a[9] = {I[4] * I[8] - I[5] * I[7], I[2] * I[7] - I[1] * I[8], I[1] * I[5] - I[2] * I[4],
+                       I[5] * I[6] - I[3] * I[8], I[0] * I[8] - I[2] * I[6], I[2] * I[3] - I[0] * I[5],
+                       I[3] * I[7] - I[4] * I[6], I[1] * I[6] - I[0] * I[7], I[0] * I[4] - I[1] * I[3]};
+        double det = I[0] * a[0] + I[1] * a[3] + I[2] * a[6], q = 0;
+        for (int i = 0; i < 3; i++)
+            q += wl[i] * (a[3 * i] * wl[0] + a[3 * i + 1] * wl[1] + a[3 * i + 2] * wl[2]) / det;
+        inv += 1 / b->mass_kg + q;
+    }
+    return 1 / inv;
+}
+
+static void tendon(exporter *x, const fs_model *m, const char *name, const fs_model_spring *s)
 {
     char a[96], b[96];
     snprintf(a, sizeof a, "%s_1", name);
     snprintf(b, sizeof b, "%s_2", name);
     start(x, "spatial");
     attr(x, "name", name);
-    attr1(x, "stiffness", s->k_N_per_m);
-    attr1(x, "damping", s->c_Ns_per_m);
-    attr1(x, "springlength", s->rest_length_m);
+    if (s->law.tension_only) {
+        /* a cable: no spring of its own, a limit at its rest length instead (one-sided: it acts only
+           while the tendon is longer), as soft as the spring for the mass its line moves, in the
+           direct form (docs/export.md) */
+        const double range[2] = {0, s->rest_length_m}, imp[3] = {FS_MJCF_IMPEDANCE, FS_MJCF_IMPEDANCE, 0.001};
+        double ml = line_mass(m, s), ref[2] = {-s->k_N_per_m / ml, -s->c_Ns_per_m / ml};
+        attr(x, "limited", "true");
+        attr_num(x, "range", range, 2);
+        attr_num(x, "solreflimit", ref, 2);
+        attr_num(x, "solimplimit", imp, 3);
+    } else {
+        attr1(x, "stiffness", s->k_N_per_m);
+        attr1(x, "damping", s->c_Ns_per_m);
+        attr1(x, "springlength", s->rest_length_m);
+    }
     attr(x, "width", "0.0005");
     start(x, "site");
     attr(x, "site", a);
@@ -615,9 +668,9 @@ static void document(exporter *x)
     end(x);
     start(x, "tendon");
     for (int k = 0; k < m->nsprings; k++)
-        tendon(x, m->spring[k].name, &m->spring[k]);
+        tendon(x, m, m->spring[k].name, &m->spring[k]);
     if (m->has_achilles)
-        tendon(x, "achilles", &m->achilles);
+        tendon(x, m, "achilles", &m->achilles);
     end(x);
     loop_closures(x);
     end(x); /* mujoco */
@@ -633,6 +686,15 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
         return fs_fail(err, FS_BAD_INPUT, "%s: kind = biped: the biped is not exported (its leg joints' angular "
                        "spring-dampers, ODE hinge stops, have no counterpart in this export yet): export the foot "
                        "with a single robot (robots/single_tall.ini), or without --scenario", sc->def.robot_path);
+    for (int i = 0; i < sc->geom.nsprings; i++) {
+        const fs_spring_law *law = &sc->geom.spring[i].law;
+        if (law->kind != FS_LAW_LINEAR)
+            return fs_fail(err, FS_BAD_INPUT,
+                           "%s: spring %s's law is %s, which MuJoCo 2.2.2's tendons cannot express (one linear spring "
+                           "and one rest length each): export a design whose springs are linear (tension-only ones "
+                           "map, as limited tendons; docs/export.md)",
+                           sc->def.design_path, sc->geom.spring[i].name, fs_spring_law_name(law));
+    }
     fs_model *model;
     /* the robot as its own body, welded to the ankle body as footsim's fixed joint welds it: a reader
        sees the robot apart (footsim's merge of the two is a speed cut, docs/bench.md) */

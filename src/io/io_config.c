@@ -433,6 +433,9 @@ static fs_status bad_value(fs_error *err, const char *where, const fs_key *k, co
     case FS_KEY_LIST:
         return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s' %s; allowed: %d comma-separated numbers, each in %s", where,
                        k->name, value, why, k->count, range);
+    case FS_KEY_SERIES:
+        return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s' %s; allowed: up to %d comma-separated numbers, each in %s",
+                       where, k->name, value, why, k->count, range);
     case FS_KEY_PATH:
         return fs_fail(err, FS_BAD_INPUT, "%s: %s = '%s' %s; give a path relative to the file's folder", where,
                        k->name, value, why);
@@ -501,12 +504,14 @@ static fs_status bind_value(const fs_key *k, const char *value, const char *wher
         *(int *)slot = (int)v;
         return FS_OK;
     }
-    case FS_KEY_LIST: {
+    case FS_KEY_LIST:
+    case FS_KEY_SERIES: {
         char buf[FS_VALUE_MAX];
         snprintf(buf, sizeof buf, "%s", value);
-        double vals[FS_LIST_MAX];
-        char *tok[FS_LIST_MAX], why[128];
-        int empty = 0, n = fs_list_split(buf, tok, k->count < FS_LIST_MAX ? k->count : FS_LIST_MAX, &empty);
+        double vals[FS_SERIES_MAX];
+        char *tok[FS_SERIES_MAX], why[128];
+        int most = k->type == FS_KEY_LIST ? FS_LIST_MAX : FS_SERIES_MAX;
+        int empty = 0, n = fs_list_split(buf, tok, k->count < most ? k->count : most, &empty);
         if (n == -1) {
             snprintf(why, sizeof why, "has an empty value (value %d: two commas in a row, or a comma first or last)",
                      empty);
@@ -522,6 +527,12 @@ static fs_status bind_value(const fs_key *k, const char *value, const char *wher
             }
             if (!in_range(k, vals[i]))
                 return bad_value(err, where, k, value, "has a value out of range");
+        }
+        if (k->type == FS_KEY_SERIES) {
+            fs_series *series = (fs_series *)(void *)slot;
+            series->n = n;
+            memcpy(series->v, vals, (size_t)n * sizeof *vals);
+            return FS_OK;
         }
         if (n != k->count)
             return bad_value(err, where, k, value, "has too few values");
@@ -631,8 +642,18 @@ fs_status fs_config_check(const fs_key *schema, int nkeys, const void *def, cons
         int n = k->type == FS_KEY_LIST ? k->count : 1, whole = k->type != FS_KEY_NUMBER && k->type != FS_KEY_LIST;
         if (k->type == FS_KEY_PATH)
             continue;
+        const double *values = (const double *)(const void *)slot;
+        if (k->type == FS_KEY_SERIES) {
+            const fs_series *series = (const fs_series *)(const void *)slot;
+            if (series->n < 0 || series->n > k->count || series->n > FS_SERIES_MAX)
+                return fs_fail(err, FS_BAD_INPUT, "%s: [%s] %s has %d values (0 to %d allowed)", what, k->section,
+                               k->name, series->n, k->count);
+            n = series->n;
+            values = series->v;
+            whole = 0;
+        }
         for (int j = 0; j < n; j++) {
-            double v = whole ? *(const int *)slot : ((const double *)slot)[j];
+            double v = whole ? *(const int *)slot : values[j];
             int nchoices = 1;
             for (const char *c = k->choices ? k->choices : ""; *c; c++)
                 nchoices += *c == '|';
@@ -713,6 +734,10 @@ void fs_config_print_keys(const fs_key *schema, int nkeys, const char *title, vo
         case FS_KEY_LIST:
             snprintf(range, sizeof range, "%d values in %s%g, %g]", k->count, (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[",
                      k->min, k->max);
+            break;
+        case FS_KEY_SERIES:
+            snprintf(range, sizeof range, "up to %d values in %s%g, %g]", k->count,
+                     (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max);
             break;
         default:
             snprintf(range, sizeof range, "%s%g, %g]", (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max);

@@ -13,6 +13,22 @@
 #define LIST(sec, name, member, lo, hi, unit, dflt, help) \
     {sec, name, FS_KEY_LIST, F(member), lo, hi, 0, FS_CHAINS, NULL, unit, dflt, help}
 #define POS FS_KEY_OPEN_MIN
+#define LAW_KEYS(d, i)                                                                                              \
+    {"springs", "d" #d "_law", FS_KEY_CHOICE, F(law[i]), 0, 0, 0, 0, "linear|progressive|bilinear|curve", "", "linear", \
+     "d" #d "'s force against its deflection x: linear f = k x (Table I); progressive, stiffness k (1 + (x/x0)^2); "  \
+     "bilinear, k up to the stop and k2 beyond; curve, the points d" #d "_curve_m and _N (docs/model.md)"},          \
+    {"springs", "d" #d "_tension_only", FS_KEY_CHOICE, F(tension_only[i]), 0, 0, 0, 0, "no|yes", "", "no",          \
+     "yes: d" #d " is a cable: no force while shorter than its rest length, and never a push"},                     \
+    NUM("springs", "d" #d "_x0_m", x0_m[i], 0, 1, POS, "m", "0.001",                                               \
+        "progressive d" #d ": the deflection at which its stiffness has doubled"),                                   \
+    NUM("springs", "d" #d "_stop_m", stop_m[i], 0, 1, POS, "m", "0.001",                                           \
+        "bilinear d" #d ": the deflection, either way, beyond which k2 acts"),                                       \
+    NUM("springs", "d" #d "_k2_N_per_m", k2_N_per_m[i], 0, 1e9, 0, "N/m", "12000",                                 \
+        "bilinear d" #d ": the stiffness beyond the stop (times springs.scale)"),                                   \
+    {"springs", "d" #d "_curve_m", FS_KEY_SERIES, F(curve_m[i]), -1, 1, 0, FS_CURVE_MAX, NULL, "m", "",            \
+     "curve d" #d ": deflections (length less rest length), strictly rising, one of them 0"},                       \
+    {"springs", "d" #d "_curve_N", FS_KEY_SERIES, F(curve_N[i]), -1e7, 1e7, 0, FS_CURVE_MAX, NULL, "N", "",        \
+     "curve d" #d ": the tension at each deflection, rising, 0 at 0 (times springs.scale)"}
 
 /* Every key a design file may hold. Defaults: Table I where the paper gives a value, and the
  * choices argued in docs/model.md where it does not. */
@@ -31,7 +47,7 @@ const fs_key fs_design_keys[] = {
     NUM("springs", "k_d2_N_per_m", k_N_per_m[1], 0, 1e9, POS, "N/m", "12000", "MTP spring stiffness (Table I)"),
     NUM("springs", "k_d3_N_per_m", k_N_per_m[2], 0, 1e9, POS, "N/m", "12000", "heel-to-toe spring stiffness (Table I)"),
     NUM("springs", "scale", spring_scale, 0, 1e6, POS, "", "1",
-        "multiplies the three stiffnesses above (not the damping): one key for a sweep or a search"),
+        "multiplies the three stiffnesses above and every force of their laws (not the damping): one key for a sweep or a search"),
     NUM("springs", "c_d1_Ns_per_m", c_Ns_per_m[0], 0, 1e7, 0, "N s/m", "200", "midfoot damping (Table I)"),
     NUM("springs", "c_d2_Ns_per_m", c_Ns_per_m[1], 0, 1e7, 0, "N s/m", "200", "MTP damping (Table I)"),
     NUM("springs", "c_d3_Ns_per_m", c_Ns_per_m[2], 0, 1e7, 0, "N s/m", "200", "heel-to-toe damping (Table I)"),
@@ -44,6 +60,9 @@ const fs_key fs_design_keys[] = {
     NUM("springs", "d3_toe_b_m", d3_toe_b_m, 0, 1, POS, "m", "0.006", "d3 toe anchor: distance from the MTP joint along the phalanx"),
     NUM("springs", "d3_toe_h_m", d3_toe_h_m, 0, 1, 0, "m", "0.003", "d3 toe anchor: offset toward the sole"),
     NUM("springs", "d3_heel_spread", d3_heel_spread, 0, 1, 0, "", "0.5", "d3 heel anchor's lateral offset as a fraction of its chain's"),
+    LAW_KEYS(1, 0),
+    LAW_KEYS(2, 1),
+    LAW_KEYS(3, 2),
     LIST("chains", "lateral_m", lateral_m, -1, 1, "m", "0.024, 0.012, 0, -0.012, -0.024", "y of each midfoot joint, big toe first"),
     LIST("chains", "splay_deg", splay_deg, -45, 45, "deg", "8, 4, 0, -4, -8", "each chain's plane turned about z"),
     LIST("chains", "scale", scale, 0.2, 5, "", "1.25, 1, 1, 1, 1", "forefoot size factor per chain (the big toe is larger)"),
@@ -105,6 +124,91 @@ static fs_vec3 in_plane(fs_vec3 f, double angle) { return fs_add(fs_scale(f, cos
 /* The sole side of a link with direction e in plane heading f: e turned 90 degrees down. */
 static fs_vec3 sole_side(fs_vec3 f, double angle) { return in_plane(f, angle - M_PI / 2); }
 
+/* Spring kind `which`'s law as the def gives it, its forces not yet scaled. */
+static fs_spring_law design_law(const fs_design_def *d, int which)
+{
+    fs_spring_law law = fs_spring_law_linear(d->k_N_per_m[which]);
+    law.kind = d->law[which];
+    law.tension_only = d->tension_only[which];
+    law.x0_m = d->x0_m[which];
+    law.stop_m = d->stop_m[which];
+    law.k2_N_per_m = d->k2_N_per_m[which];
+    if (law.kind == FS_LAW_CURVE) {
+        law.npoints = d->curve_m[which].n;
+        for (int i = 0; i < law.npoints; i++) {
+            law.x_m[i] = d->curve_m[which].v[i];
+            law.f_N[i] = d->curve_N[which].v[i];
+        }
+    }
+    return law;
+}
+
+/* Each spring kind's law whole: a key of another law than the one chosen refused (it would be
+ * ignored), and a curve of at least two points, as many forces as deflections, both rising, through
+ * (0, 0). */
+static fs_status check_laws(const fs_design_def *d, const fs_config *cfg, fs_error *err)
+{
+    static const char *const own[][2] = {{"x0_m", "progressive"}, {"stop_m", "bilinear"}, {"k2_N_per_m", "bilinear"},
+                                         {"curve_m", "curve"}, {"curve_N", "curve"}};
+    static const int own_law[] = {FS_LAW_PROGRESSIVE, FS_LAW_BILINEAR, FS_LAW_BILINEAR, FS_LAW_CURVE, FS_LAW_CURVE};
+    char key[32], lawkey[32], where[FS_PATH_MAX + 80], where_law[FS_PATH_MAX + 80];
+    for (int w = 0; w < 3; w++) {
+        fs_spring_law law = design_law(d, w);
+        snprintf(lawkey, sizeof lawkey, "d%d_law", w + 1);
+        fs_config_where(cfg, "springs", lawkey, where_law, sizeof where_law);
+        for (size_t j = 0; cfg && j < sizeof own_law / sizeof *own_law; j++) {
+            snprintf(key, sizeof key, "d%d_%s", w + 1, own[j][0]);
+            if (law.kind != own_law[j] && fs_config_has(cfg, "springs", key)) {
+                fs_config_where(cfg, "springs", key, where, sizeof where);
+                return fs_fail(err, FS_BAD_INPUT,
+                               "%s: %s is a key of the %s law, but d%d_law is %s (%s): set d%d_law = %s, or leave %s "
+                               "out",
+                               where, key, own[j][1], w + 1, fs_spring_law_name(&law), where_law, w + 1, own[j][1], key);
+            }
+        }
+        if (law.kind != FS_LAW_CURVE)
+            continue;
+        snprintf(key, sizeof key, "d%d_curve_m", w + 1);
+        fs_config_where(cfg, "springs", key, where, sizeof where);
+        const fs_series *xs = &d->curve_m[w], *fs = &d->curve_N[w];
+        if (xs->n < 2)
+            return fs_fail(err, FS_BAD_INPUT,
+                           "%s: d%d_law = curve needs its points: give d%d_curve_m (at least 2 deflections, m) and "
+                           "d%d_curve_N (as many forces, N)",
+                           xs->n ? where : where_law, w + 1, w + 1, w + 1);
+        if (fs->n != xs->n) {
+            snprintf(key, sizeof key, "d%d_curve_N", w + 1);
+            fs_config_where(cfg, "springs", key, where, sizeof where);
+            return fs_fail(err, FS_BAD_INPUT, "%s: d%d_curve_N has %d forces for d%d_curve_m's %d deflections; give one "
+                           "force for each", where, w + 1, fs->n, w + 1, xs->n);
+        }
+        int zero = -1;
+        for (int i = 0; i < xs->n; i++) {
+            if (i > 0 && !(xs->v[i] > xs->v[i - 1]))
+                return fs_fail(err, FS_BAD_INPUT,
+                               "%s: d%d_curve_m is not increasing (value %d, %g m, after %g m): give the deflections "
+                               "in strictly rising order",
+                               where, w + 1, i + 1, xs->v[i], xs->v[i - 1]);
+            if (xs->v[i] == 0)
+                zero = i;
+        }
+        if (zero < 0 || fs->v[zero] != 0)
+            return fs_fail(err, FS_BAD_INPUT,
+                           "%s: d%d's curve must pass through 0 N at 0 m (the neutral pose is unstrained): put a 0 in "
+                           "d%d_curve_m and 0 at the same place in d%d_curve_N",
+                           where, w + 1, w + 1, w + 1);
+        snprintf(key, sizeof key, "d%d_curve_N", w + 1);
+        fs_config_where(cfg, "springs", key, where, sizeof where);
+        for (int i = 1; i < fs->n; i++)
+            if (!(fs->v[i] > fs->v[i - 1]))
+                return fs_fail(err, FS_BAD_INPUT,
+                               "%s: d%d_curve_N is not increasing (value %d, %g N, after %g N): a spring's tension must "
+                               "rise with its deflection (a positive stiffness everywhere)",
+                               where, w + 1, i + 1, fs->v[i], fs->v[i - 1]);
+    }
+    return FS_OK;
+}
+
 static void add_spring(fs_foot_geom *g, const fs_design_def *d, int which, int chain, int b1, int b2, fs_vec3 p1,
                        fs_vec3 p2)
 {
@@ -115,7 +219,12 @@ static void add_spring(fs_foot_geom *g, const fs_design_def *d, int which, int c
     s->body2 = b2;
     s->p1 = p1;
     s->p2 = p2;
-    s->k_N_per_m = d->k_N_per_m[which] * d->spring_scale;
+    s->law = design_law(d, which);
+    fs_spring_law_scale(&s->law, d->spring_scale); /* a linear law's k: k_dN times the scale, as always */
+    if (fs_spring_law_is_linear(&s->law))
+        s->k_N_per_m = s->law.k_N_per_m;
+    else
+        fs_spring_law_force(&s->law, 0, &s->k_N_per_m);
     s->c_Ns_per_m = d->c_Ns_per_m[which];
     s->rest_length_m = fs_norm(fs_sub(p2, p1)); /* the neutral pose is unstrained */
 }
@@ -244,6 +353,9 @@ static void flat_geometry(const fs_design_def *d, const fs_foot_geom *bio, fs_fo
 
 fs_status fs_design_geometry(const fs_design_def *d, const fs_config *cfg, fs_foot_geom *geom, fs_error *err)
 {
+    fs_status law_status = check_laws(d, cfg, err);
+    if (law_status != FS_OK)
+        return law_status;
     fs_foot_geom g;
     memset(&g, 0, sizeof g);
     g.kind = FS_FOOT_BIOMIMETIC;

@@ -119,6 +119,8 @@ static dJointID hinge_of(const fs_sim *sim, const fs_model_hinge *h)
 static void spring_of(const fs_sim *sim, fs_spring *s, const fs_model_spring *ms, dBodyID b1, dBodyID b2)
 {
     fs_sim_spring_init(sim, s, b1, b2, ms->p1_m, ms->p2_m, ms->k_N_per_m, ms->c_Ns_per_m, ms->rest_length_m);
+    if (!fs_spring_law_is_linear(&ms->law)) /* Table I's linear springs: as they always were */
+        fs_spring_set_law(s, &ms->law);
 }
 
 static void build_joints(fs_sim *sim)
@@ -373,6 +375,8 @@ void fs_sim_destroy(fs_sim *sim)
         dSpaceDestroy(sim->space); /* destroys the shapes it holds */
     if (sim->contact_group)
         dJointGroupDestroy(sim->contact_group);
+    for (int i = 0; sim->geom && i < sim->geom->nsprings; i++)
+        fs_spring_free(&sim->spring[i]); /* a cable's joint group */
     if (sim->world)
         dWorldDestroy(sim->world);
     free(sim->feedback);

@@ -336,6 +336,8 @@ void fs_sim_constraint_rows(const fs_sim *sim, fs_rows *rows)
             }
         }
     }
+    for (int i = 0; i < sim->geom->nsprings; i++) /* a taut cable's one-sided row (a contact joint) */
+        rows->spring += sim->spring[i].cable_row;
     rows->contacts = sim->contacts_now;
     rows->contact = sim->contacts_now * (sim->contact_template.surface.mu > 0 ? 3 : 1);
     rows->total = rows->hinge + rows->stop + rows->fixed + rows->slider + rows->ball + rows->spring + rows->contact +

@@ -321,6 +321,7 @@ static void spring_of(const fs_model *m, fs_model_spring *s, const char *name, i
     s->k_N_per_m = k;
     s->c_Ns_per_m = c;
     s->rest_length_m = rest;
+    s->law = fs_spring_law_linear(k);
     (void)m;
 }
 
@@ -351,6 +352,7 @@ static void joints(fs_model *m)
         const fs_spring_geom *s = &g->spring[i];
         spring_of(m, &m->spring[i], s->name, s->body1, s->body2, place(m, s->p1), place(m, s->p2), s->k_N_per_m,
                   s->c_Ns_per_m, s->rest_length_m);
+        m->spring[i].law = s->law;
     }
 }
 

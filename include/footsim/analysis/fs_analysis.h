@@ -24,8 +24,17 @@ typedef struct fs_chain_stiffness {
     double G[3][2];         /* rows d1, d2, d3; columns midfoot, MTP; m/rad */
 } fs_chain_stiffness;
 
-/* The analytic stiffness of every chain at the neutral pose. */
+/* The analytic stiffness of every chain at the neutral pose: each spring's stiffness at its rest
+ * length (a nonlinear law's tangent there; a cable counted taut). */
 void fs_stiffness_analytic(const fs_foot_geom *g, fs_chain_stiffness out[FS_CHAINS]);
+
+/* The same linearised at an operating point (eqs. 1-3 with each law's tangent): spring s of g at
+ * deflection x_m[s] (length less rest length) has its law's tangent stiffness there; G is the
+ * neutral pose's (the springs' preload's geometric term is left out here; the pitch-stiffness law,
+ * an energy's second derivative at the loaded equilibrium, has both). A cable counts only while
+ * taut: 0 at x < 0, its taut stiffness at x >= 0 (at exactly its rest length too: the stiffness the
+ * load that would stretch it meets). fs_stiffness_analytic is this at x = 0. */
+void fs_stiffness_tangent(const fs_foot_geom *g, const double x_m[FS_MAX_SPRINGS], fs_chain_stiffness out[FS_CHAINS]);
 
 /* Measures K in ODE: for each chain and joint, torques +tau and -tau about the hinge axis, the
  * settled angle changes, K = Q dphi^-1 from the central differences. */

@@ -35,6 +35,8 @@ typedef struct fs_stiffness_report {
     int flat;                                   /* a flat sole: only its pitch stiffness */
     fs_chain_stiffness chain[FS_CHAINS];        /* biomimetic: analytic and measured */
     double worst;                               /* the largest relative difference of the chains */
+    int cable;                                  /* a tension-only spring: the chains are not compared (its kink
+                                                   at the rest length: docs/model.md) */
     double static_load_kg;
     fs_planar_result eq[2];                     /* chain 3 under the design load: gripping, frictionless */
     /* the whole foot against pitching its ankle body under the design load */
@@ -53,7 +55,8 @@ typedef struct fs_stiffness_report {
 fs_status fs_stiffness_report_make(const fs_scenario *sc, const char *design_path, const char *robots_dir,
                                    fs_stiffness_report *r, fs_error *err);
 
-/* Whether the chains agree with the model within FS_STIFFNESS_TOLERANCE (a flat sole: 1). */
+/* Whether the chains agree with the model within FS_STIFFNESS_TOLERANCE (a flat sole, or a design with
+ * a tension-only spring, which is not compared: 1). */
 int fs_stiffness_report_agrees(const fs_stiffness_report *r);
 
 /* The report as text to out, and as JSON (design: how the design is named in both). */

@@ -13,7 +13,14 @@
 
 #include <stddef.h>
 
-enum { FS_NAME_MAX = 64, FS_VALUE_MAX = 256, FS_PATH_MAX = 1024, FS_LIST_MAX = 8 };
+enum { FS_NAME_MAX = 64, FS_VALUE_MAX = 256, FS_PATH_MAX = 1024, FS_LIST_MAX = 8, FS_SERIES_MAX = 16 };
+
+/* A list key of varying length (FS_KEY_SERIES): n values, n from 0 (the key left out, or blank) to
+ * the key's count. */
+typedef struct fs_series {
+    int n;
+    double v[FS_SERIES_MAX];
+} fs_series;
 
 /* Caps on a file (docs/keys.md): bytes and keys. */
 enum { FS_CONFIG_MAX_BYTES = 1024 * 1024, FS_CONFIG_MAX_KEYS = 10000 };
@@ -42,8 +49,10 @@ typedef enum fs_key_type {
     FS_KEY_INTEGER, /* int, in [min, max] */
     FS_KEY_LIST,    /* exactly `count` comma-separated doubles, each in range */
     FS_KEY_CHOICE,  /* one word of `choices` ("a|b|c"), stored as its int index */
-    FS_KEY_PATH     /* a path relative to the file's folder; must name an existing file (a key
+    FS_KEY_PATH,    /* a path relative to the file's folder; must name an existing file (a key
                        whose default is "" is optional: left out, it stays "") */
+    FS_KEY_SERIES   /* 0 to `count` (at most FS_SERIES_MAX) comma-separated doubles, each in range,
+                       into an fs_series (a spring's force-deflection curve) */
 } fs_key_type;
 
 enum { FS_KEY_OPEN_MIN = 1 };
@@ -55,7 +64,7 @@ typedef struct fs_key {
     size_t offset;       /* where the value goes in the def struct */
     double min, max;
     int flags;
-    int count;           /* FS_KEY_LIST: number of values */
+    int count;           /* FS_KEY_LIST: number of values; FS_KEY_SERIES: the most */
     const char *choices; /* FS_KEY_CHOICE */
     const char *unit;    /* for messages and the key table */
     const char *fallback;/* the default, as text */

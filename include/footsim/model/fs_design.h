@@ -15,6 +15,7 @@
 
 #include "footsim/io/fs_config.h"
 #include "footsim/base/fs_vec.h"
+#include "footsim/model/fs_spring_law.h"
 
 enum { FS_CHAINS = 5, FS_SPRINGS_PER_CHAIN = 3 };
 /* One foot's parts, and the most a geometry holds: two feet and a biped's legs (fs_robot.h:
@@ -45,6 +46,13 @@ typedef struct fs_design_def {
     double d3_toe_b_m, d3_toe_h_m;     /* d3 on the phalanx: along it from the MTP joint */
     double d3_heel_spread;             /* d3's heel anchor sits at this fraction of its chain's
                                           lateral offset (the aponeurosis fans out from the heel) */
+    /* Each spring kind's law (d1, d2, d3; fs_spring_law.h), linear and two-sided unless the file
+       says: k_N_per_m above is k, k0 or k1; springs.scale multiplies every force of the law. */
+    int law[3];                        /* fs_law_kind */
+    int tension_only[3];               /* 1: a cable (no force while shorter than its rest length) */
+    double x0_m[3];                    /* progressive: where the stiffness has doubled */
+    double stop_m[3], k2_N_per_m[3];   /* bilinear: the stop's deflection, and the stiffness beyond */
+    fs_series curve_m[3], curve_N[3];  /* curve: deflections (m) and forces (N), point by point */
     double lateral_m[FS_CHAINS];       /* y of each midfoot joint, chain 1 (big toe) first */
     double splay_deg[FS_CHAINS];       /* chain plane turned about z */
     double scale[FS_CHAINS];           /* forefoot size factor (lengths, anchors, radii, mass) */
@@ -78,7 +86,8 @@ typedef struct fs_spring_geom {
     char name[32];
     int body1, body2;
     fs_vec3 p1, p2;      /* anchors in the neutral pose */
-    double k_N_per_m, c_Ns_per_m, rest_length_m;
+    double k_N_per_m, c_Ns_per_m, rest_length_m; /* k: the law's stiffness at its rest length */
+    fs_spring_law law;   /* its forces scaled by the design's springs.scale */
 } fs_spring_geom;
 
 typedef struct fs_sphere_geom {

@@ -61,6 +61,7 @@ typedef struct fs_model_spring {
     int body1, body2;           /* body indices (the robot's own body: nbodies) */
     double p1_m[3], p2_m[3];    /* the anchors at the start pose, world */
     double k_N_per_m, c_Ns_per_m, rest_length_m;
+    fs_spring_law law;          /* its law (fs_spring_law.h); k_N_per_m is its stiffness at rest */
 } fs_model_spring;
 
 /* The ground's shapes (with_ground): a plane n . p = offset_m (n a unit normal, pointing out of the

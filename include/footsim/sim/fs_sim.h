@@ -180,9 +180,9 @@ void fs_sim_scene(const fs_sim *sim, fs_scene *scene);
 
 /* The constraint rows the solver handles in a step, by kind: what a step's cost grows with (a
  * dense direct solver's time grows with the cube of the total). Hinges and sliders 5, a fixed
- * joint 6, a ball 3, an implicit spring's DBall row 1, a contact 3 with friction (1 without), for
- * the contacts of the last step; a hinge's stop 1 while it is active (a biped's leg joints' spring-
- * dampers are stops with lo = hi: always active). */
+ * joint 6, a ball 3, an implicit spring's DBall row 1 (a cable's one-sided row 1 while taut), a
+ * contact 3 with friction (1 without), for the contacts of the last step; a hinge's stop 1 while it
+ * is active (a biped's leg joints' spring-dampers are stops with lo = hi: always active). */
 typedef struct fs_rows {
     int hinge, fixed, slider, ball, spring, contact, other; /* other: joints of any other kind, one each */
     int stop;              /* hinge stops (limits) active now */
