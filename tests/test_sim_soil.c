@@ -9,11 +9,13 @@
  * - RFT: alpha_z(0, pi/2) = 1, alpha_x(0, pi/2) = 0 (and four values derived from the fit), a plate
  *   at a depth and tilt against the formula, the inertial term against rho v^2;
  * - a foot through a thin layer stops on the bedrock;
+ * - a soil landing's impact impulse is its fall's momentum;
  * - validation: n <= 0, a negative modulus, phi of 90 degrees, depth 0, RFT without zeta or density,
  *   a grid over max_nodes are refused with file:line (or the key) before anything runs. */
 #include "fs_test.h"
 
 #include "footsim/sim/fs_sim.h"
+#include "footsim/experiment/fs_trial.h"
 #include "footsim/sim/fs_sim_soil.h"
 
 #include <stdlib.h>
@@ -303,6 +305,30 @@ static void rft_plate_at_depth_and_tilt(void)
     fs_terrain_free(&t);
 }
 
+/* A soil landing's impact impulse is the momentum its fall brings (the impulse at rigid ground's,
+ * test_experiment_touchdown): the biomimetic foot on the rig (26 kg on a vertical slide) released 5
+ * mm above LETE sand sinks some 19 mm, and the soil's force stays below the weight for the first
+ * tens of ms, so that a count that ended landing.impulse_window_s (50 ms) after touchdown read 0.
+ * With the count lasting until the robot's centre of mass stops falling, it reads at least the
+ * fall's momentum less what the rest speed leaves, M (v - 0.01), and at most M (v + up) with up
+ * the fastest rise energy allows after sinking the ankle's drop, sqrt(v^2 + 2 g drop), times 1.02
+ * for the foot's own mass, as for rigid ground. */
+static void soil_landing_impulse_is_the_falls_momentum(void)
+{
+    const char *set[] = {"scenario.design=feet/biomimetic.ini", "robot.design=robots/rig.ini",
+                         "scenario.terrain=../terrains/soils/lete_sand.ini", "run.duration_s=0.4",
+                         "landing.tilt_range_deg=0"};
+    fs_trial_result r;
+    fs_error err;
+    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 5, 1, NULL, &r, &err) == FS_OK);
+    const double g = 9.81, v = sqrt(2 * g * 0.005), M = r.robot_mass_kg;
+    double up = sqrt(v * v + 2 * g * r.ankle_drop_m);
+    printf("  impulse %.3f N s on LETE sand (touchdown %.4f s, ankle drop %.2f mm), bounds [%.3f, %.3f]\n",
+           r.impact_impulse_Ns, r.touchdown_s, r.ankle_drop_m * 1e3, M * (v - 0.01), 1.02 * M * (v + up));
+    CHECK(r.impact_impulse_Ns >= M * (v - 0.01));
+    CHECK(r.impact_impulse_Ns <= 1.02 * M * (v + up));
+}
+
 /* ---- the bedrock, and refusals --------------------------------------------------------------- */
 
 static void thin_layer_stops_on_the_bedrock(void)
@@ -374,4 +400,5 @@ static void bad_soils_are_refused(void)
     CHECK(strstr(err.message, "max_nodes") != NULL);
 }
 
-FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_tilt), TEST(plate_dragged_follows_janosi), TEST(bad_soils_are_refused), TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little))
+FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_tilt),
+             TEST(soil_landing_impulse_is_the_falls_momentum), TEST(plate_dragged_follows_janosi), TEST(bad_soils_are_refused), TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little))
