@@ -533,12 +533,14 @@ typedef struct trial_job {
     int seed;
     fs_trial_result *r;
     fs_run_result *log; /* the trial's time series, for trajectory.csv */
+    cli_surface *surface; /* the soil's surface at the end, for surface.* */
+    const fs_provenance *prov;
 } trial_job;
 
 static fs_status run_trial_job(void *user, const fs_run_observer *obs, fs_error *err)
 {
     trial_job *t = user;
-    return fs_trial_run_logged(t->sc, t->seed, obs, t->log, t->r, err);
+    return fs_trial_run_logged(t->sc, t->seed, cli_surface_observer(t->surface, obs), t->log, t->r, err);
 }
 
 static fs_status write_trial_log(void *user, const char *dir, fs_error *err)
@@ -546,7 +548,8 @@ static fs_status write_trial_log(void *user, const char *dir, fs_error *err)
     const trial_job *t = user;
     char path[FS_OUT_PATH + 32];
     snprintf(path, sizeof path, "%s/trajectory.csv", dir);
-    return fs_run_write_trajectory(t->log, path, err);
+    fs_status s = fs_run_write_trajectory(t->log, path, err);
+    return s == FS_OK ? (fs_status)cli_surface_write(t->surface, dir, t->prov, err) : s;
 }
 
 static cJSON *trial_json_of(const void *r) { return trial_json(r); }
@@ -571,6 +574,7 @@ typedef struct trial_files {
     fs_scenario base, placed;
     fs_outdir out;
     fs_run_result log;
+    cli_surface surface;
 } trial_files;
 
 static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, trial_files *w)
@@ -588,7 +592,7 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     if (!s && fs_scenario_provenance(base, a->set, a->nset, &prov, &err) != FS_OK)
         s = fail(&err);
     prov.first_seed = seed, prov.nseeds = 1;
-    trial_job t = {base, seed, r, &w->log};
+    trial_job t = {base, seed, r, &w->log, &w->surface, &prov};
     folder_job j = {dir, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov,
                     write_trial_log, trial_frame_label};
     if (!s)
@@ -597,12 +601,14 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     return s; /* the scenarios and the folder are the caller's to free */
 }
 
-static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
+static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, int *surface)
 {
     trial_files *w = cli_zalloc(sizeof *w);
     if (!w)
         return FS_NO_MEMORY;
     int s = trial_work(a, seed, r, dir_out, size, w);
+    *surface = w->surface.s.nx > 0;
+    cli_surface_free(&w->surface);
     fs_outdir_abort(&w->out); /* each is a no-op where trial_work did it already */
     fs_scenario_free(&w->base);
     fs_scenario_free(&w->placed);
@@ -620,8 +626,9 @@ int cli_trial(const cli_args *a)
     fs_trial_result r;
     fs_error err;
     char dir[FS_OUT_PATH] = "";
+    int surface = 0;
     if (a->frames || a->out) {
-        int s = trial_in_folder(a, (int)seed, &r, dir, sizeof dir);
+        int s = trial_in_folder(a, (int)seed, &r, dir, sizeof dir, &surface);
         if (s)
             return s;
     } else if (fs_trial_run(a->input, a->set, a->nset, (int)seed, NULL, &r, &err) != FS_OK) {
@@ -653,7 +660,8 @@ int cli_trial(const cli_args *a)
                    "ground force at the end %.0f N\n", f ? "left" : "right", r.foot[f].touchdown_s, r.foot[f].mean_contacts,
                    r.foot[f].final_contacts, r.foot[f].ankle_drop_m * 1e3, r.foot[f].slip_m * 1e3, r.foot[f].final_force_N);
         if (dir[0])
-            printf("  results: %s/trial.json, %s/trajectory.csv%s\n", dir, dir, a->frames ? ", frames/" : "");
+            printf("  results: %s/trial.json, %s/trajectory.csv%s%s\n", dir, dir,
+                   surface ? ", the soil's final surface in surface.png, .csv and .ini" : "", a->frames ? ", frames/" : "");
     }
     return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
 }
@@ -677,18 +685,27 @@ static cJSON *walk_json(const void *result)
 typedef struct walk_job {
     const fs_scenario *sc;
     fs_walk_result *r;
+    cli_surface *surface; /* the soil's surface at the end, for surface.* */
+    const fs_provenance *prov;
 } walk_job;
 
 static fs_status run_walk_job(void *user, const fs_run_observer *obs, fs_error *err)
 {
     walk_job *w = user;
-    return fs_walk_run(w->sc, obs, w->r, err);
+    return fs_walk_run(w->sc, cli_surface_observer(w->surface, obs), w->r, err);
+}
+
+static fs_status write_walk_surface(void *user, const char *dir, fs_error *err)
+{
+    const walk_job *w = user;
+    return (fs_status)cli_surface_write(w->surface, dir, w->prov, err);
 }
 
 /* What a walk works on, too large for the stack: on the heap, one per command. */
 typedef struct walk_work {
     fs_scenario sc;
     fs_outdir out;
+    cli_surface surface;
 } walk_work;
 
 int cli_walk(const cli_args *a)
@@ -707,11 +724,11 @@ int cli_walk(const cli_args *a)
     if (!s && (a->frames || a->out)) {
         /* a folder of its own (default results/walks/NAME/): walk.json and the frames, whole */
         s = cli_results_dir(a, "walks", sc->name, dir, sizeof dir);
-        walk_job job = {sc, &r};
         fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
+        walk_job job = {sc, &r, &w->surface, &prov};
         if (!s && fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
             s = fail(&err);
-        folder_job j = {dir, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, NULL, NULL};
+        folder_job j = {dir, sc, run_walk_job, &job, "walk.json", walk_json, &r, &prov, write_walk_surface, NULL};
         if (!s)
             s = in_folder(a, &j, &w->out, shown, sizeof shown);
         fs_provenance_free(&prov);
@@ -719,6 +736,8 @@ int cli_walk(const cli_args *a)
         s = fail(&err);
     }
     fs_outdir_abort(&w->out); /* a no-op where in_folder did it already */
+    int surface = w->surface.s.nx > 0;
+    cli_surface_free(&w->surface);
     fs_scenario_free(sc);
     free(w);
     if (s)
@@ -734,7 +753,8 @@ int cli_walk(const cli_args *a)
                a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
                r.peak_force_N, r.peak_tilt_deg);
         if (shown[0])
-            printf("  results: %s/walk.json%s\n", shown, a->frames ? ", frames/" : "");
+            printf("  results: %s/walk.json%s%s\n", shown,
+                   surface ? ", the soil's final surface in surface.png, .csv and .ini" : "", a->frames ? ", frames/" : "");
     }
     return 0;
 }

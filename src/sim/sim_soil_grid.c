@@ -283,6 +283,46 @@ double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
     return v * g->dx * g->dx;
 }
 
+fs_status fs_soil_grid_surface_copy(const fs_soil_grid *g, fs_soil_surface *s, fs_error *err)
+{
+    memset(s, 0, sizeof *s);
+    int t0 = g->tx, t1 = -1, u0 = g->ty, u1 = -1; /* the tiles reached: their bounding box */
+    for (int tj = 0; tj < g->ty; tj++)
+        for (int ti = 0; ti < g->tx; ti++)
+            if (g->tile[tj * g->tx + ti] >= 0)
+                t0 = ti < t0 ? ti : t0, t1 = ti > t1 ? ti : t1, u0 = tj < u0 ? tj : u0, u1 = tj > u1 ? tj : u1;
+    if (t1 < 0)
+        return FS_OK;
+    /* a node of undisturbed soil around them (where the region allows): a heightmap loaded from this
+       draws its edge out beyond it, which is then the undisturbed surface, not a print's */
+    int i0 = t0 * T - 1 > 0 ? t0 * T - 1 : 0, j0 = u0 * T - 1 > 0 ? u0 * T - 1 : 0;
+    int i1 = (t1 + 1) * T + 1 < g->nx ? (t1 + 1) * T + 1 : g->nx, j1 = (u1 + 1) * T + 1 < g->ny ? (u1 + 1) * T + 1 : g->ny;
+    size_t n = (size_t)(i1 - i0) * (size_t)(j1 - j0);
+    s->z_m = malloc(n * sizeof *s->z_m);
+    s->sink_m = malloc(n * sizeof *s->sink_m);
+    if (!s->z_m || !s->sink_m) {
+        fs_soil_surface_free(s);
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's surface (%zu nodes)", n);
+    }
+    s->nx = i1 - i0, s->ny = j1 - j0, s->dx = g->dx;
+    s->x0 = g->x0 + i0 * g->dx, s->y0 = g->y0 + j0 * g->dx;
+    for (int j = j0; j < j1; j++)
+        for (int i = i0; i < i1; i++) {
+            const fs_soil_node *nd = node_at(g, i, j);
+            size_t k = (size_t)(j - j0) * (size_t)s->nx + (size_t)(i - i0);
+            s->sink_m[k] = nd ? nd->sp_m : 0;
+            s->z_m[k] = nd ? nd->h0_m - nd->sp_m : fs_soil_grid_undisturbed(g, g->x0 + i * g->dx, g->y0 + j * g->dx);
+        }
+    return FS_OK;
+}
+
+void fs_soil_surface_free(fs_soil_surface *s)
+{
+    free(s->z_m);
+    free(s->sink_m);
+    memset(s, 0, sizeof *s);
+}
+
 /* ---- the step ------------------------------------------------------------------------------- */
 
 static void add_force(double f[3], double t[3], const double r[3], const double F[3])
