@@ -679,6 +679,20 @@ static cJSON *walk_json(const void *result)
     cJSON_AddNumberToObject(o, "flat_contacts_mean", r->flat_contacts_mean);
     cJSON_AddNumberToObject(o, "peak_force_N", r->peak_force_N);
     cJSON_AddNumberToObject(o, "peak_tilt_deg", r->peak_tilt_deg);
+    if (r->soil) { /* on a soil: each step's record (fs_walk.h) */
+        cJSON *steps = cJSON_AddArrayToObject(o, "soil_steps");
+        for (int i = 0; i < r->nsteps; i++) {
+            const fs_walk_step *w = &r->step[i];
+            cJSON *e = cJSON_CreateObject();
+            cJSON_AddNumberToObject(e, "step", i + 1);
+            cJSON_AddNumberToObject(e, "sinkage_m", w->sinkage_m);
+            cJSON_AddNumberToObject(e, "slip_m", w->slip_m);
+            cJSON_AddNumberToObject(e, "soil_work_J", w->soil_work_J);
+            cJSON_AddNumberToObject(e, "extra_press_m", w->extra_press_m);
+            cJSON_AddNumberToObject(e, "load_N", w->load_N);
+            cJSON_AddItemToArray(steps, e);
+        }
+    }
     return o;
 }
 
@@ -752,6 +766,10 @@ int cli_walk(const cli_args *a)
                "section (%d steps), %.1f off it; peak ground force %.0f N; ankle tilt up to %.1f deg\n",
                a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
                r.peak_force_N, r.peak_tilt_deg);
+        for (int i = 0; r.soil && i < r.nsteps; i++)
+            printf("  step %d on the soil: sinkage %.2f mm at the stance's end, slip %.2f mm, the soil took %.3f J; "
+                   "pressed %.2f mm past press_m, ground force %.0f N\n", i + 1, r.step[i].sinkage_m * 1e3,
+                   r.step[i].slip_m * 1e3, r.step[i].soil_work_J, r.step[i].extra_press_m * 1e3, r.step[i].load_N);
         if (shown[0])
             printf("  results: %s/walk.json%s%s\n", shown,
                    surface ? ", the soil's final surface in surface.png, .csv and .ini" : "", a->frames ? ", frames/" : "");
