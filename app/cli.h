@@ -3,6 +3,8 @@
 #define FS_CLI_H
 
 #include "footsim/model/fs_scenario.h"
+#include "footsim/sim/fs_observer.h"
+#include "footsim/sim/fs_soil_grid.h"
 
 #include <stddef.h>
 #include <stdio.h>
@@ -161,6 +163,22 @@ const char *cli_csv_num(char *buf, size_t size, const char *fmt, double v);
 const char *cli_csv_text(char *buf, size_t size, const char *s);
 
 typedef struct fs_provenance fs_provenance;
+
+/* A run's final soil surface (cli_surface.c): cli_surface_observer gives an observer that calls
+ * inner's (frames; NULL: none) and keeps the soil's surface at each call, the last being the run's
+ * end (nothing without a soil); cli_surface_write writes it into dir, when there is one: surface.png
+ * (16-bit heightmap, black the lowest height), surface.csv (x_mm, y_mm, surface_mm, print_mm; RFC
+ * 4180), surface.provenance.json (prov, and the grid and the PNG's scale) and surface.ini (a terrain
+ * file loading the PNG back as rigid heightmap ground). An fs_status. */
+typedef struct cli_surface {
+    const fs_run_observer *inner;
+    fs_run_observer obs;
+    fs_soil_surface s;
+    fs_terrain_def material;
+} cli_surface;
+const fs_run_observer *cli_surface_observer(cli_surface *c, const fs_run_observer *inner);
+int cli_surface_write(const cli_surface *c, const char *dir, const fs_provenance *prov, struct fs_error *err);
+void cli_surface_free(cli_surface *c);
 /* Writes dir/STEM.provenance.json beside dir/csv (fs_provenance_write_beside): p, and how the file
  * was made: "command", "date_utc", "machine" (NULL: null), "load_average_start" and "_end" (below
  * 0 or NAN: null). An fs_status. */

@@ -206,7 +206,7 @@ struct cli_frames {
     fs_scene scene;  /* the snapshot, reused for each frame */
     fs_scene neutral;/* the first snapshot: the pose --exaggerate measures displacements from */
     fs_scene drawn;  /* the snapshot as drawn (exaggerated) */
-    double *heights; /* the drawn ground's heights, its own copy: the last frame is drawn again
+    double *heights; /* the drawn ground's heights (and a soil's sinkage), its own copy: the last frame is drawn again
                         (cli_frames_finish) after the sim and scenario that owned them are gone */
     size_t nheights;
     char scenario[256], terrain[256]; /* the drawn names, likewise its own copies */
@@ -228,16 +228,20 @@ static fs_status draw_frame(void *user, const fs_sim *sim, fs_error *err)
     if (f->n == 0)
         f->neutral = f->scene;
     cli_frame_scene(&f->o, &f->neutral, &f->scene, &f->drawn);
-    size_t n = (size_t)f->drawn.ground.nx * (size_t)f->drawn.ground.ny;
-    if (f->drawn.ground.heights && n) {
-        if (n > f->nheights) {
-            double *grown = realloc(f->heights, n * sizeof *grown);
+    size_t n = (size_t)f->drawn.ground.nx * (size_t)f->drawn.ground.ny, m = f->drawn.ground.sinkage ? 2 * n : n;
+    if (f->drawn.ground.heights && n) { /* the heights, and a soil's sinkage after them */
+        if (m > f->nheights) {
+            double *grown = realloc(f->heights, m * sizeof *grown);
             if (!grown)
                 return fs_fail(err, FS_NO_MEMORY, "out of memory for a frame's ground");
-            f->heights = grown, f->nheights = n;
+            f->heights = grown, f->nheights = m;
         }
         memcpy(f->heights, f->drawn.ground.heights, n * sizeof *f->heights);
         f->drawn.ground.heights = f->heights;
+        if (f->drawn.ground.sinkage) {
+            memcpy(f->heights + n, f->drawn.ground.sinkage, n * sizeof *f->heights);
+            f->drawn.ground.sinkage = f->heights + n;
+        }
     }
     snprintf(f->scenario, sizeof f->scenario, "%s", f->drawn.scenario ? f->drawn.scenario : "-");
     snprintf(f->terrain, sizeof f->terrain, "%s", f->drawn.terrain ? f->drawn.terrain : "-");

@@ -37,6 +37,15 @@ static fs_status store_scene(void *user, const fs_sim *sim, fs_error *err)
     fs_scene *s = &st->scene[st->n++];
     fs_sim_scene(sim, s);
     size_t nh = (size_t)s->ground.nx * (size_t)s->ground.ny;
+    if (s->ground.sinkage && nh) { /* a soil's ground changes: each snapshot's own heights and sinkage */
+        double *own = malloc(2 * nh * sizeof *own);
+        if (!own)
+            return fs_fail(err, FS_NO_MEMORY, "render-compare: out of memory for the soil's ground");
+        memcpy(own, s->ground.heights, nh * sizeof *own);
+        memcpy(own + nh, s->ground.sinkage, nh * sizeof *own);
+        s->ground.heights = own, s->ground.sinkage = own + nh;
+        return FS_OK;
+    }
     if (!st->heights && nh) {
         st->heights = malloc(nh * sizeof *st->heights);
         if (!st->heights)
@@ -84,6 +93,9 @@ static int run_stored(const fs_scenario *sc, double fps, scene_store *st)
 
 static void store_free(scene_store *st)
 {
+    for (int i = 0; i < st->n; i++) /* a soil's snapshots own their ground */
+        if (st->scene[i].ground.sinkage)
+            free((double *)st->scene[i].ground.heights);
     free(st->scene);
     free(st->heights);
 }

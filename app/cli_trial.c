@@ -18,12 +18,14 @@ typedef struct trial_job {
     int seed;
     fs_trial_result *r;
     fs_run_result *log; /* the trial's time series, for trajectory.csv */
+    cli_surface *surface; /* the soil's surface at the end, for surface.* */
+    const fs_provenance *prov;
 } trial_job;
 
 static fs_status run_trial_job(void *user, const fs_run_observer *obs, fs_error *err)
 {
     trial_job *t = user;
-    return fs_trial_run_logged(t->sc, t->seed, obs, t->log, t->r, err);
+    return fs_trial_run_logged(t->sc, t->seed, cli_surface_observer(t->surface, obs), t->log, t->r, err);
 }
 
 static fs_status write_trial_log(void *user, const char *dir, fs_error *err)
@@ -31,7 +33,8 @@ static fs_status write_trial_log(void *user, const char *dir, fs_error *err)
     const trial_job *t = user;
     char path[FS_OUT_PATH + 32];
     snprintf(path, sizeof path, "%s/trajectory.csv", dir);
-    return fs_run_write_trajectory(t->log, path, err);
+    fs_status s = fs_run_write_trajectory(t->log, path, err);
+    return s == FS_OK ? (fs_status)cli_surface_write(t->surface, dir, t->prov, err) : s;
 }
 
 static cJSON *trial_json_of(const void *r, fs_error *err) { return fs_trial_json(r, err); }
@@ -56,6 +59,7 @@ typedef struct trial_files {
     fs_scenario base, placed;
     fs_outdir out;
     fs_run_result log;
+    cli_surface surface;
 } trial_files;
 
 static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, trial_files *w)
@@ -73,7 +77,7 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     if (!s && fs_scenario_provenance(base, a->set, a->nset, &prov, &err) != FS_OK)
         s = fail(&err);
     prov.first_seed = seed, prov.nseeds = 1;
-    trial_job t = {base, seed, r, &w->log};
+    trial_job t = {base, seed, r, &w->log, &w->surface, &prov};
     cli_folder_job j = {dir, placed, run_trial_job, &t, "trial.json", trial_json_of, r, &prov,
                     write_trial_log, trial_frame_label};
     if (!s)
@@ -82,12 +86,14 @@ static int trial_work(const cli_args *a, int seed, fs_trial_result *r, char *dir
     return s; /* the scenarios and the folder are the caller's to free */
 }
 
-static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size)
+static int trial_in_folder(const cli_args *a, int seed, fs_trial_result *r, char *dir_out, size_t size, int *surface)
 {
     trial_files *w = cli_zalloc(sizeof *w);
     if (!w)
         return FS_NO_MEMORY;
     int s = trial_work(a, seed, r, dir_out, size, w);
+    *surface = w->surface.s.nx > 0;
+    cli_surface_free(&w->surface);
     fs_outdir_abort(&w->out); /* each is a no-op where trial_work did it already */
     fs_scenario_free(&w->base);
     fs_scenario_free(&w->placed);
@@ -105,8 +111,9 @@ int cli_trial(const cli_args *a)
     fs_trial_result r;
     fs_error err;
     char dir[FS_OUT_PATH] = "";
+    int surface = 0;
     if (a->frames || a->out) {
-        int s = trial_in_folder(a, (int)seed, &r, dir, sizeof dir);
+        int s = trial_in_folder(a, (int)seed, &r, dir, sizeof dir, &surface);
         if (s)
             return s;
     } else if (fs_trial_run(a->input, a->set, a->nset, (int)seed, NULL, &r, &err) != FS_OK) {
@@ -140,7 +147,8 @@ int cli_trial(const cli_args *a)
                    "ground force at the end %.0f N\n", f ? "left" : "right", r.foot[f].touchdown_s, r.foot[f].mean_contacts,
                    r.foot[f].final_contacts, r.foot[f].ankle_drop_m * 1e3, r.foot[f].slip_m * 1e3, r.foot[f].final_force_N);
         if (dir[0])
-            printf("  results: %s/trial.json, %s/trajectory.csv%s\n", dir, dir, a->frames ? ", frames/" : "");
+            printf("  results: %s/trial.json, %s/trajectory.csv%s%s\n", dir, dir,
+                   surface ? ", the soil's final surface in surface.png, .csv and .ini" : "", a->frames ? ", frames/" : "");
     }
     return r.outcome == FS_FAILED_NUMERICS ? FS_NUMERICAL : 0;
 }

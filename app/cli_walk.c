@@ -17,18 +17,27 @@ static cJSON *walk_json_of(const void *r, fs_error *err) { return fs_walk_json(r
 typedef struct walk_job {
     const fs_scenario *sc;
     fs_walk_result *r;
+    cli_surface *surface; /* the soil's surface at the end, for surface.* */
+    const fs_provenance *prov;
 } walk_job;
 
 static fs_status run_walk_job(void *user, const fs_run_observer *obs, fs_error *err)
 {
     walk_job *w = user;
-    return fs_walk_run(w->sc, obs, w->r, err);
+    return fs_walk_run(w->sc, cli_surface_observer(w->surface, obs), w->r, err);
+}
+
+static fs_status write_walk_surface(void *user, const char *dir, fs_error *err)
+{
+    const walk_job *w = user;
+    return (fs_status)cli_surface_write(w->surface, dir, w->prov, err);
 }
 
 /* What a walk works on, too large for the stack: on the heap, one per command. */
 typedef struct walk_work {
     fs_scenario sc;
     fs_outdir out;
+    cli_surface surface;
 } walk_work;
 
 int cli_walk(const cli_args *a)
@@ -47,11 +56,11 @@ int cli_walk(const cli_args *a)
     if (!s && (a->frames || a->out)) {
         /* a folder of its own (default results/walks/NAME/): walk.json and the frames, whole */
         s = cli_results_dir(a, "walks", sc->name, dir, sizeof dir);
-        walk_job job = {sc, &r};
         fs_provenance prov = {.ninputs = 0}; /* what made the result: the files, the --set, the settings */
+        walk_job job = {sc, &r, &w->surface, &prov};
         if (!s && fs_scenario_provenance(sc, a->set, a->nset, &prov, &err) != FS_OK)
             s = fail(&err);
-        cli_folder_job j = {dir, sc, run_walk_job, &job, "walk.json", walk_json_of, &r, &prov, NULL, NULL};
+        cli_folder_job j = {dir, sc, run_walk_job, &job, "walk.json", walk_json_of, &r, &prov, write_walk_surface, NULL};
         if (!s)
             s = cli_in_folder(a, &j, &w->out, shown, sizeof shown);
         fs_provenance_free(&prov);
@@ -59,6 +68,8 @@ int cli_walk(const cli_args *a)
         s = fail(&err);
     }
     fs_outdir_abort(&w->out); /* a no-op where in_folder did it already */
+    int surface = w->surface.s.nx > 0;
+    cli_surface_free(&w->surface);
     fs_scenario_free(sc);
     free(w);
     if (s)
@@ -74,8 +85,13 @@ int cli_walk(const cli_args *a)
                "section (%d steps), %.1f off it; peak ground force %.0f N; ankle tilt up to %.1f deg\n",
                a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
                r.peak_force_N, r.peak_tilt_deg);
+        for (int i = 0; r.soil && i < r.nsteps; i++)
+            printf("  step %d on the soil: sinkage %.2f mm at the stance's end, slip %.2f mm, the soil took %.3f J; "
+                   "pressed %.2f mm past press_m, ground force %.0f N\n", i + 1, r.step[i].sinkage_m * 1e3,
+                   r.step[i].slip_m * 1e3, r.step[i].soil_work_J, r.step[i].extra_press_m * 1e3, r.step[i].load_N);
         if (shown[0])
-            printf("  results: %s/walk.json%s\n", shown, a->frames ? ", frames/" : "");
+            printf("  results: %s/walk.json%s%s\n", shown,
+                   surface ? ", the soil's final surface in surface.png, .csv and .ini" : "", a->frames ? ", frames/" : "");
     }
     return 0;
 }

@@ -143,10 +143,11 @@ void fs_render_clear(fs_render *r)
 
 /* ---- the ground ----------------------------------------------------------------------------- */
 
-/* Height of the grid at (x, y), bilinear, clamped to the grid; 0 when there is no grid. */
-static double ground_height(const fs_scene_ground *g, double x, double y)
+/* A value of the grid's samples val (its heights, or a soil's sinkage) at (x, y), bilinear, clamped to
+ * the grid; 0 when there is no grid. */
+static double grid_value(const fs_scene_ground *g, const double *val, double x, double y)
 {
-    if (!g->heights || g->nx < 1 || g->ny < 1)
+    if (!val || g->nx < 1 || g->ny < 1)
         return 0;
     double u = g->dx > 0 ? (x - g->x0) / g->dx : 0, v = g->dy > 0 ? (y - g->y0) / g->dy : 0;
     u = fmin(fmax(u, 0), g->nx - 1);
@@ -154,19 +155,60 @@ static double ground_height(const fs_scene_ground *g, double x, double y)
     int i = (int)fmin(floor(u), g->nx - 2 < 0 ? 0 : g->nx - 2), j = (int)fmin(floor(v), g->ny - 2 < 0 ? 0 : g->ny - 2);
     int i1 = i + 1 < g->nx ? i + 1 : i, j1 = j + 1 < g->ny ? j + 1 : j;
     double fu = u - i, fv = v - j;
-    const double *z = g->heights;
+    const double *z = val;
     return (1 - fv) * ((1 - fu) * z[j * g->nx + i] + fu * z[j * g->nx + i1]) +
            fv * ((1 - fu) * z[j1 * g->nx + i] + fu * z[j1 * g->nx + i1]);
 }
 
-/* One vertex of the ground mesh: normal from the local slope, colour from the height. */
-static void ground_vertex(const fs_scene_ground *g, double x, double y, double zlo, double zspan, double shade)
+static double ground_height(const fs_scene_ground *g, double x, double y) { return grid_value(g, g->heights, x, y); }
+
+/* A soil's sinkage scale, m: the deepest sinkage drawn rounded up to 1, 2 or 5 times a power of
+ * ten, at least 1 mm; 0 on rigid ground. */
+static double sinkage_scale(const fs_scene_ground *g)
+{
+    if (!g->sinkage)
+        return 0;
+    double deepest = 0;
+    for (long k = 0; k < (long)g->nx * g->ny; k++)
+        deepest = fmax(deepest, g->sinkage[k]);
+    double p = pow(10, floor(log10(fmax(deepest, 1e-3)))), scale = 10 * p;
+    for (int k = 2; k >= 0; k--) {
+        const double m[3] = {1, 2, 5};
+        if (m[k] * p >= deepest)
+            scale = m[k] * p;
+    }
+    return scale;
+}
+
+/* The colour of a sinkage a fraction t (0 to 1) of the scale: pale sand through orange to a deep
+ * red-violet. */
+static void sinkage_colour(double t, float rgb[3])
+{
+    static const float ramp[3][3] = {{0.98f, 0.90f, 0.55f}, {0.93f, 0.50f, 0.16f}, {0.42f, 0.08f, 0.32f}};
+    t = fmin(fmax(t, 0), 1);
+    int a = t < 0.5 ? 0 : 1;
+    float u = (float)(t < 0.5 ? 2 * t : 2 * t - 1);
+    for (int k = 0; k < 3; k++)
+        rgb[k] = ramp[a][k] + u * (ramp[a + 1][k] - ramp[a][k]);
+}
+
+/* One vertex of the ground mesh: normal from the local slope, colour from the height, or on a soil
+ * from the sinkage where there is any (scale smax, sinkage_scale). */
+static void ground_vertex(const fs_scene_ground *g, double x, double y, double zlo, double zspan, double shade,
+                          double smax)
 {
     double e = 0.25 * fmin(g->dx, g->dy), z = ground_height(g, x, y);
     double sx = (ground_height(g, x + e, y) - ground_height(g, x - e, y)) / (2 * e);
     double sy = (ground_height(g, x, y + e) - ground_height(g, x, y - e)) / (2 * e);
     float rgb[3];
     fs_render_height_colour(zspan > 1e-12 ? (z - zlo) / zspan : 0.5, rgb);
+    if (smax > 0) { /* blended in over the first 1/20 of the scale: the print's edge stays soft */
+        double t = grid_value(g, g->sinkage, x, y) / smax, w = fmin(1, 20 * t);
+        float c[3];
+        sinkage_colour(t, c);
+        for (int k = 0; k < 3 && w > 0; k++)
+            rgb[k] = (float)((1 - w) * rgb[k] + w * c[k]);
+    }
     gl.Color3f((float)(rgb[0] * shade), (float)(rgb[1] * shade), (float)(rgb[2] * shade));
     gl.Normal3d(-sx, -sy, 1);
     gl.Vertex3d(x, y, z);
@@ -184,17 +226,17 @@ static void draw_ground(const fs_scene_ground *g)
     int nu = (int)fmin(ceil(w / CHECKER_M), 1024), nv = (int)fmin(ceil(d / CHECKER_M), 1024);
     nu = nu > g->nx - 1 ? nu : g->nx - 1;
     nv = nv > g->ny - 1 ? nv : g->ny - 1;
-    double su = w / nu, sv = d / nv;
+    double su = w / nu, sv = d / nv, smax = sinkage_scale(g);
     gl.Begin(GL_QUADS);
     for (int j = 0; j < nv; j++)
         for (int i = 0; i < nu; i++) {
             double x = g->x0 + i * su, y = g->y0 + j * sv;
             long cx = lround(floor((x + 0.5 * su) / CHECKER_M)), cy = lround(floor((y + 0.5 * sv) / CHECKER_M));
             double shade = (cx + cy) % 2 ? 0.9 : 1.0;
-            ground_vertex(g, x, y, zlo, zhi - zlo, shade);
-            ground_vertex(g, x + su, y, zlo, zhi - zlo, shade);
-            ground_vertex(g, x + su, y + sv, zlo, zhi - zlo, shade);
-            ground_vertex(g, x, y + sv, zlo, zhi - zlo, shade);
+            ground_vertex(g, x, y, zlo, zhi - zlo, shade, smax);
+            ground_vertex(g, x + su, y, zlo, zhi - zlo, shade, smax);
+            ground_vertex(g, x + su, y + sv, zlo, zhi - zlo, shade, smax);
+            ground_vertex(g, x, y + sv, zlo, zhi - zlo, shade, smax);
         }
     gl.End();
 }
@@ -453,6 +495,30 @@ static void draw_overlay(fs_render *r, const fs_scene *scene, int x0, int y0, in
     fs_render_text_gl(r, x0 + pad, y0 + pad, scale, text, white);
 }
 
+/* On a soil: the sinkage colour scale, in mm, at the right under the top strip. */
+static void draw_sinkage_legend(fs_render *r, const fs_scene_ground *g, int x0, int y0, int w, int h)
+{
+    static const unsigned char ink[3] = {20, 20, 24};
+    double smax = sinkage_scale(g);
+    if (!(smax > 0))
+        return;
+    int scale = text_scale(w, h), cells = 20, cw = 4 * scale, bh = 6 * scale, pad = 2 * scale;
+    char lo[32] = "SINKAGE 0", hi[32];
+    snprintf(hi, sizeof hi, "%g MM", smax * 1e3);
+    int tw = (int)(strlen(lo) + strlen(hi) + 2) * 6 * scale, bw = cells * cw + tw + 2 * pad;
+    int bx = x0 + w - bw - 4 * scale, by = y0 + 7 * scale + 2 * pad + 4 * scale;
+    if (bx < x0 || by + bh + 2 * pad > y0 + h)
+        return;
+    fs_render_shade_box(r, bx, by, bw, bh + 2 * pad, 0.85);
+    int x = bx + pad + fs_render_text_gl(r, bx + pad, by + pad, scale, lo, ink) + 3 * scale;
+    for (int k = 0; k < cells; k++) {
+        float c[3];
+        sinkage_colour((k + 0.5) / cells, c);
+        fs_render_fill_box(r, x + k * cw, by + pad, cw, bh, c);
+    }
+    fs_render_text_gl(r, x + cells * cw + 3 * scale, by + pad, scale, hi, ink);
+}
+
 /* A bar of a round length (1, 2 or 5 times a power of ten, mm) about a fifth of the viewport wide
  * at the camera's target, labelled, in the bottom-left corner. */
 static void draw_scale_bar(fs_render *r, int x0, int y0, int w, int h, double view_h_m)
@@ -530,6 +596,7 @@ void fs_render_draw(fs_render *r, const fs_render_view *v, const fs_scene *scene
     draw_robot(r, scene);
     gl.Disable(GL_SCISSOR_TEST);
     draw_overlay(r, scene, x0, y0, w, h);
+    draw_sinkage_legend(r, &scene->ground, x0, y0, w, h);
     draw_scale_bar(r, x0, y0, w, h, view_h_m);
     gl.Finish();
 }

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Soil through the command (docs/soil.md): a small soil campaign (2 feet x dry sand x 2 seeds, a short
-# window, a 2 mm grid) writes the same bytes with -j 1 and -j 2; bad soils are refused with file:line
-# and exit 2 before anything runs. Usage: cli_soil.sh path/to/footsim (run from the source folder).
+# window, a 2 mm grid) writes the same bytes with -j 1 and -j 2; a trial's final surface is written and
+# loads back as a heightmap; bad soils are refused with file:line and exit 2 before anything runs. Usage: cli_soil.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
 
 . "$(dirname "$0")/small_campaign.sh"
@@ -16,6 +16,35 @@ for f in summary.csv trials.csv summary.json; do
     check_that "$f the same with -j 1 and -j 2" cmp -s "$tmp/j1/$f" "$tmp/j2/$f"
 done
 check 'grep -q "soils/dry_sand.ini" "$tmp/j1/summary.json"' # the soil is among the inputs (provenance)
+
+# the final surface (docs/soil.md): a trial on soil writes it as surface.png (16-bit), surface.csv in
+# mm (RFC 4180), its provenance and surface.ini, a terrain file that loads the PNG back as rigid
+# heightmap ground: its heights are the CSV's within half the PNG's quantum (and the CSV's 1e-6 mm),
+# at the deepest print and at three other nodes; footsim terrain draws it
+"$fs" trial scenarios/landing_trial.ini --set scenario.design=feet/flat.ini --set robot.design=robots/rig.ini \
+    --set scenario.terrain=../terrains/soils/dry_sand.ini --set soil.grid_m=0.002 --set run.duration_s=0.15 \
+    --out "$tmp/surf" >"$tmp/surf.out" 2>&1
+check_that "a trial on soil with --out exits 0" [ $? -eq 0 ]
+for f in surface.png surface.csv surface.ini surface.provenance.json; do
+    check_that "$f written" [ -s "$tmp/surf/$f" ]
+done
+check 'grep -q "surface.png, .csv and .ini" "$tmp/surf.out"'
+check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" csv "$tmp/surf/surface.csv:surface_mm:print_mm" >&2'
+check 'head -1 "$tmp/surf/surface.csv" | grep -q "^x_mm,y_mm,surface_mm,print_mm"'
+quantum=$(sed -n 's/.*"png_quantum_m":[[:space:]]*\([0-9.eE+-]*\).*/\1/p' "$tmp/surf/surface.provenance.json")
+check '[ -n "$quantum" ]'
+deepest=$(awk -F, 'NR > 1 && $4 + 0 > d { d = $4 + 0; row = $0 } END { print row }' "$tmp/surf/surface.csv" | tr -d '\r')
+check_that "a print deeper than 1 mm (what the check is about)" awk -v d="$(echo "$deepest" | cut -d, -f4)" 'BEGIN { exit !(d > 1) }'
+rows=$(awk 'NR == 2 || NR == 500 || NR == 1500' "$tmp/surf/surface.csv" | tr -d '\r')
+for row in $deepest $rows; do
+    x=$(echo "$row" | awk -F, '{ printf "%.12f", $1 / 1000 }') y=$(echo "$row" | awk -F, '{ printf "%.12f", $2 / 1000 }')
+    z_mm=$(echo "$row" | cut -d, -f3)
+    h=$("$fs" terrain "$tmp/surf/surface.ini" --height "$x" "$y")
+    check_that "surface at $x $y: $h m against $z_mm mm within half of $quantum m" \
+        awk -v h="$h" -v z="$z_mm" -v q="$quantum" 'BEGIN { d = h * 1000 - z; if (d < 0) d = -d; exit !(d <= q * 500 + 2e-6) }'
+done
+"$fs" terrain "$tmp/surf/surface.ini" --png "$tmp/surf_map.png" >/dev/null 2>&1
+check_that "footsim terrain draws the surface" [ -s "$tmp/surf_map.png" ]
 
 # refusals, before anything is written
 printf '[soil]\nmodel = bekker\n\n[bekker]\nn = 0\n' >"$tmp/n.ini"

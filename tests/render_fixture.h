@@ -32,7 +32,7 @@ static inline void fixture_scene(fs_scene *s)
     s->scenario = "golden";
     s->foot = "fixture";
     s->terrain = "flat";
-    s->ground = (fs_scene_ground){2, 2, -0.15, -0.15, 0.3, 0.3, fixture_plane, 1};
+    s->ground = (fs_scene_ground){2, 2, -0.15, -0.15, 0.3, 0.3, fixture_plane, 1, NULL};
     fixture_sphere(s, 0, 0, 0.008, 0.008, 0);
     double h = 0.2588190451, c = 0.9659258263; /* 30 degrees about y: (cos 15, 0, sin 15, 0) */
     s->shape[s->nshapes++] = (fs_scene_shape){FS_SHAPE_BOX, {0.03, 0.04, 0.01}, {0.025, 0, 0.025}, {c, 0, h, 0}, 1};

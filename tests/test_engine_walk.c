@@ -3,6 +3,9 @@
 
 #include "footsim/experiment/fs_walk.h"
 
+#include <math.h>
+#include <stdio.h>
+
 /* Every step is judged once, as completed or a fall; on flat ground the flat foot completes all,
  * and the ground carries the body's weight at least (26 kg: 255 N) at some moment. */
 static void machine_takes_its_steps(void)
@@ -45,6 +48,43 @@ static void biomimetic_foot_stands_on_heel_and_toes(void)
     fs_scenario_free(&sc);
 }
 
+/* Over a soil (fs_walk.h) the machine presses until the ground carries the load: on LETE sand (2 mm
+ * grid) the biomimetic foot under 26 kg sinks some 19 mm and the soil carries it, so each stance
+ * ends with the foot in the layer, above the bedrock, and the ground's force at least the robot's
+ * and foot's weight W less what the press's last step of the suspension leaves open (the carriage
+ * stops going down once the force reaches W; it may dip after, by the suspension's force over one
+ * step of the drive, k v h, and the body's sway: a tenth of W is allowed). The soil takes energy in
+ * every step; on rigid ground no step is recorded. */
+static void machine_presses_until_the_soil_carries_it(void)
+{
+    const char *set[] = {"walk.steps=2", "scenario.terrain=../terrains/soils/lete_sand.ini", "soil.grid_m=0.002"};
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/walking.ini", set, 3, &sc, &err) == FS_OK);
+    static fs_walk_result r;
+    REQUIRE(fs_walk_run(&sc, NULL, &r, &err) == FS_OK);
+    double mass = sc.def.robot.mass_kg;
+    for (int i = 0; i < sc.geom.nbodies; i++)
+        mass += sc.geom.body[i].mass_kg;
+    double W = mass * sc.def.gravity_m_per_s2;
+    CHECK(r.soil == 1 && r.nsteps == 2 && r.steps_completed == 2);
+    for (int i = 0; i < r.nsteps; i++) {
+        const fs_walk_step *w = &r.step[i];
+        printf("  step %d: sinkage %.2f mm, force %.0f N (W %.0f N), pressed %.2f mm more, the soil took %.3f J\n", i + 1,
+               w->sinkage_m * 1e3, w->load_N, W, w->extra_press_m * 1e3, w->soil_work_J);
+        CHECK(w->sinkage_m > 0 && w->sinkage_m < sc.terrain.def.soil.depth_m);
+        CHECK(w->load_N >= 0.9 * W);
+        CHECK(w->extra_press_m > 0);
+        CHECK(w->soil_work_J > 0);
+    }
+    fs_scenario_free(&sc);
+    const char *rigid[] = {"walk.steps=1", "scenario.terrain=../terrains/flat.ini"};
+    REQUIRE(fs_scenario_load("scenarios/walking.ini", rigid, 2, &sc, &err) == FS_OK);
+    REQUIRE(fs_walk_run(&sc, NULL, &r, &err) == FS_OK);
+    CHECK(r.soil == 0 && r.nsteps == 0);
+    fs_scenario_free(&sc);
+}
+
 /* A scenario that is not a walk is refused. */
 static void only_walk_scenarios_walk(void)
 {
@@ -77,4 +117,4 @@ static void carriage_work_closes_the_energy_balance(void)
     }
 }
 
-FS_TEST_MAIN(TEST(machine_takes_its_steps), TEST(biomimetic_foot_stands_on_heel_and_toes), TEST(only_walk_scenarios_walk), TEST(carriage_work_closes_the_energy_balance))
+FS_TEST_MAIN(TEST(machine_takes_its_steps), TEST(machine_presses_until_the_soil_carries_it), TEST(biomimetic_foot_stands_on_heel_and_toes), TEST(only_walk_scenarios_walk), TEST(carriage_work_closes_the_energy_balance))

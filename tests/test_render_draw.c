@@ -158,7 +158,7 @@ static void test_terrain_band(void)
         }
     fs_scene s;
     memset(&s, 0, sizeof s);
-    s.ground = (fs_scene_ground){N, N, -0.15, -0.15, 0.01, 0.01, z, 0};
+    s.ground = (fs_scene_ground){N, N, -0.15, -0.15, 0.01, 0.01, z, 0, NULL};
     /* two small spheres at opposite corners frame a 15 cm x 10 cm patch across the band */
     fixture_sphere(&s, -0.03, 0.05, 0.005, 0.005, 0);
     fixture_sphere(&s, 0.12, -0.05, 0.005, 0.005, 0);

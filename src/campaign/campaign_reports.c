@@ -70,7 +70,19 @@ cJSON *fs_walk_json(const fs_walk_result *r, const char *foot, fs_error *err)
     int ok = o && num(o, "steps_completed", r->steps_completed) && num(o, "falls", r->falls) &&
              num(o, "rough_steps", r->rough_steps) && num(o, "rough_contacts_mean", r->rough_contacts_mean) &&
              num(o, "flat_contacts_mean", r->flat_contacts_mean) && num(o, "peak_force_N", r->peak_force_N) &&
-             num(o, "peak_tilt_deg", r->peak_tilt_deg) && (!foot || text(o, "foot", foot));
+             num(o, "peak_tilt_deg", r->peak_tilt_deg);
+    if (ok && r->soil) { /* on a soil: each step's record (fs_walk.h) */
+        cJSON *steps = child(o, "soil_steps", cJSON_CreateArray());
+        ok = steps != NULL;
+        for (int i = 0; ok && i < r->nsteps; i++) {
+            const fs_walk_step *w = &r->step[i];
+            cJSON *e = child(steps, NULL, cJSON_CreateObject());
+            ok = e && num(e, "step", i + 1) && num(e, "sinkage_m", w->sinkage_m) && num(e, "slip_m", w->slip_m) &&
+                 num(e, "soil_work_J", w->soil_work_J) && num(e, "extra_press_m", w->extra_press_m) &&
+                 num(e, "load_N", w->load_N);
+        }
+    }
+    ok = ok && (!foot || text(o, "foot", foot));
     return whole(o, ok, "the walk's JSON", err);
 }
 

@@ -45,6 +45,8 @@ typedef struct watch {
     double impulse_window_s; /* [landing] impulse_window_s */
     double force_from_s; /* the start of the (sub)step in which the ground first pushed */
     double momentum_Ns; /* the ground's vertical impulse beyond the weight (and load) since then */
+    int soil;           /* the ground is a soil: the impact lasts until the fall is stopped */
+    double stopped_s;   /* with a soil: when the robot's centre of mass first stopped falling (-1: not yet) */
     double touch_ankle[3];
     double contact_sum;
     double contact_steps; /* the steps watched, each weighing its time over step_s (1 with fixed steps) */
@@ -113,10 +115,21 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
      * bias of at most the weight times the step (0.3 % of a landing's impulse at 1e-4 s). The step
      * that ends the window counts up to its end, its force taken as even over its pushing part. */
     double start = fmax(fs_sim_time(sim) - h, w->force_from_s), end = out->touchdown_s + w->impulse_window_s;
+    double down[3];
+    fs_sim_down(sim, down);
+    if (w->soil) {
+        /* A soil stops a fall over tens of ms (a foot sinking 19 mm into LETE sand: about 80 ms, its
+         * force below the weight for the first half), not the few ms of rigid ground: the window then
+         * lasts at least until the robot's centre of mass first stops falling, where the momentum
+         * taken is the whole fall's (docs/soil.md, What reads the ground). */
+        double v[3];
+        fs_sim_robot_com(sim, NULL, v);
+        if (w->stopped_s < 0 && v[0] * down[0] + v[1] * down[1] + v[2] * down[2] <= 0)
+            w->stopped_s = fs_sim_time(sim);
+        end = fmax(end, w->stopped_s < 0 ? fs_sim_time(sim) : w->stopped_s);
+    }
     if (start < end && fs_sim_time(sim) > start) {
         double in = fmin(fs_sim_time(sim), end) - start;
-        double down[3];
-        fs_sim_down(sim, down);
         double weight_N = -(w->mass_kg * fs_sim_scenario(sim)->def.gravity_m_per_s2 + fs_sim_load_now_N(sim)) * down[2];
         w->momentum_Ns += (f[2] * h / (fs_sim_time(sim) - start) - weight_N) * in;
         out->impact_impulse_Ns = fmax(out->impact_impulse_Ns, w->momentum_Ns);
@@ -241,7 +254,8 @@ static fs_status run_trial(const fs_scenario *sc, const fs_run_observer *obs, fs
     fs_run_logger logger;
     fs_log_begin(&logger, log, sim);
     trial_run t = {.d = d, .w = {.rest_since = -1, .mass_kg = moving_mass_kg(sim, d),
-                                 .impulse_window_s = d->impulse_window_s},
+                                 .impulse_window_s = d->impulse_window_s, .soil = fs_sim_soil_grid(sim) != NULL,
+                                 .stopped_s = -1},
                    .out = out};
     fs_outcome_rules rules;
     rules_of(sc, t.w.mass_kg, &rules);

@@ -43,6 +43,11 @@ typedef struct walk_run {
     double phase;               /* and where in it, 0..1 */
     double rough_sum, flat_sum, tilt_max;
     int flat_steps, last_step, judged;
+    /* on a soil (fs_walk.h): the press past press_m, now and at the last stance's end; the step's
+       start (its soil work, its ankle at the stance's start) */
+    const fs_soil_grid *soil;
+    double weight_N, press_speed_m_per_s, extra_m, extra_end_m, work_at_start_J, stance_ankle[3];
+    int in_stance;
 } walk_run;
 
 /* Before each step: the actuator sets the carriage's velocity to take it to the path. */
@@ -52,7 +57,42 @@ static void drive_carriage(void *user, fs_sim *sim)
     const fs_scenario_def *d = w->d;
     double x, z, t = fs_sim_time(sim) + d->step_s;
     carriage_path(d, t, &x, &z, &w->step, &w->phase);
+    if (w->soil) { /* press until the soil carries the load (fs_walk.h) */
+        if (w->phase <= d->stance_fraction) {
+            double f[3];
+            fs_sim_ground_force(sim, f);
+            if (fs_sim_time(sim) > 0 && f[2] < w->weight_N)
+                w->extra_m += w->press_speed_m_per_s * d->step_s;
+            z -= w->extra_m;
+        } else { /* back to the path over the swing */
+            double swing = (w->phase - d->stance_fraction) / (1 - d->stance_fraction);
+            z -= w->extra_end_m * (1 - swing);
+        }
+    }
     fs_carriage_drive(w->carriage, x, z); /* the step's checks count the carriage's work (fs_carriage.h) */
+}
+
+/* On a soil: a stance's start and end, and what the soil did in it. */
+static void soil_stance(walk_run *w, fs_sim *sim)
+{
+    int stance = w->phase <= w->d->stance_fraction;
+    double a[3];
+    fs_sim_ankle(sim, a);
+    if (stance && !w->in_stance) {
+        memcpy(w->stance_ankle, a, sizeof a);
+    } else if (!stance && w->in_stance && w->step < FS_WALK_MAX_STEPS) {
+        fs_walk_step *r = &w->out->step[w->step];
+        double f[3];
+        fs_sim_ground_force(sim, f);
+        r->sinkage_m = fs_sim_soil_sinkage(sim, -1);
+        r->slip_m = hypot(a[0] - w->stance_ankle[0], a[1] - w->stance_ankle[1]);
+        r->extra_press_m = w->extra_m;
+        r->load_N = f[2];
+        w->out->nsteps = w->step + 1;
+        w->extra_end_m = w->extra_m;
+        w->extra_m = 0;
+    }
+    w->in_stance = stance;
 }
 
 /* After each step: the ground force, the stance tilt, and each step judged at mid-stance. */
@@ -64,8 +104,15 @@ static int judge_step(void *user, fs_sim *sim)
     double f[3];
     fs_sim_ground_force(sim, f);
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
-    if (w->step != w->last_step)
+    if (w->step != w->last_step) {
+        if (w->soil && w->last_step >= 0 && w->last_step < FS_WALK_MAX_STEPS) /* the step just ended */
+            out->step[w->last_step].soil_work_J = w->soil->work_J - w->work_at_start_J;
+        if (w->soil)
+            w->work_at_start_J = w->soil->work_J;
         w->judged = 0, w->last_step = w->step;
+    }
+    if (w->soil)
+        soil_stance(w, sim);
     if (w->phase <= d->stance_fraction)
         w->tilt_max = fmax(w->tilt_max, ankle_tilt(sim));
     if (!w->judged && w->phase >= 0.5 * d->stance_fraction) {
@@ -106,7 +153,17 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
         fs_sim_free(sim);
         return s;
     }
-    walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = carriage, .last_step = -1};
+    walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = carriage, .last_step = -1,
+                  .soil = fs_sim_soil_grid(sim)};
+    if (w.soil) { /* the load the soil is to carry: the robot's weight and its foot's */
+        double mass = d->robot.mass_kg;
+        const fs_foot_geom *g = fs_sim_geom(sim);
+        for (int i = 0; i < g->nbodies; i++)
+            mass += g->body[i].mass_kg;
+        w.weight_N = mass * d->gravity_m_per_s2;
+        w.press_speed_m_per_s = 2 * sc->terrain.def.soil.depth_m / (d->walk_period_s * d->stance_fraction);
+        out->soil = 1;
+    }
     const fs_step_hook hooks[] = {{"judged", judge_step, &w}};
     fs_drive_spec spec = {.max_steps = (long)ceil(d->walk_steps * d->walk_period_s / d->step_s),
                           .before_step = drive_carriage, .before_user = &w, .hooks = hooks, .nhooks = 1, .obs = obs};
@@ -116,6 +173,8 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
     out->flat_contacts_mean = w.flat_steps ? w.flat_sum / w.flat_steps : 0;
     out->peak_tilt_deg = w.tilt_max / DEG;
     out->end_time_s = fs_sim_time(sim);
+    if (w.soil && w.last_step >= 0 && w.last_step < FS_WALK_MAX_STEPS) /* the last step's work, to the end */
+        out->step[w.last_step].soil_work_J = w.soil->work_J - w.work_at_start_J;
     fs_sim_free(sim);
     fs_carriage_free(carriage); /* after the sim, which stepped it */
     return s;

@@ -93,14 +93,15 @@ done:
     return status;
 }
 
-/* What to encode: h rows of w pixels (3 or 4 bytes each, RGB first; stride bytes apart). */
+/* What to encode: h rows of w pixels (3 or 4 bytes each, RGB first; or one 16-bit gray value, channels
+ * 1), stride bytes apart. */
 typedef struct image {
     const unsigned char *pixels;
     int w, h, channels, bottom_up, level;
     long stride;
 } image;
 
-/* Encodes the image to f as RGB (an fs_fill_fn). */
+/* Encodes the image to f as RGB, or 16-bit grayscale (an fs_fill_fn). */
 static int encode(FILE *f, const void *user)
 {
     const image *im = user;
@@ -119,9 +120,13 @@ static int encode(FILE *f, const void *user)
     /* speed over size at low levels: a fast zlib level and the cheapest useful row filter */
     png_set_compression_level(png, im->level);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, im->level <= 3 ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
-    png_set_IHDR(png, info, (png_uint_32)im->w, (png_uint_32)im->h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+    int gray = im->channels == 1;
+    png_set_IHDR(png, info, (png_uint_32)im->w, (png_uint_32)im->h, gray ? 16 : 8,
+                 gray ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+                 PNG_FILTER_TYPE_BASE);
     png_write_info(png, info);
+    if (gray)
+        png_set_swap(png); /* the values in host order (little-endian), PNG's big-endian in the file */
     if (im->channels == 4)
         png_set_filler(png, 0, PNG_FILLER_AFTER);
     for (int y = 0; y < im->h; y++)
@@ -141,6 +146,11 @@ fs_status fs_png_write(const char *path, const unsigned char *pixels, int w, int
 fs_status fs_png_write_rgb(const char *path, int w, int h, const unsigned char *rgb, fs_error *err)
 {
     return fs_png_write(path, rgb, w, h, 3, (long)w * 3, 0, 6, err);
+}
+
+fs_status fs_png_write_gray16(const char *path, int w, int h, const unsigned short *values, fs_error *err)
+{
+    return fs_png_write(path, (const unsigned char *)values, w, h, 1, (long)w * 2, 0, 6, err);
 }
 
 fs_status fs_png_check(const char *path, const char *shown, fs_error *err)

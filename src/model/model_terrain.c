@@ -46,7 +46,8 @@ const fs_key fs_terrain_keys[] = {
     NUM("rocks", "field_m", rock_field_m, 0, 100, POS, "m", "0.12", "rocks lie within +-field_m of the origin in x and y"),
     {"heightmap", "file", FS_KEY_PATH, F(heightmap_path), 0, 0, 0, 0, NULL, "", "",
      "8- or 16-bit grayscale PNG, relative to the terrain file; row 0 is the largest y"},
-    NUM("heightmap", "scale_m", heightmap_scale_m, 0, 10, POS, "m", "0.02", "height of a white pixel (black is 0)"),
+    NUM("heightmap", "scale_m", heightmap_scale_m, 0, 10, POS, "m", "0.02", "height of a white pixel above a black one"),
+    NUM("heightmap", "base_m", heightmap_base_m, -10, 10, 0, "m", "0", "height of a black pixel"),
     NUM("heightmap", "pixel_m", heightmap_pixel_m, 1e-4, 10, 0, "m", "0.002", "distance between pixel centres"),
     NUM("heightmap", "x0_m", heightmap_x0_m, -100, 100, 0, "m", "-0.1", "x of the left column"),
     NUM("heightmap", "y0_m", heightmap_y0_m, -100, 100, 0, "m", "-0.1", "y of the bottom row"),
@@ -232,7 +233,7 @@ static double image_height(const fs_terrain *t, double x, double y)
     double fu = u - c, fv = v - r;
     const double *p = t->img + (size_t)r * t->img_w + c;
     double top = p[0] + fu * (p[1] - p[0]), bottom = p[t->img_w] + fu * (p[t->img_w + 1] - p[t->img_w]);
-    return d->heightmap_scale_m * (top + fv * (bottom - top));
+    return d->heightmap_base_m + d->heightmap_scale_m * (top + fv * (bottom - top));
 }
 
 /* Everything but the roughness, which needs its lattice (rough_patch). */

@@ -177,7 +177,7 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
 {
     const fs_terrain *t = &sim->sc->terrain;
     if (fs_terrain_is_heightfield(t) && t->z) {
-        sim->scene_ground = (fs_scene_ground){t->nx, t->ny, t->x0, t->y0, t->dx, t->dx, t->z, 0};
+        sim->scene_ground = (fs_scene_ground){t->nx, t->ny, t->x0, t->y0, t->dx, t->dx, t->z, 0, NULL};
         return FS_OK;
     }
     double box[4], m = sim->sc->def.region_margin_m + 0.05;
@@ -188,11 +188,13 @@ static fs_status scene_ground(fs_sim *sim, fs_error *err)
     double dx = steps || soil ? 0.001 : (box[1] - box[0] + 2 * m);
     int nx = (int)ceil((box[1] - box[0] + 2 * m) / dx) + 1, ny = soil ? (int)ceil((box[3] - box[2] + 2 * m) / dx) + 1 : 2;
     double dy = soil ? dx : box[3] - box[2] + 2 * m;
-    sim->ground_grid = malloc(sizeof *sim->ground_grid + (size_t)nx * ny * sizeof sim->ground_grid->z[0]);
+    /* with a soil, the sinkage at each sample after the heights */
+    sim->ground_grid = malloc(sizeof *sim->ground_grid + (size_t)(soil ? 2 : 1) * nx * ny * sizeof sim->ground_grid->z[0]);
     if (!sim->ground_grid)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", sim->sc->path);
     sim->ground_grid->sampled = 0;
-    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid->z, !steps && !soil};
+    sim->scene_ground = (fs_scene_ground){nx, ny, box[0] - m, box[2] - m, dx, dy, sim->ground_grid->z, !steps && !soil,
+                                          soil ? sim->ground_grid->z + (size_t)nx * ny : NULL};
     return FS_OK;
 }
 

@@ -58,7 +58,7 @@ static void robot_box(const fs_sim *sim, fs_scene_shape *box)
 
 /* The plane or steps sampled on the grid scene_ground (sim_build.c) set out, once: the first
  * scene asks for it. A heightfield's grid is its own samples. With a soil, its surface now, at every
- * scene: the prints and the foot pressing them (fs_sim_soil.h). */
+ * scene: the prints and the foot pressing them (fs_sim_soil.h), and their sinkage. */
 static void sample_ground(const fs_sim *sim)
 {
     fs_ground_grid *grid = sim->ground_grid;
@@ -69,6 +69,9 @@ static void sample_ground(const fs_sim *sim)
         for (int i = 0; i < g->nx; i++) {
             double x = g->x0 + i * g->dx, y = g->y0 + j * g->dy;
             grid->z[j * g->nx + i] = sim->soil ? fs_sim_ground_surface(sim, x, y) : fs_terrain_height(&sim->sc->terrain, x, y);
+            if (sim->soil) /* and how deep that is below the undisturbed soil (at most the layer) */
+                grid->z[(size_t)g->nx * g->ny + (size_t)(j * g->nx + i)] =
+                    fmin(sim->soil->g.d.depth_m, fmax(0, fs_soil_grid_undisturbed(&sim->soil->g, x, y) - grid->z[j * g->nx + i]));
         }
     grid->sampled = 1;
 }

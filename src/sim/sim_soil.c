@@ -21,6 +21,20 @@ double fs_sim_soil_area(const fs_sim *sim, int foot) { return sim->soil ? sim->s
 
 int fs_sim_support(const fs_sim *sim) { return sim->contacts_now + (sim->soil ? sim->soil->foot_nodes[0] : 0); }
 
+double fs_sim_soil_sinkage(const fs_sim *sim, int foot)
+{
+    if (!sim->soil)
+        return 0;
+    const fs_soil_grid *g = &sim->soil->g;
+    double deepest = 0;
+    for (long k = 0; k < (long)g->ntiles * FS_SOIL_TILE * FS_SOIL_TILE; k++) {
+        const fs_soil_node *n = &g->pool[k];
+        if (n->stamp == g->stamp && (foot < 0 || g->shape[n->shape].foot == foot))
+            deepest = fmax(deepest, fmin(n->h0_m - n->zb_m, g->d.depth_m));
+    }
+    return deepest;
+}
+
 double fs_sim_ground_surface(const fs_sim *sim, double x, double y)
 {
     return sim->soil ? fs_soil_grid_surface(&sim->soil->g, x, y) : fs_terrain_height(&sim->sc->terrain, x, y);

@@ -378,6 +378,46 @@ double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
     return v * g->dx * g->dx;
 }
 
+fs_status fs_soil_grid_surface_copy(const fs_soil_grid *g, fs_soil_surface *s, fs_error *err)
+{
+    memset(s, 0, sizeof *s);
+    int t0 = g->tx, t1 = -1, u0 = g->ty, u1 = -1; /* the tiles reached: their bounding box */
+    for (int tj = 0; tj < g->ty; tj++)
+        for (int ti = 0; ti < g->tx; ti++)
+            if (g->tile[tj * g->tx + ti] >= 0)
+                t0 = ti < t0 ? ti : t0, t1 = ti > t1 ? ti : t1, u0 = tj < u0 ? tj : u0, u1 = tj > u1 ? tj : u1;
+    if (t1 < 0)
+        return FS_OK;
+    /* a node of undisturbed soil around them (where the region allows): a heightmap loaded from this
+       draws its edge out beyond it, which is then the undisturbed surface, not a print's */
+    int i0 = t0 * T - 1 > 0 ? t0 * T - 1 : 0, j0 = u0 * T - 1 > 0 ? u0 * T - 1 : 0;
+    int i1 = (t1 + 1) * T + 1 < g->nx ? (t1 + 1) * T + 1 : g->nx, j1 = (u1 + 1) * T + 1 < g->ny ? (u1 + 1) * T + 1 : g->ny;
+    size_t n = (size_t)(i1 - i0) * (size_t)(j1 - j0);
+    s->z_m = malloc(n * sizeof *s->z_m);
+    s->sink_m = malloc(n * sizeof *s->sink_m);
+    if (!s->z_m || !s->sink_m) {
+        fs_soil_surface_free(s);
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's surface (%zu nodes)", n);
+    }
+    s->nx = i1 - i0, s->ny = j1 - j0, s->dx = g->dx;
+    s->x0 = g->x0 + i0 * g->dx, s->y0 = g->y0 + j0 * g->dx;
+    for (int j = j0; j < j1; j++)
+        for (int i = i0; i < i1; i++) {
+            const fs_soil_node *nd = node_at(g, i, j);
+            size_t k = (size_t)(j - j0) * (size_t)s->nx + (size_t)(i - i0);
+            s->sink_m[k] = nd ? nd->sp_m : 0;
+            s->z_m[k] = nd ? nd->h0_m - nd->sp_m : fs_soil_grid_undisturbed(g, g->x0 + i * g->dx, g->y0 + j * g->dx);
+        }
+    return FS_OK;
+}
+
+void fs_soil_surface_free(fs_soil_surface *s)
+{
+    free(s->z_m);
+    free(s->sink_m);
+    memset(s, 0, sizeof *s);
+}
+
 /* ---- the step ------------------------------------------------------------------------------- */
 
 static void add_force(double f[3], double t[3], const double r[3], const double F[3])
@@ -574,19 +614,39 @@ static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, double A, co
     double dA = A / fmax(fabs(n[2]), 0.25); /* the element's own area over its plan cell */
     double law = d->zeta_N_per_m3 * fmax(az, 0) * s;
     double sigma = se <= nd->yield_Pa ? se : plastic(nd, s, se, law, d->K_e_Pa_per_m);
-    double mob = law > 0 ? sigma / law : 0;
-    double sx = d->zeta_N_per_m3 * ax * s * mob; /* drag, in proportion to the vertical stress mobilised */
-    F[0] = -sx * e[0] * dA, F[1] = -sx * e[1] * dA, F[2] = sigma * dA;
+    double mob = law > 0 ? fmin(1, sigma / law) : 0; /* the share of the law mobilised, at most all of it */
+    double sx = d->zeta_N_per_m3 * ax * s * mob; /* RFT's horizontal stress, in proportion to the vertical mobilised */
+    double H[3] = {-sx * e[0], -sx * e[1], 0};
+    /* Dissipative by construction (docs/soil.md, RFT): RFT gives stresses on moving elements, so its
+     * horizontal stress fades in below the slip speed, like the shear. Of it, the part along the
+     * element's velocity may only oppose it: a drag, viscous (its slope in the shape's, so that the
+     * cap keeps it from reversing the body's motion within a step); a part that would push along
+     * the motion is dropped. The part across the velocity (the thrust on a tilted element pushed
+     * down) does no work and stays while the element intrudes; a rising element has none (its
+     * angle below horizontal, clamped to 0, would take it for one moving sideways). */
+    if (speed > 0) {
+        double u[3] = {v[0] / speed, v[1] / speed, v[2] / speed}, hu = H[0] * u[0] + H[1] * u[1] + H[2] * u[2];
+        double fade = v[2] < 0 ? fmin(1, speed / reg) : 0;
+        for (int k = 0; k < 3; k++)
+            H[k] = (H[k] - hu * u[k]) * fade;
+        if (hu < 0) {
+            double c = -hu / fmax(speed, reg) * dA;
+            for (int k = 0; k < 3; k++)
+                S[k] -= c * v[k];
+            *slope += c;
+        }
+    } else {
+        H[0] = H[1] = 0;
+    }
+    F[0] = H[0] * dA, F[1] = H[1] * dA, F[2] = (sigma + H[2]) * dA;
     double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-    if (vn > 0) { /* moving into the medium: the inertial pressure and its friction */
-        double p = d->inertial_lambda * d->density_kg_per_m3 * vn * vn;
+    if (vn > 0) { /* intruding: the inertial pressure and its friction, both viscous and capped like the drag */
+        double p = d->inertial_lambda * d->density_kg_per_m3 * vn * vn, c = d->inertial_lambda * d->density_kg_per_m3 * vn * dA;
         double vt[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
         double vtn = sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]), f = d->friction_mu * p / fmax(vtn, reg);
-        for (int k = 0; k < 3; k++) {
-            F[k] -= p * n[k] * dA;
-            S[k] -= f * vt[k] * dA;
-        }
-        *slope += f * dA;
+        for (int k = 0; k < 3; k++)
+            S[k] -= c * vn * n[k] + f * vt[k] * dA;
+        *slope += c + f * dA;
     }
     nd->slip_m += vh * h;
     nd->sigma_Pa = F[2] / A;

@@ -14,8 +14,28 @@
 #include "footsim/sim/fs_observer.h"
 #include "footsim/model/fs_scenario.h"
 
+/* On a soil ([soil] in the terrain) the machine's stance does more: having lowered the carriage
+ * press_m past its start, it goes on down while the ground's vertical force on the foot is below
+ * the robot's weight (body and foot), so that the soil (or, through it, the bedrock) carries the
+ * load; it holds where that is reached and comes back up to its path over the swing. It goes down
+ * at twice the layer's depth over the stance's time, fast enough to reach the bedrock by
+ * mid-stance, where the step is judged. Each step then records what the soil did
+ * (fs_walk_step). Without a soil nothing changes. */
+enum { FS_WALK_MAX_STEPS = 1000 }; /* [walk] steps' largest */
+
+typedef struct fs_walk_step {
+    double sinkage_m;     /* at the stance's end: the foot's lowest point below the undisturbed soil */
+    double slip_m;        /* the ankle's horizontal travel over the stance */
+    double soil_work_J;   /* the energy the soil took over the step (fs_soil_grid.work_J's rise) */
+    double extra_press_m; /* how far past press_m the drive pressed until the soil carried the load */
+    double load_N;        /* the ground's vertical force at the stance's end */
+} fs_walk_step;
+
 typedef struct fs_walk_result {
     int steps_completed, falls;
+    int soil;                     /* 1: on a soil: step[] holds each step's record */
+    int nsteps;                   /* steps recorded in step[] */
+    fs_walk_step step[FS_WALK_MAX_STEPS];
     double rough_contacts_mean;   /* foot contact points at mid-stance on the rough section */
     int rough_steps;              /* steps whose mid-stance was on the rough section */
     double flat_contacts_mean;    /* the same off it */

@@ -1,4 +1,4 @@
-/* fs_png.h: grayscale PNG input (heightmaps) and RGB PNG output (terrain maps), with libpng.
+/* fs_png.h: grayscale PNG input and output (heightmaps) and RGB PNG output (terrain maps), with libpng.
  * Reading refuses a file that is not a PNG or not grayscale; writing is atomic. */
 #ifndef FS_PNG_H
 #define FS_PNG_H
@@ -16,6 +16,10 @@ fs_status fs_png_read_gray(const char *path, const char *where, int *w, int *h, 
  * reads them), zlib level 0-9 (1 is fast, 6 small). */
 fs_status fs_png_write(const char *path, const unsigned char *pixels, int w, int h, int channels, long stride,
                        int bottom_up, int level, fs_error *err);
+
+/* Writes w*h 16-bit grayscale values (row 0 at the top) to path, whole or not at all: a heightmap
+ * fs_png_read_gray reads back exactly (v / 65535). */
+fs_status fs_png_write_gray16(const char *path, int w, int h, const unsigned short *values, fs_error *err);
 
 /* Writes w*h RGB pixels (row 0 at the top) to path, whole or not at all. */
 fs_status fs_png_write_rgb(const char *path, int w, int h, const unsigned char *rgb, fs_error *err);

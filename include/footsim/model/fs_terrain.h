@@ -37,7 +37,7 @@ typedef struct fs_terrain_def {
     int rock_count;                 /* complex_uneven */
     double rock_height_min_m, rock_height_max_m, rock_radius_min_m, rock_radius_max_m, rock_field_m;
     char heightmap_path[FS_PATH_MAX];
-    double heightmap_scale_m, heightmap_pixel_m, heightmap_x0_m, heightmap_y0_m;
+    double heightmap_scale_m, heightmap_base_m, heightmap_pixel_m, heightmap_x0_m, heightmap_y0_m;
     double mu, restitution, stiffness_N_per_m, damping_Ns_per_m; /* the ground's material */
     double sink_bound_m;       /* deepest a landed foot may end in it (fs_outcome.h) */
     fs_soil_def soil;          /* [soil], [bekker], [rft]: a deformable layer over this ground (fs_soil.h) */

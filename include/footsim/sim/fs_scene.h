@@ -46,6 +46,8 @@ typedef struct fs_scene_ground {
     double x0, y0, dx, dy;
     const double *heights;
     int is_plane;
+    const double *sinkage; /* with a soil: each sample's sinkage below the undisturbed surface, m (the
+                              frames colour the ground by it); NULL on rigid ground */
 } fs_scene_ground;
 
 typedef struct fs_scene {

@@ -23,6 +23,11 @@ int fs_sim_soil_nodes(const fs_sim *sim, int foot);
 /* The area the soil carries foot on (-1: every foot) in the last (sub)step, m^2: its nodes, each
  * with its cell (a coarse node's too: fs_soil_shape.stride); 0 without a soil. */
 double fs_sim_soil_area(const fs_sim *sim, int foot);
+/* How deep foot (-1: any) reaches below the soil's undisturbed surface now, m: the deepest of the
+ * nodes its shapes carried in the last (sub)step (never past the bedrock); 0 without a soil or
+ * when the soil does not carry it. It visits every stored node: for once a step of a gait, not
+ * every step. */
+double fs_sim_soil_sinkage(const fs_sim *sim, int foot);
 
 /* What holds the feet now: contact points plus soil nodes (the outcome rules' support). */
 int fs_sim_support(const fs_sim *sim);

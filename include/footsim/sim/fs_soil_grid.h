@@ -127,6 +127,19 @@ double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y);
  * plastic sinkage, m, and how many nodes carry a print (sp > 0). */
 double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes);
 
+/* The surface the soil keeps (its undisturbed height less its print, the elastic part given back as
+ * a foot lifts) on the grid's nodes over the tiles the feet reached and one node around them (so
+ * that its edge is undisturbed soil, where the region allows): nx x ny heights z_m[j nx + i]
+ * at (x0 + i dx, y0 + j dx), and each node's print (plastic sinkage) in sink_m. Nothing reached:
+ * nx = ny = 0 and no memory. FS_NO_MEMORY (s empty) when the heights cannot be had. */
+typedef struct fs_soil_surface {
+    int nx, ny;
+    double x0, y0, dx;
+    double *z_m, *sink_m;
+} fs_soil_surface;
+fs_status fs_soil_grid_surface_copy(const fs_soil_grid *g, fs_soil_surface *s, fs_error *err);
+void fs_soil_surface_free(fs_soil_surface *s);
+
 /* A vertical line at (x, y) against a shape placed by body: its lowest point below z_top on the
  * shape (returned, or +INFINITY when it misses) and the outward normal there. */
 double fs_soil_shape_lowest(const fs_soil_shape *s, const fs_soil_body *body, double x, double y, double n[3]);
