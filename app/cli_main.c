@@ -119,12 +119,13 @@ static const command commands[] = {
      "  --quick runs a smaller sweep (minutes instead of tens of minutes); -j N runs stability in N\n"
      "  worker processes (default: the CPUs it may use; the results do not depend on N), and each\n"
      "  campaign of equivalence in N (default 1, so that wall times compare)."},
-    {"export", cli_export, "DESIGN", "--mjcf --scenario --out --replace --set --data",
+    {"export", cli_export, "DESIGN", "--mjcf --scenario --seed --out --replace --set --data",
      "Writes the foot as MuJoCo MJCF (docs/export.md) to --out FILE (default results/export/<design>.xml;\n"
      "  a file there that footsim did not export is kept unless --replace):\n"
      "  bodies with their masses and inertias, the hinges as a tree, the springs as spatial tendons, the\n"
      "  contact spheres and box; with --scenario S, in S's start pose with its ground (a heightfield's\n"
-     "  samples in FILE's name with .hfield.bin), gravity, step, robot and load."},
+     "  samples in FILE's name with .hfield.bin), gravity, step, robot and load. --seed N (a trial\n"
+     "  scenario): in the start pose trial N draws, on its terrain (tools/mujoco_trial.c runs it)."},
     {"keys", cli_keys, NULL, "",
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, NULL, "--data",
