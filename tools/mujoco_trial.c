@@ -242,6 +242,21 @@ static double penetration(const mjData *d)
     return worst;
 }
 
+/* Each contact's shape, depth and normal force, and their ratio: the stiffness MuJoCo's soft
+ * contact gives it in N/m (its solref is per unit of the mass the contact moves). */
+static void trace_contacts(const mjModel *m, const mjData *d)
+{
+    for (int i = 0; i < d->ncon; i++) {
+        const mjContact *c = &d->contact[i];
+        int g = m->geom_bodyid[c->geom1] ? c->geom1 : c->geom2;
+        mjtNum f[6];
+        mj_contactForce(m, d, i, f);
+        const char *name = mj_id2name(m, mjOBJ_GEOM, g);
+        printf("    %-16s depth %.4f mm, normal force %8.2f N, force/depth %.3g N/m\n", name ? name : "?",
+               -c->dist * 1e3, f[0], c->dist < 0 ? f[0] / -c->dist : 0.0);
+    }
+}
+
 /* One seed's trial: 0, or 2 / 3 when it cannot be run. */
 static int run(const options *o, const fs_scenario *base, int seed, int *counts)
 {
@@ -302,7 +317,11 @@ static int run(const options *o, const fs_scenario *base, int seed, int *counts)
             if (r.contacts_at[k] < 0 && s.t_s >= at[k])
                 r.lean_deg_at[k] = lean, r.contacts_at[k] = d->ncon;
         if (o->trace > 0 && s.t_s >= next_trace - 1e-12) {
-            printf("  t=%.4f lean_deg=%.3f contacts=%d kinetic_J=%.4g\n", s.t_s, lean, d->ncon, s.kinetic_J);
+            /* the robot's z axis leaning toward world x (forward) and y (left) */
+            const mjtNum *R = robot >= 0 ? d->xmat + 9 * robot : NULL;
+            printf("  t=%.4f lean_deg=%.3f (toward x %.3f, y %.3f) contacts=%d kinetic_J=%.4g\n", s.t_s, lean,
+                   R ? asin(R[2]) / DEG : 0, R ? asin(R[5]) / DEG : 0, d->ncon, s.kinetic_J);
+            trace_contacts(m, d);
             next_trace += o->trace;
         }
         if (fs_judge_step(&judge, &s))
