@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "footsim/base/fs_path.h"
+#include "footsim/experiment/fs_trial.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/export/fs_export.h"
 
@@ -42,6 +43,21 @@ static int export_mjcf(const cli_args *a, export_work *w)
     }
     if (s != FS_OK)
         return cli_report(err.status, err.message);
+    /* --seed N: a landing trial's start as that trial draws it (pose, and a random terrain's seed) */
+    long seed = -1;
+    if (a->seed) {
+        char *end;
+        seed = strtol(a->seed, &end, 10);
+        if (!a->scenario || *end || end == a->seed || seed < 0 || seed > 2147483647L) {
+            fs_scenario_free(sc);
+            return cli_report(FS_BAD_INPUT, a->scenario ? "--seed: give a whole number from 0 to 2147483647"
+                                                        : "--seed: give a trial scenario with --scenario too");
+        }
+        if ((s = fs_scenario_require(sc, "trial", &err)) != FS_OK || (s = fs_trial_place(sc, (int)seed, NULL, &err)) != FS_OK) {
+            fs_scenario_free(sc);
+            return cli_report(err.status, err.message);
+        }
+    }
     char out[FS_OUT_PATH];
     if (a->out) {
         if (fs_path_format(out, sizeof out, "--out", &err, "%s", a->out) != FS_OK) {
@@ -55,7 +71,10 @@ static int export_mjcf(const cli_args *a, export_work *w)
             fs_scenario_free(sc);
             return cli_report(err.status, err.message);
         }
-        snprintf(out, sizeof out, "results/export/%s%s%s.xml", stem, a->scenario ? "-" : "", a->scenario ? sc->name : "");
+        char tail[32] = "";
+        if (seed >= 0)
+            snprintf(tail, sizeof tail, "-seed%ld", seed);
+        snprintf(out, sizeof out, "results/export/%s%s%s%s.xml", stem, a->scenario ? "-" : "", a->scenario ? sc->name : "", tail);
     }
     /* an existing file is replaced only when footsim exported it (its first bytes), or --replace */
     static const char mjcf_signature[] = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- footsim export";

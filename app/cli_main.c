@@ -70,7 +70,8 @@ static const cli_option options[] = {
     {"-j", ARG_VALUE, "N", CMD_CAMPAIGN | CMD_OPTIMIZE | CMD_BENCH, 0, 0, FIELD(jobs), 0,
      "worker processes, 1 to 1024 (also -jN); default: the CPUs this process may use (bench equivalence: 1); "
      "the results do not depend on it"},
-    {"--seed", ARG_VALUE, "N", CMD_TRIAL, 0, 0, FIELD(seed), 0, "the trial's seed (default 1)"},
+    {"--seed", ARG_VALUE, "N", CMD_TRIAL | CMD_EXPORT, 0, 0, FIELD(seed), 0,
+     "the trial's seed (default 1); export: the start pose that trial draws (with --scenario)"},
     {"--json", ARG_FLAG, NULL, CMD_MODEL | CMD_STIFFNESS | CMD_TRIAL | CMD_COMPARE | CMD_WALK, 0, 0, FIELD(json), 0,
      "print the result as JSON"},
     {"--quick", ARG_FLAG, NULL, CMD_BENCH, 0, 0, FIELD(quick), 0, "a smaller sweep: minutes instead of tens of minutes"},
@@ -223,7 +224,8 @@ static const command commands[] = {
      "  a file there that footsim did not export is kept unless --replace):\n"
      "  bodies with their masses and inertias, the hinges as a tree, the springs as spatial tendons, the\n"
      "  contact spheres and box; with --scenario S, in S's start pose with its ground (a heightfield's\n"
-     "  samples in FILE's name with .hfield.bin), gravity, step, robot and load."},
+     "  samples in FILE's name with .hfield.bin), gravity, step, robot and load. --seed N (a trial\n"
+     "  scenario): in the start pose trial N draws, on its terrain (tools/mujoco_trial.c runs it)."},
     {"keys", cli_keys, CMD_KEYS, NULL, 0, CLI_DATA_NONE,
      "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, CMD_DEMO, NULL, 0, CLI_DATA_NONE,

@@ -31,5 +31,14 @@ if command -v xmllint >/dev/null; then
 else
     echo "cli_export: no xmllint (Debian libxml2-utils); well-formedness is test_export_mjcf's" >&2
 fi
+# --seed N: the trial's drawn start (tools/mujoco_trial.c runs it); each seed its own pose
+check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/landing_trial.ini --out "$tmp/t0.xml" >/dev/null'
+check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/landing_trial.ini --seed 1 --out "$tmp/t1.xml" >/dev/null'
+check '"$fs" export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/landing_trial.ini --seed 2 --out "$tmp/t2.xml" >/dev/null'
+check '! cmp -s "$tmp/t0.xml" "$tmp/t1.xml" && ! cmp -s "$tmp/t1.xml" "$tmp/t2.xml"'
+expect 2 "give a trial scenario with --scenario" -- export --mjcf scenarios/feet/biomimetic.ini --seed 1 --out "$tmp/s.xml"
+expect 2 "whole number" -- export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/landing_trial.ini --seed x --out "$tmp/s.xml"
+expect 2 "trial" -- export --mjcf scenarios/feet/biomimetic.ini --scenario scenarios/static_load.ini --seed 1 --out "$tmp/s.xml"
+check '[ ! -e "$tmp/s.xml" ]'
 check '"$fs" export --help | grep -q -- "export DESIGN --mjcf \[--scenario SCENARIO\] \[--out FILE\] \[--replace\]"'
 finish

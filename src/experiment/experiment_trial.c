@@ -206,6 +206,11 @@ static void rules_of(const fs_scenario *sc, double mass, fs_outcome_rules *r)
                             .motion_floor_J = 0.5 * mass * d->rest_speed_m_per_s * d->rest_speed_m_per_s};
 }
 
+void fs_trial_rules(const fs_scenario *sc, const fs_sim *sim, fs_outcome_rules *rules)
+{
+    rules_of(sc, moving_mass_kg(sim, &sc->def), rules);
+}
+
 static void sample_of(const fs_sim *sim, fs_outcome_sample *s)
 {
     double ke;

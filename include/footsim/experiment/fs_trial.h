@@ -63,6 +63,11 @@ void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw);
  * and compiles sc again (fs_scenario_compile). A scenario is placed once, from its loaded ranges. */
 fs_status fs_trial_place(fs_scenario *sc, int seed, fs_trial_draw *draw, fs_error *err);
 
+/* The rules a trial of sc is judged by (fs_outcome.h: sc's [landing] and [run] keys, the terrain's
+ * sink bound, and the rest floor from the mass of everything sim moves; sim built from sc). For a
+ * run of the same trial in another engine judged as footsim judges it (tools/mujoco_trial.c). */
+void fs_trial_rules(const fs_scenario *sc, const fs_sim *sim, fs_outcome_rules *rules);
+
 /* Loads the trial scenario with overrides (checked as usual: FS_BAD_INPUT, nothing run), draws
  * the pose for seed, runs the trial and fills out. A numerical failure is not an error of the
  * call: it returns FS_OK with out->outcome = FS_FAILED_NUMERICS and out->failure set. obs
