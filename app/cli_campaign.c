@@ -801,7 +801,11 @@ int cli_merge(const cli_args *a)
                                                      heads[0].nset, 1, 1, &now, &err)) != FS_OK)
                 s = fail(&err);
             else {
-                if (fs_journal_differs(&now, &heads[0], "the campaign now", dirs[0], why, sizeof why)) {
+                if (fs_journal_differs(&now, &heads[0], "the campaign now", dirs[0], why, sizeof why) && a->force &&
+                    fs_journal_version_only(&now, &heads[0]))
+                    fprintf(stderr, "footsim merge: --force: the shards were run by another footsim version (%s); "
+                            "their trials are merged as they are and summarized by this version\n", why);
+                else if (fs_journal_differs(&now, &heads[0], "the campaign now", dirs[0], why, sizeof why)) {
                     fprintf(stderr, "footsim merge: the campaign %s has changed since its shards ran (%s); run the "
                             "shards again\n", heads[0].campaign, why);
                     s = FS_BAD_INPUT;

@@ -65,11 +65,14 @@ static const command commands[] = {
      "  stops the workers, keeps the journal, prints the command that continues; exit 130 or 143.\n"
      "  --shard I/N runs only the trials whose index is I-1 modulo N and writes DIR/trials.journal;\n"
      "  'footsim merge' makes the campaign's files of the N shard folders."},
-    {"merge", cli_merge, "DIR...", "--out --replace",
+    {"merge", cli_merge, "DIR...", "--out --replace --force",
      "Merges the shard folders of one campaign (footsim campaign --shard I/N) into its result files,\n"
      "  the same bytes as the campaign run on one machine (default DIR: results/campaigns/<name>/).\n"
      "  Refused (exit 2, saying which) when the shards come from other campaigns, inputs, overrides or\n"
-     "  versions, or when trials are missing or repeated. Exit 1 when an expectation fails."},
+     "  versions, or when trials are missing or repeated. Exit 1 when an expectation fails. --force\n"
+     "  merges shards run by another footsim version (said, both versions named): the summaries are\n"
+     "  this version's (its laws) and their provenance names it; use it only where the two versions'\n"
+     "  trials are the same bits (rerun a shard's trials to check)."},
     {"optimize", cli_optimize, "FILE", "-j --out --replace --set --data",
      "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
      "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"
