@@ -211,6 +211,31 @@ static void support_on_level_ground(void)
     fs_scenario_free(&sc);
 }
 
-FS_TEST_MAIN(TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
+/* A flat sole on level ground bears over its whole bottom face (11 x 7 points), untilted, its edge
+ * the sole's front; on simply uneven ground the 8 mm bump under its forefoot (at x = 6 cm) lifts it:
+ * resting on the bump and its heel it tilts by about atan(8 / 60), 7.6 degrees; the four corners
+ * alone would have left it level on the ground around the bump (the check fails on them). */
+static void support_of_a_flat_sole(void)
+{
+    static fs_scenario sc, bump;
+    fs_error err;
+    const char *set[] = {"scenario.design=feet/flat.ini"};
+    const char *set2[] = {"scenario.design=feet/flat.ini", "scenario.terrain=../terrains/simply_uneven.ini"};
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 1, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set2, 2, &bump, &err) == FS_OK);
+    fs_trial_support s;
+    REQUIRE(fs_trial_support_of(&sc, 1, 1e-3, &s, &err) == FS_OK);
+    const fs_foot_geom *g = &sc.geom;
+    CHECK(s.bearing == 77 && s.over);
+    CHECK_NEAR(s.edge_m, g->box[0].centre.x + 0.5 * g->box_size.x - g->ankle.x, 1e-12);
+    CHECK_NEAR(s.tilt_forward_rad, 0, 1e-12);
+    REQUIRE(fs_trial_support_of(&bump, 1, 1e-3, &s, &err) == FS_OK);
+    printf("flat sole on the bump, seed 1: tilt %.2f deg, %d points bear\n", s.tilt_forward_rad * 180 / M_PI, s.bearing);
+    CHECK(fabs(s.tilt_forward_rad) > 2 * M_PI / 180 && fabs(s.tilt_forward_rad) < 15 * M_PI / 180);
+    fs_scenario_free(&sc);
+    fs_scenario_free(&bump);
+}
+
+FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
              TEST(support_on_level_ground))

@@ -142,7 +142,12 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, fs_campaign_row 
     row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
     row->law_K = law.held ? INFINITY : law.K;
     row->law_critical_m = law.held ? INFINITY : law.critical_height_m;
-    if (law.held || r->kind == FS_ROBOT_BIPED) /* a slide holds the lean; a biped's two feet are not judged */
+    if (law.held) { /* a slide holds the lean: whatever the drop, it stands */
+        row->drop_law = FS_LAW_STANDS;
+        row->drop_seeds = row->drop_stands = c->seeds;
+        return;
+    }
+    if (r->kind == FS_ROBOT_BIPED) /* a biped's two feet are not judged (docs/landing.md) */
         return;
     fs_trial_support *sup = malloc((size_t)c->seeds * sizeof *sup);
     double *E = malloc((size_t)c->seeds * sizeof *E), *B = malloc((size_t)c->seeds * sizeof *B);

@@ -7,7 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { MAX_POINTS = FS_MAX_SPHERES + 4 * FS_MAX_BOXES };
+/* a sole's bottom face is sampled on a grid of SOLE_NX by SOLE_NY points, corners included, each
+   the highest of SUB x SUB points over its share of the face: where the terrain rises under it (a
+   bump under the middle of the sole) it bears there, not at a corner */
+enum { SOLE_NX = 11, SOLE_NY = 7, SUB = 5, MAX_POINTS = FS_MAX_SPHERES + SOLE_NX * SOLE_NY * FS_MAX_BOXES };
 
 typedef struct point { double x, y; } point;
 
@@ -70,13 +73,25 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
             out->toes += toe[n];
         }
         for (int b = 0; b < g->nboxes; b++)
-            for (int k = 0; k < 4; k++, n++) {
-                double lx = g->box[b].centre.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x;
-                double ly = g->box[b].centre.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y;
-                at[n].x = x0 + c * lx - sn * ly;
-                at[n].y = y0 + sn * lx + c * ly;
+            for (int k = 0; k < SOLE_NX * SOLE_NY; k++, n++) {
+                /* the highest of SUB x SUB points over the grid point's share of the face (its
+                   corners' share reaching out to the face's edge): a bump between grid points counts */
+                double lx0 = g->box[b].centre.x + ((double)(k % SOLE_NX) / (SOLE_NX - 1) - 0.5) * g->box_size.x;
+                double ly0 = g->box[b].centre.y + ((double)(k / SOLE_NX) / (SOLE_NY - 1) - 0.5) * g->box_size.y;
+                double hx = 0.5 * g->box_size.x / (SOLE_NX - 1), hy = 0.5 * g->box_size.y / (SOLE_NY - 1);
+                under[n] = -INFINITY;
+                for (int u = 0; u < SUB; u++)
+                    for (int v = 0; v < SUB; v++) {
+                        double lx = fmin(fmax(lx0 + hx * (2.0 * u / (SUB - 1) - 1), g->box[b].centre.x - 0.5 * g->box_size.x),
+                                         g->box[b].centre.x + 0.5 * g->box_size.x);
+                        double ly = fmin(fmax(ly0 + hy * (2.0 * v / (SUB - 1) - 1), g->box[b].centre.y - 0.5 * g->box_size.y),
+                                         g->box[b].centre.y + 0.5 * g->box_size.y);
+                        point w = {x0 + c * lx - sn * ly, y0 + sn * lx + c * ly};
+                        double z = fs_terrain_height(&sc->terrain, w.x, w.y);
+                        if (z > under[n] || (u == SUB / 2 && v == SUB / 2 && z >= under[n]))
+                            under[n] = z, at[n] = w;
+                    }
                 low[n] = g->box[b].centre.z - 0.5 * g->box_size.z;
-                under[n] = fs_terrain_height(&sc->terrain, at[n].x, at[n].y);
                 toe[n] = heel[n] = 0;
             }
         /* the rest: the foot settles (small tilts) on the plane z = D + b (x, y) - (x0, y0) that lies

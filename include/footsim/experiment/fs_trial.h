@@ -67,7 +67,8 @@ void fs_trial_placed_free(fs_scenario *sc);
 /* What the terrain offers under the footprint for one seed (the drop law's support; docs/landing.md).
  * The foot of sc, placed for seed (its drawn x, y and yaw; its drawn tilt left out), settles rigidly
  * on the seed's terrain: each contact shape is a point (a sphere: its lowest point over the highest
- * of the terrain under its centre and four points a radius away; a sole: its four bottom corners),
+ * of the terrain under its centre and four points a radius away; a sole: 11 by 7 points over its
+ * bottom face, corners included),
  * and the foot comes to rest (small tilts) on the plane over those points that is lowest under the
  * robot's centre of mass (com_forward_m ahead of the ankle along the foot, moved by its height
  * times the tilt): the upper hull's facet over it. Shapes within travel_m of that plane (the arch's
@@ -77,7 +78,7 @@ void fs_trial_placed_free(fs_scenario *sc);
  * not over the support (over 0) when it stands beyond every facet (the foot tips off) or the bearing
  * points span no area. A single foot only (FS_BAD_INPUT for a biped). */
 typedef struct fs_trial_support {
-    int bearing;               /* contact shapes that bear (a sole's corners count one each) */
+    int bearing;               /* contact points that bear (a sole's grid points count one each) */
     int toes_bearing, toes;    /* of the toes' spheres (a biomimetic foot's phalanges): bearing, all */
     int heel_bearing;          /* a heel sphere bears */
     int over;                  /* the centre of mass stands over the polygon (inside it) */
