@@ -75,8 +75,9 @@ static const cli_option options[] = {
     {"--json", ARG_FLAG, NULL, CMD_MODEL | CMD_STIFFNESS | CMD_TRIAL | CMD_COMPARE | CMD_WALK, 0, 0, FIELD(json), 0,
      "print the result as JSON"},
     {"--quick", ARG_FLAG, NULL, CMD_BENCH, 0, 0, FIELD(quick), 0, "a smaller sweep: minutes instead of tens of minutes"},
-    {"--force", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(force), 0,
-     "compare results made of other seeds, overrides or input files (reported, not refused)"},
+    {"--force", ARG_FLAG, NULL, CMD_COMPARE | CMD_MERGE, 0, 0, FIELD(force), 0,
+     "compare results made of other seeds, overrides or input files (reported, not refused); merge shards "
+     "run by another footsim version"},
     {"--equivalence", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(equivalence), 0,
      "judge RESULT, run at another setting, against BASELINE as a reference campaign (docs/bench.md)"},
     {"--all", ARG_FLAG, NULL, CMD_COMPARE, 0, 0, FIELD(all), 0,
@@ -170,7 +171,10 @@ static const command commands[] = {
      "Merges the shard folders of one campaign (footsim campaign --shard I/N) into its result files,\n"
      "  the same bytes as the campaign run on one machine (default DIR: results/campaigns/<name>/).\n"
      "  Refused (exit 2, saying which) when the shards come from other campaigns, inputs, overrides or\n"
-     "  versions, or when trials are missing or repeated. Exit 1 when an expectation fails."},
+     "  versions, or when trials are missing or repeated. Exit 1 when an expectation fails. --force\n"
+     "  merges shards run by another footsim version (said, both versions named): the summaries are\n"
+     "  this version's (its laws) and their provenance names it; use it only where the two versions'\n"
+     "  trials are the same bits (rerun a shard's trials to check)."},
     {"optimize", cli_optimize, CMD_OPTIMIZE, "FILE", 1, CLI_DATA_SCENARIO,
      "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
      "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"

@@ -29,7 +29,10 @@ int cli_merge(const cli_args *a)
         dirs[i] = a->more[i - 1];
     fs_error err = {FS_OK, ""};
     fs_campaign_merged *m = &w->m;
-    s = fs_campaign_merge(dirs, n, m, &err);
+    s = fs_campaign_merge(dirs, n, a->force, m, &err);
+    if (s == FS_OK && m->other_version)
+        fprintf(stderr, "footsim merge: --force: the shards were run by another footsim version (%s); their trials "
+                "are merged as they are and summarized by this version\n", m->version_note);
     if (s != FS_OK && m->missing_shard) {
         char run[4 * FS_OUT_PATH], shard[32];
         snprintf(shard, sizeof shard, "%d/%d", m->missing_shard, m->head.nshards);

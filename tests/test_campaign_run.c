@@ -224,10 +224,10 @@ static void test_shards_merge_into_the_same_bytes(void)
     fs_campaign_merged *m = calloc(1, sizeof *m);
     REQUIRE(m != NULL);
     /* one shard missing: named */
-    CHECK(fs_campaign_merge(both, 1, m, &err) == FS_BAD_INPUT);
+    CHECK(fs_campaign_merge(both, 1, 0, m, &err) == FS_BAD_INPUT);
     CHECK(m->missing_shard == 2 && m->head.nshards == 2 && strstr(err.message, "3 of 6 trials missing") != NULL);
     fs_campaign_merge_free(m);
-    REQUIRE(fs_campaign_merge(both, 2, m, &err) == FS_OK);
+    REQUIRE(fs_campaign_merge(both, 2, 0, m, &err) == FS_OK);
     /* into a shard's own folder: refused */
     CHECK(fs_campaign_merge_write(m, d1, 0, NULL, NULL, &st, &err) == FS_BAD_INPUT);
     CHECK(fs_campaign_merge_write(m, out, 0, NULL, NULL, &st, &err) == FS_OK && st.committed);

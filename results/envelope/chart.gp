@@ -8,7 +8,7 @@ key1 = 'springs.scale'
 key2 = 'robot.com_height_m'
 set terminal pngcairo size 1120,440 noenhanced font 'sans,10'
 set output out
-set multiplot layout 1,2 title 'Campaign ' . campaign . ': success rate (5 seeds per point); law: o stands, x topples; line: the critical height K/(m g)'
+set multiplot layout 1,2 title 'Campaign ' . campaign . ': success rate (20 seeds per point); law: o stands, x topples; line: the critical height K/(m g); drop law: dot stands, dashed: its highest centre of mass'
 set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')
 set cbrange [0:1]
 set cblabel 'success rate'
@@ -23,10 +23,14 @@ set title series1
 plot 'chart.dat' index 0 using 1:2:3:4:5:6:7 with boxxyerror lc palette, \
      '' index 0 using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \
      '' index 0 using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black', \
-     '' index 0 every 6 using 1:9 with lines lw 2 lc rgb 'black'
+     '' index 0 using 1:($10 == 1 ? $2 : 1/0) with points pt 7 ps 0.5 lc rgb 'black', \
+     '' index 0 every 6 using 1:9 with lines lw 2 lc rgb 'black', \
+     '' index 0 every 6 using 1:11 with lines lw 2 dt 2 lc rgb 'black'
 set title series2
 plot 'chart.dat' index 1 using 1:2:3:4:5:6:7 with boxxyerror lc palette, \
      '' index 1 using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \
      '' index 1 using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black', \
-     '' index 1 every 6 using 1:9 with lines lw 2 lc rgb 'black'
+     '' index 1 using 1:($10 == 1 ? $2 : 1/0) with points pt 7 ps 0.5 lc rgb 'black', \
+     '' index 1 every 6 using 1:9 with lines lw 2 lc rgb 'black', \
+     '' index 1 every 6 using 1:11 with lines lw 2 dt 2 lc rgb 'black'
 unset multiplot

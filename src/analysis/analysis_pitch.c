@@ -42,6 +42,7 @@ typedef struct foot3d {
     fs_vec3 f[FS_CHAINS], lat[FS_CHAINS]; /* each chain plane's heading and its normal */
     double r_toe[FS_CHAINS];
     double load_N, gravity;
+    double tau;                /* N m about the ankle axis on the talus (the drop law's fold probe; 0 for K) */
     double chain_angles[FS_CHAINS][2]; /* the last solved midfoot and MTP angles (a warm start) */
     int sideways;              /* 0 when no chain is splayed: the shift then costs nothing and couples to
                                   nothing (its rows of the Hessian are zero), so it is held */
@@ -156,6 +157,8 @@ static double energy(foot3d *m, const double q[NQ])
         if (!close_chain(m, i, talus, &body[g->chain[i].metatarsal], &body[g->chain[i].phalanx]))
             return NAN;
     double E = m->load_N * (talus->c.z - g->ankle.z);
+    if (m->tau != 0)
+        E -= m->tau * q[1];
     for (int b = 0; b < g->nbodies; b++)
         E += g->body[b].mass_kg * m->gravity * (place(&body[b], g->body[b].com).z - g->body[b].com.z);
     for (int s = 0; s < g->nsprings; s++) {
@@ -204,50 +207,54 @@ static double condensed(const double H[NQ][NQ])
     return K > 0 ? K : NAN;
 }
 
-fs_status fs_pitch_stiffness_model(const fs_foot_geom *g, double load_N, double gravity_m_per_s2, double *K,
-                                   fs_error *err)
+/* Sets up the model of foot g under load_N at the ankle; FS_BAD_INPUT (said) for a foot it is not for. */
+static fs_status setup(foot3d *m, const fs_foot_geom *g, double load_N, double gravity_m_per_s2, fs_error *err)
 {
-    *K = NAN;
     if (g->kind != FS_FOOT_BIOMIMETIC || g->nfeet > 1)
         return fs_fail(err, FS_BAD_INPUT, "the pitch-stiffness model is for one biomimetic foot; a flat sole's "
                                           "pitch stiffness is its contacts' (docs/landing.md)");
-    foot3d m;
-    memset(&m, 0, sizeof m);
-    m.g = g;
-    m.axis = g->hinge[0].axis;
-    m.load_N = load_N;
-    m.gravity = gravity_m_per_s2;
+    memset(m, 0, sizeof *m);
+    m->g = g;
+    m->axis = g->hinge[0].axis;
+    m->load_N = load_N;
+    m->gravity = gravity_m_per_s2;
     int nheel = 0;
     for (int s = 0; s < g->nspheres; s++)
         if (g->sphere[s].body == FS_BODY_HEEL) {
-            m.heel_centre = fs_add(m.heel_centre, g->sphere[s].centre);
-            m.r_heel = g->sphere[s].radius_m;
+            m->heel_centre = fs_add(m->heel_centre, g->sphere[s].centre);
+            m->r_heel = g->sphere[s].radius_m;
             nheel++;
         }
     if (nheel == 0)
         return fs_fail(err, FS_BAD_INPUT, "the pitch-stiffness model needs the heel's spheres (a whole foot, not a "
                                           "pinned chain)");
-    m.heel_centre = fs_scale(m.heel_centre, 1.0 / nheel);
+    m->heel_centre = fs_scale(m->heel_centre, 1.0 / nheel);
     for (int i = 0; i < FS_CHAINS; i++) {
         fs_vec3 run = fs_sub(g->chain[i].toe, g->chain[i].midfoot);
         run.z = 0;
-        m.f[i] = fs_scale(run, 1 / fs_norm(run));
-        m.lat[i] = fs_cross(fs_v3(0, 0, 1), m.f[i]);
-        m.sideways |= m.f[i].y != 0;
+        m->f[i] = fs_scale(run, 1 / fs_norm(run));
+        m->lat[i] = fs_cross(fs_v3(0, 0, 1), m->f[i]);
+        m->sideways |= m->f[i].y != 0;
         for (int s = 0; s < g->nspheres; s++)
             if (g->sphere[s].body == g->chain[i].phalanx)
-                m.r_toe[i] = g->sphere[s].radius_m;
+                m->r_toe[i] = g->sphere[s].radius_m;
     }
-    /* Newton on the energy's gradient (Cramer's rule on the 3 x 3 Hessian); the finite differences
-       resolve the angles to about 1e-9 rad. A chain splayed by a small angle psi resists the shift
-       only as psi^2 and an unequal foot's load pushes it sideways as psi, so the shift at rest
-       grows as 1/psi (0.1 mm at Table I's splay, 11 mm at a tenth of a degree): it is resolved to
-       1e-6 of SHIFT_M, 50 nm. */
-    double q[NQ] = {0, 0, 0}, grad[NQ], H[NQ][NQ];
+    return FS_OK;
+}
+
+/* Newton on the energy's gradient (Cramer's rule on the 3 x 3 Hessian) from q; the finite
+   differences resolve the angles to about 1e-9 rad. A chain splayed by a small angle psi resists the
+   shift only as psi^2 and an unequal foot's load pushes it sideways as psi, so the shift at rest
+   grows as 1/psi (0.1 mm at Table I's splay, 11 mm at a tenth of a degree): it is resolved to 1e-6
+   of SHIFT_M, 50 nm. Returns the condensed pitch stiffness there, NAN unless Newton converged to a
+   stable equilibrium. */
+static double solve(foot3d *m, double q[NQ])
+{
+    double grad[NQ], H[NQ][NQ];
     int converged = 0;
     for (int it = 0; it < 100 && !converged; it++) {
-        gradient(&m, q, grad);
-        hessian(&m, q, H);
+        gradient(m, q, grad);
+        hessian(m, q, H);
         double det = det3((const double(*)[NQ])H);
         if (isnan(condensed((const double(*)[NQ])H)) || !(fabs(det) > 0))
             break;
@@ -265,11 +272,58 @@ fs_status fs_pitch_stiffness_model(const fs_foot_geom *g, double load_N, double 
             q[c] -= scale * dq[c];
         converged = fmax(fabs(dq[0]), fabs(dq[1])) < 1e-9 && fabs(dq[2]) < 1e-6;
     }
-    hessian(&m, q, H);
-    *K = converged ? condensed((const double(*)[NQ])H) : NAN;
+    hessian(m, q, H);
+    return converged ? condensed((const double(*)[NQ])H) : NAN;
+}
+
+fs_status fs_pitch_stiffness_model(const fs_foot_geom *g, double load_N, double gravity_m_per_s2, double *K,
+                                   fs_error *err)
+{
+    *K = NAN;
+    foot3d m;
+    fs_status s = setup(&m, g, load_N, gravity_m_per_s2, err);
+    if (s != FS_OK)
+        return s;
+    double q[NQ] = {0, 0, 0};
+    *K = solve(&m, q);
     if (isnan(*K))
         return fs_fail(err, FS_NUMERICAL, "the foot has no stable equilibrium under %.4g N at the ankle: the arch "
                                           "folds (or, its chains splayed by hundredths of a degree, it slides "
                                           "sideways without end), and its pitch stiffness is not positive", load_N);
+    return FS_OK;
+}
+
+fs_status fs_pitch_fold_moment(const fs_foot_geom *g, double load_N, double gravity_m_per_s2, double cap_N_m,
+                               double *fold_N_m, fs_error *err)
+{
+    *fold_N_m = NAN;
+    foot3d m;
+    fs_status s = setup(&m, g, load_N, gravity_m_per_s2, err);
+    if (s != FS_OK)
+        return s;
+    /* forward: the ankle body's top turning towards the toes, +x (a turn about the axis a moves the
+       point straight above the ankle by a x z, whose x is a.y) */
+    double forward = m.axis.y >= 0 ? 1 : -1, q[NQ] = {0, 0, 0};
+    if (isnan(solve(&m, q)))
+        return fs_fail(err, FS_NUMERICAL, "the foot has no stable equilibrium under %.4g N at the ankle: the arch "
+                                          "folds before any moment is put on it", load_N);
+    /* continuation in the moment from the last equilibrium, FOLD_STEPS steps up to the cap, then
+       bisection between the last moment held and the first not: the fold to cap / FOLD_STEPS / 2^8 */
+    enum { FOLD_STEPS = 48, FOLD_HALVINGS = 8 };
+    double held = 0, lost = NAN;
+    for (int i = 1; i <= FOLD_STEPS + FOLD_HALVINGS; i++) {
+        if (i > FOLD_STEPS && isnan(lost)) {
+            *fold_N_m = INFINITY; /* the arch holds every moment up to the cap */
+            return FS_OK;
+        }
+        double t = isnan(lost) ? cap_N_m * i / FOLD_STEPS : 0.5 * (held + lost), qt[NQ];
+        memcpy(qt, q, sizeof qt);
+        m.tau = forward * t;
+        if (isnan(solve(&m, qt)))
+            lost = t;
+        else
+            held = t, memcpy(q, qt, sizeof q);
+    }
+    *fold_N_m = held;
     return FS_OK;
 }

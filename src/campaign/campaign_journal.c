@@ -137,6 +137,12 @@ int fs_journal_differs(const fs_journal_head *a, const fs_journal_head *b, const
     return 1;
 }
 
+int fs_journal_version_only(const fs_journal_head *a, const fs_journal_head *b)
+{
+    const char *ra = strstr(a->provenance, "; "), *rb = strstr(b->provenance, "; ");
+    return a->ntrials == b->ntrials && ra && rb && !strcmp(ra, rb) && strcmp(a->provenance, b->provenance);
+}
+
 /* ---- writing ------------------------------------------------------------------------------ */
 
 /* Writes a header's lines, then its check line (the CRC-32 of the lines before it); 0: out of memory. */

@@ -103,6 +103,9 @@ fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *
         row->law = !strcmp(law, "stands") ? FS_LAW_STANDS : !strcmp(law, "topples") ? FS_LAW_TOPPLES : FS_LAW_NONE;
         row->law_K = number_of(r, "law_K_N_m_per_rad");
         row->law_critical_m = number_of(r, "law_critical_com_height_m");
+        const char *drop = text_of(r, "drop_law_prediction");
+        row->drop_law = !strcmp(drop, "stands") ? FS_LAW_STANDS : !strcmp(drop, "topples") ? FS_LAW_TOPPLES : FS_LAW_NONE;
+        row->drop_critical_m = number_of(r, "drop_law_critical_com_height_m");
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             row->median[m] = NAN;
         ok = ok && row->success_rate >= 0 && row->success_rate <= 1 && row->ci_low <= row->ci_high;

@@ -169,7 +169,9 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
     fputs(",trials,landed,fell,undecided,failed_numerics,hung,success_rate,ci_low,ci_high", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
-    fputs(",law_prediction,law_K_N_m_per_rad,law_critical_com_height_m\n", f);
+    fputs(",law_prediction,law_K_N_m_per_rad,law_critical_com_height_m,drop_law_prediction,drop_law_seeds,"
+          "drop_law_stands,drop_law_energy_J,drop_law_barrier_J,drop_law_saturation_N_m,drop_law_critical_com_height_m\n",
+          f);
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         csv_row_key(f, c, r->foot, r->terrain, r->robot);
@@ -182,6 +184,15 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
         fprintf(f, ",%s", r->law == FS_LAW_NONE ? "" : fs_law_name(r->law)); /* none: empty, as every missing value */
         csv_number(f, r->law_K);
         csv_number(f, r->law_critical_m);
+        fprintf(f, ",%s", r->drop_law == FS_LAW_NONE ? "" : fs_law_name(r->drop_law));
+        if (r->drop_law == FS_LAW_NONE)
+            fputs(",,", f);
+        else
+            fprintf(f, ",%d,%d", r->drop_seeds, r->drop_stands);
+        csv_number(f, r->drop_energy_J);
+        csv_number(f, r->drop_barrier_J);
+        csv_number(f, r->drop_saturation_N_m);
+        csv_number(f, r->drop_critical_m);
         fputc('\n', f);
     }
     return 1;
@@ -216,7 +227,11 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
         fprintf(f, "| %s | %s | %s | %d | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
                 c->terrain[r->terrain].name, c->robot[r->robot].name, r->trials, r->landed, r->fell, r->undecided,
                 r->failed_numerics, r->hung, r->success_rate, r->ci_low, r->ci_high);
-        if (isfinite(r->law_K))
+        if (isfinite(r->law_K) && r->drop_law != FS_LAW_NONE)
+            fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m); drop: %s in %d of %d seeds (E %.3g J, B %.3g J) |",
+                    fs_law_name(r->law), r->law_K, r->law_critical_m, fs_law_name(r->drop_law), r->drop_stands,
+                    r->drop_seeds, r->drop_energy_J, r->drop_barrier_J);
+        else if (isfinite(r->law_K))
             fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m) |", fs_law_name(r->law), r->law_K,
                     r->law_critical_m);
         else
@@ -291,6 +306,14 @@ static cJSON *summary_json(const out_ctx *x)
                                      : cJSON_AddStringToObject(o, "law_prediction", fs_law_name(r->law))) != NULL;
         ok &= cJSON_AddNumberToObject(o, "law_K_N_m_per_rad", r->law_K) != NULL; /* NAN, INFINITY: null */
         ok &= cJSON_AddNumberToObject(o, "law_critical_com_height_m", r->law_critical_m) != NULL;
+        ok &= (r->drop_law == FS_LAW_NONE ? cJSON_AddNullToObject(o, "drop_law_prediction")
+                                          : cJSON_AddStringToObject(o, "drop_law_prediction", fs_law_name(r->drop_law))) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "drop_law_seeds", r->drop_seeds) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "drop_law_stands", r->drop_stands) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "drop_law_energy_J", r->drop_energy_J) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "drop_law_barrier_J", r->drop_barrier_J) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "drop_law_saturation_N_m", r->drop_saturation_N_m) != NULL;
+        ok &= cJSON_AddNumberToObject(o, "drop_law_critical_com_height_m", r->drop_critical_m) != NULL;
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
             char key[FS_NAME_MAX + 8];
             snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);
@@ -393,6 +416,13 @@ static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
     sql_column(l, "law_prediction", "TEXT");
     sql_column(l, "law_K_N_m_per_rad", "REAL");
     sql_column(l, "law_critical_com_height_m", "REAL");
+    sql_column(l, "drop_law_prediction", "TEXT");
+    sql_column(l, "drop_law_seeds", "INTEGER");
+    sql_column(l, "drop_law_stands", "INTEGER");
+    sql_column(l, "drop_law_energy_J", "REAL");
+    sql_column(l, "drop_law_barrier_J", "REAL");
+    sql_column(l, "drop_law_saturation_N_m", "REAL");
+    sql_column(l, "drop_law_critical_com_height_m", "REAL");
 }
 
 /* One table filled from its CSV file: made, imported (the header row skipped), and every empty
@@ -572,16 +602,17 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
         }
         fputc(' ', f);
         fs_gp_data_text(f, c->sweep[1]);
-        fputs(" x_low x_high y_low y_high rate law critical_height_m\n", f);
+        fputs(" x_low x_high y_low y_high rate law critical_height_m drop_law drop_critical_height_m\n", f);
         for (int i = 0; i < c->nvalues[0]; i++)
             for (int j = 0; j < c->nvalues[1]; j++) {
                 const fs_campaign_row *r = point_row(x, k, i, j);
                 double ex[2], ey[2];
                 cell_edges(c, 0, i, ex);
                 cell_edges(c, 1, j, ey);
-                fprintf(f, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g\n", value_of(c, 0, i), value_of(c, 1, j),
-                        ex[0], ex[1], ey[0], ey[1], r->success_rate, r->law,
-                        isfinite(r->law_critical_m) ? r->law_critical_m : NAN);
+                fprintf(f, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %d %.17g %d %.17g\n", value_of(c, 0, i),
+                        value_of(c, 1, j), ex[0], ex[1], ey[0], ey[1], r->success_rate, r->law,
+                        isfinite(r->law_critical_m) ? r->law_critical_m : NAN, r->drop_law,
+                        isfinite(r->drop_critical_m) ? r->drop_critical_m : NAN);
             }
     }
     return 1;
@@ -605,27 +636,32 @@ static void heat_map_script(FILE *f, const fs_campaign *c)
     cell_edges(c, 1, 0, ey), cell_edges(c, 1, c->nvalues[1] - 1, yr);
     fprintf(f, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\nset output out\n"
                "set multiplot layout %d,%d title 'Campaign ' . campaign . ': success rate (%d seeds per point); law: "
-               "o stands, x topples%s'\n"
+               "o stands, x topples%s; drop law: dot stands%s'\n"
                "set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')\nset cbrange [0:1]\n"
                "set cblabel 'success rate'\nset xlabel key1\nset ylabel key2\n%s%s"
                "set xrange [%.17g:%.17g]\nset yrange [%.17g:%.17g]\n"
                "set key off\nset style fill solid 1.0 noborder\n",
             560 * cols, 440 * rows, rows, cols, c->seeds, hk >= 0 ? "; line: the critical height K/(m g)" : "",
+            hk >= 0 ? ", dashed: its highest centre of mass" : "",
             log_axis(c, 0) ? "set logscale x\n" : "", log_axis(c, 1) ? "set logscale y\n" : "", fmin(ex[0], xr[1]),
             fmax(ex[0], xr[1]), fmin(ey[0], yr[1]), fmax(ey[0], yr[1]));
     for (int k = 0; k < n; k++) {
         fprintf(f, "set title series%d\nplot 'chart.dat' index %d using 1:2:3:4:5:6:7 with boxxyerror lc palette, \\\n"
                    "     '' index %d using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \\\n"
-                   "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black'",
-                k + 1, k, k, k);
+                   "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black', \\\n"
+                   "     '' index %d using 1:($10 == 1 ? $2 : 1/0) with points pt 7 ps 0.5 lc rgb 'black'",
+                k + 1, k, k, k, k);
         /* the critical height against the other key: one point per value of it (a row of the block
          * each, picked with every, so that the line is not broken by skipped rows), clipped by the
          * axes' ranges, which the data set */
         if (hk == 1)
-            fprintf(f, ", \\\n     '' index %d every %d using 1:9 with lines lw 2 lc rgb 'black'", k, c->nvalues[1]);
+            fprintf(f, ", \\\n     '' index %d every %d using 1:9 with lines lw 2 lc rgb 'black', \\\n"
+                       "     '' index %d every %d using 1:11 with lines lw 2 dt 2 lc rgb 'black'", k, c->nvalues[1], k,
+                    c->nvalues[1]);
         else if (hk == 0)
-            fprintf(f, ", \\\n     '' index %d every ::0::%d using 9:2 with lines lw 2 lc rgb 'black'", k,
-                    c->nvalues[1] - 1);
+            fprintf(f, ", \\\n     '' index %d every ::0::%d using 9:2 with lines lw 2 lc rgb 'black', \\\n"
+                       "     '' index %d every ::0::%d using 11:2 with lines lw 2 dt 2 lc rgb 'black'", k,
+                    c->nvalues[1] - 1, k, c->nvalues[1] - 1);
         fputc('\n', f);
     }
     fputs("unset multiplot\n", f);

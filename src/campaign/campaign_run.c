@@ -547,8 +547,8 @@ static int same_folder(const char *dir, const char *const *dirs, int n)
 
 /* Reads shard k's journal into results (from[i]: the shard trial i came from, -1 for none),
  * loading the campaign from the first. */
-static fs_status merge_one(const char *const *dirs, int k, fs_campaign *c, int *loaded, fs_journal_head *heads,
-                           fs_trial_result **results, int **from, fs_error *err)
+static fs_status merge_one(const char *const *dirs, int k, int force, fs_campaign_merged *m, fs_journal_head *heads,
+                           int **from, fs_error *err)
 {
     char path[FS_OUT_PATH + 32];
     fs_trial_result *r;
@@ -571,16 +571,22 @@ static fs_status merge_one(const char *const *dirs, int k, fs_campaign *c, int *
         /* the campaign the shards ran, loaded as they loaded it: its files must not have changed */
         fs_journal_head now;
         const char *const *set = (const char *const *)heads[0].set;
-        if ((s = fs_campaign_load(heads[0].campaign, set, heads[0].nset, c, err)) == FS_OK &&
-            (*loaded = 1, s = fs_journal_head_of(c, heads[0].campaign, set, heads[0].nset, 1, 1, &now, err)) == FS_OK) {
-            if (fs_journal_differs(&now, &heads[0], "the campaign now", dirs[0], why, sizeof why))
-                s = fs_fail(err, FS_BAD_INPUT, "the campaign %s has changed since its shards ran (%s); run the shards "
-                            "again", heads[0].campaign, why);
+        if ((s = fs_campaign_load(heads[0].campaign, set, heads[0].nset, &m->c, err)) == FS_OK &&
+            (m->loaded = 1, s = fs_journal_head_of(&m->c, heads[0].campaign, set, heads[0].nset, 1, 1, &now, err)) == FS_OK) {
+            if (fs_journal_differs(&now, &heads[0], "the campaign now", dirs[0], why, sizeof why)) {
+                if (force && fs_journal_version_only(&now, &heads[0])) {
+                    m->other_version = 1;
+                    snprintf(m->version_note, sizeof m->version_note, "%s", why);
+                } else {
+                    s = fs_fail(err, FS_BAD_INPUT, "the campaign %s has changed since its shards ran (%s); run the "
+                                "shards again", heads[0].campaign, why);
+                }
+            }
             fs_journal_head_free(&now);
         }
-        *results = calloc((size_t)heads[0].ntrials, sizeof **results);
+        m->results = calloc((size_t)heads[0].ntrials, sizeof *m->results);
         *from = malloc((size_t)heads[0].ntrials * sizeof **from);
-        if (s == FS_OK && (!*results || !*from))
+        if (s == FS_OK && (!m->results || !*from))
             s = fs_fail(err, FS_NO_MEMORY, "out of memory");
         for (int i = 0; s == FS_OK && i < heads[0].ntrials; i++)
             (*from)[i] = -1;
@@ -589,19 +595,19 @@ static fs_status merge_one(const char *const *dirs, int k, fs_campaign *c, int *
                     "shards of one campaign run with the same inputs, overrides and version", dirs[k], dirs[0], why);
     }
     if (s == FS_OK)
-        s = check_records(c, &heads[k], r, d, path, "run that shard again", err);
+        s = check_records(&m->c, &heads[k], r, d, path, "run that shard again", err);
     for (int i = 0; s == FS_OK && i < heads[0].ntrials; i++) {
         if (!d[i])
             continue;
         if ((*from)[i] >= 0) {
             int cell, seed, foot, terrain, robot;
-            fs_campaign_trial_of(c, i, &cell, &seed);
-            fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+            fs_campaign_trial_of(&m->c, i, &cell, &seed);
+            fs_campaign_cell_of(&m->c, cell, &foot, &terrain, &robot);
             s = fs_fail(err, FS_BAD_INPUT, "trial %d (foot %s on terrain %s under robot %s, seed %d) is in both %s and "
-                        "%s; give each shard once, all of one --shard I/N split", i, c->foot[foot].name,
-                        c->terrain[terrain].name, c->robot[robot].name, seed, dirs[(*from)[i]], dirs[k]);
+                        "%s; give each shard once, all of one --shard I/N split", i, m->c.foot[foot].name,
+                        m->c.terrain[terrain].name, m->c.robot[robot].name, seed, dirs[(*from)[i]], dirs[k]);
         } else {
-            (*results)[i] = r[i];
+            m->results[i] = r[i];
             (*from)[i] = k;
         }
     }
@@ -609,7 +615,7 @@ static fs_status merge_one(const char *const *dirs, int k, fs_campaign *c, int *
     return s;
 }
 
-fs_status fs_campaign_merge(const char *const *dirs, int n, fs_campaign_merged *m, fs_error *err)
+fs_status fs_campaign_merge(const char *const *dirs, int n, int force, fs_campaign_merged *m, fs_error *err)
 {
     memset(m, 0, sizeof *m);
     m->dirs = dirs;
@@ -623,7 +629,7 @@ fs_status fs_campaign_merge(const char *const *dirs, int n, fs_campaign_merged *
     fs_status s = FS_OK;
     int read = 0;
     for (; read < n && s == FS_OK; read++)
-        s = merge_one(dirs, read, &m->c, &m->loaded, heads, &m->results, &from, err);
+        s = merge_one(dirs, read, force, m, heads, &from, err);
     int missing = 0;
     for (int i = 0; s == FS_OK && i < heads[0].ntrials; i++)
         missing += from[i] < 0;

@@ -4,10 +4,13 @@
 
 #include "footsim/analysis/fs_analysis.h"
 #include "footsim/base/fs_stats.h"
+#include "footsim/experiment/fs_trial.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+enum { FOLD_CACHE = 64 };
 
 /* ---- statistics --------------------------------------------------------------------------- */
 
@@ -28,29 +31,159 @@ void fs_wilson(int k, int n, double *low, double *high)
 
 const char *fs_law_name(int law) { return law == FS_LAW_STANDS ? "stands" : law == FS_LAW_TOPPLES ? "topples" : "n/a"; }
 
+/* The foot's saturation for the drop law, worked out once per foot and load (a sweep's cells share
+ * them): its fold moment up to the full footprint's edge moment, and the travel under the weight
+ * within which a shape near the ground comes to bear (the arch's ankle drop and the contact layer). */
+typedef struct foot_fold {
+    const fs_scenario *sc;
+    double K, load_N, fold_N_m, travel_m;
+} foot_fold;
+
+/* Two scenarios whose foot is the same design, springs and all. */
+static int same_foot(const fs_scenario *a, const fs_scenario *b)
+{
+    return !memcmp(&a->design, &b->design, sizeof a->design) && a->def.contact_layer_m == b->def.contact_layer_m;
+}
+
+static void fold_of(const fs_scenario *sc, double K, double load_N, foot_fold *cache, int *ncache, foot_fold *out)
+{
+    for (int i = 0; i < *ncache; i++)
+        if (cache[i].K == K && cache[i].load_N == load_N && same_foot(cache[i].sc, sc)) {
+            *out = cache[i];
+            return;
+        }
+    double g = sc->def.gravity_m_per_s2;
+    fs_error err;
+    *out = (foot_fold){sc, K, load_N, INFINITY, sc->def.contact_layer_m};
+    if (sc->geom.kind == FS_FOOT_BIOMIMETIC) {
+        /* up to the moment that puts the centre of pressure at the foot's front: no edge lies further */
+        double reach = 0;
+        for (int i = 0; i < sc->geom.nspheres; i++)
+            reach = fmax(reach, sc->geom.sphere[i].centre.x + sc->geom.sphere[i].radius_m - sc->geom.ankle.x);
+        if (fs_pitch_fold_moment(&sc->geom, load_N, g, load_N * reach, &out->fold_N_m, &err) != FS_OK)
+            out->fold_N_m = 0; /* no equilibrium at all: nothing held */
+        fs_planar_load pl = {.load_N = load_N, .gravity_m_per_s2 = g};
+        fs_planar_result res;
+        if (fs_planar_equilibrium(&sc->design, &sc->geom, 0, &pl, &res, &err) == FS_OK && res.converged)
+            out->travel_m += fmax(0, res.ankle_drop_m);
+    }
+    if (*ncache < FOLD_CACHE)
+        cache[(*ncache)++] = *out;
+}
+
+/* The drop law on one seed's support for robot r (its centre of mass at height h): the foot's K and
+ * fold counted for the chains whose toe bears; the foot's tilt at rest leans the robot (its centre of
+ * mass moves h tan(tilt) along the foot) and uses up that much of the lean bound, its roll too. */
+static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, double K_foot, const foot_fold *ff,
+                       const fs_trial_support *sup, fs_drop_law *dl)
+{
+    memset(dl, 0, sizeof *dl);
+    dl->energy_J = dl->barrier_J = dl->saturation_N_m = NAN;
+    if (!sup->over)
+        return 0;
+    fs_robot_def r = *r0;
+    r.com_height_m = h;
+    r.com_forward_m = r0->com_forward_m + h * tan(sup->tilt_forward_rad);
+    double g = sc->def.gravity_m_per_s2, bound = sc->def.landed_tilt_deg * M_PI / 180;
+    double frac = sup->toes ? (double)sup->toes_bearing / sup->toes : 1;
+    double side = bound * bound - sup->tilt_side_rad * sup->tilt_side_rad;
+    double lean_bound = sqrt(fmax(0, side)) - (r.com_forward_m >= 0 ? 1 : -1) * sup->tilt_forward_rad;
+    fs_pitch_law pl;
+    fs_pitch_law_apply(K_foot * frac, &r, g, lean_bound, &pl);
+    fs_drop_support ds = {sup->edge_m, sup->ankle_height_m, ff->fold_N_m * frac};
+    fs_drop_law_apply(&pl, &r, g, sc->def.drop_m, lean_bound, &ds, dl);
+    /* rocking onto its rest frees the weight times how far the base under the centre of mass sank,
+       in whatever direction the rest's support lies: it adds to the drop's energy against the pitch's
+       work, and alone must not carry the centre of mass over the nearest side (a rigid tip about it) */
+    double W = r.mass_kg * g, settle = W * sup->settle_m, c = h + sup->ankle_height_m;
+    double tip = W * (hypot(sup->side_m, c) - c);
+    dl->energy_J += settle;
+    dl->stands = dl->stands && dl->energy_J < dl->barrier_J && settle < tip;
+    return dl->stands;
+}
+
+/* The highest centre of mass (below the static law's critical height) at which the drop law stands
+ * on at least half of the supports: bisection, the law being monotone in it on these robots. */
+static double drop_critical(const fs_scenario *sc, double K_foot, const fs_trial_support *sup, int n,
+                            const foot_fold *ff, double hmax)
+{
+    double lo = 0, hi = hmax;
+    for (int it = 0; it < 40 && isfinite(hi); it++) {
+        double h = 0.5 * (lo + hi);
+        int stands = 0;
+        for (int k = 0; k < n; k++) {
+            fs_drop_law dl;
+            stands += seed_stands(sc, &sc->def.robot, h, K_foot, ff, &sup[k], &dl);
+        }
+        if (2 * stands >= n)
+            lo = h;
+        else
+            hi = h;
+    }
+    return lo > 0 ? lo : NAN;
+}
+
 /* The law for a cell's foot and robot: the foot's pitch stiffness under the robot's weight (a flat
  * sole's from its contacts, fs_pitch_stiffness_foot); an arch that folds under the weight has none
- * left. */
-static void law_of(const fs_scenario *sc, fs_campaign_row *row)
+ * left. The drop law's too, seed by seed on what each seed's terrain offers (fs_trial_support_of). */
+static void law_of(const fs_campaign *c, const fs_scenario *sc, fs_campaign_row *row, foot_fold *cache, int *ncache)
 {
-    row->law = FS_LAW_NONE;
+    row->law = row->drop_law = FS_LAW_NONE;
     row->law_K = row->law_critical_m = NAN;
+    row->drop_energy_J = row->drop_barrier_J = row->drop_saturation_N_m = row->drop_critical_m = NAN;
     const fs_robot_def *r = &sc->def.robot;
-    double g = sc->def.gravity_m_per_s2, K;
+    double g = sc->def.gravity_m_per_s2, K, max_lean = sc->def.landed_tilt_deg * M_PI / 180;
     fs_error err;
     if (r->mass_kg <= 0)
         return;
     fs_status s = fs_pitch_stiffness_foot(sc, r->mass_kg * g, &K, &err);
     fs_pitch_law law;
-    fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, sc->def.landed_tilt_deg * M_PI / 180, &law);
+    fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, max_lean, &law);
     row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
     row->law_K = law.held ? INFINITY : law.K;
     row->law_critical_m = law.held ? INFINITY : law.critical_height_m;
+    if (law.held) { /* a slide holds the lean: whatever the drop, it stands */
+        row->drop_law = FS_LAW_STANDS;
+        row->drop_seeds = row->drop_stands = c->seeds;
+        return;
+    }
+    if (r->kind == FS_ROBOT_BIPED) /* a biped's two feet are not judged (docs/landing.md) */
+        return;
+    fs_trial_support *sup = malloc((size_t)c->seeds * sizeof *sup);
+    double *E = malloc((size_t)c->seeds * sizeof *E), *B = malloc((size_t)c->seeds * sizeof *B);
+    double *M = malloc((size_t)c->seeds * sizeof *M);
+    foot_fold ff;
+    fold_of(sc, s == FS_OK ? K : 0, r->mass_kg * g, cache, ncache, &ff);
+    int n = 0, nv = 0, ok = sup && E && B && M;
+    for (int k = 0; ok && k < c->seeds; k++) {
+        ok = fs_trial_support_of(sc, c->first_seed + k, ff.travel_m, &sup[n], &err) == FS_OK;
+        if (!ok)
+            break;
+        fs_drop_law dl;
+        row->drop_stands += seed_stands(sc, r, r->com_height_m, s == FS_OK ? K : 0, &ff, &sup[n], &dl);
+        if (!isnan(dl.barrier_J)) /* a seed whose support holds no centre of mass has none */
+            E[nv] = dl.energy_J, B[nv] = dl.barrier_J, M[nv++] = dl.saturation_N_m;
+        n++;
+    }
+    if (ok && n > 0) {
+        row->drop_seeds = n;
+        row->drop_law = 2 * row->drop_stands >= n ? FS_LAW_STANDS : FS_LAW_TOPPLES;
+        row->drop_energy_J = fs_median(E, nv);
+        row->drop_barrier_J = fs_median(B, nv);
+        row->drop_saturation_N_m = fs_median(M, nv);
+        row->drop_critical_m = drop_critical(sc, s == FS_OK ? K : 0, sup, n, &ff,
+                                             isfinite(law.critical_height_m) ? law.critical_height_m : 10);
+    } else {
+        row->drop_stands = 0;
+    }
+    free(sup), free(E), free(B), free(M);
 }
 
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows)
 {
     double *v = malloc((size_t)c->seeds * sizeof *v);
+    foot_fold cache[FOLD_CACHE];
+    int ncache = 0;
     for (int cell = 0; cell < fs_campaign_ncells(c); cell++) {
         fs_campaign_row *row = &rows[cell];
         memset(row, 0, sizeof *row);
@@ -81,9 +214,9 @@ void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results,
             row->median[m] = fs_median(v, k);
         }
         if (c->pair)
-            law_of(fs_campaign_pair(c, cell), row);
+            law_of(c, fs_campaign_pair(c, cell), row, cache, &ncache);
         else
-            row->law = FS_LAW_NONE, row->law_K = row->law_critical_m = NAN;
+            row->law = row->drop_law = FS_LAW_NONE, row->law_K = row->law_critical_m = NAN;
     }
     free(v);
 }

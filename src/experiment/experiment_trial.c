@@ -320,6 +320,32 @@ fs_status fs_trial_place(fs_scenario *sc, int seed, fs_trial_draw *draw, fs_erro
     return fs_scenario_compile(sc, err);
 }
 
+fs_status fs_trial_placed(const fs_scenario *base, int seed, fs_trial_draw *draw, fs_scenario **out, fs_error *err)
+{
+    *out = NULL;
+    fs_scenario *sc = malloc(sizeof *sc); /* the caller's, not the process's: trials are re-entrant */
+    if (!sc)
+        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", base->path);
+    fs_status s = fs_scenario_copy(sc, base, err);
+    if (s != FS_OK) {
+        free(sc);
+        return s;
+    }
+    s = fs_trial_place(sc, seed, draw, err);
+    if (s == FS_OK)
+        *out = sc;
+    else
+        fs_trial_placed_free(sc);
+    return s;
+}
+
+void fs_trial_placed_free(fs_scenario *sc)
+{
+    if (sc)
+        fs_scenario_free(sc);
+    free(sc);
+}
+
 fs_status fs_trial_run_scenario(const fs_scenario *base, int seed, const fs_run_observer *obs, fs_trial_result *out,
                                 fs_error *err)
 {
@@ -330,19 +356,11 @@ fs_status fs_trial_run_logged(const fs_scenario *base, int seed, const fs_run_ob
                               fs_trial_result *out, fs_error *err)
 {
     memset(out, 0, sizeof *out);
-    fs_scenario *sc = malloc(sizeof *sc); /* the caller's, not the process's: trials are re-entrant */
-    if (!sc)
-        return fs_fail(err, FS_NO_MEMORY, "%s: out of memory", base->path);
-    fs_status s = fs_scenario_copy(sc, base, err);
-    if (s != FS_OK) {
-        free(sc);
-        return s;
-    }
-    s = fs_trial_place(sc, seed, &out->draw, err);
+    fs_scenario *sc;
+    fs_status s = fs_trial_placed(base, seed, &out->draw, &sc, err);
     if (s == FS_OK)
         s = run_trial(sc, obs, log, out, err);
-    fs_scenario_free(sc);
-    free(sc);
+    fs_trial_placed_free(sc);
     return s;
 }
 

@@ -74,6 +74,15 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
 fs_status fs_pitch_stiffness_model(const fs_foot_geom *g, double load_N, double gravity_m_per_s2, double *K,
                                    fs_error *err);
 
+/* The arch's fold (docs/landing.md, the drop law): the largest moment, up to cap_N_m, that the same
+ * model of the foot under load_N at the ankle holds when the moment pitches its ankle body forward
+ * (towards the toes), found by continuation in the moment and bisection (to cap_N_m / 12288, as far
+ * as Newton from the last equilibrium still converges: a lower bound, about 10 % on Table I): past it
+ * the model has no stable equilibrium, the arch folds. INFINITY when it holds the cap. Errors as
+ * fs_pitch_stiffness_model's. */
+fs_status fs_pitch_fold_moment(const fs_foot_geom *g, double load_N, double gravity_m_per_s2, double cap_N_m,
+                               double *fold_N_m, fs_error *err);
+
 /* The pitch stiffness of a scenario's foot on its ground, N m/rad: for the biomimetic foot the
  * model above (the arch governs; the ground is taken as rigid beside it); for a flat sole its
  * contacts govern, on level ground of the scenario's material: the sole's four bottom corners, each
@@ -109,6 +118,47 @@ typedef struct fs_pitch_law {
 } fs_pitch_law;
 void fs_pitch_law_apply(double K_foot, const fs_robot_def *robot, double gravity_m_per_s2, double max_lean_rad,
                         fs_pitch_law *out);
+
+/* The drop law (docs/landing.md): the pitch-stiffness law with the touchdown in it. The robot meets
+ * the ground at v = sqrt(2 g drop) with its centre of mass x ahead of and h above the ankle; over the
+ * impact (a few ms, short beside the pitch mode's period) the foot's pitch spring carries no moment,
+ * so the impulse passes through the ankle and the robot leaves it turning about it with the angular
+ * momentum m x v it had about it: rotational energy E = (m x v)^2 / (2 I_A), I_A = I_pitch + m (h^2 +
+ * x^2). The weight's moment about the ankle arrives as a step at touchdown. The foot's restoring
+ * moment rises as K theta (K the static law's, any tendon in series) until it saturates at M_s, the
+ * smaller of the arch's fold moment and the support's W e (its centre of pressure at the support
+ * polygon's edge, e ahead of the ankle in the lean's direction, W = m g): past M_s a fold holds M_s
+ * while the robot turns on about the ankle; at the edge the whole foot turns about it, rigidly. The
+ * robot lands when the static law's equilibrium lies below M_s (K theta_0 < M_s) and below the lean
+ * bound, and E is less than the work B the net restoring moment does from upright to the largest lean
+ * it can hold (where it falls to zero: the fold's plateau met by the weight's moment, or the centre of
+ * mass over the edge):
+ *   B = (K - W h) theta_s^2 / 2 - W x theta_s, theta_s = M_s / K, plus
+ *       W h (theta* - theta_s)^2 / 2, theta* = (M_s / W - x) / h, for a fold, or
+ *       W (sqrt(b^2 + c^2) - c) about the edge, b = e - x - h theta_s and c = h + the ankle's height
+ *       the centre of mass's distances from the edge then (a rigid block about its corner).
+ * Small leans as the static law's up to M_s; exact about the edge. Damping left out (it only takes
+ * energy away). With M_s infinite it is the static law whatever the drop; a rigid foot (K infinite)
+ * on its edge is the rigid block's criterion E < W (R - c). */
+typedef struct fs_drop_support {
+    double edge_m;             /* e: the support polygon's edge ahead of the ankle along the lean (the
+                                  centre of mass's side), horizontal, m; INFINITY: none */
+    double ankle_height_m;     /* the ankle above the ground at the edge, m */
+    double fold_N_m;           /* the arch's fold moment, N m (INFINITY: it does not fold) */
+} fs_drop_support;
+
+typedef struct fs_drop_law {
+    double speed_m_per_s;      /* at touchdown */
+    double inertia_kgm2;       /* I_A: the robot's pitch inertia about the ankle */
+    double energy_J;           /* E */
+    double saturation_N_m;     /* M_s */
+    int folds;                 /* 1 when M_s is the fold's, 0 the edge's */
+    double lean_rad;           /* the static law's equilibrium (INFINITY: none) */
+    double barrier_J;          /* B (0 when there is no equilibrium) */
+    int stands;                /* held, or an equilibrium below M_s and the lean bound, and E < B */
+} fs_drop_law;
+void fs_drop_law_apply(const fs_pitch_law *statics, const fs_robot_def *robot, double gravity_m_per_s2, double drop_m,
+                       double max_lean_rad, const fs_drop_support *support, fs_drop_law *out);
 
 /* The reference transient: chain `chain` (0-based, unsplayed) from rest, the load rising linearly
  * over ramp_s. Masses: a fifth of heel and talus, the whole metatarsal and phalanx; a fifth of the

@@ -145,6 +145,14 @@ typedef struct fs_campaign_row {
     /* the pitch-stiffness law's prediction (fs_analysis.h, docs/landing.md) */
     int law;                               /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */
     double law_K, law_critical_m;          /* N m/rad with any tendon in series; K / (m g), m */
+    /* the drop law's (fs_drop_law_apply, docs/landing.md): judged seed by seed on the support the
+       seed's drawn terrain gives under the drawn footprint; the cell stands when at least half do */
+    int drop_law;                          /* FS_LAW_STANDS, FS_LAW_TOPPLES, or FS_LAW_NONE: no robot */
+    int drop_seeds, drop_stands;           /* seeds judged, and how many stand */
+    double drop_energy_J, drop_barrier_J;  /* medians over the seeds: E at touchdown, B (work to the largest lean) */
+    double drop_saturation_N_m;            /* median M_s: the fold's or the support edge's moment */
+    double drop_critical_m;                /* the highest centre of mass it stands on level ground (the
+                                              heat map's line), m; NAN when none */
 } fs_campaign_row;
 enum { FS_LAW_NONE = -1, FS_LAW_TOPPLES = 0, FS_LAW_STANDS = 1 };
 
@@ -271,6 +279,10 @@ void fs_journal_head_free(fs_journal_head *h);
  * campaign (provenance and trial count; the shard and the campaign file's path are not compared). */
 int fs_journal_differs(const fs_journal_head *a, const fs_journal_head *b, const char *name_a, const char *name_b,
                        char *why, size_t size);
+
+/* 1 when a and b differ in their footsim version alone (the first part of the provenance; the
+ * trials' count the same), else 0. */
+int fs_journal_version_only(const fs_journal_head *a, const fs_journal_head *b);
 
 /* Writes the journal at path whole (fs_write_file): h's header and the record of every trial i
  * with done[i] nonzero, by index. */

@@ -98,7 +98,9 @@ fs_status fs_campaign_run_trials(const fs_campaign *c, fs_trial_result *results,
  * first shard's head (its campaign file and overrides, for messages) and every trial's result.
  * FS_BAD_INPUT, said, when the shards come from other campaigns, inputs, overrides or versions,
  * when the campaign's files changed since, when a trial is in two shards, or when one is missing
- * (m->missing_shard: the first missing trial's shard, 1-based, of m->head.nshards).
+ * (m->missing_shard: the first missing trial's shard, 1-based, of m->head.nshards). With force,
+ * shards whose only difference from the campaign now is footsim's version are merged as they are
+ * (m->other_version set, m->version_note saying which): the summaries are this version's.
  * fs_campaign_merge_write writes the campaign's files into dir as fs_campaign_run does (the same
  * bytes as the campaign run whole; o's extra and progress as there), refusing a dir that is one of
  * the shard folders. fs_campaign_merge_free releases m (also after a failure). */
@@ -110,8 +112,10 @@ typedef struct fs_campaign_merged {
     int missing_shard;
     const char *const *dirs;
     int n;
+    int other_version;          /* force merged shards of another footsim version */
+    char version_note[512];     /* which versions, said */
 } fs_campaign_merged;
-fs_status fs_campaign_merge(const char *const *dirs, int n, fs_campaign_merged *m, fs_error *err);
+fs_status fs_campaign_merge(const char *const *dirs, int n, int force, fs_campaign_merged *m, fs_error *err);
 int fs_campaign_merge_write(const fs_campaign_merged *m, const char *dir, int replace, const fs_campaign_run_opts *o,
                             fs_campaign_row *rows, fs_campaign_state *state, fs_error *err);
 void fs_campaign_merge_free(fs_campaign_merged *m);

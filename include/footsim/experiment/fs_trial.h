@@ -58,6 +58,41 @@ typedef struct fs_trial_result {
 /* The pose drawn for seed from sc's [landing] ranges (pure function of the two). */
 void fs_trial_draw_pose(const fs_scenario *sc, int seed, fs_trial_draw *draw);
 
+/* A copy of the loaded trial scenario base placed for seed (fs_trial_place; draw may be NULL), on
+ * the heap for the caller (trials are re-entrant): *out, freed with fs_trial_placed_free (NULL is
+ * nothing); *out NULL on failure. */
+fs_status fs_trial_placed(const fs_scenario *base, int seed, fs_trial_draw *draw, fs_scenario **out, fs_error *err);
+void fs_trial_placed_free(fs_scenario *sc);
+
+/* What the terrain offers under the footprint for one seed (the drop law's support; docs/landing.md).
+ * The foot of sc, placed for seed (its drawn x, y and yaw; its drawn tilt left out), settles rigidly
+ * on the seed's terrain: each contact shape is a point (a sphere: its lowest point over the highest
+ * of the terrain under its centre and four points a radius away; a sole: 11 by 7 points over its
+ * bottom face, corners included),
+ * and the foot comes to rest (small tilts) on the plane over those points that is lowest under the
+ * robot's centre of mass (com_forward_m ahead of the ankle along the foot, moved by its height
+ * times the tilt): the upper hull's facet over it. Shapes within travel_m of that plane (the arch's
+ * and contacts' give under the weight) bear; their contact points make the support polygon, and the
+ * edge is where the line from the ankle through the centre of mass leaves it, the side the nearest of
+ * its sides. The centre of mass is
+ * not over the support (over 0) when it stands beyond every facet (the foot tips off) or the bearing
+ * points span no area. A single foot only (FS_BAD_INPUT for a biped). */
+typedef struct fs_trial_support {
+    int bearing;               /* contact points that bear (a sole's grid points count one each) */
+    int toes_bearing, toes;    /* of the toes' spheres (a biomimetic foot's phalanges): bearing, all */
+    int heel_bearing;          /* a heel sphere bears */
+    int over;                  /* the centre of mass stands over the polygon (inside it) */
+    double tilt_forward_rad;   /* the foot at rest pitched towards the toes (the robot's lean it adds) */
+    double tilt_side_rad;      /* and rolled */
+    double edge_m;             /* from the ankle to the polygon's edge through the centre of mass (ahead,
+                                  or behind for a centre of mass behind the ankle at rest), m */
+    double ankle_height_m;     /* the ankle above the terrain at that edge, m */
+    double side_m;             /* from the centre of mass to the polygon's nearest side, m */
+    double settle_m;           /* how far the foot's base under the centre of mass sinks as the foot
+                                  rocks from its first contact (lowered flat) onto its rest, m */
+} fs_trial_support;
+fs_status fs_trial_support_of(const fs_scenario *sc, int seed, double travel_m, fs_trial_support *out, fs_error *err);
+
 /* Places a loaded trial scenario for seed: draws the pose (draw may be NULL), puts it and the seed
  * into sc's definitions (the start pose; the terrain's seed, so every trial lands on new ground)
  * and compiles sc again (fs_scenario_compile). A scenario is placed once, from its loaded ranges. */

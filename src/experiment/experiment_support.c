@@ -1,0 +1,182 @@
+/* experiment_support.c: what a seed's drawn terrain offers under the drawn footprint (fs_trial.h):
+ * the shapes that bear when the foot is lowered onto it, their support polygon, and where the line
+ * from the ankle through the robot's centre of mass leaves it. Geometry only: nothing simulated. */
+#include "footsim/experiment/fs_trial.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* a sole's bottom face is sampled on a grid of SOLE_NX by SOLE_NY points, corners included, each
+   the highest of SUB x SUB points over its share of the face: where the terrain rises under it (a
+   bump under the middle of the sole) it bears there, not at a corner */
+enum { SOLE_NX = 11, SOLE_NY = 7, SUB = 5, MAX_POINTS = FS_MAX_SPHERES + SOLE_NX * SOLE_NY * FS_MAX_BOXES };
+
+typedef struct point { double x, y; } point;
+
+static double cross(point o, point a, point b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+static int by_x(const void *pa, const void *pb)
+{
+    const point *a = pa, *b = pb;
+    return a->x < b->x ? -1 : a->x > b->x ? 1 : a->y < b->y ? -1 : a->y > b->y;
+}
+
+/* Andrew's monotone chain: the convex hull of p[n] counter-clockwise into h; its size (< 3: no area). */
+static int hull(point *p, int n, point *h)
+{
+    qsort(p, (size_t)n, sizeof *p, by_x);
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0)
+            k--;
+        h[k++] = p[i];
+    }
+    for (int i = n - 2, low = k + 1; i >= 0; i--) {
+        while (k >= low && cross(h[k - 2], h[k - 1], p[i]) <= 0)
+            k--;
+        h[k++] = p[i];
+    }
+    return n > 1 ? k - 1 : n;
+}
+
+fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m, fs_trial_support *out, fs_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (base->def.robot.kind == FS_ROBOT_BIPED || base->geom.nfeet > 1)
+        return fs_fail(err, FS_BAD_INPUT, "%s: the support under the footprint is for one foot, not a biped's two",
+                       base->path);
+    fs_scenario *sc;
+    fs_status s = fs_trial_placed(base, seed, NULL, &sc, err);
+    if (s == FS_OK) {
+        const fs_foot_geom *g = &sc->geom;
+        double yaw = sc->def.yaw_deg * M_PI / 180, c = cos(yaw), sn = sin(yaw);
+        double x0 = sc->def.start_x_m, y0 = sc->def.start_y_m;
+        /* each shape's contact point on the ground (x, y), its lowest point's height in the design
+           frame, the terrain's highest under it, and whether it is a toe or the heel */
+        point at[MAX_POINTS];
+        double low[MAX_POINTS], under[MAX_POINTS];
+        int toe[MAX_POINTS], heel[MAX_POINTS], n = 0;
+        for (int i = 0; i < g->nspheres; i++, n++) {
+            double r = g->sphere[i].radius_m, lx = g->sphere[i].centre.x, ly = g->sphere[i].centre.y;
+            at[n].x = x0 + c * lx - sn * ly;
+            at[n].y = y0 + sn * lx + c * ly;
+            low[n] = g->sphere[i].centre.z - r;
+            under[n] = fs_terrain_height(&sc->terrain, at[n].x, at[n].y);
+            const double dx[4] = {r, -r, 0, 0}, dy[4] = {0, 0, r, -r};
+            for (int k = 0; k < 4; k++)
+                under[n] = fmax(under[n], fs_terrain_height(&sc->terrain, at[n].x + dx[k], at[n].y + dy[k]));
+            heel[n] = g->sphere[i].body == FS_BODY_HEEL;
+            toe[n] = 0;
+            for (int ch = 0; g->kind == FS_FOOT_BIOMIMETIC && ch < FS_CHAINS; ch++)
+                toe[n] |= g->sphere[i].body == g->chain[ch].phalanx;
+            out->toes += toe[n];
+        }
+        for (int b = 0; b < g->nboxes; b++)
+            for (int k = 0; k < SOLE_NX * SOLE_NY; k++, n++) {
+                /* the highest of SUB x SUB points over the grid point's share of the face (its
+                   corners' share reaching out to the face's edge): a bump between grid points counts */
+                double lx0 = g->box[b].centre.x + ((double)(k % SOLE_NX) / (SOLE_NX - 1) - 0.5) * g->box_size.x;
+                double ly0 = g->box[b].centre.y + ((double)(k / SOLE_NX) / (SOLE_NY - 1) - 0.5) * g->box_size.y;
+                double hx = 0.5 * g->box_size.x / (SOLE_NX - 1), hy = 0.5 * g->box_size.y / (SOLE_NY - 1);
+                under[n] = -INFINITY;
+                for (int u = 0; u < SUB; u++)
+                    for (int v = 0; v < SUB; v++) {
+                        double lx = fmin(fmax(lx0 + hx * (2.0 * u / (SUB - 1) - 1), g->box[b].centre.x - 0.5 * g->box_size.x),
+                                         g->box[b].centre.x + 0.5 * g->box_size.x);
+                        double ly = fmin(fmax(ly0 + hy * (2.0 * v / (SUB - 1) - 1), g->box[b].centre.y - 0.5 * g->box_size.y),
+                                         g->box[b].centre.y + 0.5 * g->box_size.y);
+                        point w = {x0 + c * lx - sn * ly, y0 + sn * lx + c * ly};
+                        double z = fs_terrain_height(&sc->terrain, w.x, w.y);
+                        if (z > under[n] || (u == SUB / 2 && v == SUB / 2 && z >= under[n]))
+                            under[n] = z, at[n] = w;
+                    }
+                low[n] = g->box[b].centre.z - 0.5 * g->box_size.z;
+                toe[n] = heel[n] = 0;
+            }
+        /* the rest: the foot settles (small tilts) on the plane z = D + b (x, y) - (x0, y0) that lies
+           on or above every shape's point (its terrain over its lowest point) and is lowest under the
+           centre of mass: the upper hull's facet over it, found among the triples of points; the
+           centre of mass's ground point moves with the tilt by h times the slope, so twice more */
+        double q[MAX_POINTS], xf = sc->def.robot.com_forward_m, hc = sc->def.robot.com_height_m;
+        for (int i = 0; i < n; i++)
+            q[i] = under[i] - low[i];
+        point a = {x0 + c * g->ankle.x - sn * g->ankle.y, y0 + sn * g->ankle.x + c * g->ankle.y};
+        point fwd = {c, sn}, com = {a.x + xf * fwd.x, a.y + xf * fwd.y};
+        double plane[3] = {NAN, 0, 0}; /* value at (x0, y0), slope along x and y */
+        for (int pass = 0; pass < 3; pass++) {
+            double best = INFINITY;
+            for (int i = 0; i < n; i++)
+                for (int j = i + 1; j < n; j++)
+                    for (int k = j + 1; k < n; k++) {
+                        double ux = at[j].x - at[i].x, uy = at[j].y - at[i].y, vx = at[k].x - at[i].x,
+                               vy = at[k].y - at[i].y, det = ux * vy - uy * vx;
+                        if (fabs(det) < 1e-10)
+                            continue;
+                        /* the centre of mass inside the triangle (barycentric coordinates) */
+                        double wx = com.x - at[i].x, wy = com.y - at[i].y;
+                        double l1 = (wx * vy - wy * vx) / det, l2 = (ux * wy - uy * wx) / det;
+                        if (l1 < 0 || l2 < 0 || l1 + l2 > 1)
+                            continue;
+                        double du = q[j] - q[i], dv = q[k] - q[i];
+                        double bx = (du * vy - dv * uy) / det, by = (ux * dv - vx * du) / det;
+                        double z0 = q[i] - bx * (at[i].x - x0) - by * (at[i].y - y0);
+                        int above = 1;
+                        for (int m = 0; m < n && above; m++)
+                            above = z0 + bx * (at[m].x - x0) + by * (at[m].y - y0) >= q[m] - 1e-12;
+                        double under_com = z0 + bx * (com.x - x0) + by * (com.y - y0);
+                        if (above && under_com < best)
+                            best = under_com, plane[0] = z0, plane[1] = bx, plane[2] = by;
+                    }
+            if (isnan(plane[0]))
+                break;
+            com.x = a.x + xf * fwd.x - hc * plane[1];
+            com.y = a.y + xf * fwd.y - hc * plane[2];
+        }
+        out->over = !isnan(plane[0]);
+        /* the foot's tilt: its lean towards the centre of mass's side, and sideways */
+        out->tilt_forward_rad = -atan(plane[1] * fwd.x + plane[2] * fwd.y);
+        out->tilt_side_rad = atan(-plane[1] * fwd.y + plane[2] * fwd.x);
+        point p[MAX_POINTS], h[2 * MAX_POINTS];
+        int np = 0;
+        for (int i = 0; out->over && i < n; i++)
+            if (plane[0] + plane[1] * (at[i].x - x0) + plane[2] * (at[i].y - y0) - q[i] <= travel_m) {
+                p[np++] = at[i];
+                out->toes_bearing += toe[i];
+                out->heel_bearing |= heel[i];
+            }
+        out->bearing = np;
+        int nh = hull(p, np, h);
+        /* the edge: where the line from the ankle through the centre of mass leaves the polygon */
+        double along = (com.x - a.x) * fwd.x + (com.y - a.y) * fwd.y, dir = along >= 0 ? 1 : -1;
+        point f = {dir * fwd.x, dir * fwd.y};
+        out->edge_m = NAN;
+        for (int i = 0; i < nh && out->over; i++) {
+            point u = h[i], v = h[(i + 1) % nh];
+            double ex = v.x - u.x, ey = v.y - u.y, den = f.x * ey - f.y * ex;
+            if (fabs(den) < 1e-15)
+                continue;
+            double t = ((u.x - a.x) * ey - (u.y - a.y) * ex) / den, w = ((u.x - a.x) * f.y - (u.y - a.y) * f.x) / den;
+            if (w >= 0 && w <= 1 && !(t <= out->edge_m))
+                out->edge_m = t;
+        }
+        out->over = out->over && nh >= 3 && !isnan(out->edge_m);
+        /* the nearest side of the polygon from the centre of mass, and how far the foot's base under
+           the centre of mass sank while it rocked from its first contact (lowered flat until one
+           shape touched: the highest of the points) onto its rest */
+        out->side_m = INFINITY;
+        for (int i = 0; i < nh && out->over; i++) {
+            point u = h[i], v = h[(i + 1) % nh];
+            out->side_m = fmin(out->side_m, cross(u, v, com) / hypot(v.x - u.x, v.y - u.y));
+        }
+        out->over = out->over && out->side_m > 0; /* moved by the tilt past the bearing points: it tips off */
+        double first = -INFINITY;
+        for (int i = 0; i < n; i++)
+            first = fmax(first, q[i]);
+        out->settle_m = out->over ? first - (plane[0] + plane[1] * (com.x - x0) + plane[2] * (com.y - y0)) : NAN;
+        double ex = a.x + out->edge_m * f.x, ey = a.y + out->edge_m * f.y;
+        out->ankle_height_m = out->over ? g->ankle.z + plane[1] * (a.x - ex) + plane[2] * (a.y - ey) : NAN;
+    }
+    fs_trial_placed_free(sc);
+    return s;
+}

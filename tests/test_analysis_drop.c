@@ -1,0 +1,241 @@
+/* Tests of the drop law (analysis_drop.c, docs/landing.md) against closed forms and integrals worked
+ * out here apart from it, of the arch's fold (analysis_pitch.c) and of the support a seed's terrain
+ * gives (experiment_support.c). */
+#include "fs_test.h"
+
+#include "footsim/analysis/fs_analysis.h"
+#include "footsim/experiment/fs_trial.h"
+
+static const double G = 9.81;
+
+static fs_robot_def robot(double m, double h, double x, double I_pitch)
+{
+    fs_robot_def r;
+    memset(&r, 0, sizeof r);
+    r.mass_kg = m, r.com_height_m = h, r.com_forward_m = x;
+    r.inertia_kgm2[0] = r.inertia_kgm2[1] = I_pitch, r.inertia_kgm2[2] = 0.1 * I_pitch;
+    r.joint = FS_ROBOT_RIGID, r.mount = FS_ROBOT_FREE;
+    return r;
+}
+
+static void apply(double K, const fs_robot_def *r, double drop, const fs_drop_support *s, fs_pitch_law *pl,
+                  fs_drop_law *dl)
+{
+    fs_pitch_law_apply(K, r, G, 15 * M_PI / 180, pl);
+    fs_drop_law_apply(pl, r, G, drop, 15 * M_PI / 180, s, dl);
+}
+
+/* With nothing to saturate (no fold, no edge) the restoring moment rises without end: the drop law
+ * is the static law whatever the drop; at zero drop the rotational energy is exactly zero; and a
+ * drop's energy is (m x v)^2 / (2 I_A) with v^2 = 2 g drop and I_A = I + m (h^2 + x^2). */
+static void no_saturation_is_the_static_law(void)
+{
+    const fs_drop_support none = {INFINITY, 0.03, INFINITY};
+    const double Ks[] = {5, 12.79, 40, 80, 300}, hs[] = {0.02, 0.05, 0.1, 0.2, 0.3}, xs[] = {0, 0.03, -0.02};
+    const double drops[] = {0, 0.005, 0.5};
+    int compared = 0, stands = 0;
+    for (int a = 0; a < 5; a++)
+        for (int b = 0; b < 5; b++)
+            for (int c = 0; c < 3; c++)
+                for (int d = 0; d < 3; d++) {
+                    fs_robot_def r = robot(26, hs[b], xs[c], 1.4);
+                    fs_pitch_law pl;
+                    fs_drop_law dl;
+                    apply(Ks[a], &r, drops[d], &none, &pl, &dl);
+                    CHECK(dl.stands == pl.stands);
+                    compared++, stands += pl.stands;
+                    if (drops[d] == 0)
+                        CHECK(dl.energy_J == 0);
+                    double IA = 1.4 + 26 * (hs[b] * hs[b] + xs[c] * xs[c]);
+                    double L = 26 * fabs(xs[c]) * sqrt(2 * G * drops[d]);
+                    CHECK_NEAR(dl.energy_J, L * L / (2 * IA), 1e-12 * (1 + L * L / IA));
+                }
+    CHECK(compared == 225 && stands > 0 && stands < compared); /* both verdicts were met */
+}
+
+/* A rigid foot (K infinite) on its edge is a rigid block about its corner: the work to carry the
+ * centre of mass, b behind the corner and c above it, over the corner is m g (sqrt(b^2 + c^2) - c),
+ * and the block topples when the rotational energy the drop gives reaches it: at the drop
+ * d* = I_A B / (g (m x)^2). Closed forms on both sides: round-off of 1e-15 against the 1e-3 by which
+ * the drops straddle d*. The small-angle form m g b^2 / (2 c) is 3.7 % larger here: the check fails
+ * on it. */
+static void rigid_block_is_the_energy_criterion(void)
+{
+    const double m = 26, c = 0.1, x = 0.03, e = 0.07, I = 0.2;
+    fs_robot_def r = robot(m, c, x, I);
+    fs_drop_support edge = {e, 0, INFINITY};
+    fs_pitch_law pl;
+    fs_drop_law dl;
+    apply(INFINITY, &r, 0, &edge, &pl, &dl);
+    double b = e - x, B = m * G * (sqrt(b * b + c * c) - c);
+    CHECK_NEAR(dl.barrier_J, B, 1e-12 * B);
+    CHECK(fabs(m * G * b * b / (2 * c) - B) > 0.03 * B); /* the small-angle form would fail the check above */
+    CHECK(dl.stands && !dl.folds);
+    double IA = I + m * (c * c + x * x), dstar = IA * B / (G * (m * x) * (m * x));
+    apply(INFINITY, &r, 0.999 * dstar, &edge, &pl, &dl);
+    CHECK(dl.stands);
+    apply(INFINITY, &r, 1.001 * dstar, &edge, &pl, &dl);
+    CHECK(!dl.stands);
+}
+
+/* Simpson's rule on n (even) intervals: exact for the linear and quadratic pieces, 1e-12 on the
+ * trigonometric one at n = 2000. */
+typedef double (*fn)(double t, const double *p);
+static double simpson(fn f, const double *p, double a, double b, int n)
+{
+    double h = (b - a) / n, s = f(a, p) + f(b, p);
+    for (int i = 1; i < n; i++)
+        s += (i % 2 ? 4 : 2) * f(a + i * h, p);
+    return s * h / 3;
+}
+
+/* p: K, W, h, x, M_s, e, ankle height */
+static double rising(double t, const double *p) { return p[0] * t - p[1] * (p[3] + p[2] * t); }
+static double plateau(double t, const double *p) { return p[4] - p[1] * (p[3] + p[2] * t); }
+/* about the edge, turned by phi past the saturation at theta_s = p[7]: the weight's moment about the
+   edge from the centre of mass b behind it and c above it, b and c turned by phi */
+static double about_edge(double phi, const double *p)
+{
+    double b = p[5] - p[3] - p[2] * p[7], c = p[2] + p[6];
+    return p[1] * (b * cos(phi) - c * sin(phi));
+}
+
+/* The work to the largest lean, against the integral of the net restoring moment taken here: a
+ * compliant foot that reaches its edge (rising, then turning about the edge until the centre of
+ * mass is over it) and one whose arch folds first (rising, then the fold's plateau until the
+ * weight's moment meets it). The energy test is then E < B: checked on both sides of it. */
+static void barrier_is_the_work_to_the_largest_lean(void)
+{
+    const double m = 26, W = m * G, h = 0.2, x = 0.03, K = 138, e = 0.0774, za = 0.0257;
+    fs_robot_def r = robot(m, h, x, 0.65);
+    fs_pitch_law pl;
+    fs_drop_law dl;
+    fs_drop_support edge = {e, za, INFINITY};
+    apply(K, &r, 0, &edge, &pl, &dl);
+    double ts = W * e / K, p[8] = {K, W, h, x, W * e, e, za, ts};
+    double b = e - x - h * ts, c = h + za;
+    double B = simpson(rising, p, 0, ts, 2) + simpson(about_edge, p, 0, atan2(b, c), 2000);
+    CHECK(!dl.folds);
+    CHECK_NEAR(dl.saturation_N_m, W * e, 1e-12 * W * e);
+    CHECK_NEAR(dl.barrier_J, B, 1e-9 * fabs(B) + 1e-12);
+    /* zero drop: the weight's step alone carries it over exactly when the work is negative (here it
+       is: -4 mJ; at 0.1 m it is +1.1 J) */
+    CHECK(dl.stands == (B > 0));
+
+    const double fold = 15;
+    fs_drop_support folding = {e, za, fold};
+    apply(K, &r, 0, &folding, &pl, &dl);
+    double tf = fold / K, tstar = (fold / W - x) / h, q[8] = {K, W, h, x, fold, e, za, tf};
+    double Bf = simpson(rising, q, 0, tf, 2) + simpson(plateau, q, tf, tstar, 2);
+    CHECK(dl.folds);
+    CHECK_NEAR(dl.barrier_J, Bf, 1e-9 * fabs(Bf) + 1e-12);
+    /* the drop that carries it over: E = B at d* (x ahead, the impulse through the ankle) */
+    double IA = 0.65 + m * (h * h + x * x), dstar = IA * Bf / (G * (m * x) * (m * x));
+    if (Bf > 0) {
+        apply(K, &r, 0.999 * dstar, &folding, &pl, &dl);
+        CHECK(dl.stands);
+        apply(K, &r, 1.001 * dstar, &folding, &pl, &dl);
+        CHECK(!dl.stands);
+    }
+    /* an equilibrium past the fold does not stand, whatever the static law says */
+    fs_drop_support weak = {e, za, 0.5 * W * x};
+    apply(K, &r, 0, &weak, &pl, &dl);
+    CHECK(pl.stands && !dl.stands);
+}
+
+/* The arch's fold: the model holds moments up to it (the continuation's last equilibrium) and a
+ * stiffer arch holds more; at zero moment the model is the pitch-stiffness model unchanged. */
+static void fold_moment_of_the_arch(void)
+{
+    static fs_scenario sc, stiff;
+    fs_error err;
+    REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", NULL, 0, &sc, &err) == FS_OK);
+    const char *set[] = {"springs.scale=10"};
+    REQUIRE(fs_scenario_for_design("scenarios/feet/biomimetic.ini", set, 1, &stiff, &err) == FS_OK);
+    double W = 26 * G, cap = W * 0.0774, f1, f10;
+    REQUIRE(fs_pitch_fold_moment(&sc.geom, W, G, cap, &f1, &err) == FS_OK);
+    REQUIRE(fs_pitch_fold_moment(&stiff.geom, W, G, cap, &f10, &err) == FS_OK);
+    printf("fold moments under 26 kg: Table I %.4g N m, ten times its springs %.4g (cap %.4g)\n", f1, f10, cap);
+    CHECK(f1 > 0 && f1 < cap);
+    CHECK(f10 > f1);
+}
+
+/* On level ground every heel and toe sphere bears and the midfoot's do not (they stand 5-8 mm
+ * up); the edge along the foot through the centre of mass is where the line from the ankle meets
+ * the segment from the big toe's contact to the little toe's (the middle toes lie behind it), and
+ * the nearest side the nearest of the four the heel spheres and outer toes make, worked out here
+ * from the design's spheres; the drawn yaw turns foot and line together; the foot rests untilted
+ * and nothing sinks as it settles. */
+static void support_on_level_ground(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", NULL, 0, &sc, &err) == FS_OK);
+    const fs_foot_geom *g = &sc.geom;
+    fs_vec3 big = fs_v3(0, 0, 0), little = big;
+    for (int i = 0; i < g->nspheres; i++) {
+        if (g->sphere[i].body == g->chain[0].phalanx)
+            big = g->sphere[i].centre;
+        if (g->sphere[i].body == g->chain[FS_CHAINS - 1].phalanx)
+            little = g->sphere[i].centre;
+    }
+    double y = g->ankle.y, xe = little.x + (big.x - little.x) * (y - little.y) / (big.y - little.y);
+    /* the nearest side from the centre of mass (3 cm ahead of the ankle): of the four sides the two
+       heel spheres and the two outer toes make */
+    fs_vec3 heel_l = fs_v3(0, 0, 0), heel_r = heel_l, com = fs_add(g->ankle, fs_v3(sc.def.robot.com_forward_m, 0, 0));
+    for (int i = 0; i < g->nspheres; i++)
+        if (g->sphere[i].body == FS_BODY_HEEL) {
+            if (g->sphere[i].centre.y > 0)
+                heel_l = g->sphere[i].centre;
+            else
+                heel_r = g->sphere[i].centre;
+        }
+    const fs_vec3 ring[4] = {heel_r, little, big, heel_l};
+    double side = INFINITY;
+    for (int k = 0; k < 4; k++) {
+        fs_vec3 u = ring[k], v = ring[(k + 1) % 4];
+        side = fmin(side, fabs((v.x - u.x) * (com.y - u.y) - (v.y - u.y) * (com.x - u.x)) / hypot(v.x - u.x, v.y - u.y));
+    }
+    for (int seed = 1; seed <= 3; seed++) {
+        fs_trial_support s;
+        REQUIRE(fs_trial_support_of(&sc, seed, 1e-3, &s, &err) == FS_OK);
+        CHECK(s.bearing == 7 && s.toes_bearing == 5 && s.toes == 5 && s.heel_bearing && s.over);
+        CHECK_NEAR(s.edge_m, xe - g->ankle.x, 1e-12);
+        CHECK_NEAR(s.ankle_height_m, g->ankle.z, 1e-12);
+        CHECK_NEAR(s.side_m, side, 1e-12);
+        /* level: no rock (the plane through three points, to round-off) */
+        CHECK_NEAR(s.settle_m, 0, 1e-12);
+        CHECK_NEAR(s.tilt_forward_rad, 0, 1e-12);
+        CHECK_NEAR(s.tilt_side_rad, 0, 1e-12);
+    }
+    fs_scenario_free(&sc);
+}
+
+/* A flat sole on level ground bears over its whole bottom face (11 x 7 points), untilted, its edge
+ * the sole's front; on simply uneven ground the 8 mm bump under its forefoot (at x = 6 cm) lifts it:
+ * resting on the bump and its heel it tilts by about atan(8 / 60), 7.6 degrees; the four corners
+ * alone would have left it level on the ground around the bump (the check fails on them). */
+static void support_of_a_flat_sole(void)
+{
+    static fs_scenario sc, bump;
+    fs_error err;
+    const char *set[] = {"scenario.design=feet/flat.ini"};
+    const char *set2[] = {"scenario.design=feet/flat.ini", "scenario.terrain=../terrains/simply_uneven.ini"};
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 1, &sc, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set2, 2, &bump, &err) == FS_OK);
+    fs_trial_support s;
+    REQUIRE(fs_trial_support_of(&sc, 1, 1e-3, &s, &err) == FS_OK);
+    const fs_foot_geom *g = &sc.geom;
+    CHECK(s.bearing == 77 && s.over);
+    CHECK_NEAR(s.edge_m, g->box[0].centre.x + 0.5 * g->box_size.x - g->ankle.x, 1e-12);
+    CHECK_NEAR(s.tilt_forward_rad, 0, 1e-12);
+    REQUIRE(fs_trial_support_of(&bump, 1, 1e-3, &s, &err) == FS_OK);
+    printf("flat sole on the bump, seed 1: tilt %.2f deg, %d points bear\n", s.tilt_forward_rad * 180 / M_PI, s.bearing);
+    CHECK(fabs(s.tilt_forward_rad) > 2 * M_PI / 180 && fabs(s.tilt_forward_rad) < 15 * M_PI / 180);
+    fs_scenario_free(&sc);
+    fs_scenario_free(&bump);
+}
+
+FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
+             TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
+             TEST(support_on_level_ground))

@@ -1,0 +1,60 @@
+/* law_cells.c: the static and the drop law's verdicts for every cell of a campaign file, without a
+ * trial run (docs/landing.md, The drop law): for judging a committed campaign's measurement with a
+ * law newer than its summary. `build/law-cells CAMPAIGN [section.key=value ...]`, from the source
+ * folder; JSON on stdout: {"seeds", "rows": [{foot, terrain, robot, law_prediction,
+ * drop_law_prediction, drop_law_seeds, drop_law_stands, drop_law_energy_J, drop_law_barrier_J,
+ * drop_law_saturation_N_m, drop_law_critical_com_height_m}]}, which tools/law-agreement.py --laws
+ * reads beside the campaign's summary.json. */
+#include "footsim/campaign/fs_campaign.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+static void number(const char *key, double v, const char *end)
+{
+    if (isfinite(v))
+        printf("\"%s\": %.17g%s", key, v, end);
+    else
+        printf("\"%s\": null%s", key, end);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "usage: law-cells CAMPAIGN [section.key=value ...]\n");
+        return 2;
+    }
+    static fs_campaign c;
+    fs_error err;
+    if (fs_campaign_load(argv[1], (const char *const *)argv + 2, argc - 2, &c, &err) != FS_OK) {
+        fprintf(stderr, "law-cells: %s\n", err.message);
+        return err.status;
+    }
+    fs_trial_result *results = calloc((size_t)fs_campaign_ntrials(&c), sizeof *results);
+    fs_campaign_row *rows = calloc((size_t)fs_campaign_ncells(&c), sizeof *rows);
+    if (!results || !rows) {
+        fprintf(stderr, "law-cells: out of memory\n");
+        return 5;
+    }
+    fs_campaign_summarize(&c, results, rows);
+    printf("{\"campaign\": \"%s\", \"seeds\": %d, \"rows\": [\n", c.name, c.seeds);
+    for (int i = 0; i < fs_campaign_ncells(&c); i++) {
+        const fs_campaign_row *r = &rows[i];
+        printf("  {\"foot\": \"%s\", \"terrain\": \"%s\", \"robot\": \"%s\", ", c.foot[r->foot].name,
+               c.terrain[r->terrain].name, c.robot[r->robot].name);
+        printf(r->law == FS_LAW_NONE ? "\"law_prediction\": null, " : "\"law_prediction\": \"%s\", ", fs_law_name(r->law));
+        printf(r->drop_law == FS_LAW_NONE ? "\"drop_law_prediction\": null, " : "\"drop_law_prediction\": \"%s\", ",
+               fs_law_name(r->drop_law));
+        printf("\"drop_law_seeds\": %d, \"drop_law_stands\": %d, ", r->drop_seeds, r->drop_stands);
+        number("drop_law_energy_J", r->drop_energy_J, ", ");
+        number("drop_law_barrier_J", r->drop_barrier_J, ", ");
+        number("drop_law_saturation_N_m", r->drop_saturation_N_m, ", ");
+        number("drop_law_critical_com_height_m", r->drop_critical_m, "}");
+        printf("%s\n", i + 1 < fs_campaign_ncells(&c) ? "," : "");
+    }
+    printf("]}\n");
+    free(results), free(rows);
+    fs_campaign_free(&c);
+    return 0;
+}
