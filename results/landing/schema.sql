@@ -61,13 +61,20 @@ CREATE TABLE summary (
   "median_rest_ankle_drop_m" REAL,
   "law_prediction" TEXT,
   "law_K_N_m_per_rad" REAL,
-  "law_critical_com_height_m" REAL
+  "law_critical_com_height_m" REAL,
+  "drop_law_prediction" TEXT,
+  "drop_law_seeds" INTEGER,
+  "drop_law_stands" INTEGER,
+  "drop_law_energy_J" REAL,
+  "drop_law_barrier_J" REAL,
+  "drop_law_saturation_N_m" REAL,
+  "drop_law_critical_com_height_m" REAL
 );
 .import --csv --skip 1 summary.csv summary
-UPDATE summary SET "foot" = NULLIF("foot", ''), "terrain" = NULLIF("terrain", ''), "robot" = NULLIF("robot", ''), "trials" = NULLIF("trials", ''), "landed" = NULLIF("landed", ''), "fell" = NULLIF("fell", ''), "undecided" = NULLIF("undecided", ''), "failed_numerics" = NULLIF("failed_numerics", ''), "hung" = NULLIF("hung", ''), "success_rate" = NULLIF("success_rate", ''), "ci_low" = NULLIF("ci_low", ''), "ci_high" = NULLIF("ci_high", ''), "median_end_time_s" = NULLIF("median_end_time_s", ''), "median_touchdown_s" = NULLIF("median_touchdown_s", ''), "median_peak_tilt_deg" = NULLIF("median_peak_tilt_deg", ''), "median_final_tilt_deg" = NULLIF("median_final_tilt_deg", ''), "median_peak_force_N" = NULLIF("median_peak_force_N", ''), "median_impact_impulse_Ns" = NULLIF("median_impact_impulse_Ns", ''), "median_settle_time_s" = NULLIF("median_settle_time_s", ''), "median_mean_contacts" = NULLIF("median_mean_contacts", ''), "median_final_contacts" = NULLIF("median_final_contacts", ''), "median_ankle_drop_m" = NULLIF("median_ankle_drop_m", ''), "median_slip_m" = NULLIF("median_slip_m", ''), "median_steps" = NULLIF("median_steps", ''), "median_rest_ankle_drop_m" = NULLIF("median_rest_ankle_drop_m", ''), "law_prediction" = NULLIF("law_prediction", ''), "law_K_N_m_per_rad" = NULLIF("law_K_N_m_per_rad", ''), "law_critical_com_height_m" = NULLIF("law_critical_com_height_m", '');
+UPDATE summary SET "foot" = NULLIF("foot", ''), "terrain" = NULLIF("terrain", ''), "robot" = NULLIF("robot", ''), "trials" = NULLIF("trials", ''), "landed" = NULLIF("landed", ''), "fell" = NULLIF("fell", ''), "undecided" = NULLIF("undecided", ''), "failed_numerics" = NULLIF("failed_numerics", ''), "hung" = NULLIF("hung", ''), "success_rate" = NULLIF("success_rate", ''), "ci_low" = NULLIF("ci_low", ''), "ci_high" = NULLIF("ci_high", ''), "median_end_time_s" = NULLIF("median_end_time_s", ''), "median_touchdown_s" = NULLIF("median_touchdown_s", ''), "median_peak_tilt_deg" = NULLIF("median_peak_tilt_deg", ''), "median_final_tilt_deg" = NULLIF("median_final_tilt_deg", ''), "median_peak_force_N" = NULLIF("median_peak_force_N", ''), "median_impact_impulse_Ns" = NULLIF("median_impact_impulse_Ns", ''), "median_settle_time_s" = NULLIF("median_settle_time_s", ''), "median_mean_contacts" = NULLIF("median_mean_contacts", ''), "median_final_contacts" = NULLIF("median_final_contacts", ''), "median_ankle_drop_m" = NULLIF("median_ankle_drop_m", ''), "median_slip_m" = NULLIF("median_slip_m", ''), "median_steps" = NULLIF("median_steps", ''), "median_rest_ankle_drop_m" = NULLIF("median_rest_ankle_drop_m", ''), "law_prediction" = NULLIF("law_prediction", ''), "law_K_N_m_per_rad" = NULLIF("law_K_N_m_per_rad", ''), "law_critical_com_height_m" = NULLIF("law_critical_com_height_m", ''), "drop_law_prediction" = NULLIF("drop_law_prediction", ''), "drop_law_seeds" = NULLIF("drop_law_seeds", ''), "drop_law_stands" = NULLIF("drop_law_stands", ''), "drop_law_energy_J" = NULLIF("drop_law_energy_J", ''), "drop_law_barrier_J" = NULLIF("drop_law_barrier_J", ''), "drop_law_saturation_N_m" = NULLIF("drop_law_saturation_N_m", ''), "drop_law_critical_com_height_m" = NULLIF("drop_law_critical_com_height_m", '');
 DROP TABLE IF EXISTS provenance;
 CREATE TABLE provenance (footsim TEXT NOT NULL, seeds INTEGER NOT NULL, first_seed INTEGER NOT NULL, settings TEXT NOT NULL);
-INSERT INTO provenance VALUES ('0.1.0 (git 4bf5808)', 10, 1, 'step_s 0.0001, stepper step, iterations 50, springs implicit, contact_layer_m 0.0005, window 3 s; robot biped: step_s 0.001');
+INSERT INTO provenance VALUES ('1.0.0 (git f0806f9)', 10, 1, 'step_s 0.0001, stepper step, iterations 50, springs implicit, contact_layer_m 0.0005, window 3 s; robot biped: step_s 0.001');
 DROP TABLE IF EXISTS provenance_inputs;
 CREATE TABLE provenance_inputs (path TEXT NOT NULL, hash TEXT NOT NULL);
 INSERT INTO provenance_inputs VALUES ('landing.ini', 'dbaa421a715aa372');
