@@ -156,11 +156,7 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
     walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = carriage, .last_step = -1,
                   .soil = fs_sim_soil_grid(sim)};
     if (w.soil) { /* the load the soil is to carry: the robot's weight and its foot's */
-        double mass = d->robot.mass_kg;
-        const fs_foot_geom *g = fs_sim_geom(sim);
-        for (int i = 0; i < g->nbodies; i++)
-            mass += g->body[i].mass_kg;
-        w.weight_N = mass * d->gravity_m_per_s2;
+        w.weight_N = (d->robot.mass_kg + fs_sim_geom(sim)->total_mass_kg) * d->gravity_m_per_s2;
         w.press_speed_m_per_s = 2 * sc->terrain.def.soil.depth_m / (d->walk_period_s * d->stance_fraction);
         out->soil = 1;
     }

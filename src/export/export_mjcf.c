@@ -554,7 +554,7 @@ static double line_mass(const fs_model *m, const fs_model_spring *s)
     return 1 / inv;
 }
 
-static void tendon(exporter *x, const fs_model *m, const char *name, const fs_model_spring *s)
+static void tendon(exporter *x, const char *name, const fs_model_spring *s)
 {
     char a[96], b[96];
     snprintf(a, sizeof a, "%s_1", name);
@@ -566,7 +566,7 @@ static void tendon(exporter *x, const fs_model *m, const char *name, const fs_mo
            while the tendon is longer), as soft as the spring for the mass its line moves, in the
            direct form (docs/export.md) */
         const double range[2] = {0, s->rest_length_m}, imp[3] = {FS_MJCF_IMPEDANCE, FS_MJCF_IMPEDANCE, 0.001};
-        double ml = line_mass(m, s), ref[2] = {-s->k_N_per_m / ml, -s->c_Ns_per_m / ml};
+        double ml = line_mass(x->m, s), ref[2] = {-s->k_N_per_m / ml, -s->c_Ns_per_m / ml};
         attr(x, "limited", "true");
         attr_num(x, "range", range, 2);
         attr_num(x, "solreflimit", ref, 2);
@@ -668,9 +668,9 @@ static void document(exporter *x)
     end(x);
     start(x, "tendon");
     for (int k = 0; k < m->nsprings; k++)
-        tendon(x, m, m->spring[k].name, &m->spring[k]);
+        tendon(x, m->spring[k].name, &m->spring[k]);
     if (m->has_achilles)
-        tendon(x, m, "achilles", &m->achilles);
+        tendon(x, "achilles", &m->achilles);
     end(x);
     loop_closures(x);
     end(x); /* mujoco */
