@@ -14,7 +14,8 @@
 #include <string.h>
 
 /* Each call of the observer: the caller's own first (frames), then the soil's surface now, kept
- * (the last call is the run's end). */
+ * in the memory of the last copy while the feet stay on the same tiles (the last call is the run's
+ * end). */
 static fs_status capture(void *user, const fs_sim *sim, fs_error *err)
 {
     cli_surface *c = user;
@@ -27,7 +28,6 @@ static fs_status capture(void *user, const fs_sim *sim, fs_error *err)
     if (!g)
         return FS_OK;
     c->material = fs_sim_scenario(sim)->terrain.def; /* the bedrock's material, for the terrain file */
-    fs_soil_surface_free(&c->s);
     return fs_soil_grid_surface_copy(g, &c->s, err);
 }
 

@@ -380,21 +380,25 @@ double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
 
 fs_status fs_soil_grid_surface_copy(const fs_soil_grid *g, fs_soil_surface *s, fs_error *err)
 {
-    memset(s, 0, sizeof *s);
     int t0 = g->tx, t1 = -1, u0 = g->ty, u1 = -1; /* the tiles reached: their bounding box */
     for (int tj = 0; tj < g->ty; tj++)
         for (int ti = 0; ti < g->tx; ti++)
             if (g->tile[tj * g->tx + ti] >= 0)
                 t0 = ti < t0 ? ti : t0, t1 = ti > t1 ? ti : t1, u0 = tj < u0 ? tj : u0, u1 = tj > u1 ? tj : u1;
-    if (t1 < 0)
+    if (t1 < 0) {
+        fs_soil_surface_free(s);
         return FS_OK;
+    }
     /* a node of undisturbed soil around them (where the region allows): a heightmap loaded from this
        draws its edge out beyond it, which is then the undisturbed surface, not a print's */
     int i0 = t0 * T - 1 > 0 ? t0 * T - 1 : 0, j0 = u0 * T - 1 > 0 ? u0 * T - 1 : 0;
     int i1 = (t1 + 1) * T + 1 < g->nx ? (t1 + 1) * T + 1 : g->nx, j1 = (u1 + 1) * T + 1 < g->ny ? (u1 + 1) * T + 1 : g->ny;
     size_t n = (size_t)(i1 - i0) * (size_t)(j1 - j0);
-    s->z_m = malloc(n * sizeof *s->z_m);
-    s->sink_m = malloc(n * sizeof *s->sink_m);
+    if (!s->z_m || (size_t)s->nx * (size_t)s->ny != n) { /* a new extent: new memory, else refilled */
+        fs_soil_surface_free(s);
+        s->z_m = malloc(n * sizeof *s->z_m);
+        s->sink_m = malloc(n * sizeof *s->sink_m);
+    }
     if (!s->z_m || !s->sink_m) {
         fs_soil_surface_free(s);
         return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's surface (%zu nodes)", n);

@@ -131,7 +131,9 @@ double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
  * a foot lifts) on the grid's nodes over the tiles the feet reached and one node around them (so
  * that its edge is undisturbed soil, where the region allows): nx x ny heights z_m[j nx + i]
  * at (x0 + i dx, y0 + j dx), and each node's print (plastic sinkage) in sink_m. Nothing reached:
- * nx = ny = 0 and no memory. FS_NO_MEMORY (s empty) when the heights cannot be had. */
+ * nx = ny = 0 and no memory. FS_NO_MEMORY (s empty) when the heights cannot be had. s is zeroed or
+ * an earlier copy: its memory is reused when the extent is the same (an observer copying at every
+ * frame allocates only when the feet reach a new tile), else freed and allocated anew. */
 typedef struct fs_soil_surface {
     int nx, ny;
     double x0, y0, dx;
