@@ -429,7 +429,11 @@ static void slice_table(FILE *f, const config *cfg, const outcome *out, int n, i
             sl->name, *sl->unit ? " (" : "", sl->unit, *sl->unit ? ")" : "");
     for (int v = 0; v < (quick ? sl->nquick : sl->nfull); v++) {
         double value = quick ? sl->quick[v] : sl->full[v];
-        fprintf(f, "| %g | %.2g |", value, predicted(cfg, out, n, s, value));
+        double limit = predicted(cfg, out, n, s, value); /* NaN: no spring to predict it from (the flat foot) */
+        if (isnan(limit))
+            fprintf(f, "| %g | — |", value);
+        else
+            fprintf(f, "| %g | %.2g |", value, limit);
         for (int combo = 0; combo < NCOMBOS; combo++) { /* combo = stepper * 2 + springs */
             double st, bl, dr;
             char text[160];
