@@ -11,6 +11,7 @@
 #include "fs_test.h"
 
 #include "footsim/campaign/fs_campaign_run.h"
+#include "footsim/campaign/fs_optimize.h"
 #include "footsim/io/fs_output.h"
 
 #include <math.h>
@@ -351,6 +352,44 @@ static void test_a_band_runs_each_trial_at_both_ends(void)
     unload(l);
 }
 
+/* A design search over a campaign with a band: a candidate reaches both ends' scenarios (each keeping
+ * its end's edits), and the closeness of its misses counts the trials of both ends. */
+static void test_a_band_reaches_the_optimizer(void)
+{
+    make_band_campaign("band_opt.ini", "low = robot.com_height_m=0.3\nhigh =\n[expect.lands]\nfoot = bio\n"
+                       "terrain = flat\nmin_success = 1");
+    char path[256];
+    snprintf(path, sizeof path, "%s/opt.ini", tmp);
+    write_text(path, "[optimize]\ncampaign = band_opt.ini\nobjective = least_stiff\nmax_evaluations = 2\n[param.scale]\nkey = springs.scale\n"
+                     "min = 1\nmax = 100\nstart = 10\nlog = yes\n");
+    fs_optimize *o = calloc(1, sizeof *o);
+    fs_error err;
+    REQUIRE(o != NULL);
+    fs_status loaded_ok = fs_optimize_load(path, NULL, 0, o, &err);
+    if (loaded_ok != FS_OK)
+        fprintf(stderr, "  %s\n", err.message);
+    REQUIRE(loaded_ok == FS_OK);
+    double x[1] = {21.5};
+    REQUIRE(fs_optimize_apply(o, x, &err) == FS_OK);
+    const fs_campaign *c = &o->campaign;
+    REQUIRE(fs_campaign_npairs(c) == 2);
+    for (int e = 0; e < 2; e++) {
+        fs_scenario *sc = (fs_scenario *)fs_campaign_pair_of(c, 0, e);
+        CHECK(*fs_scenario_number(sc, "springs.scale", NULL) == 21.5);
+    }
+    CHECK(fs_campaign_pair_of(c, 0, 0)->def.robot.com_height_m == 0.3);
+    CHECK(fs_campaign_pair_of(c, 0, 1)->def.robot.com_height_m < 0.3);
+    /* the low end landed, the high end fell a quarter into its 1 s window: one miss, 0.75 of the window short */
+    fs_trial_result r[2];
+    memset(r, 0, sizeof r);
+    r[0].outcome = FS_LANDED;
+    r[1].outcome = FS_FELL;
+    r[0].end_time_s = 1, r[1].end_time_s = 0.25;
+    CHECK(fabs(fs_optimize_closeness(o, r) - 0.75) < 1e-12);
+    fs_optimize_free(o);
+    free(o);
+}
+
 /* A wrong band: refused at loading with the file's line (or --set), nothing run. */
 static void refused(const char *band, const char *const *sets, int nsets, const char *want)
 {
@@ -388,4 +427,5 @@ static void test_cleanup(void)
 
 FS_TEST_MAIN(TEST(test_workers_do_not_change_the_bytes), TEST(test_a_stop_is_resumed_into_the_same_bytes),
              TEST(test_shards_merge_into_the_same_bytes), TEST(test_a_crashed_worker_is_failed_numerics),
-             TEST(test_a_band_runs_each_trial_at_both_ends), TEST(test_a_wrong_band_is_refused), TEST(test_cleanup))
+             TEST(test_a_band_runs_each_trial_at_both_ends), TEST(test_a_wrong_band_is_refused),
+             TEST(test_a_band_reaches_the_optimizer), TEST(test_cleanup))
