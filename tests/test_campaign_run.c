@@ -327,6 +327,18 @@ static void test_a_band_runs_each_trial_at_both_ends(void)
     CHECK(rows[0].end_landed[0] == 0 && rows[0].end_landed[1] == 1);
     CHECK(rows[0].band_end == 0 && rows[0].trials == 1 && rows[0].landed == 0 && rows[0].success_rate == 0);
     CHECK(rows[0].success_rate == fmin(rows[0].end_rate[0], rows[0].end_rate[1]));
+    /* footsim plot reads the band back from summary.json: its ends, and each end's rate per row */
+    {
+        char path[256];
+        snprintf(path, sizeof path, "%s/band2/summary.json", tmp);
+        fs_campaign *back = calloc(1, sizeof *back);
+        fs_campaign_row *back_rows = calloc(FS_CAMPAIGN_MAX_FEET * FS_CAMPAIGN_MAX_TERRAINS * FS_CAMPAIGN_MAX_ROBOTS,
+                                            sizeof *back_rows);
+        REQUIRE(back && back_rows && fs_campaign_reload(path, back, back_rows, &err) == FS_OK);
+        CHECK(!strcmp(back->band, "tall") && fs_campaign_nends(back) == 2 && !strcmp(back->end[1].name, "high"));
+        CHECK(back_rows[0].band_end == 0 && back_rows[0].end_rate[0] == 0 && back_rows[0].end_rate[1] == 1);
+        free(back), free(back_rows);
+    }
     /* one worker stopped after the low end's trial, then resumed: the high end's runs */
     seen stop = {.stop_at = 1};
     REQUIRE(run_into(l, "band1", 1, &stop, NULL, rows, &st, &err) == FS_OK);

@@ -702,10 +702,16 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
         fputs(": ", f);
         fs_gp_data_text(f, c->sweep[0]);
         if (c->nsweep == 1) {
-            fputs(" rate low high\n", f);
+            fputs(" rate low high", f);
+            for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++) /* a band: each end's rate too */
+                fprintf(f, " rate_%s", c->end[e].name);
+            fputc('\n', f);
             for (int i = 0; i < c->nvalues[0]; i++) {
                 const fs_campaign_row *r = point_row(x, k, i, 0);
-                fprintf(f, "%.17g %.17g %.17g %.17g\n", value_of(c, 0, i), r->success_rate, r->ci_low, r->ci_high);
+                fprintf(f, "%.17g %.17g %.17g %.17g", value_of(c, 0, i), r->success_rate, r->ci_low, r->ci_high);
+                for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++)
+                    fprintf(f, " %.17g", r->end_rate[e]);
+                fputc('\n', f);
             }
             continue;
         }
@@ -799,6 +805,8 @@ static void chart_names(FILE *f, const fs_campaign *c)
         name_variable(f, "terrain", t + 1, c->terrain[t].name);
     for (int w = 0; w < c->nsweep; w++)
         name_variable(f, "key", w + 1, c->sweep[w]);
+    for (int e = 0; c->band[0] && c->nsweep == 1 && e < fs_campaign_nends(c); e++)
+        name_variable(f, "end", e + 1, c->end[e].name);
 }
 
 static int fill_chart_script(FILE *f, const out_ctx *x)
@@ -870,6 +878,9 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
         fprintf(f, "%s'chart.dat' index %d using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc %d "
                    "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 dt %d pt %d lc %d title series%d",
                 k ? ", \\\n     " : "", k, foot + 1, k, robot + 1, 7 + 2 * base, foot + 1, k + 1);
+        for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++) /* each end's rate, thin, under the band's */
+            fprintf(f, ", \\\n     '' index %d using 1:%d with linespoints lw 1 dt %d pt %d ps 0.8 lc %d title series%d . "
+                       "', ' . end%d . ' end'", k, 5 + e, 2 + e, 6 + 2 * e, foot + 1, k + 1, e + 1);
     }
     fputc('\n', f);
     return 1;
