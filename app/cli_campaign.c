@@ -91,6 +91,8 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
             printf(", hung %d", r->hung - r->killed);
         if (r->killed)
             printf(", killed %d", r->killed);
+        for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++) /* the row is the worse end's */
+            printf("%s%s %d of %d", e ? ", " : "; band: ", c->end[e].name, r->end_landed[e], r->end_trials[e]);
         putchar('\n');
     }
 }

@@ -157,20 +157,22 @@ int cli_frames_of_open(const cli_args *a, const fs_campaign *c, cli_frames_of **
 static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int i, const fs_trial_result *recorded,
                       const char *dir, const char *shown_dir)
 {
-    int cell, seed, foot, terrain, robot;
+    int cell, seed, foot, terrain, robot, end = fs_campaign_trial_end(c, f->trial[i]);
     fs_campaign_trial_of(c, f->trial[i], &cell, &seed);
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+    const char *dash = c->band[0] ? "-" : "", *end_name = c->end[end].name; /* a band's end: in the folder's name */
     /* drawing takes a while (the trial run again, a frame every 1/fps s): say which, after the
        trials' progress line */
-    fprintf(stderr, "footsim campaign: --frames-of: drawing %d of %d: %s on %s under %s, seed %d\n", i + 1, f->n,
-            c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed);
+    fprintf(stderr, "footsim campaign: --frames-of: drawing %d of %d: %s on %s under %s%s%s, seed %d\n", i + 1, f->n,
+            c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, c->band[0] ? " at band end " : "",
+            end_name, seed);
     /* fits: a results folder leaves FS_DIR_ROOM for this (fs_normalise_dir, before any trial) */
     char path[FS_OUT_PATH], shown[FS_OUT_PATH];
     fs_error err;
-    if (fs_path_format(path, sizeof path, "--out", &err, "%s/frames/%s-%s-%s-seed%d", dir, c->foot[foot].name,
-                       c->terrain[terrain].name, c->robot[robot].name, seed) != FS_OK ||
-        fs_path_format(shown, sizeof shown, "--out", &err, "%s/frames/%s-%s-%s-seed%d", shown_dir, c->foot[foot].name,
-                       c->terrain[terrain].name, c->robot[robot].name, seed) != FS_OK)
+    if (fs_path_format(path, sizeof path, "--out", &err, "%s/frames/%s-%s-%s%s%s-seed%d", dir, c->foot[foot].name,
+                       c->terrain[terrain].name, c->robot[robot].name, dash, end_name, seed) != FS_OK ||
+        fs_path_format(shown, sizeof shown, "--out", &err, "%s/frames/%s-%s-%s%s%s-seed%d", shown_dir,
+                       c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, dash, end_name, seed) != FS_OK)
         return cli_report(err.status, err.message);
     if (fs_make_dirs(path, &err) != FS_OK)
         return cli_report(err.status, err.message);
@@ -179,7 +181,8 @@ static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int i, const
     if (!placed)
         return FS_NO_MEMORY;
     int s = 0;
-    if (fs_scenario_copy(placed, fs_campaign_pair(c, cell), &err) != FS_OK ||
+    const fs_scenario *pair = fs_campaign_pair_of(c, cell, end);
+    if (fs_scenario_copy(placed, pair, &err) != FS_OK ||
         fs_trial_place(placed, seed, NULL, &err) != FS_OK)
         s = cli_report(err.status, err.message);
     cli_frames *frames = NULL;
@@ -194,7 +197,7 @@ static int draw_trial(const cli_frames_of *f, const fs_campaign *c, int i, const
     if (s)
         return s;
     fs_trial_result r;
-    fs_status rs = fs_trial_run_scenario(fs_campaign_pair(c, cell), seed, &obs, &r, &err);
+    fs_status rs = fs_trial_run_scenario(pair, seed, &obs, &r, &err);
     /* a worker that died leaves a record of its own; the trial drawn again dies here the same way */
     if (rs == FS_OK && (r.outcome != recorded->outcome || r.rule != recorded->rule))
         fprintf(stderr, "footsim campaign: --frames-of: %s drew %s (%s) where the campaign recorded %s (%s); the "

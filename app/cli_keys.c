@@ -25,13 +25,14 @@ int cli_keys(const cli_args *a)
            "| a line of an input file | %d characters |\n"
            "| steps of one run, trial or walk (duration_s / step_s; steps x period_s / step_s) | %.0e |\n"
            "| a run's trajectory in memory (rows x columns x 8 bytes) | %.0f MiB |\n"
-           "| trials of a campaign (feet x terrains x seeds) | %d |\n"
+           "| trials of a campaign (feet x terrains x robots x seeds, x 2 with a band) | %d |\n"
+           "| a campaign's `[band.NAME]` sections; overrides per band end | %d; %d |\n"
            "| frames of `run --frames` or `render-compare` (six-digit names) | %d |\n"
            "| frames `render-compare` keeps in memory | half of the machine's memory |\n"
            "| a number | decimal; 0 or a normal double, 2.2e-308 to 1.8e308 in magnitude (hexadecimal and subnormals refused) |\n"
            "| `terrain --height X Y` | metres from -1000 to 1000 |\n\n",
            FS_CONFIG_MAX_BYTES, FS_CONFIG_MAX_KEYS, fs_config_max_line(), (double)FS_MAX_STEPS, FS_TRAJ_MAX_BYTES / (1024.0 * 1024),
-           FS_CAMPAIGN_MAX_TRIALS, 999999);
+           FS_CAMPAIGN_MAX_TRIALS, FS_CAMPAIGN_MAX_BANDS, FS_BAND_MAX_SETS, 999999);
     return 0;
 }
 

@@ -4,13 +4,19 @@
  * journal and nothing else written, and the same call finishes it into the same bytes; its shards
  * merged are the same bytes too, and a missing shard is named; a journal of other overrides is
  * refused and kept; a folder holding the results runs nothing; a worker that exits with status 3
- * makes its trial failed_numerics, said through the callback. */
+ * makes its trial failed_numerics, said through the callback. A campaign with a contact band runs
+ * every trial at both ends, its cell's rate the smaller end's, the same bytes in one worker or two
+ * and after a stop between the ends; its high end (no edits) is the band-less campaign's trials bit
+ * for bit; a wrong band is refused with its file and line. */
 #include "fs_test.h"
 
 #include "footsim/campaign/fs_campaign_run.h"
+#include "footsim/campaign/fs_optimize.h"
 #include "footsim/io/fs_output.h"
 
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -55,17 +61,22 @@ typedef struct loaded {
     fs_journal_head h;
 } loaded;
 
-static loaded *load(const char *const *sets, int nsets, int shard, int nshards)
+static loaded *load_file(const char *file, const char *const *sets, int nsets, int shard, int nshards)
 {
     make_campaign();
     char path[256];
-    snprintf(path, sizeof path, "%s/small.ini", tmp);
+    snprintf(path, sizeof path, "%s/%s", tmp, file);
     loaded *l = calloc(1, sizeof *l);
     fs_error err;
     REQUIRE(l != NULL);
     REQUIRE(fs_campaign_load(path, sets, nsets, &l->c, &err) == FS_OK);
     REQUIRE(fs_journal_head_of(&l->c, path, sets, nsets, shard, nshards, &l->h, &err) == FS_OK);
     return l;
+}
+
+static loaded *load(const char *const *sets, int nsets, int shard, int nshards)
+{
+    return load_file("small.ini", sets, nsets, shard, nshards);
 }
 
 static void unload(loaded *l)
@@ -259,6 +270,167 @@ static void test_a_crashed_worker_is_failed_numerics(void)
     unload(l);
 }
 
+
+/* $tmp/band.ini: the biomimetic foot on flat ground under drop_weight, one seed, 1 s trials, and a
+ * band whose low end raises the robot's centre of mass to 0.3 m and whose high end is the trial as
+ * it is. By the pitch-stiffness law (docs/landing.md) Table I's foot (K = 12.8 N m/rad) holds
+ * drop_weight's 26 kg at its own height (m g h = 5.1 N m) but not at 0.3 m (m g h = 76.5 N m, six
+ * times K): the high end lands, and the low end cannot come to rest upright (it falls, or is still
+ * toppling when the 1 s window ends: not landed either way). */
+static void make_band_campaign(const char *name, const char *band)
+{
+    make_campaign();
+    char path[256], text[2048];
+    snprintf(path, sizeof path, "%s/%s", tmp, name);
+    snprintf(text, sizeof text, "[campaign]\ntrial = trial.ini\nseeds = 1\nband = tall\n[foot.bio]\nfile = "
+             "%s/scenarios/feet/biomimetic.ini\n[terrain.flat]\nfile = %s/terrains/flat.ini\n[band.tall]\n%s\n",
+             FS_SOURCE_DIR, FS_SOURCE_DIR, band);
+    write_text(path, text);
+}
+
+/* The rows of $tmp/dir/trials.csv after its header, into buf; with end ("high,"), only the rows of
+ * that band end, its field taken out (it follows foot, terrain and robot). */
+static void trial_rows(const char *dir, const char *end, char *buf, size_t size)
+{
+    char path[256], line[4096];
+    snprintf(path, sizeof path, "%s/%s/trials.csv", tmp, dir);
+    FILE *f = fopen(path, "r");
+    REQUIRE(f != NULL);
+    buf[0] = 0;
+    for (int n = 0; fgets(line, sizeof line, f); n++) {
+        char *p = line;
+        for (int k = 0; end && k < 3; k++)
+            p = strchr(p, ',') + 1;
+        if (n == 0 || (end && strncmp(p, end, strlen(end))))
+            continue; /* the header, or another end's row */
+        if (end)
+            memmove(p, p + strlen(end), strlen(p + strlen(end)) + 1); /* "high," taken out */
+        strncat(buf, line, size - strlen(buf) - 1);
+    }
+    fclose(f);
+}
+
+static void test_a_band_runs_each_trial_at_both_ends(void)
+{
+    make_band_campaign("band.ini", "low = robot.com_height_m=0.3\nhigh =");
+    loaded *l = load_file("band.ini", NULL, 0, 1, 1);
+    CHECK(fs_campaign_nends(&l->c) == 2 && fs_campaign_ntrials(&l->c) == 2);
+    CHECK(fs_campaign_trial_end(&l->c, 0) == 0 && fs_campaign_trial_end(&l->c, 1) == 1);
+    fs_campaign_row rows[1];
+    fs_campaign_state st;
+    fs_error err;
+    seen two = {0};
+    REQUIRE(run_into(l, "band2", 2, &two, NULL, rows, &st, &err) == FS_OK);
+    CHECK(st.committed && st.total == 2 && two.total == 2);
+    /* each end's count, and the cell's rate the smaller: the low end does not land, the high end does */
+    CHECK(rows[0].end_trials[0] == 1 && rows[0].end_trials[1] == 1);
+    CHECK(rows[0].end_landed[0] == 0 && rows[0].end_landed[1] == 1);
+    CHECK(rows[0].band_end == 0 && rows[0].trials == 1 && rows[0].landed == 0 && rows[0].success_rate == 0);
+    CHECK(rows[0].success_rate == fmin(rows[0].end_rate[0], rows[0].end_rate[1]));
+    /* footsim plot reads the band back from summary.json: its ends, and each end's rate per row */
+    {
+        char path[256];
+        snprintf(path, sizeof path, "%s/band2/summary.json", tmp);
+        fs_campaign *back = calloc(1, sizeof *back);
+        fs_campaign_row *back_rows = calloc(FS_CAMPAIGN_MAX_FEET * FS_CAMPAIGN_MAX_TERRAINS * FS_CAMPAIGN_MAX_ROBOTS,
+                                            sizeof *back_rows);
+        REQUIRE(back && back_rows && fs_campaign_reload(path, back, back_rows, &err) == FS_OK);
+        CHECK(!strcmp(back->band, "tall") && fs_campaign_nends(back) == 2 && !strcmp(back->end[1].name, "high"));
+        CHECK(back_rows[0].band_end == 0 && back_rows[0].end_rate[0] == 0 && back_rows[0].end_rate[1] == 1);
+        free(back), free(back_rows);
+    }
+    /* one worker stopped after the low end's trial, then resumed: the high end's runs */
+    seen stop = {.stop_at = 1};
+    REQUIRE(run_into(l, "band1", 1, &stop, NULL, rows, &st, &err) == FS_OK);
+    CHECK(st.stopped && st.kept == 1 && exists("band1.journal/journal"));
+    seen go = {0};
+    REQUIRE(run_into(l, "band1", 1, &go, NULL, rows, &st, &err) == FS_OK);
+    int resumed = 0;
+    for (int i = 0; i < go.nsaid; i++)
+        resumed += strstr(go.said[i], "1 of 2 trials done, 1 to run") != NULL;
+    CHECK(st.committed && resumed == 1);
+    CHECK(same_files("band2", "band1"));
+    /* the high end is the trial as it is: the band-less campaign's trial, every number the same */
+    static const char *const none[] = {"campaign.band=none"};
+    loaded *p = load_file("band.ini", none, 1, 1, 1);
+    CHECK(fs_campaign_nends(&p->c) == 1 && fs_campaign_ntrials(&p->c) == 1);
+    seen plain = {0};
+    REQUIRE(run_into(p, "plain", 1, &plain, NULL, NULL, &st, &err) == FS_OK);
+    char high[4096], alone[4096];
+    trial_rows("band2", "high,", high, sizeof high);
+    trial_rows("plain", NULL, alone, sizeof alone);
+    CHECK(alone[0] && !strcmp(high, alone));
+    unload(p);
+    unload(l);
+}
+
+/* A design search over a campaign with a band: a candidate reaches both ends' scenarios (each keeping
+ * its end's edits), and the closeness of its misses counts the trials of both ends. */
+static void test_a_band_reaches_the_optimizer(void)
+{
+    make_band_campaign("band_opt.ini", "low = robot.com_height_m=0.3\nhigh =\n[expect.lands]\nfoot = bio\n"
+                       "terrain = flat\nmin_success = 1");
+    char path[256];
+    snprintf(path, sizeof path, "%s/opt.ini", tmp);
+    write_text(path, "[optimize]\ncampaign = band_opt.ini\nobjective = least_stiff\nmax_evaluations = 2\n[param.scale]\nkey = springs.scale\n"
+                     "min = 1\nmax = 100\nstart = 10\nlog = yes\n");
+    fs_optimize *o = calloc(1, sizeof *o);
+    fs_error err;
+    REQUIRE(o != NULL);
+    fs_status loaded_ok = fs_optimize_load(path, NULL, 0, o, &err);
+    if (loaded_ok != FS_OK)
+        fprintf(stderr, "  %s\n", err.message);
+    REQUIRE(loaded_ok == FS_OK);
+    double x[1] = {21.5};
+    REQUIRE(fs_optimize_apply(o, x, &err) == FS_OK);
+    const fs_campaign *c = &o->campaign;
+    REQUIRE(fs_campaign_npairs(c) == 2);
+    for (int e = 0; e < 2; e++) {
+        fs_scenario *sc = (fs_scenario *)fs_campaign_pair_of(c, 0, e);
+        CHECK(*fs_scenario_number(sc, "springs.scale", NULL) == 21.5);
+    }
+    CHECK(fs_campaign_pair_of(c, 0, 0)->def.robot.com_height_m == 0.3);
+    CHECK(fs_campaign_pair_of(c, 0, 1)->def.robot.com_height_m < 0.3);
+    /* the low end landed, the high end fell a quarter into its 1 s window: one miss, 0.75 of the window short */
+    fs_trial_result r[2];
+    memset(r, 0, sizeof r);
+    r[0].outcome = FS_LANDED;
+    r[1].outcome = FS_FELL;
+    r[0].end_time_s = 1, r[1].end_time_s = 0.25;
+    CHECK(fabs(fs_optimize_closeness(o, r) - 0.75) < 1e-12);
+    fs_optimize_free(o);
+    free(o);
+}
+
+/* A wrong band: refused at loading with the file's line (or --set), nothing run. */
+static void refused(const char *band, const char *const *sets, int nsets, const char *want)
+{
+    make_band_campaign("bad.ini", band);
+    char path[256];
+    snprintf(path, sizeof path, "%s/bad.ini", tmp);
+    fs_campaign c;
+    fs_error err = {FS_OK, ""};
+    CHECK(fs_campaign_load(path, sets, nsets, &c, &err) == FS_BAD_INPUT);
+    if (!strstr(err.message, want))
+        fprintf(stderr, "  wanted '%s' in: %s\n", want, err.message);
+    CHECK(strstr(err.message, want) != NULL);
+}
+
+static void test_a_wrong_band_is_refused(void)
+{
+    /* the band section's lines: 10 low, 11 high */
+    refused("low = robot.com_height_m=0.3\nmiddle = run.step_s=1e-4", NULL, 0, "bad.ini:11: [band.tall] has no key 'middle'");
+    refused("low = sole.softness=3\nhigh =", NULL, 0, "bad.ini:10: [band.tall] low: 'sole.softness' is not a number key");
+    refused("low = sole.stiffness_N_per_m\nhigh =", NULL, 0, "bad.ini:10: [band.tall] low: 'sole.stiffness_N_per_m' has no '='");
+    refused("low = sole.stiffness_N_per_m=-5\nhigh =", NULL, 0, "bad.ini:10: [band.tall] low: sole.stiffness_N_per_m");
+    refused("low = sole.stiffness_N_per_m=1e5,, start.drop_m=0.01\nhigh =", NULL, 0, "bad.ini:10: [band.tall] low: an override is empty");
+    refused("low = start.drop_m=0.01, start.drop_m=0.02\nhigh =", NULL, 0, "bad.ini:10: [band.tall] low sets start.drop_m twice");
+    static const char *const clash[] = {"robot.com_height_m=0.1"};
+    refused("low = robot.com_height_m=0.3\nhigh =", clash, 1, "--set robot.com_height_m=0.1: robot.com_height_m is set by band tall's low end");
+    static const char *const other[] = {"campaign.band=wide"};
+    refused("low = robot.com_height_m=0.3\nhigh =", other, 1, "band = 'wide' is not one of the choices; allowed: none|tall");
+}
+
 static void test_cleanup(void)
 {
     if (tmp[0])
@@ -267,4 +439,5 @@ static void test_cleanup(void)
 
 FS_TEST_MAIN(TEST(test_workers_do_not_change_the_bytes), TEST(test_a_stop_is_resumed_into_the_same_bytes),
              TEST(test_shards_merge_into_the_same_bytes), TEST(test_a_crashed_worker_is_failed_numerics),
-             TEST(test_cleanup))
+             TEST(test_a_band_runs_each_trial_at_both_ends), TEST(test_a_wrong_band_is_refused),
+             TEST(test_a_band_reaches_the_optimizer), TEST(test_cleanup))

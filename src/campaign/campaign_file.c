@@ -33,6 +33,14 @@ typedef struct binder {
     char sweep_where[2][FS_PATH_MAX + 80];
     char values[2][FS_CAMPAIGN_MAX_TERRAINS][FS_NAME_MAX]; /* the sweep's values, parsed */
     fs_campaign_item base[FS_CAMPAIGN_MAX_TERRAINS];         /* the terrains a sweep expands */
+    /* the [band.NAME] sections, taken out of the file before binding (their values are lists of
+       overrides, which no key type reads): each end's text and where it was given */
+    int nbands;
+    char band_name[FS_CAMPAIGN_MAX_BANDS][FS_NAME_MAX];
+    char band_text[FS_CAMPAIGN_MAX_BANDS][FS_BAND_ENDS][FS_VALUE_MAX];
+    char band_where[FS_CAMPAIGN_MAX_BANDS][FS_BAND_ENDS][FS_PATH_MAX + 80];
+    char band_section_where[FS_CAMPAIGN_MAX_BANDS][FS_PATH_MAX + 80];
+    char band_choices[(FS_CAMPAIGN_MAX_BANDS + 1) * FS_NAME_MAX];
 } binder;
 
 #define C(member) offsetof(fs_campaign, member)
@@ -45,12 +53,16 @@ static const fs_key campaign_keys[] = {
     {"campaign", "first_seed", FS_KEY_INTEGER, C(first_seed), 0, 1e9, 0, 0, NULL, "", "1",
      "seeds are first_seed, first_seed + 1, ..."},
 };
+
+/* A band's ends, in the order their trials and columns take. */
+static const char *const band_end_names[FS_BAND_ENDS] = {"low", "high"};
 enum { NCAMPAIGN_KEYS = sizeof campaign_keys / sizeof campaign_keys[0] };
 
 static int is_campaign_section(const char *section)
 {
     return !strcmp(section, "campaign") || !strcmp(section, "tolerance") || !strncmp(section, "foot.", 5) ||
-           !strncmp(section, "terrain.", 8) || !strncmp(section, "robot.", 6) || !strncmp(section, "expect.", 7);
+           !strncmp(section, "terrain.", 8) || !strncmp(section, "robot.", 6) || !strncmp(section, "expect.", 7) ||
+           !strncmp(section, "band.", 5);
 }
 
 static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_type type, size_t offset)
@@ -151,6 +163,152 @@ const fs_key *fs_campaign_sweepable(int n)
     return NULL;
 }
 
+/* ---- contact bands ------------------------------------------------------------------------- */
+
+/* Takes every [band.NAME] section out of cfg into b: its ends' text and where each was given; a key
+ * other than low and high is refused, with its line. */
+static fs_status take_bands(fs_config *cfg, binder *b, fs_error *err)
+{
+    snprintf(b->band_choices, sizeof b->band_choices, "none");
+    for (int i = 0; i < cfg->count; i++) {
+        fs_entry *e = &cfg->entries[i];
+        if (strncmp(e->section, "band.", 5))
+            continue;
+        char where[FS_PATH_MAX + 80];
+        fs_config_where(cfg, e->section, e->name, where, sizeof where);
+        fs_status s = check_name(cfg, e, e->section + 5, err);
+        if (s != FS_OK)
+            return s;
+        int band = 0, end = 0;
+        while (band < b->nbands && strcmp(b->band_name[band], e->section + 5))
+            band++;
+        if (band == b->nbands) {
+            if (b->nbands == FS_CAMPAIGN_MAX_BANDS)
+                return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: at most %d bands in a campaign file", where, e->section,
+                               FS_CAMPAIGN_MAX_BANDS);
+            snprintf(b->band_name[b->nbands], FS_NAME_MAX, "%s", e->section + 5);
+            snprintf(b->band_section_where[b->nbands], sizeof b->band_section_where[0], "%s", where);
+            append_choice(b->band_choices, sizeof b->band_choices, e->section + 5);
+            b->nbands++;
+        }
+        while (end < FS_BAND_ENDS && strcmp(band_end_names[end], e->name))
+            end++;
+        if (end == FS_BAND_ENDS)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] has no key '%s'; allowed: low and high, each the band end's "
+                           "overrides as section.key=value, comma-separated (empty: the trials' own values)", where,
+                           e->section, e->name);
+        snprintf(b->band_text[band][end], FS_VALUE_MAX, "%s", e->value);
+        snprintf(b->band_where[band][end], sizeof b->band_where[0][0], "%s", where);
+        memmove(e, e + 1, (size_t)(cfg->count - i - 1) * sizeof *e);
+        cfg->count--;
+        i--;
+    }
+    return FS_OK;
+}
+
+/* The number key "section.key" of the trials (a terrain's, design's, robot's or scenario's), or NULL. */
+static const fs_key *trial_number_key(const char *name)
+{
+    for (int n = 1; fs_campaign_sweepable(n); n++) {
+        const fs_key *k = fs_campaign_sweepable(n);
+        size_t len = strlen(k->section);
+        if (!strncmp(name, k->section, len) && name[len] == '.' && !strcmp(name + len + 1, k->name))
+            return k;
+    }
+    return NULL;
+}
+
+/* Whether the override `set` ("section.key=value", spaces allowed) sets key. */
+static int sets_key(const char *set, const char *key)
+{
+    size_t len = strlen(key);
+    const char *rest = set + strspn(set, " \t");
+    return !strncmp(rest, key, len) && (rest[len] == '=' || rest[len] == ' ' || rest[len] == '\t');
+}
+
+/* One end of band `band` read from its text: each override a number key of the trials given once,
+ * its value read by the key's own rules (range, a whole number for an integer). */
+static fs_status parse_band_end(const binder *b, int band, int e, fs_band_end *end, fs_error *err)
+{
+    const char *where = b->band_where[band][e][0] ? b->band_where[band][e] : b->band_section_where[band];
+    char buf[FS_VALUE_MAX], *tok[FS_BAND_MAX_SETS];
+    memset(end, 0, sizeof *end);
+    snprintf(end->name, sizeof end->name, "%s", band_end_names[e]);
+    snprintf(end->text, sizeof end->text, "%s", b->band_text[band][e]);
+    snprintf(buf, sizeof buf, "%s", b->band_text[band][e]);
+    int empty = 0, n = fs_list_split(buf, tok, FS_BAND_MAX_SETS, &empty);
+    if (n < 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s: [band.%s] %s: %s; give section.key=value overrides, comma-separated, "
+                       "e.g. sole.stiffness_N_per_m=1.001e5, sole.damping_Ns_per_m=208", where, b->band_name[band],
+                       end->name, n == -1 ? "an override is empty (two commas in a row, or a comma first or last)"
+                                          : "more than 16 overrides");
+    for (int i = 0; i < n; i++) {
+        char *eq = strchr(tok[i], '=');
+        char *key = tok[i], *value = eq ? eq + 1 : NULL;
+        if (eq) {
+            *eq = 0;
+            while (eq > key && (eq[-1] == ' ' || eq[-1] == '\t'))
+                *--eq = 0;
+            value += strspn(value, " \t");
+        }
+        const fs_key *k = eq ? trial_number_key(key) : NULL;
+        if (!k)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [band.%s] %s: '%s' %s; give section.key=value with a number key of "
+                           "a terrain, design, robot or scenario file (docs/keys.md), e.g. sole.stiffness_N_per_m=1.001e5",
+                           where, b->band_name[band], end->name, key,
+                           eq ? "is not a number key of the trials" : "has no '='");
+        if (strlen(key) >= sizeof end->key[0])
+            return fs_fail(err, FS_BAD_INPUT, "%s: [band.%s] %s: '%s' is too long", where, b->band_name[band], end->name,
+                           key);
+        for (int j = 0; j < end->nsets; j++)
+            if (!strcmp(end->key[j], key))
+                return fs_fail(err, FS_BAD_INPUT, "%s: [band.%s] %s sets %s twice; give each key once", where,
+                               b->band_name[band], end->name, key);
+        char what[FS_PATH_MAX + 200];
+        snprintf(what, sizeof what, "%s: [band.%s] %s: %s", where, b->band_name[band], end->name, key);
+        fs_status s = fs_config_number(k, value, what, &end->value[end->nsets], err);
+        if (s != FS_OK)
+            return s;
+        snprintf(end->key[end->nsets++], sizeof end->key[0], "%s", key);
+    }
+    return FS_OK;
+}
+
+/* Every band of the file read (so a wrong one is refused whichever is chosen), and the chosen one
+ * kept in c: its ends' keys must be neither swept nor given by --set, which it would overwrite. */
+static fs_status bind_bands(const fs_config *cfg, const binder *b, fs_campaign *c, fs_error *err)
+{
+    c->nends = 1;
+    for (int band = 0; band < b->nbands; band++)
+        for (int e = 0; e < FS_BAND_ENDS; e++) {
+            fs_band_end end;
+            fs_status s = parse_band_end(b, band, e, &end, err);
+            if (s != FS_OK)
+                return s;
+            if (band + 1 != c->band_choice)
+                continue;
+            char where[FS_PATH_MAX + 80];
+            fs_config_where(cfg, "campaign", "band", where, sizeof where);
+            for (int i = 0; i < end.nsets; i++) {
+                for (int w = 0; w < c->nsweep; w++)
+                    if (!strcmp(end.key[i], c->sweep[w]))
+                        return fs_fail(err, FS_BAD_INPUT, "%s: band %s's %s end sets %s, the key the campaign sweeps; "
+                                       "sweep it, or give it in the band, not both", where, b->band_name[band],
+                                       end.name, end.key[i]);
+                for (int j = 0; j < c->nset; j++)
+                    if (sets_key(c->set[j], end.key[i]))
+                        return fs_fail(err, FS_BAD_INPUT, "--set %s: %s is set by band %s's %s end (%s), which would "
+                                       "overwrite it; change the band ([band.%s] %s), or choose none with --set "
+                                       "campaign.band=none", c->set[j], end.key[i], b->band_name[band], end.name,
+                                       where, b->band_name[band], end.name);
+            }
+            c->end[e] = end;
+            c->nends = FS_BAND_ENDS;
+            snprintf(c->band, sizeof c->band, "%s", b->band_name[band]);
+        }
+    return FS_OK;
+}
+
 /* The [campaign] and [tolerance] keys. */
 static void add_static_keys(binder *b)
 {
@@ -163,7 +321,11 @@ static void add_static_keys(binder *b)
         snprintf(word, sizeof word, "%s.%s", fs_campaign_sweepable(n)->section, fs_campaign_sweepable(n)->name);
         append_choice(b->sweep_choices, sizeof b->sweep_choices, word);
     }
-    fs_key *k = NULL;
+    fs_key *k = add_key(b, "campaign", "band", FS_KEY_CHOICE, C(band_choice));
+    k->choices = b->band_choices;
+    k->fallback = "none";
+    k->help = "a [band.NAME]: every trial runs at its low and its high end on the same seed; a cell lands only as "
+              "often as its worse end";
     for (int w = 0; w < 2; w++) {
         k = add_key(b, "campaign", sweep_key[w], FS_KEY_CHOICE, C(sweep_choice[w]));
         k->choices = b->sweep_choices;
@@ -400,12 +562,13 @@ static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_
                        c->nfeet ? "terrain" : "foot", c->nfeet ? "terrain.flat" : "foot.biomimetic");
     if ((long)c->first_seed + c->seeds - 1 > INT_MAX)
         return fs_fail(err, FS_BAD_INPUT, "%s: first_seed + seeds passes %d", cfg->path, INT_MAX);
-    long ntrials = (long)c->nfeet * c->nterrains * (c->nrobots ? c->nrobots : 1) * c->seeds;
+    long ntrials = (long)c->nfeet * c->nterrains * (c->nrobots ? c->nrobots : 1) * c->seeds * c->nends;
     if (ntrials > FS_CAMPAIGN_MAX_TRIALS)
-        return fs_fail(err, FS_BAD_INPUT, "%s: %d feet x %d terrains x %d robots x %d seeds = %ld trials; a campaign "
+        return fs_fail(err, FS_BAD_INPUT, "%s: %d feet x %d terrains x %d robots x %d seeds%s = %ld trials; a campaign "
                        "may run at most %d: fewer seeds, or split it",
                        fs_config_where(cfg, "campaign", "seeds", where, sizeof where), c->nfeet, c->nterrains,
-                       c->nrobots ? c->nrobots : 1, c->seeds, ntrials, FS_CAMPAIGN_MAX_TRIALS);
+                       c->nrobots ? c->nrobots : 1, c->seeds, c->nends > 1 ? " x 2 band ends" : "", ntrials,
+                       FS_CAMPAIGN_MAX_TRIALS);
     for (int i = 0; i < c->nfeet; i++)
         if (!c->foot[i].path[0])
             return fs_fail(err, FS_BAD_INPUT, "%s: [foot.%s] has no file; give file = the design", cfg->path,
@@ -480,42 +643,62 @@ static fs_status absolute_paths(const fs_config *cfg, fs_campaign *c, fs_error *
     return FS_OK;
 }
 
+/* Band end e's edits of a cell's scenario, compiled (none: left as loaded, not compiled again). */
+static fs_status apply_end(const fs_campaign *c, int e, fs_scenario *sc, fs_error *err)
+{
+    const fs_band_end *end = &c->end[e];
+    fs_status s = FS_OK;
+    for (int i = 0; i < end->nsets && s == FS_OK; i++)
+        s = fs_scenario_set(sc, end->key[i], end->value[i], err);
+    return s == FS_OK && end->nsets ? fs_scenario_compile(sc, err) : s;
+}
+
 /* Loads (and so checks) the trial scenario of every cell, once, for the trials. A sweep's points
  * are typed edits: the first point of each (foot, terrain, robot) is read from its files with its
  * values among the overrides (so the file's relations are judged on them, as with --set); every
  * later point copies it, gets its own values (fs_scenario_set) and is compiled, without reading a
- * file. */
+ * file. A band's ends are typed edits too: each end of a first point copies the point as read and
+ * gets its end's values; a later point copies the first point's same end. */
 static fs_status load_pairs(fs_campaign *c, fs_error *err)
 {
-    int ncells = fs_campaign_ncells(c);
-    c->pair = calloc((size_t)ncells, sizeof *c->pair);
+    int ncells = fs_campaign_ncells(c), nends = fs_campaign_nends(c);
+    c->pair = calloc((size_t)ncells * nends, sizeof *c->pair);
     if (!c->pair)
-        return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", ncells);
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the campaign's %d scenarios", ncells * nends);
     fs_status s = FS_OK;
     for (int cell = 0; cell < ncells && s == FS_OK; cell++) {
         int f, t, r;
         fs_campaign_cell_of(c, cell, &f, &t, &r);
         const fs_campaign_item *point = &c->terrain[t];
         int from = point->point[0] * c->nvalues[1] + point->point[1]; /* how far past its first point */
-        fs_scenario *sc = &c->pair[cell];
+        fs_scenario *sc = &c->pair[cell * nends];
         fs_error e;
         if (!from) { /* read from the files, the first point with its values as --set would give them */
             char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32];
             const char *ov[FS_CAMPAIGN_MAX_SET + FS_CAMPAIGN_CELL_SETS];
             int n = fs_campaign_overrides(c, cell, buf, ov);
             s = fs_scenario_load(c->trial_path, ov, n, sc, &e);
+            for (int end = nends - 1; end >= 0 && s == FS_OK; end--) { /* end 0 edited last: the others copy it */
+                if (end)
+                    s = fs_scenario_copy(&sc[end], sc, &e);
+                if (s == FS_OK)
+                    s = apply_end(c, end, &sc[end], &e);
+            }
         } else { /* a later point: the first one's definitions, its values set in them, compiled */
-            s = fs_scenario_copy(sc, &c->pair[(f * c->nterrains + t - from) * c->nrobots + r], &e);
-            for (int w = 0; w < c->nsweep && s == FS_OK; w++)
-                s = fs_scenario_set(sc, c->sweep[w], point->sweep_value[w], &e);
-            if (s == FS_OK)
-                s = fs_scenario_compile(sc, &e);
+            for (int end = 0; end < nends && s == FS_OK; end++) {
+                s = fs_scenario_copy(&sc[end], &c->pair[((f * c->nterrains + t - from) * c->nrobots + r) * nends + end],
+                                     &e);
+                for (int w = 0; w < c->nsweep && s == FS_OK; w++)
+                    s = fs_scenario_set(&sc[end], c->sweep[w], point->sweep_value[w], &e);
+                if (s == FS_OK)
+                    s = fs_scenario_compile(&sc[end], &e);
+            }
         }
-        if (s == FS_OK)
-            s = fs_scenario_require(sc, "trial", &e);
+        for (int end = 0; end < nends && s == FS_OK; end++)
+            s = fs_scenario_require(&sc[end], "trial", &e);
         if (s != FS_OK)
-            fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s)", e.message, c->path,
-                    c->foot[f].name, c->terrain[t].name, c->robot[r].name);
+            fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s%s%s)", e.message, c->path,
+                    c->foot[f].name, c->terrain[t].name, c->robot[r].name, c->band[0] ? ", band " : "", c->band);
     }
     if (s == FS_OK && !c->robot[0].path[0]) /* the trial's own robot: named after its file */
         fs_path_stem(c->pair[0].def.robot_path[0] ? c->pair[0].def.robot_path : "none", c->robot[0].name,
@@ -527,7 +710,7 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
 
 void fs_campaign_free(fs_campaign *c)
 {
-    for (int i = 0; c->pair && i < fs_campaign_ncells(c); i++)
+    for (int i = 0; c->pair && i < fs_campaign_npairs(c); i++)
         fs_scenario_free(&c->pair[i]);
     free(c->pair);
     c->pair = NULL;
@@ -543,13 +726,24 @@ void fs_campaign_cell_of(const fs_campaign *c, int cell, int *foot, int *terrain
     *foot = cell / c->nrobots / c->nterrains;
 }
 
-const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell) { return &c->pair[cell]; }
+int fs_campaign_nends(const fs_campaign *c) { return c->nends > 1 ? c->nends : 1; }
+
+int fs_campaign_npairs(const fs_campaign *c) { return fs_campaign_ncells(c) * fs_campaign_nends(c); }
+
+const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell) { return fs_campaign_pair_of(c, cell, 0); }
+
+const fs_scenario *fs_campaign_pair_of(const fs_campaign *c, int cell, int end)
+{
+    return &c->pair[cell * fs_campaign_nends(c) + end];
+}
 
 static fs_status bind_file(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
 {
     take_sweep_values(cfg, b);
+    fs_status s = take_bands(cfg, b, err);
     add_static_keys(b);
-    fs_status s = add_dynamic_keys(cfg, b, c, err);
+    if (s == FS_OK)
+        s = add_dynamic_keys(cfg, b, c, err);
     if (s == FS_OK)
         s = terrain_choices(b, c, err);
     if (s == FS_OK)
@@ -600,13 +794,17 @@ static fs_status provenance(fs_campaign *c, const char *const *sets, int nsets, 
     if (s == FS_OK)
         s = fs_provenance_add_ini(p, c->trial_path, err);
     for (int i = 0; s == FS_OK && i < fs_campaign_ncells(c); i++)
-        s = fs_scenario_inputs(&c->pair[i], p, err);
+        s = fs_scenario_inputs(fs_campaign_pair(c, i), p, err);
     fs_scenario_settings(&c->pair[0], p->settings, sizeof p->settings);
     for (int r = 1; r < c->nrobots; r++) { /* a robot whose trials take another step (cell r: the first foot and terrain) */
         size_t used = strlen(p->settings);
-        if (c->pair[r].def.step_s != c->pair[0].def.step_s)
+        if (fs_campaign_pair(c, r)->def.step_s != c->pair[0].def.step_s)
             snprintf(p->settings + used, sizeof p->settings - used, "; robot %s: step_s %.6g", c->robot[r].name,
-                     c->pair[r].def.step_s);
+                     fs_campaign_pair(c, r)->def.step_s);
+    }
+    if (c->band[0]) { /* said in the settings too: the campaign file's hash alone does not name it */
+        size_t used = strlen(p->settings);
+        snprintf(p->settings + used, sizeof p->settings - used, "; band %s", c->band);
     }
     p->first_seed = c->first_seed;
     p->nseeds = c->seeds;
@@ -643,6 +841,8 @@ fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets,
         s = bind_file(&cfg, b, c, err);
     if (s == FS_OK)
         s = expand_sweep(&cfg, b, c, err);
+    if (s == FS_OK)
+        s = bind_bands(&cfg, b, c, err);
     if (s == FS_OK)
         s = check_relations(&cfg, c, err);
     if (s == FS_OK)
@@ -688,10 +888,12 @@ int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[FS_CAMPAIGN_C
     return n;
 }
 
-int fs_campaign_ntrials(const fs_campaign *c) { return fs_campaign_ncells(c) * c->seeds; }
+int fs_campaign_ntrials(const fs_campaign *c) { return fs_campaign_npairs(c) * c->seeds; }
 
 void fs_campaign_trial_of(const fs_campaign *c, int index, int *cell, int *seed)
 {
     *seed = c->first_seed + index % c->seeds;
-    *cell = index / c->seeds;
+    *cell = index / c->seeds / fs_campaign_nends(c);
 }
+
+int fs_campaign_trial_end(const fs_campaign *c, int index) { return index / c->seeds % fs_campaign_nends(c); }

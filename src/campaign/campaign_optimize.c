@@ -198,7 +198,7 @@ void fs_optimize_free(fs_optimize *o) { fs_campaign_free(&o->campaign); }
 
 fs_status fs_optimize_apply(fs_optimize *o, const double *x, fs_error *err)
 {
-    for (int cell = 0; cell < fs_campaign_ncells(&o->campaign); cell++) {
+    for (int cell = 0; cell < fs_campaign_npairs(&o->campaign); cell++) { /* a band's ends too */
         fs_scenario *sc = &o->campaign.pair[cell];
         for (int p = 0; p < o->nparams; p++)
             *fs_scenario_number(sc, o->param[p].key, NULL) = x[p];
@@ -238,8 +238,8 @@ double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *result
         const fs_expectation *e = &c->expect[i];
         int cell = (e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot, n = 0;
         double window = fs_campaign_pair(c, cell)->def.duration_s, miss = 0;
-        for (int k = 0; k < c->seeds; k++) {
-            const fs_trial_result *r = &results[cell * c->seeds + k];
+        for (int k = 0; k < c->seeds * fs_campaign_nends(c); k++) { /* a cell's trials, at every band end */
+            const fs_trial_result *r = &results[cell * fs_campaign_nends(c) * c->seeds + k];
             if (r->outcome == FS_LANDED)
                 continue;
             double up = isfinite(r->end_time_s) ? fmin(1, fmax(0, r->end_time_s / window)) : 0;

@@ -71,8 +71,16 @@ fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *
     for (int w = 0; w < 2; w++)
         if (cJSON_IsString(cJSON_GetObjectItemCaseSensitive(root, sweep_keys[w])))
             snprintf(c->sweep[c->nsweep++], sizeof c->sweep[0], "%s", text_of(root, sweep_keys[w]));
+    /* a band's name and ends (its rows' each end's rate is drawn beside the band's) */
+    const cJSON *band = cJSON_GetObjectItemCaseSensitive(root, "band"), *r;
+    if (cJSON_IsObject(band)) {
+        snprintf(c->band, sizeof c->band, "%s", text_of(band, "name"));
+        cJSON_ArrayForEach(r, cJSON_GetObjectItemCaseSensitive(band, "ends"))
+            if (c->nends < FS_BAND_ENDS)
+                snprintf(c->end[c->nends++].name, sizeof c->end[0].name, "%s", text_of(r, "name"));
+        ok = ok && c->nends == FS_BAND_ENDS;
+    }
     /* first the names, in the order the rows give them (cell order: foot, terrain, robot) */
-    const cJSON *r;
     cJSON_ArrayForEach(r, list)
     {
         int t = item_index(c->terrain, &c->nterrains, FS_CAMPAIGN_MAX_TERRAINS, text_of(r, "terrain"));
@@ -108,7 +116,18 @@ fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *
         row->drop_critical_m = number_of(r, "drop_law_critical_com_height_m");
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             row->median[m] = NAN;
-        ok = ok && row->success_rate >= 0 && row->success_rate <= 1 && row->ci_low <= row->ci_high;
+        row->band_end = -1;
+        for (int e = 0; c->band[0] && e < FS_BAND_ENDS; e++) {
+            char key[32];
+            snprintf(key, sizeof key, "landed_%s", c->end[e].name);
+            row->end_landed[e] = (int)number_of(r, key);
+            row->end_trials[e] = row->trials;
+            snprintf(key, sizeof key, "success_rate_%s", c->end[e].name);
+            row->end_rate[e] = number_of(r, key);
+            row->band_end = !strcmp(text_of(r, "band_end"), c->end[e].name) ? e : row->band_end;
+            ok = ok && row->end_rate[e] >= 0 && row->end_rate[e] <= 1;
+        }
+        ok = ok && (!c->band[0] || row->band_end >= 0) && row->success_rate >= 0 && row->success_rate <= 1 && row->ci_low <= row->ci_high;
     }
     cJSON_Delete(root);
     if (!ok || c->seeds < 1)

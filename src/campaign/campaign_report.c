@@ -139,6 +139,8 @@ static int fill_trials(FILE *f, const out_ctx *x)
 {
     const fs_campaign *c = x->c;
     csv_key_header(f, c);
+    if (c->band[0])
+        fputs(",band_end", f);
     fputs(",seed,x_m,y_m,yaw_deg,pitch_deg,roll_deg,outcome,rule", f);
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",%s", fs_campaign_metrics[m].name);
@@ -149,6 +151,8 @@ static int fill_trials(FILE *f, const out_ctx *x)
         fs_campaign_trial_of(c, i, &cell, &seed);
         fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
         csv_row_key(f, c, foot, terrain, robot);
+        if (c->band[0])
+            fprintf(f, ",%s", c->end[fs_campaign_trial_end(c, i)].name);
         fprintf(f, ",%d", seed);
         const double pose[5] = {r->draw.x_m, r->draw.y_m, r->draw.yaw_deg, r->draw.pitch_deg, r->draw.roll_deg};
         for (int k = 0; k < 5; k++)
@@ -170,8 +174,13 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, ",median_%s", fs_campaign_metrics[m].name);
     fputs(",law_prediction,law_K_N_m_per_rad,law_critical_com_height_m,drop_law_prediction,drop_law_seeds,"
-          "drop_law_stands,drop_law_energy_J,drop_law_barrier_J,drop_law_saturation_N_m,drop_law_critical_com_height_m\n",
-          f);
+          "drop_law_stands,drop_law_energy_J,drop_law_barrier_J,drop_law_saturation_N_m,drop_law_critical_com_height_m", f);
+    if (c->band[0]) { /* the band's columns, last: a file without a band is as before */
+        fputs(",band_end", f);
+        for (int e = 0; e < fs_campaign_nends(c); e++)
+            fprintf(f, ",landed_%s,success_rate_%s", c->end[e].name, c->end[e].name);
+    }
+    fputc('\n', f);
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
         const fs_campaign_row *r = &x->rows[i];
         csv_row_key(f, c, r->foot, r->terrain, r->robot);
@@ -193,9 +202,63 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
         csv_number(f, r->drop_barrier_J);
         csv_number(f, r->drop_saturation_N_m);
         csv_number(f, r->drop_critical_m);
+        if (c->band[0]) {
+            fprintf(f, ",%s", c->end[r->band_end].name);
+            for (int e = 0; e < fs_campaign_nends(c); e++) {
+                fprintf(f, ",%d", r->end_landed[e]);
+                csv_number(f, r->end_rate[e]);
+            }
+        }
         fputc('\n', f);
     }
     return 1;
+}
+
+/* How often the laws' verdicts agree with a rate where it decides (>= 0.7 lands, <= 0.3 falls; in
+ * between nothing is counted): the band's (end -1: the cell's, its worse end's) or one end's. */
+static void md_law_agreement(FILE *f, const out_ctx *x, int end)
+{
+    const fs_campaign *c = x->c;
+    int decided = 0, law_n = 0, law_ok = 0, drop_n = 0, drop_ok = 0;
+    for (int i = 0; i < fs_campaign_ncells(c); i++) {
+        const fs_campaign_row *r = &x->rows[i];
+        double rate = end < 0 ? r->success_rate : r->end_rate[end];
+        if (rate > FS_RATE_FALLS && rate < FS_RATE_LANDS)
+            continue;
+        int lands = rate >= FS_RATE_LANDS;
+        decided++;
+        if (r->law != FS_LAW_NONE)
+            law_n++, law_ok += (r->law == FS_LAW_STANDS) == lands;
+        if (r->drop_law != FS_LAW_NONE)
+            drop_n++, drop_ok += (r->drop_law == FS_LAW_STANDS) == lands;
+    }
+    if (end < 0)
+        fputs("| the band's (the smaller) |", f);
+    else
+        fprintf(f, "| the %s end's |", c->end[end].name);
+    fprintf(f, " %d | %d of %d | %d of %d |\n", decided, law_ok, law_n, drop_ok, drop_n);
+}
+
+/* A band's part of summary.md: what it is (intro 1), or the laws against its rates (intro 0). */
+static void md_band(FILE *f, const out_ctx *x, int intro)
+{
+    const fs_campaign *c = x->c;
+    if (intro) {
+        fprintf(f, "Contact band `%s`: every trial runs at each of its ends on the same seed", c->band);
+        for (int e = 0; e < fs_campaign_nends(c); e++)
+            fprintf(f, "%s%s (%s%s%s)", e ? " and " : ", ", c->end[e].name, c->end[e].nsets ? "`" : "",
+                    c->end[e].nsets ? c->end[e].text : "the trials' own values", c->end[e].nsets ? "`" : "");
+        fputs("; a cell's row is its worse end's (its counts, rate, interval, medians and law; the first end on a tie), "
+              "so a cell lands only as often as it lands across the band; `band` gives each end's landings.\n\n", f);
+        return;
+    }
+    fprintf(f, "\n## The laws against the band\n\nThe static and the drop law's verdicts (the worse end's) against "
+               "the rates where they decide (at least %.1f: lands; at most %.1f: falls; between: not counted).\n\n"
+               "| rate | cells decided | static law agrees | drop law agrees |\n|---|--:|--:|--:|\n",
+            FS_RATE_LANDS, FS_RATE_FALLS);
+    md_law_agreement(f, x, -1);
+    for (int e = 0; e < fs_campaign_nends(c); e++)
+        md_law_agreement(f, x, e);
 }
 
 static int fill_summary_md(FILE *f, const out_ctx *x)
@@ -215,10 +278,13 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
     if (c->nsweep == 2)
         fprintf(f, "Swept over %s and %s: a terrain named NAME@v1,v2 is the point (%s = v1, %s = v2).\n\n", c->sweep[0],
                 c->sweep[1], c->sweep[0], c->sweep[1]);
-    fputs("| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | hung | success | 95 % CI | law |", f);
+    if (c->band[0])
+        md_band(f, x, 1);
+    fprintf(f, "| foot | terrain | robot | trials | landed | fell | undecided | failed_numerics | hung | success | 95 %% CI |%s law |",
+            c->band[0] ? " band |" : "");
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fprintf(f, " %s |", fs_campaign_metrics[m].name);
-    fputs("\n|---|---|---|--:|--:|--:|--:|--:|--:|--:|---|---|", f);
+    fprintf(f, "\n|---|---|---|--:|--:|--:|--:|--:|--:|--:|---|%s---|", c->band[0] ? "---|" : "");
     for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
         fputs("--:|", f);
     fputc('\n', f);
@@ -227,6 +293,9 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
         fprintf(f, "| %s | %s | %s | %d | %d | %d | %d | %d | %d | %.2f | [%.2f, %.2f] |", c->foot[r->foot].name,
                 c->terrain[r->terrain].name, c->robot[r->robot].name, r->trials, r->landed, r->fell, r->undecided,
                 r->failed_numerics, r->hung, r->success_rate, r->ci_low, r->ci_high);
+        for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++)
+            fprintf(f, "%s%s %d/%d%s", e ? ", " : " ", c->end[e].name, r->end_landed[e], r->end_trials[e],
+                    e + 1 == fs_campaign_nends(c) ? " |" : "");
         if (isfinite(r->law_K) && r->drop_law != FS_LAW_NONE)
             fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m); drop: %s in %d of %d seeds (E %.3g J, B %.3g J) |",
                     fs_law_name(r->law), r->law_K, r->law_critical_m, fs_law_name(r->drop_law), r->drop_stands,
@@ -240,6 +309,8 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
     }
+    if (c->band[0])
+        md_band(f, x, 0);
     fs_provenance p = provenance_of(c);
     fputs("\nProvenance: ", f);
     fs_provenance_print(&p, f);
@@ -273,6 +344,22 @@ static cJSON *summary_json(const out_ctx *x)
             ok &= cJSON_AddStringToObject(root, w ? "sweep2" : "sweep", c->sweep[w]) != NULL;
         else
             ok &= cJSON_AddNullToObject(root, w ? "sweep2" : "sweep") != NULL;
+    if (c->band[0]) { /* only with a band: a summary without is as before */
+        cJSON *band = cJSON_AddObjectToObject(root, "band");
+        ok &= band && cJSON_AddStringToObject(band, "name", c->band) != NULL;
+        cJSON *ends = band ? cJSON_AddArrayToObject(band, "ends") : NULL;
+        ok &= ends != NULL;
+        for (int e = 0; ok && e < fs_campaign_nends(c); e++) {
+            cJSON *o = cJSON_CreateObject(), *sets = o ? cJSON_AddArrayToObject(o, "overrides") : NULL;
+            ok &= sets && cJSON_AddStringToObject(o, "name", c->end[e].name) != NULL;
+            for (int i = 0; ok && i < c->end[e].nsets; i++) {
+                char text[3 * FS_NAME_MAX];
+                snprintf(text, sizeof text, "%s=%.17g", c->end[e].key[i], c->end[e].value[i]);
+                ok &= fs_json_put(sets, NULL, cJSON_CreateString(text));
+            }
+            ok &= fs_json_put(ends, NULL, o);
+        }
+    }
     fs_provenance p = provenance_of(c);
     ok &= fs_json_put(root, "provenance", fs_provenance_json(&p));
     cJSON *tol = cJSON_AddObjectToObject(root, "tolerances");
@@ -314,6 +401,16 @@ static cJSON *summary_json(const out_ctx *x)
         ok &= cJSON_AddNumberToObject(o, "drop_law_barrier_J", r->drop_barrier_J) != NULL;
         ok &= cJSON_AddNumberToObject(o, "drop_law_saturation_N_m", r->drop_saturation_N_m) != NULL;
         ok &= cJSON_AddNumberToObject(o, "drop_law_critical_com_height_m", r->drop_critical_m) != NULL;
+        if (c->band[0]) {
+            ok &= cJSON_AddStringToObject(o, "band_end", c->end[r->band_end].name) != NULL;
+            for (int e = 0; e < fs_campaign_nends(c); e++) {
+                char key[32];
+                snprintf(key, sizeof key, "landed_%s", c->end[e].name);
+                ok &= cJSON_AddNumberToObject(o, key, r->end_landed[e]) != NULL;
+                snprintf(key, sizeof key, "success_rate_%s", c->end[e].name);
+                ok &= cJSON_AddNumberToObject(o, key, r->end_rate[e]) != NULL;
+            }
+        }
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
             char key[FS_NAME_MAX + 8];
             snprintf(key, sizeof key, "median_%s", fs_campaign_metrics[m].name);
@@ -392,6 +489,8 @@ static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
         sql_column(l, c->sweep[w], "REAL");
     if (!summary) {
         static const char *const pose[] = {"x_m", "y_m", "yaw_deg", "pitch_deg", "roll_deg"};
+        if (c->band[0])
+            sql_column(l, "band_end", "TEXT NOT NULL");
         sql_column(l, "seed", "INTEGER NOT NULL");
         for (int k = 0; k < 5; k++)
             sql_column(l, pose[k], "REAL");
@@ -423,6 +522,16 @@ static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
     sql_column(l, "drop_law_barrier_J", "REAL");
     sql_column(l, "drop_law_saturation_N_m", "REAL");
     sql_column(l, "drop_law_critical_com_height_m", "REAL");
+    if (!c->band[0])
+        return;
+    sql_column(l, "band_end", "TEXT NOT NULL");
+    for (int e = 0; e < fs_campaign_nends(c); e++) {
+        char key[32];
+        snprintf(key, sizeof key, "landed_%s", c->end[e].name);
+        sql_column(l, key, "INTEGER NOT NULL");
+        snprintf(key, sizeof key, "success_rate_%s", c->end[e].name);
+        sql_column(l, key, "REAL");
+    }
 }
 
 /* One table filled from its CSV file: made, imported (the header row skipped), and every empty
@@ -593,10 +702,16 @@ static int fill_chart_data(FILE *f, const out_ctx *x)
         fputs(": ", f);
         fs_gp_data_text(f, c->sweep[0]);
         if (c->nsweep == 1) {
-            fputs(" rate low high\n", f);
+            fputs(" rate low high", f);
+            for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++) /* a band: each end's rate too */
+                fprintf(f, " rate_%s", c->end[e].name);
+            fputc('\n', f);
             for (int i = 0; i < c->nvalues[0]; i++) {
                 const fs_campaign_row *r = point_row(x, k, i, 0);
-                fprintf(f, "%.17g %.17g %.17g %.17g\n", value_of(c, 0, i), r->success_rate, r->ci_low, r->ci_high);
+                fprintf(f, "%.17g %.17g %.17g %.17g", value_of(c, 0, i), r->success_rate, r->ci_low, r->ci_high);
+                for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++)
+                    fprintf(f, " %.17g", r->end_rate[e]);
+                fputc('\n', f);
             }
             continue;
         }
@@ -690,6 +805,8 @@ static void chart_names(FILE *f, const fs_campaign *c)
         name_variable(f, "terrain", t + 1, c->terrain[t].name);
     for (int w = 0; w < c->nsweep; w++)
         name_variable(f, "key", w + 1, c->sweep[w]);
+    for (int e = 0; c->band[0] && c->nsweep == 1 && e < fs_campaign_nends(c); e++)
+        name_variable(f, "end", e + 1, c->end[e].name);
 }
 
 static int fill_chart_script(FILE *f, const out_ctx *x)
@@ -761,6 +878,9 @@ static int fill_chart_script(FILE *f, const out_ctx *x)
         fprintf(f, "%s'chart.dat' index %d using 1:3:4 with filledcurves fs transparent solid 0.2 noborder lc %d "
                    "notitle, \\\n     '' index %d using 1:2 with linespoints lw 2 dt %d pt %d lc %d title series%d",
                 k ? ", \\\n     " : "", k, foot + 1, k, robot + 1, 7 + 2 * base, foot + 1, k + 1);
+        for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++) /* each end's rate, thin, under the band's */
+            fprintf(f, ", \\\n     '' index %d using 1:%d with linespoints lw 1 dt %d pt %d ps 0.8 lc %d title series%d . "
+                       "', ' . end%d . ' end'", k, 5 + e, 2 + e, 6 + 2 * e, foot + 1, k + 1, e + 1);
     }
     fputc('\n', f);
     return 1;
@@ -783,10 +903,12 @@ int fs_campaign_check(const fs_campaign *c, const fs_campaign_row *rows, FILE *o
         const fs_campaign_row *r = fs_campaign_row_of(c, rows, e->foot, e->terrain, e->robot);
         int ok = fs_expectation_met(e, r);
         failed += !ok;
-        fprintf(out, "  %-6s %s: %s on %s under %s landed %d of %d (%.2f, 95 %% CI [%.2f, %.2f]); wanted %.2f to %.2f\n",
-                ok ? "ok" : "FAILED", e->name, c->foot[e->foot].name, c->terrain[e->terrain].name,
-                c->robot[e->robot].name, r->landed,
-                r->trials, r->success_rate, r->ci_low, r->ci_high, e->min_success, e->max_success);
+        fprintf(out, "  %-6s %s: %s on %s under %s landed %d of %d (%.2f, 95 %% CI [%.2f, %.2f]", ok ? "ok" : "FAILED",
+                e->name, c->foot[e->foot].name, c->terrain[e->terrain].name, c->robot[e->robot].name, r->landed,
+                r->trials, r->success_rate, r->ci_low, r->ci_high);
+        for (int k = 0; c->band[0] && k < fs_campaign_nends(c); k++) /* with a band: the worse end's, and each end */
+            fprintf(out, "%s%s %d of %d", k ? ", " : "; band: ", c->end[k].name, r->end_landed[k], r->end_trials[k]);
+        fprintf(out, "); wanted %.2f to %.2f\n", e->min_success, e->max_success);
     }
     return failed;
 }

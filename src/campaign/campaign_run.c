@@ -111,7 +111,8 @@ static void run_one(int task, void *result, void *user)
     if (seed == p->k->test.kill_seed)
         raise(SIGKILL); /* what the OOM killer does */
     fs_error err = {FS_OK, ""};
-    m->status = fs_trial_run_scenario(fs_campaign_pair(p->c, cell), seed, NULL, &m->result, &err);
+    m->status = fs_trial_run_scenario(fs_campaign_pair_of(p->c, cell, fs_campaign_trial_end(p->c, index)), seed, NULL,
+                                      &m->result, &err);
     snprintf(m->error, sizeof m->error, "%s", err.message);
 }
 
@@ -152,12 +153,14 @@ static void record_death(int task, const fs_pool_death *d, void *user)
        from outside says nothing of the physics */
     int numerics = d->exited && d->status == FS_NUMERICAL;
     r->outcome = d->timed_out ? FS_HUNG : numerics ? FS_FAILED_NUMERICS : FS_KILLED;
-    fs_trial_draw_pose(fs_campaign_pair(c, cell), seed, &r->draw);
+    int end = fs_campaign_trial_end(c, index);
+    fs_trial_draw_pose(fs_campaign_pair_of(c, cell, end), seed, &r->draw);
     int foot, terrain, robot;
     fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
     r->rule = d->timed_out ? FS_RULE_WATCHDOG : numerics ? FS_RULE_NUMERICS : FS_RULE_KILLED;
-    snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s under robot %s, seed %d, %s",
-             c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, seed, d->how);
+    snprintf(r->failure, sizeof r->failure, "the worker running foot %s on terrain %s under robot %s%s%s, seed %d, %s",
+             c->foot[foot].name, c->terrain[terrain].name, c->robot[robot].name, c->band[0] ? " at band end " : "",
+             c->end[end].name, seed, d->how);
     p->k->failed++;
     say(p->k, "%s; counted as %s%s", r->failure, fs_outcome_name(r->outcome),
         first_kill(p, index) ? " for now: it runs once more" : r->outcome == FS_KILLED ? " (its second try)" : "");

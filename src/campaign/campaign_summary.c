@@ -179,42 +179,63 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, fs_campaign_row 
     free(sup), free(E), free(B), free(M);
 }
 
+/* A cell's counts, rate, interval and medians over its seeds' results r[0 .. seeds - 1] (v: room for
+ * seeds numbers). */
+static void count_trials(const fs_campaign *c, const fs_trial_result *r, double *v, fs_campaign_row *row)
+{
+    for (int s = 0; s < c->seeds; s++) {
+        row->trials++;
+        row->landed += r[s].outcome == FS_LANDED;
+        row->fell += r[s].outcome == FS_FELL;
+        row->undecided += r[s].outcome == FS_UNDECIDED;
+        row->failed_numerics += r[s].outcome == FS_FAILED_NUMERICS;
+        row->hung += r[s].outcome == FS_HUNG || r[s].outcome == FS_KILLED;
+        row->killed += r[s].outcome == FS_KILLED;
+    }
+    row->success_rate = (double)row->landed / row->trials;
+    fs_wilson(row->landed, row->trials, &row->ci_low, &row->ci_high);
+    for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
+        int n = 0;
+        for (int s = 0; v && s < c->seeds; s++)
+            if (fs_trial_measured(&r[s]))
+                v[n++] = fs_metric_value(&r[s], m);
+        row->nmetric = n;
+        /* a metric a trial does not have (NAN: the rest ankle drop of a fall) is left out */
+        int k = 0;
+        for (int i = 0; i < n; i++)
+            if (!isnan(v[i]))
+                v[k++] = v[i];
+        row->median[m] = fs_median(v, k);
+    }
+}
+
 void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results, fs_campaign_row *rows)
 {
     double *v = malloc((size_t)c->seeds * sizeof *v);
     foot_fold cache[FOLD_CACHE];
-    int ncache = 0;
+    int ncache = 0, nends = fs_campaign_nends(c);
     for (int cell = 0; cell < fs_campaign_ncells(c); cell++) {
         fs_campaign_row *row = &rows[cell];
-        memset(row, 0, sizeof *row);
-        fs_campaign_cell_of(c, cell, &row->foot, &row->terrain, &row->robot);
-        const fs_trial_result *r = &results[cell * c->seeds];
-        for (int s = 0; s < c->seeds; s++) {
-            row->trials++;
-            row->landed += r[s].outcome == FS_LANDED;
-            row->fell += r[s].outcome == FS_FELL;
-            row->undecided += r[s].outcome == FS_UNDECIDED;
-            row->failed_numerics += r[s].outcome == FS_FAILED_NUMERICS;
-            row->hung += r[s].outcome == FS_HUNG || r[s].outcome == FS_KILLED;
-            row->killed += r[s].outcome == FS_KILLED;
+        fs_campaign_row end_row[FS_BAND_ENDS];
+        int worse = 0;
+        /* each end's row; the cell's is its worse end's (the first on a tie): a design lands only as
+           often as it lands across the band */
+        for (int e = 0; e < nends; e++) {
+            memset(&end_row[e], 0, sizeof end_row[e]);
+            count_trials(c, &results[(cell * nends + e) * c->seeds], v, &end_row[e]);
+            if (end_row[e].landed < end_row[worse].landed)
+                worse = e;
         }
-        row->success_rate = (double)row->landed / row->trials;
-        fs_wilson(row->landed, row->trials, &row->ci_low, &row->ci_high);
-        for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
-            int n = 0;
-            for (int s = 0; v && s < c->seeds; s++)
-                if (fs_trial_measured(&r[s]))
-                    v[n++] = fs_metric_value(&r[s], m);
-            row->nmetric = n;
-            /* a metric a trial does not have (NAN: the rest ankle drop of a fall) is left out */
-            int k = 0;
-            for (int i = 0; i < n; i++)
-                if (!isnan(v[i]))
-                    v[k++] = v[i];
-            row->median[m] = fs_median(v, k);
+        *row = end_row[worse];
+        fs_campaign_cell_of(c, cell, &row->foot, &row->terrain, &row->robot);
+        row->band_end = nends > 1 ? worse : -1;
+        for (int e = 0; e < nends && nends > 1; e++) {
+            row->end_landed[e] = end_row[e].landed;
+            row->end_trials[e] = end_row[e].trials;
+            row->end_rate[e] = end_row[e].success_rate;
         }
         if (c->pair)
-            law_of(c, fs_campaign_pair(c, cell), row, cache, &ncache);
+            law_of(c, fs_campaign_pair_of(c, cell, worse), row, cache, &ncache);
         else
             row->law = row->drop_law = FS_LAW_NONE, row->law_K = row->law_critical_m = NAN;
     }

@@ -30,7 +30,10 @@ enum {
     FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x robots x seeds (docs/keys.md) */
     FS_SUMMARY_MAX_BYTES = 64 * 1024 * 1024, /* a summary.json compare reads */
     FS_CAMPAIGN_MAX_SET = 256,
-    FS_CAMPAIGN_NMETRICS = 13
+    FS_CAMPAIGN_NMETRICS = 13,
+    FS_CAMPAIGN_MAX_BANDS = 8,   /* [band.NAME] sections in a file */
+    FS_BAND_ENDS = 2,            /* a band's ends: low and high */
+    FS_BAND_MAX_SETS = 16        /* overrides per end */
 };
 
 /* The metrics of a trial (the numeric fields of fs_trial_result but the draw; last, the ankle drop
@@ -64,6 +67,16 @@ typedef struct fs_expectation {
     double min_success, max_success;
 } fs_expectation;
 
+/* One end of a contact band ([band.NAME] low = ..., high = ...): number keys of the trials, each set
+ * by a typed edit of every cell's loaded definitions (fs_scenario_set), as --set would set them. */
+typedef struct fs_band_end {
+    char name[8];                             /* "low", "high"; "" without a band */
+    int nsets;
+    char key[FS_BAND_MAX_SETS][2 * FS_NAME_MAX]; /* "section.key" */
+    double value[FS_BAND_MAX_SETS];
+    char text[FS_VALUE_MAX];                  /* the overrides as the file gives them */
+} fs_band_end;
+
 typedef struct fs_campaign {
     char path[FS_PATH_MAX];
     char name[FS_NAME_MAX];            /* the file's base name without .ini */
@@ -76,6 +89,13 @@ typedef struct fs_campaign {
                                           terrains become nbase x nvalues[0] x nvalues[1] points,
                                           named "NAME@v1" or "NAME@v1,v2" */
     int nfeet, nterrains, nrobots, nexpect;
+    /* [campaign] band = NAME: every trial runs once per end of [band.NAME] on the same seed, and a
+       cell's row is its worse end's (docs/campaign.md, "Contact band"); nends 1 without a band (0,
+       in a campaign built in code, counts as 1: fs_campaign_nends) */
+    char band[FS_NAME_MAX];            /* the band's NAME, or "" */
+    int band_choice;                   /* as bound: 0 none, n the n-th [band.NAME] of the file */
+    int nends;
+    fs_band_end end[FS_BAND_ENDS];
     fs_campaign_item foot[FS_CAMPAIGN_MAX_FEET];
     fs_campaign_item terrain[FS_CAMPAIGN_MAX_TERRAINS];
     fs_campaign_item robot[FS_CAMPAIGN_MAX_ROBOTS]; /* [robot.NAME] file = ...; without any, the trial
@@ -88,8 +108,9 @@ typedef struct fs_campaign {
        given, every input file (relative to the campaign file's folder) with its hash, the first
        cell's settings; the seeds are c's own when written */
     fs_provenance provenance;
-    fs_scenario *pair;                 /* the trial scenario of each cell, loaded once:
-                                          fs_campaign_pair; fs_campaign_free releases them */
+    fs_scenario *pair;                 /* the trial scenario of each cell and band end, loaded once
+                                          (pair[cell * nends + end]): fs_campaign_pair_of;
+                                          fs_campaign_free releases them */
 } fs_campaign;
 
 /* Reads and checks path. Each of sets ("section.key=value") goes to the campaign file when its
@@ -109,8 +130,13 @@ const fs_key *fs_campaign_sweepable(int n);
 int fs_campaign_ncells(const fs_campaign *c);
 void fs_campaign_cell_of(const fs_campaign *c, int cell, int *foot, int *terrain, int *robot);
 
-/* The loaded trial scenario of a cell. */
+/* The band's ends (1 without a band), and the trial scenarios of a campaign: cells x ends. */
+int fs_campaign_nends(const fs_campaign *c);
+int fs_campaign_npairs(const fs_campaign *c);
+
+/* The loaded trial scenario of a cell (its first end's, with a band), and of a cell at a band end. */
 const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell);
+const fs_scenario *fs_campaign_pair_of(const fs_campaign *c, int cell, int end);
 
 /* The overrides a cell's trial scenario reads its files with: scenario.design, scenario.terrain,
  * robot.design (when the campaign names robots), run.step_s (when the robot's section gives one:
@@ -122,9 +148,11 @@ enum { FS_CAMPAIGN_CELL_SETS = 6 };
 int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32],
                           const char **out);
 
-/* Trials are numbered cell-major: index = cell * seeds + seed - first_seed. */
+/* Trials are numbered cell-major, then by band end: index = (cell * nends + end) * seeds + seed -
+ * first_seed (without a band: cell * seeds + seed - first_seed); a cell's trials are one block. */
 int fs_campaign_ntrials(const fs_campaign *c);
 void fs_campaign_trial_of(const fs_campaign *c, int index, int *cell, int *seed);
+int fs_campaign_trial_end(const fs_campaign *c, int index);
 
 /* The 95 % Wilson score interval of k successes in n > 0 trials. */
 void fs_wilson(int k, int n, double *low, double *high);
@@ -153,8 +181,18 @@ typedef struct fs_campaign_row {
     double drop_saturation_N_m;            /* median M_s: the fold's or the support edge's moment */
     double drop_critical_m;                /* the highest centre of mass it stands on level ground (the
                                               heat map's line), m; NAN when none */
+    /* with a band: every field above is the worse end's (the smaller success rate; the first end
+       on a tie), the one named here; each end's own count and rate beside it */
+    int band_end;                          /* the end that decides, or -1 without a band */
+    int end_landed[FS_BAND_ENDS], end_trials[FS_BAND_ENDS];
+    double end_rate[FS_BAND_ENDS];
 } fs_campaign_row;
 enum { FS_LAW_NONE = -1, FS_LAW_TOPPLES = 0, FS_LAW_STANDS = 1 };
+
+/* Where a success rate decides, to judge a law's verdict by (tools/law-agreement.py's rule): at least
+ * FS_RATE_LANDS lands, at most FS_RATE_FALLS falls, in between undecided. */
+#define FS_RATE_LANDS 0.7
+#define FS_RATE_FALLS 0.3
 
 /* "stands", "topples" or "n/a". */
 const char *fs_law_name(int law);
