@@ -6,6 +6,7 @@
 #include <string.h>
 
 enum { T = FS_SOIL_TILE, TT = FS_SOIL_TILE * FS_SOIL_TILE };
+_Static_assert(FS_SOIL_TILE == 16, "mine() indexes tiles by shifts of 4");
 
 /* ---- geometry: a vertical line against a shape ---------------------------------------------- */
 
@@ -34,7 +35,7 @@ typedef struct placed {
  * capsule is the union of balls along the segment, so the lowest point is the lowest of
  * g(t) = A_z + t D_z - sqrt(r^2 - rho(t)^2), rho the horizontal distance to A + t D; g is convex
  * and its stationary point has a closed form. */
-static double capsule_lowest(const placed *p, double x, double y, double n[3])
+static inline double capsule_lowest(const placed *p, double x, double y, double n[3])
 {
     const double *A = p->A, *D = p->D, r = p->r, r2 = p->r2, a = p->a;
     double wx = x - A[0], wy = y - A[1];
@@ -61,7 +62,7 @@ static double capsule_lowest(const placed *p, double x, double y, double n[3])
 
 /* The box (centre A, axes the columns of R, half lengths half) entered by a line going up through (x, y):
  * in the box's frame the line runs from o (its point at z = A_z) along the box's third row of R. */
-static double box_lowest(const placed *p, double x, double y, double n[3])
+static inline double box_lowest(const placed *p, double x, double y, double n[3])
 {
     const double *R = p->R, *h = p->half;
     double rx = x - p->A[0], ry = y - p->A[1];
@@ -467,8 +468,19 @@ static void add_force(double f[3], double t[3], const double r[3], const double 
 /* Whether stored node (i, j) is one of shape s's this step. */
 static int mine(const fs_soil_grid *g, int i, int j, int s)
 {
-    const fs_soil_node *n = stored_at(g, i, j);
-    return n && n->stamp == g->stamp && n->shape == s;
+    /* stored_at's lookup with shifts for T = 16 and the strides 1 to 16 (the perimeter's hot path) */
+    static const unsigned char sh_of[T + 1] = {0, 0, 1, 0, 2, 0, 0, 0, 3, 0, 0, 0, 0, 0, 0, 0, 4};
+    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny)
+        return 0;
+    const unsigned ui = (unsigned)i, uj = (unsigned)j, k = (uj >> 4) * (unsigned)g->tx + (ui >> 4);
+    const int slot = g->tile[k];
+    if (slot < 0)
+        return 0;
+    const unsigned st = g->stride[k], sh = sh_of[st], li = ui & (T - 1), lj = uj & (T - 1);
+    if ((li | lj) & (st - 1))
+        return 0;
+    const fs_soil_node *n = g->pool + (size_t)slot * TT + (((lj >> sh) << (4 - sh)) + (li >> sh));
+    return n->stamp == g->stamp && n->shape == s;
 }
 
 /* The x extent of a convex plan polygon's row y, widened into [*lo, *hi]: the row against its edges
