@@ -11,6 +11,8 @@
  *   along the motion;
  * - a foot through a thin layer stops on the bedrock;
  * - a soil landing's impact impulse is its fall's momentum;
+ * - shapes stacked over the same nodes outgrow the step's claims, and the lowest one's force is the
+ *   one it has alone, to the bit;
  * - validation: n <= 0, a negative modulus, phi of 90 degrees, depth 0, RFT without zeta or density,
  *   a grid over max_nodes are refused with file:line (or the key) before anything runs. */
 #include "fs_test.h"
@@ -478,7 +480,60 @@ static void bad_soils_are_refused(void)
 }
 
 
+/* ---- the step's claims -------------------------------------------------------------------------- */
+
+/* Three plates stacked 0.1 mm apart over the same 40 x 40 mm (each on a body of its own) on a grid
+ * whose pool and claims start at a single tile's worth: every node is claimed three times, which the
+ * claims (sized for the pool's nodes) cannot hold until they grow. The lowest plate takes every node:
+ * its force must be, to the bit, the force the same plate gets alone on a fresh grid (the claims keep
+ * the order of its rows), and the two above it carry none. */
+static void plate_stack(int nplates, double F[3], int nodes[3], int *claim_grows)
+{
+    static fs_terrain t;
+    static fs_soil_grid g;
+    fs_error err;
+    const char *set[] = {"soil.grid_m=5e-4"};
+    REQUIRE(fs_terrain_load("terrains/soils/dry_sand.ini", set, 1, &t, &err) == FS_OK);
+    double region[4] = {-0.1, 0.1, -0.1, 0.1}, start[4] = {-1e-3, 1e-3, -1e-3, 1e-3};
+    REQUIRE(fs_soil_region(&t.def.soil, region, t.path, t.soil_region, NULL, &err) == FS_OK);
+    memset(&g, 0, sizeof g);
+    REQUIRE(fs_soil_grid_init(&g, &t, (const double(*)[4])start, 1, &err) == FS_OK);
+    fs_soil_body b[3];
+    for (int k = 0; k < nplates; k++) {
+        fs_soil_shape *s = &g.shape[g.nshapes++];
+        memset(s, 0, sizeof *s);
+        s->kind = FS_SOIL_BOX;
+        s->body = k;
+        s->half[0] = s->half[1] = 0.02, s->half[2] = 1e-3;
+        s->R[0] = s->R[4] = s->R[8] = 1;
+        /* the lowest (the last) 10 mm into the soil, the others 0.1 and 0.2 mm above it */
+        b[k] = plate_body(1e-4, t.def.soil.depth_m - 0.01 + 1e-3 + 1e-4 * (nplates - 1 - k), 0, 0, -0.01);
+    }
+    REQUIRE(fs_soil_grid_step(&g, b, 1e-4, &err) == FS_OK);
+    memcpy(F, g.force[nplates - 1], 3 * sizeof(double));
+    for (int k = 0; k < nplates; k++)
+        nodes[k] = g.nodes[k];
+    *claim_grows = g.claim_grows;
+    fs_soil_grid_free(&g);
+    fs_terrain_free(&t);
+}
+
+static void stacked_shapes_outgrow_the_claims(void)
+{
+    double alone[3], stacked[3];
+    int n1[3], n3[3], grows1, grows3;
+    plate_stack(1, alone, n1, &grows1);
+    plate_stack(3, stacked, n3, &grows3);
+    printf("  alone: %d nodes, Fz %.6f N; stacked: %d, %d, %d nodes, Fz %.6f N; the claims grew %d times\n", n1[0],
+           alone[2], n3[0], n3[1], n3[2], stacked[2], grows3);
+    CHECK(grows3 > 0);
+    /* 40 mm at 0.5 mm: 80 or 81 nodes a side, by where the plate's edges fall on the grid */
+    CHECK(n1[0] >= 80 * 80 && n1[0] <= 81 * 81 && n3[2] == n1[0] && n3[0] == 0 && n3[1] == 0);
+    for (int k = 0; k < 3; k++)
+        CHECK(stacked[k] == alone[k]);
+}
+
 FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_tilt), TEST(rft_forces_never_push_along_the_motion),
              TEST(soil_landing_impulse_is_the_falls_momentum), TEST(plate_dragged_follows_janosi), TEST(bad_soils_are_refused),
              TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little),
-             TEST(the_sole_on_its_coarse_grid))
+             TEST(the_sole_on_its_coarse_grid), TEST(stacked_shapes_outgrow_the_claims))

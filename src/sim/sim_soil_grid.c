@@ -6,6 +6,7 @@
 #include <string.h>
 
 enum { T = FS_SOIL_TILE, TT = FS_SOIL_TILE * FS_SOIL_TILE };
+_Static_assert(FS_SOIL_TILE == 16, "mine() indexes tiles by shifts of 4");
 
 /* ---- geometry: a vertical line against a shape ---------------------------------------------- */
 
@@ -15,75 +16,81 @@ static void to_world(const fs_soil_body *b, const double l[3], double w[3])
         w[r] = b->p[r] + b->R[3 * r] * l[0] + b->R[3 * r + 1] * l[1] + b->R[3 * r + 2] * l[2];
 }
 
+/* Without the library's calls (fmin and fmax are calls in C11 without -ffast-math): the same value for
+ * every number that is not NaN, which the step never meets. */
+static inline double lo2(double a, double b) { return b < a ? b : a; }
+static inline double hi2(double a, double b) { return b > a ? b : a; }
+
+/* A shape where its body is now: world ends (capsule) or centre and axes (box), and what its lowest
+ * point on a vertical line needs that does not depend on the line (computed once a step). */
+typedef struct placed {
+    int kind;
+    double A[3], B[3], R[9], r, half[3];
+    double cA[3], cB[3]; /* capsule: the part of its segment whose balls reach below a height (clip_below) */
+    double D[3], a, aD, r2; /* capsule: B - A, |D_xy|^2, |D|^2 (as a + D_z^2), r^2 */
+    int flat[3];            /* box: its axis k is horizontal (the line runs along its faces k) */
+} placed;
+
 /* The lowest point of the capsule (segment A-B, radius r) on the vertical line through (x, y): the
  * capsule is the union of balls along the segment, so the lowest point is the lowest of
  * g(t) = A_z + t D_z - sqrt(r^2 - rho(t)^2), rho the horizontal distance to A + t D; g is convex
  * and its stationary point has a closed form. */
-static double capsule_lowest(const double A[3], const double B[3], double r, double x, double y, double n[3])
+static inline double capsule_lowest(const placed *p, double x, double y, double n[3])
 {
-    double D[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
+    const double *A = p->A, *D = p->D, r = p->r, r2 = p->r2, a = p->a;
     double wx = x - A[0], wy = y - A[1];
-    double a = D[0] * D[0] + D[1] * D[1], wd = wx * D[0] + wy * D[1], w2 = wx * wx + wy * wy;
+    double wd = wx * D[0] + wy * D[1], w2 = wx * wx + wy * wy;
     double t;
     if (a < 1e-18) {
         t = D[2] > 0 ? 0 : 1;
     } else {
-        double perp2 = fmax(0, w2 - wd * wd / a); /* squared distance to the segment's line, in plan */
-        if (perp2 >= r * r)
+        double perp2 = hi2(0, w2 - wd * wd / a); /* squared distance to the segment's line, in plan */
+        if (perp2 >= r2)
             return INFINITY;
-        double u = -D[2] * sqrt(a * (r * r - perp2) / (a + D[2] * D[2]));
+        double u = -D[2] * sqrt(a * (r2 - perp2) / p->aD);
         t = (u + wd) / a;
-        t = fmin(1, fmax(0, t));
+        t = lo2(1, hi2(0, t));
     }
     double qx = A[0] + t * D[0], qy = A[1] + t * D[1], qz = A[2] + t * D[2];
     double rho2 = (x - qx) * (x - qx) + (y - qy) * (y - qy);
-    if (rho2 >= r * r)
+    if (rho2 >= r2)
         return INFINITY;
-    double z = qz - sqrt(r * r - rho2);
+    double z = qz - sqrt(r2 - rho2);
     n[0] = (x - qx) / r, n[1] = (y - qy) / r, n[2] = (z - qz) / r;
     return z;
 }
 
-/* The box (centre c, axes the columns of R, half lengths h) entered by a line going up through (x, y). */
-static double box_lowest(const double c[3], const double R[9], const double h[3], double x, double y, double n[3])
+/* The box (centre A, axes the columns of R, half lengths half) entered by a line going up through (x, y):
+ * in the box's frame the line runs from o (its point at z = A_z) along the box's third row of R. */
+static inline double box_lowest(const placed *p, double x, double y, double n[3])
 {
-    double o[3], dir[3]; /* the line's point at z = c_z and its direction, in the box's frame */
-    double rel[3] = {x - c[0], y - c[1], 0};
-    for (int k = 0; k < 3; k++) {
-        o[k] = R[k] * rel[0] + R[3 + k] * rel[1] + R[6 + k] * rel[2];
-        dir[k] = R[6 + k];
-    }
+    const double *R = p->R, *h = p->half;
+    double rx = x - p->A[0], ry = y - p->A[1];
     double t0 = -INFINITY, t1 = INFINITY;
     int face = -1;
     for (int k = 0; k < 3; k++) {
-        if (fabs(dir[k]) < 1e-12) {
-            if (fabs(o[k]) > h[k])
+        double o = R[k] * rx + R[3 + k] * ry, dir = R[6 + k];
+        if (p->flat[k]) {
+            if (fabs(o) > h[k])
                 return INFINITY;
             continue;
         }
-        double ta = (-h[k] - o[k]) / dir[k], tb = (h[k] - o[k]) / dir[k];
+        double ta = (-h[k] - o) / dir, tb = (h[k] - o) / dir;
         if (ta > tb) {
             double s = ta;
             ta = tb, tb = s;
         }
         if (ta > t0)
             t0 = ta, face = k;
-        t1 = fmin(t1, tb);
+        t1 = lo2(t1, tb);
     }
     if (t0 > t1 || face < 0)
         return INFINITY;
-    double s = dir[face] > 0 ? -1 : 1; /* the face entered looks against the line */
+    double s = R[6 + face] > 0 ? -1 : 1; /* the face entered looks against the line */
     for (int r = 0; r < 3; r++)
         n[r] = s * R[3 * r + face];
-    return c[2] + t0;
+    return p->A[2] + t0;
 }
-
-/* A shape where its body is now: world ends (capsule) or centre and axes (box). */
-typedef struct placed {
-    int kind;
-    double A[3], B[3], R[9], r, half[3];
-    double cA[3], cB[3]; /* capsule: the part of its segment whose balls reach below a height (clip_below) */
-} placed;
 
 static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
 {
@@ -97,11 +104,18 @@ static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++)
             p->R[3 * r + c] = body->R[3 * r] * s->R[c] + body->R[3 * r + 1] * s->R[3 + c] + body->R[3 * r + 2] * s->R[6 + c];
+    for (int k = 0; k < 3; k++) {
+        p->D[k] = p->B[k] - p->A[k];
+        p->flat[k] = fabs(p->R[6 + k]) < 1e-12;
+    }
+    p->a = p->D[0] * p->D[0] + p->D[1] * p->D[1];
+    p->aD = p->a + p->D[2] * p->D[2];
+    p->r2 = p->r * p->r;
 }
 
 static double placed_lowest(const placed *p, double x, double y, double n[3])
 {
-    return p->kind == FS_SOIL_CAPSULE ? capsule_lowest(p->A, p->B, p->r, x, y, n) : box_lowest(p->A, p->R, p->half, x, y, n);
+    return p->kind == FS_SOIL_CAPSULE ? capsule_lowest(p, x, y, n) : box_lowest(p, x, y, n);
 }
 
 double fs_soil_shape_lowest(const fs_soil_shape *s, const fs_soil_body *body, double x, double y, double n[3])
@@ -175,6 +189,22 @@ static fs_status grow(fs_soil_grid *g, fs_error *err)
     if (g->cap_tiles)
         g->grows++;
     g->cap_tiles = cap;
+    return FS_OK;
+}
+
+/* Room for at least want claims (fs_soil_claim): the buffer doubled, as the pool is. */
+static fs_status grow_claims(fs_soil_grid *g, long want, fs_error *err)
+{
+    long cap = g->cap_claims > 0 ? g->cap_claims : TT;
+    while (cap < want)
+        cap *= 2;
+    fs_soil_claim *c = realloc(g->claim, (size_t)cap * sizeof *c);
+    if (!c)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's step (%ld nodes claimed)", want);
+    g->claim = c;
+    if (g->cap_claims)
+        g->claim_grows++;
+    g->cap_claims = cap;
     return FS_OK;
 }
 
@@ -301,6 +331,8 @@ int fs_soil_stride(const fs_soil_def *d, double width_m)
 
 fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (*boxes)[4], int nboxes, fs_error *err)
 {
+    g->claim = NULL;
+    g->cap_claims = 0;
     g->terrain = t;
     g->d = t->def.soil;
     g->dx = g->d.grid_m;
@@ -342,7 +374,8 @@ fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (
     g->pool = malloc((size_t)g->cap_tiles * TT * sizeof *g->pool);
     if (!g->pool)
         return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's grid (%d tiles)", g->cap_tiles);
-    return FS_OK;
+    g->cap_claims = 0;
+    return grow_claims(g, (long)g->cap_tiles * TT, err);
 }
 
 void fs_soil_grid_free(fs_soil_grid *g)
@@ -351,6 +384,9 @@ void fs_soil_grid_free(fs_soil_grid *g)
     free(g->stride);
     free(g->slot_tile);
     free(g->pool);
+    free(g->claim);
+    g->claim = NULL;
+    g->cap_claims = 0;
     g->tile = NULL;
     g->stride = NULL;
     g->slot_tile = NULL;
@@ -436,8 +472,19 @@ static void add_force(double f[3], double t[3], const double r[3], const double 
 /* Whether stored node (i, j) is one of shape s's this step. */
 static int mine(const fs_soil_grid *g, int i, int j, int s)
 {
-    const fs_soil_node *n = stored_at(g, i, j);
-    return n && n->stamp == g->stamp && n->shape == s;
+    /* stored_at's lookup with shifts for T = 16 and the strides 1 to 16 (the perimeter's hot path) */
+    static const unsigned char sh_of[T + 1] = {0, 0, 1, 0, 2, 0, 0, 0, 3, 0, 0, 0, 0, 0, 0, 0, 4};
+    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny)
+        return 0;
+    const unsigned ui = (unsigned)i, uj = (unsigned)j, k = (uj >> 4) * (unsigned)g->tx + (ui >> 4);
+    const int slot = g->tile[k];
+    if (slot < 0)
+        return 0;
+    const unsigned st = g->stride[k], sh = sh_of[st], li = ui & (T - 1), lj = uj & (T - 1);
+    if ((li | lj) & (st - 1))
+        return 0;
+    const fs_soil_node *n = g->pool + (size_t)slot * TT + (((lj >> sh) << (4 - sh)) + (li >> sh));
+    return n->stamp == g->stamp && n->shape == s;
 }
 
 /* The x extent of a convex plan polygon's row y, widened into [*lo, *hi]: the row against its edges
@@ -532,60 +579,21 @@ static int segment(const fs_soil_grid *g, int j, int i0, int i1, int ti, seg *q)
  * node's yield and print moved. */
 static double plastic(fs_soil_node *nd, double s, double se, double law, double Ke)
 {
-    double sigma = fmin(se, fmax(law, nd->yield_Pa));
+    double sigma = lo2(se, hi2(law, nd->yield_Pa));
     nd->yield_Pa = sigma;
-    nd->sp_m = fmax(nd->sp_m, s - sigma / Ke);
+    nd->sp_m = hi2(nd->sp_m, s - sigma / Ke);
     return sigma;
 }
 
-/* A walk over the stored nodes a shape's plan may cover, in rows of (every rows-th of its box's
- * range), tile by tile along each row, node by node: the same order as the grid's rows. */
-typedef struct walk {
-    const fs_soil_grid *g;
-    const placed *p;
-    const int *r;
-    int rows, j, i0, i1, ti, i, in_seg;
-    seg q;
-} walk;
-
-static void walk_start(walk *w, const fs_soil_grid *g, const placed *p, const int r[4], int rows)
-{
-    *w = (walk){.g = g, .p = p, .r = r, .rows = rows, .j = (r[2] + rows - 1) / rows * rows - rows, .i1 = -1};
-    w->ti = 0;
-}
-
-/* The next node (w->i, w->j in its tile's segment w->q), or NULL after the last. */
-static fs_soil_node *walk_next(walk *w)
-{
-    for (;;) {
-        if (w->in_seg) {
-            w->i += w->q.st;
-            if (w->i <= w->q.b)
-                return w->q.base + ((w->i - w->q.off) >> w->q.sh);
-            w->in_seg = 0;
-        }
-        while (!w->in_seg && ++w->ti <= w->i1 / T)
-            if (segment(w->g, w->j, w->i0, w->i1, w->ti, &w->q))
-                w->in_seg = 1, w->i = w->q.a - w->q.st;
-        if (w->in_seg)
-            continue;
-        do {
-            w->j += w->rows;
-            if (w->j > w->r[3])
-                return NULL;
-        } while (!row_nodes(w->g, w->p, w->r, w->j, &w->i0, &w->i1));
-        w->ti = w->i0 / T - 1;
-    }
-}
-
 /* The force on one node's element (bekker or rft), N, at point q moving at v: its normal part F and
- * its shear part S, whose viscous slope (N s/m) is added to *slope. */
-static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, double A, const double v[3], double h,
+ * its shear part S, whose viscous slope (N s/m) is added to *slope. kb: Bekker's k_c / b + k_phi for
+ * its shape's patch (fs_bekker_pressure's factor). */
+static void node_force(fs_soil_grid *g, fs_soil_node *nd, double kb, double A, const double v[3], double h,
                        double F[3], double S[3], double *slope)
 {
     const fs_soil_def *d = &g->d;
     double reg = d->slip_speed_m_per_s;
-    double s = fmin(nd->h0_m - nd->zb_m, d->depth_m); /* sinkage below the undisturbed surface, above the bedrock */
+    double s = lo2(nd->h0_m - nd->zb_m, d->depth_m); /* sinkage below the undisturbed surface, above the bedrock */
     double vh = sqrt(v[0] * v[0] + v[1] * v[1]);
     F[0] = F[1] = F[2] = S[0] = S[1] = S[2] = 0;
     /* the elastic trial: within the yield (unloading, reloading, at rest) no law need be evaluated */
@@ -593,11 +601,11 @@ static void node_force(fs_soil_grid *g, fs_soil_node *nd, double b, double A, co
     if (se <= 0)
         return;
     if (d->model == FS_SOIL_BEKKER) {
-        double sigma = se <= nd->yield_Pa ? se : plastic(nd, s, se, fs_bekker_pressure(d, b, s), d->K_e_Pa_per_m);
-        double total = fmax(0, sigma - d->damping_Pa_s_per_m * v[2]);
+        double sigma = se <= nd->yield_Pa ? se : plastic(nd, s, se, kb * pow(hi2(s, 0), d->n), d->K_e_Pa_per_m);
+        double total = hi2(0, sigma - d->damping_Pa_s_per_m * v[2]);
         nd->slip_m += vh * h;
         double tau = (d->cohesion_Pa + sigma * g->tan_phi) * (1 - exp(-nd->slip_m / d->shear_K_m));
-        double k = tau / fmax(vh, reg);
+        double k = tau / hi2(vh, reg);
         S[0] = -k * v[0] * A, S[1] = -k * v[1] * A, F[2] = total * A;
         *slope += k * A;
         nd->sigma_Pa = total;
@@ -661,7 +669,8 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
     g->stamp++;
     int range[FS_SOIL_MAX_SHAPES][4], near[FS_SOIL_MAX_SHAPES], rows[FS_SOIL_MAX_SHAPES];
     placed pl[FS_SOIL_MAX_SHAPES];
-    /* the tiles under every shape, each as fine as the finest shape over it, before any is solved */
+    /* the tiles under every shape, each as fine as the finest shape over it, before any is solved
+     * (so that no tile moves while the claims below point into the pool) */
     for (int s = 0; s < g->nshapes; s++) {
         const fs_soil_shape *sh = &g->shape[s];
         double box[4], zmin;
@@ -686,38 +695,62 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
             for (int ti = r[0] / T; ti <= r[1] / T; ti++)
                 rows[s] = g->stride[tj * g->tx + ti] < rows[s] ? g->stride[tj * g->tx + ti] : rows[s];
     }
-    /* each node to the lowest shape over it that reaches below its print */
-    walk w;
-    fs_soil_node *nd;
+    /* each node to the lowest shape over it that reaches below its print; each claim kept, in the
+     * order of the shape's rows, for the two passes below */
+    long first[FS_SOIL_MAX_SHAPES + 1], nc = 0;
     for (int s = 0; s < g->nshapes; s++) {
+        first[s] = nc;
         if (!near[s])
             continue;
         placed *p = &pl[s];
         place(&g->shape[s], &bodies[g->shape[s].body], p);
         clip_below(p, g->top_m);
-        for (walk_start(&w, g, p, range[s], rows[s]); (nd = walk_next(&w));) {
-            double n[3], z = placed_lowest(p, g->x0 + w.i * g->dx, g->y0 + w.j * g->dx, n);
-            if (!(z < nd->h0_m - nd->sp_m) || (nd->stamp == g->stamp && nd->zb_m <= z))
+        const int *r = range[s];
+        for (int j = (r[2] + rows[s] - 1) / rows[s] * rows[s]; j <= r[3]; j += rows[s]) {
+            int i0, i1;
+            if (!row_nodes(g, p, r, j, &i0, &i1))
                 continue;
-            nd->stamp = g->stamp;
-            nd->shape = s;
-            nd->zb_m = z;
-            memcpy(nd->n, n, sizeof n);
+            const double y = g->y0 + j * g->dx;
+            for (int ti = i0 / T; ti <= i1 / T; ti++) {
+                seg q;
+                if (!segment(g, j, i0, i1, ti, &q))
+                    continue;
+                if (nc + (q.b - q.a) / q.st + 1 > g->cap_claims) {
+                    fs_status st = grow_claims(g, nc + (q.b - q.a) / q.st + 1, err);
+                    if (st != FS_OK)
+                        return st;
+                }
+                for (int i = q.a; i <= q.b; i += q.st) {
+                    fs_soil_node *nd = q.base + ((i - q.off) >> q.sh);
+                    double n[3], z = placed_lowest(p, g->x0 + i * g->dx, y, n);
+                    if (!(z < nd->h0_m - nd->sp_m) || (nd->stamp == g->stamp && nd->zb_m <= z))
+                        continue;
+                    nd->stamp = g->stamp;
+                    nd->shape = s;
+                    nd->zb_m = z;
+                    memcpy(nd->n, n, sizeof n);
+                    g->claim[nc++] = (fs_soil_claim){nd, i, j, q.st};
+                }
+            }
         }
     }
+    first[g->nshapes] = nc;
     const long now = g->stamp;
 #define OURS(n) ((n)->stamp == now && (n)->shape == s)
     for (int s = 0; s < g->nshapes; s++) {
-        if (!near[s])
+        if (first[s] == first[s + 1])
             continue;
         /* Bekker's b of the shape's loaded patch: twice its area over its perimeter (Chrono's convention),
-         * in units of dx^2 and dx (a node of stride st covers st^2 and each of its open sides st) */
+         * in units of dx^2 and dx (a node of stride st covers st^2 and each of its open sides st); a
+         * node claimed here and by a later shape is that shape's */
         long cells = 0, area = 0, edges = 0;
-        for (walk_start(&w, g, &pl[s], range[s], rows[s]); (nd = walk_next(&w));) {
+        for (long c = first[s]; c < first[s + 1]; c++) {
+            const fs_soil_claim *cl = &g->claim[c];
+            const fs_soil_node *nd = cl->node;
             if (!OURS(nd))
                 continue;
             /* its neighbours st away: in the same tile (the same stride) read directly */
-            const int i = w.i, j = w.j, st = w.q.st, li = i - w.q.off, lj = j % T, row = T / st;
+            const int i = cl->i, j = cl->j, st = cl->st, li = i % T, lj = j % T, row = T / st;
             int open = !(li + st < T ? OURS(nd + 1) : mine(g, i + st, j, s)) +
                        !(li >= st ? OURS(nd - 1) : mine(g, i - st, j, s)) +
                        !(lj + st < T ? OURS(nd + row) : mine(g, i, j + st, s)) +
@@ -728,22 +761,25 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
         }
         if (!cells)
             continue;
-        double b = fmax(g->d.b_min_m, 2.0 * (double)area * g->dx / (double)edges);
+        double b = hi2(g->d.b_min_m, 2.0 * (double)area * g->dx / (double)edges);
         g->b_m[s] = b;
         g->nodes[s] = (int)cells;
         g->area_m2[s] = (double)area * g->dx * g->dx;
         const fs_soil_body *bd = &bodies[g->shape[s].body];
+        const double kb = g->d.k_c_N_per_m_n1 / b + g->d.k_phi_N_per_m_n2; /* Bekker's modulus for this b */
         double shear[3] = {0, 0, 0}, shear_torque[3] = {0, 0, 0}, slope = 0, work_n = 0, work_s = 0;
-        for (walk_start(&w, g, &pl[s], range[s], rows[s]); (nd = walk_next(&w));) {
+        for (long c = first[s]; c < first[s + 1]; c++) {
+            const fs_soil_claim *cl = &g->claim[c];
+            fs_soil_node *nd = cl->node;
             if (!OURS(nd))
                 continue;
-            const double ds = w.q.st * g->dx, A = ds * ds;
-            double qp[3] = {g->x0 + w.i * g->dx, g->y0 + w.j * g->dx, nd->zb_m};
+            const double ds = cl->st * g->dx, A = ds * ds;
+            double qp[3] = {g->x0 + cl->i * g->dx, g->y0 + cl->j * g->dx, nd->zb_m};
             double rq[3] = {qp[0] - bd->p[0], qp[1] - bd->p[1], qp[2] - bd->p[2]};
             double v[3] = {bd->v[0] + bd->w[1] * rq[2] - bd->w[2] * rq[1], bd->v[1] + bd->w[2] * rq[0] - bd->w[0] * rq[2],
                            bd->v[2] + bd->w[0] * rq[1] - bd->w[1] * rq[0]};
             double F[3], S[3];
-            node_force(g, nd, b, A, v, h, F, S, &slope);
+            node_force(g, nd, kb, A, v, h, F, S, &slope);
             work_n -= (F[0] * v[0] + F[1] * v[1] + F[2] * v[2]) * h;
             work_s -= (S[0] * v[0] + S[1] * v[1] + S[2] * v[2]) * h;
             add_force(g->force[s], g->torque[s], rq, F);

@@ -74,6 +74,13 @@ typedef struct fs_soil_node {
     int shape;              /* ... and whose shape it is */
 } fs_soil_node;
 
+/* A node a shape claimed in this step's first pass: the later passes (its patch's perimeter, its
+ * forces) read the shape's claims in the order they were made, the order of its rows. */
+typedef struct fs_soil_claim {
+    fs_soil_node *node;
+    int i, j, st;           /* the node's grid indices and its tile's stride */
+} fs_soil_claim;
+
 typedef struct fs_soil_grid {
     const fs_terrain *terrain;
     fs_soil_def d;
@@ -87,6 +94,10 @@ typedef struct fs_soil_grid {
     fs_soil_node *pool;     /* ntiles * FS_SOIL_TILE^2 nodes */
     int ntiles, cap_tiles, max_tiles;
     int grows;              /* how many times the pool grew during the run */
+    fs_soil_claim *claim;   /* the step's claims (scratch): as many as the pool's nodes, doubled when a
+                             * step needs more (shapes overlapping in plan), counted in claim_grows */
+    long cap_claims;
+    int claim_grows;
     double top_m;           /* the highest undisturbed surface: a shape above it meets nothing */
     int nshapes;
     fs_soil_shape shape[FS_SOIL_MAX_SHAPES];
