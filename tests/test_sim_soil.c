@@ -4,7 +4,8 @@
  * - the load removed: the sole rises by the pressure's drop over K_e;
  * - a print's volume: the surface's dent, the plastic sinkage summed over the nodes, and the sole's
  *   area times the closed form's plastic sinkage, all three alike;
- * - halving the grid moves the static sinkage by less than the grid's bound;
+ * - halving the grid moves the static sinkage by less than the grid's bound; the same for the links'
+ *   capsules on their own spacing ([soil] nodes_across);
  * - a plate dragged at constant normal load: Janosi's 1 - e^(-j/K) at j = K, 2K, 3K;
  * - RFT: alpha_z(0, pi/2) = 1, alpha_x(0, pi/2) = 0 (and four values derived from the fit), a plate
  *   at a depth and tilt against the formula, the inertial term against rho v^2; its forces never push
@@ -193,6 +194,104 @@ static void halving_the_grid_moves_sinkage_little(void)
     printf("  sinkage on a 2 mm grid %.4f mm, on 1 mm %.4f mm: %.4f mm apart, bound %.4f mm\n", a.sink_m * 1e3,
            b.sink_m * 1e3, fabs(a.sink_m - b.sink_m) * 1e3, bound * 1e3);
     CHECK(fabs(a.sink_m - b.sink_m) <= bound);
+}
+
+/* ---- a link's capsule on its own spacing ---------------------------------------------------- */
+
+/* A capsule of radius r and length L (its segment's) along x, turned 7 degrees about z (so that its
+ * edges cut the grid's rows at every offset), alone on a grid of soil (0.5 mm, no damping) and met on
+ * every stride-th node: pressed down 10 um a step until the soil carries W; its sinkage then (linear
+ * between the two steps around W), m. */
+static double capsule_sinkage(const char *soil, double r, double L, int stride, double W, double *dx)
+{
+    static fs_terrain t;
+    static fs_soil_grid g;
+    fs_error err;
+    const char *set[] = {"soil.grid_m=5e-4", "bekker.damping_Pa_s_per_m=0"};
+    REQUIRE(fs_terrain_load(soil, set, 2, &t, &err) == FS_OK);
+    double box[4] = {-0.06, 0.06, -0.06, 0.06};
+    REQUIRE(fs_soil_region(&t.def.soil, box, t.path, t.soil_region, NULL, &err) == FS_OK);
+    memset(&g, 0, sizeof g);
+    REQUIRE(fs_soil_grid_init(&g, &t, (const double(*)[4])box, 1, &err) == FS_OK);
+    fs_soil_shape *s = &g.shape[g.nshapes++];
+    memset(s, 0, sizeof *s);
+    s->kind = FS_SOIL_CAPSULE;
+    s->a[0] = -0.5 * L, s->b[0] = 0.5 * L, s->radius_m = r, s->stride = stride;
+    const double h = 1e-4, step = 1e-5, c = cos(7 * M_PI / 180), sn = sin(7 * M_PI / 180);
+    double depth = t.def.soil.depth_m, z = 0, F = 0, sink = -1;
+    fs_soil_body b = {.p = {1.3e-4, 0.7e-4, depth + r}, .R = {c, -sn, 0, sn, c, 0, 0, 0, 1}, .v = {0, 0, -step / h},
+                      .mass_kg = 1e6};
+    while (z < 0.09) {
+        z += step;
+        b.p[2] = depth + r - z;
+        REQUIRE(fs_soil_grid_step(&g, &b, h, &err) == FS_OK);
+        double Fz = g.force[0][2];
+        if (Fz >= W) {
+            sink = z - step * (Fz - W) / (Fz - F);
+            break;
+        }
+        F = Fz;
+    }
+    *dx = g.dx * stride;
+    fs_soil_grid_free(&g);
+    fs_terrain_free(&t);
+    return sink;
+}
+
+/* The links' capsules are met on the widest spacing that leaves [soil] nodes_across (8) nodes across
+ * them: a metatarsal (radius 4 mm) and the heel (6 mm) on every 2nd node of the presets' 0.5 mm, the
+ * toes (3 and 3.75 mm) on every node, the sole (70 mm) on every 4th (coarse_grid_m). Halving the
+ * capsules' spacing, 1 mm to 0.5 mm, moves their static sinkage under Fig. 11's load by less than a
+ * bound from the spacing, on two Bekker soils. */
+static void halving_the_capsules_spacing_moves_sinkage_little(void)
+{
+    static fs_terrain t;
+    fs_error err;
+    REQUIRE(fs_terrain_load("terrains/soils/lete_sand.ini", NULL, 0, &t, &err) == FS_OK);
+    const fs_soil_def *d = &t.def.soil;
+    CHECK(d->nodes_across == 8);
+    CHECK(fs_soil_stride(d, 0.006) == 1 && fs_soil_stride(d, 0.0075) == 1);
+    CHECK(fs_soil_stride(d, 0.008) == 2 && fs_soil_stride(d, 0.010) == 2 && fs_soil_stride(d, 0.012) == 2);
+    CHECK(fs_soil_stride(d, 0.070) == 4);
+    fs_terrain_free(&t);
+    /* each capsule as the foot's (docs/soil.md, The feet's shapes): radius and plan area at rest,
+     * its segment's length from them, A = 2 r L + pi r^2 */
+    const double radius[2] = {0.004, 0.006}, plan[2] = {3.61e-4, 4.01e-4};
+    const char *soils[2] = {"terrains/soils/lete_sand.ini", "terrains/soils/sandy_loam.ini"};
+    for (int c = 0; c < 2; c++)
+        for (int k = 0; k < 2; k++) {
+            double r = radius[c], L = (plan[c] - M_PI * r * r) / (2 * r);
+            /* Fig. 11's load, 26 kg and the foot's ~1 kg, spread over the twelve links' 30.3 cm² (the
+             * talus above them): each capsule carries its plan area's share */
+            double W = 27 * 9.81 * plan[c] / 30.3e-4;
+            REQUIRE(fs_terrain_load(soils[k], NULL, 0, &t, &err) == FS_OK);
+            double n = t.def.soil.n, kc = t.def.soil.k_c_N_per_m_n1, kphi = t.def.soil.k_phi_N_per_m_n2,
+                   bmin = t.def.soil.b_min_m;
+            fs_terrain_free(&t);
+            double dx1, dx2;
+            double z1 = capsule_sinkage(soils[k], r, L, 1, W, &dx1), z2 = capsule_sinkage(soils[k], r, L, 2, W, &dx2);
+            REQUIRE(z1 > 0 && z2 > 0);
+            /* The patch is the capsule's section at the undisturbed surface: half width a, area A,
+             * perimeter P. A grid counts the nodes within it: those within half a spacing of its edge
+             * may fall either way, so its area is A to within P dx / 2, and its Bekker b = 2 A / P
+             * (perimeter counted on the grid: within 4 dx of its limit, the box of its nodes) to
+             * within that and 4 dx / P. The load fixed, the pressure moves as 1 / A and Bekker's
+             * k_c / b + k_phi by the share kappa of k_c / b in it; the sinkage, as (p / k)^(1/n),
+             * by 1/n of their sum (less where the capsule's round bottom is deeper than its edge:
+             * the bound holds). The two grids differ by at most the sum of their bounds, plus the
+             * 10 um press's interpolation. */
+            double zm = fmax(z1, z2), a = zm < r ? sqrt(2 * r * zm - zm * zm) : r;
+            double A = 2 * a * L + M_PI * a * a, P = 2 * L + 2 * M_PI * a, b = fmax(2 * A / P, bmin);
+            double kappa = (kc / b) / (kc / b + kphi), bound = 1e-5;
+            for (int g = 0; g < 2; g++) {
+                double dx = g ? dx2 : dx1, dA = P * dx / (2 * A);
+                bound += zm / n * (dA + kappa * (dA + 4 * dx / P));
+            }
+            printf("  capsule r %g mm, L %.1f mm, %.1f N on %s: sinkage %.4f mm on 0.5 mm, %.4f mm on 1 mm: "
+                   "%.4f mm apart, bound %.4f mm\n",
+                   r * 1e3, L * 1e3, W, soils[k] + 15, z1 * 1e3, z2 * 1e3, fabs(z1 - z2) * 1e3, bound * 1e3);
+            CHECK(fabs(z1 - z2) <= bound);
+        }
 }
 
 /* ---- a plate meeting the grid directly -------------------------------------------------------- */
@@ -536,4 +635,5 @@ static void stacked_shapes_outgrow_the_claims(void)
 FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_tilt), TEST(rft_forces_never_push_along_the_motion),
              TEST(soil_landing_impulse_is_the_falls_momentum), TEST(plate_dragged_follows_janosi), TEST(bad_soils_are_refused),
              TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little),
-             TEST(the_sole_on_its_coarse_grid), TEST(stacked_shapes_outgrow_the_claims))
+             TEST(the_sole_on_its_coarse_grid), TEST(stacked_shapes_outgrow_the_claims),
+             TEST(halving_the_capsules_spacing_moves_sinkage_little))

@@ -65,8 +65,11 @@ const fs_key fs_terrain_keys[] = {
     NUM("soil", "grid_m", soil.grid_m, 1e-4, 0.05, 0, "m", "5e-4",
         "spacing of the soil's nodes (0.5 mm: a 3 mm toe sphere's patch spans several nodes; docs/soil.md)"),
     NUM("soil", "coarse_grid_m", soil.coarse_grid_m, 0, 0.05, 0, "m", "0.002",
-        "spacing of the nodes under a shape at least 16 of them wide on its narrowest side (the flat sole; a "
-        "power-of-two multiple of grid_m, at most 16; 0: every shape on grid_m; docs/soil.md, Speed)"),
+        "the widest spacing a shape's nodes may have (the flat sole's; a power-of-two multiple of grid_m, at most "
+        "16; 0: every shape on grid_m; docs/soil.md, Grid spacing)"),
+    INT("soil", "nodes_across", soil.nodes_across, 1, 256, "8",
+        "each shape is met on the widest power-of-two multiple of grid_m (up to coarse_grid_m) that leaves at least "
+        "this many nodes across its narrowest side (docs/soil.md, Grid spacing)"),
     NUM("soil", "margin_m", soil.margin_m, 0, 1, 0, "m", "0.03", "the grid covers the region the feet can reach plus this"),
     NUM("soil", "b_min_m", soil.b_min_m, 0, 1, POS, "m", "0.002",
         "Bekker's b (twice a patch's area over its perimeter) is taken at least this (a patch as it first forms)"),

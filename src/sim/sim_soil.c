@@ -155,7 +155,7 @@ fs_status fs_sim_soil_build(fs_sim *sim, fs_error *err)
     if (!sim->soil)
         return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the soil", sim->sc->path);
     make_shapes(sim);
-    /* a shape wide enough (the flat sole) on the coarser grid, a small one (a link) on the fine one */
+    /* each shape on the widest spacing that leaves [soil] nodes_across nodes across it (fs_soil_stride) */
     for (int s = 0; s < sim->soil->g.nshapes; s++) {
         fs_soil_shape *sh = &sim->soil->g.shape[s];
         double w = sh->kind == FS_SOIL_BOX ? 2 * fmin(sh->half[0], sh->half[1]) : 2 * sh->radius_m;

@@ -324,7 +324,8 @@ static fs_status need_tiles(fs_soil_grid *g, const int r[4], int st, fs_error *e
 int fs_soil_stride(const fs_soil_def *d, double width_m)
 {
     int s = 1;
-    while (2 * s <= T && 2 * s * d->grid_m <= d->coarse_grid_m * (1 + 1e-9) && 16 * 2 * s * d->grid_m <= width_m)
+    while (2 * s <= T && 2 * s * d->grid_m <= d->coarse_grid_m * (1 + 1e-9) &&
+           d->nodes_across * 2 * s * d->grid_m <= width_m * (1 + 1e-9))
         s *= 2;
     return s;
 }

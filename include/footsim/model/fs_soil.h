@@ -28,7 +28,8 @@ typedef struct fs_soil_def {
     int model;                   /* fs_soil_model */
     double depth_m;              /* the layer's thickness over the bedrock */
     double grid_m;               /* node spacing */
-    double coarse_grid_m;        /* spacing under a shape at least 16 of these wide (the flat sole); 0: grid_m */
+    double coarse_grid_m;        /* the widest spacing a shape may be met on (the flat sole's); 0: grid_m */
+    int nodes_across;            /* a shape's spacing leaves at least this many nodes across its narrowest side */
     double margin_m;             /* the grid covers the region the feet can reach plus this */
     double b_min_m;              /* Bekker's b is never taken below this (a patch as it first forms) */
     double slip_speed_m_per_s;   /* shear and drag reach full strength above this slip speed */

@@ -10,10 +10,12 @@
  * a run, said in docs/soil.md. Prints persist for the whole run (a node never forgets its plastic
  * sinkage).
  *
- * A shape wide enough (the flat sole) is met on a coarser grid (fs_soil_shape.stride, [soil]
- * coarse_grid_m): a tile it makes keeps only every stride-th node each way, each standing for
- * stride x stride nodes (its area, its print); a tile under a finer shape is made finer, its new
- * nodes taking the state of the coarse node they were read from. docs/soil.md, Speed, says why.
+ * Each shape is met on a spacing chosen from its own width (fs_soil_shape.stride, fs_soil_stride:
+ * [soil] nodes_across nodes across its narrowest side, at most coarse_grid_m): a tile it makes keeps
+ * only every stride-th node each way, each standing for stride x stride nodes (its area, its print);
+ * a tile under a finer shape is made finer, its new nodes taking the state of the coarse node they
+ * were read from, so a tile has the finest spacing of the shapes that reached it. docs/soil.md, Grid
+ * spacing, says which shape gets which and why.
  *
  * Each step (and each substep) fs_soil_grid_step casts a vertical line through every node under a
  * shape's plan (its bounding box's rows, each cut to where the row meets the plan of the shape's part
@@ -121,9 +123,9 @@ void fs_soil_grid_free(fs_soil_grid *g);
  * when the pool cannot grow (then no force is given). */
 fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double h, fs_error *err);
 
-/* The stride for a shape at least width_m wide on the narrowest side of its plan: the largest power of
- * two s <= FS_SOIL_TILE with s grid_m <= coarse_grid_m and at least 16 of its nodes across the width
- * (1 when coarse_grid_m is 0). */
+/* The stride for a shape width_m wide on the narrowest side of its plan: the largest power of two
+ * s <= FS_SOIL_TILE with s grid_m <= coarse_grid_m and at least nodes_across of its nodes across the
+ * width, s grid_m nodes_across <= width_m (1 when coarse_grid_m is 0 or the shape is narrower). */
 int fs_soil_stride(const fs_soil_def *d, double width_m);
 
 /* The soil's surface at node (i, j) now (the print, or the shape pressing it this step), m; its
