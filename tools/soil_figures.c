@@ -7,13 +7,15 @@
  * vertical), the time to rest, the area the soil carries the foot on (its nodes times the grid's
  * cell), and the soil's share of the ground force (the rest on the bedrock).
  * Built with footsim (`cmake --build build` makes build/soil-figures); run from the source folder:
- * `build/soil-figures > results/soil/static_load.md`. A Markdown table on stdout. */
+ * `build/soil-figures > results/soil/static_load.md` (`build/soil-figures FOOT`: only that foot's rows).
+ * A Markdown table on stdout. */
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_sim_soil.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const char *SOILS[] = {"dry_sand", "lete_sand", "sandy_loam", "lean_clay", "snow", "mud", "granular_loose",
                               "granular_close"};
@@ -77,14 +79,16 @@ static int run(const char *foot, const char *soil)
     return 0;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     fs_ode_init();
+    const char *only = argc > 1 ? argv[1] : NULL; /* a foot's name: only its rows */
     printf("| foot | soil | ankle drop (mm) | deepest print (mm) | tilt (deg) | at rest (s) | carried on (cm^2) | "
            "soil's share | ms a step |\n|---|---|--:|--:|--:|--:|--:|--:|--:|\n");
     int bad = 0;
     for (size_t s = 0; s < sizeof SOILS / sizeof SOILS[0]; s++)
         for (int f = 0; f < 2; f++)
-            bad |= run(f ? "flat" : "biomimetic", SOILS[s]);
+            if (!only || !strcmp(only, f ? "flat" : "biomimetic"))
+                bad |= run(f ? "flat" : "biomimetic", SOILS[s]);
     return bad;
 }
