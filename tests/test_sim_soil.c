@@ -238,27 +238,37 @@ static double capsule_sinkage(const char *soil, double r, double L, int stride, 
     return sink;
 }
 
-/* The links' capsules are met on the widest spacing that leaves [soil] nodes_across (8) nodes across
- * them: a metatarsal (radius 4 mm) and the heel (6 mm) on every 2nd node of the presets' 0.5 mm, the
- * toes (3 and 3.75 mm) on every node, the sole (70 mm) on every 4th (coarse_grid_m). Halving the
- * capsules' spacing, 1 mm to 0.5 mm, moves their static sinkage under Fig. 11's load by less than a
- * bound from the spacing, on two Bekker soils. */
+/* Each link's capsule is met on the widest spacing that leaves [soil] nodes_across nodes across it
+ * (fs_soil_stride; docs/soil.md, Grid spacing). Halving that spacing moves its static sinkage under
+ * Fig. 11's load by less than a bound from the spacing, on two Bekker soils. */
 static void halving_the_capsules_spacing_moves_sinkage_little(void)
 {
     static fs_terrain t;
     fs_error err;
-    REQUIRE(fs_terrain_load("terrains/soils/lete_sand.ini", NULL, 0, &t, &err) == FS_OK);
-    const fs_soil_def *d = &t.def.soil;
-    CHECK(d->nodes_across == 8);
-    CHECK(fs_soil_stride(d, 0.006) == 1 && fs_soil_stride(d, 0.0075) == 1);
-    CHECK(fs_soil_stride(d, 0.008) == 2 && fs_soil_stride(d, 0.010) == 2 && fs_soil_stride(d, 0.012) == 2);
-    CHECK(fs_soil_stride(d, 0.070) == 4);
+    const char *across = getenv("FS_TEST_NODES_ACROSS"); /* to try another rule by hand */
+    char set_across[64];
+    snprintf(set_across, sizeof set_across, "soil.nodes_across=%s", across ? across : "6");
+    const char *set[] = {set_across};
+    REQUIRE(fs_terrain_load("terrains/soils/lete_sand.ini", set, across ? 1 : 0, &t, &err) == FS_OK);
+    const fs_soil_def d = t.def.soil;
     fs_terrain_free(&t);
+    if (!across) { /* the default rule's spacings for the feet's widths (0.5 mm grid, 2 mm at most) */
+        CHECK(d.nodes_across == 6);
+        CHECK(fs_soil_stride(&d, 0.006) == 2 && fs_soil_stride(&d, 0.0075) == 2 && fs_soil_stride(&d, 0.008) == 2);
+        CHECK(fs_soil_stride(&d, 0.010) == 2 && fs_soil_stride(&d, 0.012) == 4 && fs_soil_stride(&d, 0.070) == 4);
+        CHECK(fs_soil_stride(&d, 0.0059) == 1);
+    }
     /* each capsule as the foot's (docs/soil.md, The feet's shapes): radius and plan area at rest,
-     * its segment's length from them, A = 2 r L + pi r^2 */
-    const double radius[2] = {0.004, 0.006}, plan[2] = {3.61e-4, 4.01e-4};
+     * its segment's length from them, A = 2 r L + pi r^2: phalanges 2-5, phalanx 1, metatarsals 2-5,
+     * metatarsal 1, heel */
+    const double radius[5] = {0.003, 0.00375, 0.004, 0.005, 0.006}, plan[5] = {1.10e-4, 1.72e-4, 3.61e-4, 5.73e-4, 4.01e-4};
     const char *soils[2] = {"terrains/soils/lete_sand.ini", "terrains/soils/sandy_loam.ini"};
-    for (int c = 0; c < 2; c++)
+    int halved = 0;
+    for (int c = 0; c < 5; c++) {
+        int st = fs_soil_stride(&d, 2 * radius[c]);
+        if (st < 2)
+            continue; /* on grid_m already */
+        halved++;
         for (int k = 0; k < 2; k++) {
             double r = radius[c], L = (plan[c] - M_PI * r * r) / (2 * r);
             /* Fig. 11's load, 26 kg and the foot's ~1 kg, spread over the twelve links' 30.3 cm² (the
@@ -269,7 +279,7 @@ static void halving_the_capsules_spacing_moves_sinkage_little(void)
                    bmin = t.def.soil.b_min_m;
             fs_terrain_free(&t);
             double dx1, dx2;
-            double z1 = capsule_sinkage(soils[k], r, L, 1, W, &dx1), z2 = capsule_sinkage(soils[k], r, L, 2, W, &dx2);
+            double z1 = capsule_sinkage(soils[k], r, L, st / 2, W, &dx1), z2 = capsule_sinkage(soils[k], r, L, st, W, &dx2);
             REQUIRE(z1 > 0 && z2 > 0);
             /* The patch is the capsule's section at the undisturbed surface: half width a, area A,
              * perimeter P. A grid counts the nodes within it: those within half a spacing of its edge
@@ -287,11 +297,14 @@ static void halving_the_capsules_spacing_moves_sinkage_little(void)
                 double dx = g ? dx2 : dx1, dA = P * dx / (2 * A);
                 bound += zm / n * (dA + kappa * (dA + 4 * dx / P));
             }
-            printf("  capsule r %g mm, L %.1f mm, %.1f N on %s: sinkage %.4f mm on 0.5 mm, %.4f mm on 1 mm: "
+            printf("  capsule r %g mm, L %.1f mm, %.1f N on %s: sinkage %.4f mm on %g mm, %.4f mm on %g mm: "
                    "%.4f mm apart, bound %.4f mm\n",
-                   r * 1e3, L * 1e3, W, soils[k] + 15, z1 * 1e3, z2 * 1e3, fabs(z1 - z2) * 1e3, bound * 1e3);
+                   r * 1e3, L * 1e3, W, soils[k] + 15, z1 * 1e3, dx1 * 1e3, z2 * 1e3, dx2 * 1e3, fabs(z1 - z2) * 1e3,
+                   bound * 1e3);
             CHECK(fabs(z1 - z2) <= bound);
         }
+    }
+    CHECK(halved > 0);
 }
 
 /* ---- a plate meeting the grid directly -------------------------------------------------------- */

@@ -67,7 +67,7 @@ const fs_key fs_terrain_keys[] = {
     NUM("soil", "coarse_grid_m", soil.coarse_grid_m, 0, 0.05, 0, "m", "0.002",
         "the widest spacing a shape's nodes may have (the flat sole's; a power-of-two multiple of grid_m, at most "
         "16; 0: every shape on grid_m; docs/soil.md, Grid spacing)"),
-    INT("soil", "nodes_across", soil.nodes_across, 1, 256, "8",
+    INT("soil", "nodes_across", soil.nodes_across, 1, 256, "6",
         "each shape is met on the widest power-of-two multiple of grid_m (up to coarse_grid_m) that leaves at least "
         "this many nodes across its narrowest side (docs/soil.md, Grid spacing)"),
     NUM("soil", "margin_m", soil.margin_m, 0, 1, 0, "m", "0.03", "the grid covers the region the feet can reach plus this"),
