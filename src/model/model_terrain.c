@@ -63,7 +63,8 @@ const fs_key fs_terrain_keys[] = {
      "theory for granular media (Li, Zhang & Goldman 2013)"},
     NUM("soil", "depth_m", soil.depth_m, 0, 10, POS, "m", "0.1", "thickness of the soil over the terrain, which is its rigid bedrock"),
     NUM("soil", "grid_m", soil.grid_m, 1e-4, 0.05, 0, "m", "5e-4",
-        "spacing of the soil's nodes (0.5 mm: a 3 mm toe sphere's patch spans several nodes; docs/soil.md)"),
+        "the finest spacing of the soil's nodes: each shape is met on it or on a power-of-two multiple of it "
+        "(nodes_across, coarse_grid_m; docs/soil.md, Grid spacing)"),
     NUM("soil", "coarse_grid_m", soil.coarse_grid_m, 0, 0.05, 0, "m", "0.002",
         "the widest spacing a shape's nodes may have (the flat sole's; a power-of-two multiple of grid_m, at most "
         "16; 0: every shape on grid_m; docs/soil.md, Grid spacing)"),
