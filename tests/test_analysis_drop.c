@@ -236,6 +236,52 @@ static void support_of_a_flat_sole(void)
     fs_scenario_free(&bump);
 }
 
+/* The rocking's plastic impact (fs_rocking_kept_J) against Housner's rectangular block, worked out
+ * apart from it: a uniform block of half-width b and half-height hb (I_G = m (b^2 + hb^2) / 3 about
+ * the axis of rocking) turning about one bottom corner lands on the other and keeps the angular
+ * momentum about it, omega'/omega = 1 - 3/2 sin^2 alpha, tan alpha = b / hb, so the energy left is
+ * the energy before times its square (exact; round-off 1e-15). Checked in a frame turned about the
+ * vertical (the axes' handling can fail), for a squat and a tall block (0.15 and 0.97 of the energy
+ * kept: the check fails if the two are swapped) and one so squat (sin^2 alpha > 2/3) that it turns
+ * back (nothing kept); about the side along the turn and about the pivot's
+ * own side the kept momentum carries G inwards: nothing left to tip it. */
+static void rocking_block_keeps_housners_share(void)
+{
+    const double m = 26, depth = 0.05, E = 0.7;
+    const double shapes[][2] = {{0.05, 0.06}, {0.03, 0.3}, {0.05, 0.03}}; /* b, hb */
+    for (int k = 0; k < 3; k++) {
+        double b = shapes[k][0], hb = shapes[k][1], Iy = m * (b * b + hb * hb) / 3;
+        double I[3] = {m * (depth * depth + hb * hb) / 3, Iy, m * (b * b + depth * depth) / 3};
+        /* past sin^2 alpha = 2/3 the ratio is negative: the block turns back onto the first corner */
+        double s2a = b * b / (b * b + hb * hb), ratio = 1 - 1.5 * s2a, want = ratio > 0 ? E * ratio * ratio : 0;
+        /* the block's frame: x across the sides, y along them; the points' frame turned by yaw, the
+           block's principal axes with it (so I_G stays diagonal only when yaw is 0: yaw 90 degrees
+           swaps x and y, which the call is given) */
+        for (int yaw = 0; yaw < 2; yaw++) {
+            double Ir[3] = {yaw ? I[1] : I[0], yaw ? I[0] : I[1], I[2]};
+            double cx = yaw ? 0 : 1, sx = yaw ? 1 : 0; /* x of the block is (cx, sx) in the points' frame */
+#define PT(X, Y, Z) fs_v3(cx * (X) - sx * (Y), sx * (X) + cx * (Y), (Z))
+            fs_vec3 Gc = PT(0, 0, hb), pivot = PT(-b, 0, 0), axis = PT(0, 1, 0);
+            /* the far side, its interior (x < b) on the left of s1 -> s2 */
+            double kept = fs_rocking_kept_J(m, Ir, Gc, pivot, axis, E, PT(b, -depth, 0), PT(b, depth, 0));
+            printf("block b %.2f h %.2f yaw %d: kept %.6f J of %.2f, Housner %.6f\n", b, hb, 90 * yaw, kept, E, want);
+            CHECK_NEAR(kept, want, 1e-12);
+            if (k == 0)
+                CHECK(kept > 0.1 * E && kept < 0.2 * E);
+            else if (k == 1)
+                CHECK(kept > 0.9 * E);
+            else
+                CHECK(kept == 0);
+            /* the side it turns about already (interior x > -b on the left of s1 -> s2): the turn
+               carries G away from it, inwards: nothing to tip over it */
+            CHECK(fs_rocking_kept_J(m, Ir, Gc, pivot, axis, E, PT(-b, depth, 0), PT(-b, -depth, 0)) == 0);
+            /* the side behind it at y = -depth: the kept momentum about it turns the body inwards */
+            CHECK(fs_rocking_kept_J(m, Ir, Gc, pivot, axis, E, PT(-b, -depth, 0), PT(b, -depth, 0)) == 0);
+#undef PT
+        }
+    }
+}
+
 FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
-             TEST(support_on_level_ground))
+             TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share))

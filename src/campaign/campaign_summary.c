@@ -92,13 +92,26 @@ static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, 
     fs_pitch_law_apply(K_foot * frac, &r, g, lean_bound, &pl);
     fs_drop_support ds = {sup->edge_m, sup->ankle_height_m, ff->fold_N_m * frac};
     fs_drop_law_apply(&pl, &r, g, sc->def.drop_m, lean_bound, &ds, dl);
-    /* rocking onto its rest frees the weight times how far the base under the centre of mass sank,
-       in whatever direction the rest's support lies: it adds to the drop's energy against the pitch's
-       work, and alone must not carry the centre of mass over the nearest side (a rigid tip about it) */
-    double W = r.mass_kg * g, settle = W * sup->settle_m, c = h + sup->ankle_height_m;
-    double tip = W * (hypot(sup->side_m, c) - c);
-    dl->energy_J += settle;
-    dl->stands = dl->stands && dl->energy_J < dl->barrier_J && settle < tip;
+    /* rocking onto its rest frees the weight times how far the base under the centre of mass sank;
+       the rest's impact is plastic and keeps only the angular momentum about the side the body then
+       turns on (fs_rocking_kept_J): about no side may that carry the centre of mass over it (a rigid
+       tip about it), and the most kept adds to the drop's energy against the pitch's work */
+    double W = r.mass_kg * g, settle = W * sup->settle_m, c = h + sup->ankle_height_m, I[3], kept = 0;
+    fs_robot_inertia(&r, I);
+    fs_vec3 G = fs_v3(0, 0, c), pivot = fs_v3(sup->first_x_m, sup->first_y_m, 0);
+    fs_vec3 axis = fs_v3(sup->rock_axis_x, sup->rock_axis_y, 0);
+    int tips = 0;
+    for (int i = 0; i < sup->ncorners; i++) {
+        int j = (i + 1) % sup->ncorners;
+        fs_vec3 s1 = fs_v3(sup->corner_x_m[i], sup->corner_y_m[i], 0), s2 = fs_v3(sup->corner_x_m[j], sup->corner_y_m[j], 0);
+        double k = fs_rocking_kept_J(r.mass_kg, I, G, pivot, axis, settle, s1, s2);
+        fs_vec3 u = fs_sub(s2, s1);
+        double b = fabs(s1.x * u.y - s1.y * u.x) / fs_norm(u); /* G's ground point from the side */
+        tips |= k >= W * (hypot(b, c) - c);
+        kept = fmax(kept, k);
+    }
+    dl->energy_J += kept;
+    dl->stands = dl->stands && dl->energy_J < dl->barrier_J && !tips;
     return dl->stands;
 }
 
