@@ -148,6 +148,12 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
                 out->heel_bearing |= heel[i];
             }
         out->bearing = np;
+        for (int i = 0, t = 0; out->over && i < n; i++)
+            if (toe[i] && t < FS_CHAINS) {
+                double gap = plane[0] + plane[1] * (at[i].x - x0) + plane[2] * (at[i].y - y0) - q[i] - travel_m;
+                out->toe_gap_m[t] = fmax(0, gap);
+                out->toe_ahead_m[t++] = c * (at[i].x - a.x) + sn * (at[i].y - a.y);
+            }
         int nh = hull(p, np, h);
         /* the edge: where the line from the ankle through the centre of mass leaves the polygon */
         double along = (com.x - a.x) * fwd.x + (com.y - a.y) * fwd.y, dir = along >= 0 ? 1 : -1;

@@ -97,6 +97,9 @@ typedef struct fs_trial_support {
     double first_x_m, first_y_m, rock_axis_x, rock_axis_y;
     int ncorners;
     double corner_x_m[FS_SUPPORT_MAX_CORNERS], corner_y_m[FS_SUPPORT_MAX_CORNERS];
+    /* each toe (of `toes`): how far below the rest plane its ground lies past the travel (0: it
+       bears), and how far ahead of the ankle along the foot it stands, m */
+    double toe_gap_m[FS_CHAINS], toe_ahead_m[FS_CHAINS];
 } fs_trial_support;
 fs_status fs_trial_support_of(const fs_scenario *sc, int seed, double travel_m, fs_trial_support *out, fs_error *err);
 
