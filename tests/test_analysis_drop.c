@@ -282,6 +282,42 @@ static void rocking_block_keeps_housners_share(void)
     }
 }
 
+/* The chains that come to bear as the foot pitches (fs_pitch_engaged_share) against the lean found
+ * apart from it: the piecewise-linear moment M(theta) = K/n sum max(0, theta - e_i) meets the
+ * weight's W (x + h theta) where their difference, negative at upright (-W x), first crosses zero,
+ * found here by bisection (to 1e-15 rad: the share to 1e-12). Two chains bear at rest and two more
+ * engage at 1.1 and 2.9 degrees: the share lies between 2/5 and 4/5, above the 2/5 of the chains
+ * bearing at rest (the check fails if the engaging ones are left out), and the same whatever the
+ * chains' order. Upright over its support (x = 0) the lean is 0 and the share the bearing 2/5; one
+ * chain too soft to hold a 10 cm robot alone, the others never bearing: no equilibrium (NAN). */
+static void toes_engage_as_the_foot_pitches(void)
+{
+    const double K = 60, W = 26 * G, x = 0.03, h = 0.02;
+    const double e[5] = {0.05, 0, INFINITY, 0.02, 0}, e2[5] = {0, 0.02, 0, INFINITY, 0.05};
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 200 && hi - lo > 1e-15; it++) {
+        double t = 0.5 * (lo + hi), M = 0;
+        for (int i = 0; i < 5; i++)
+            M += K / 5 * fmax(0, t - e[i]);
+        if (M - W * (x + h * t) < 0)
+            lo = t;
+        else
+            hi = t;
+    }
+    double theta = 0.5 * (lo + hi), M = 0;
+    for (int i = 0; i < 5; i++)
+        M += K / 5 * fmax(0, theta - e[i]);
+    double want = M / (K * theta), got = fs_pitch_engaged_share(e, 5, K, W, x, h);
+    printf("engaged: lean %.4f rad, share %.6f (bisection %.6f; bearing at rest 0.4)\n", theta, got, want);
+    CHECK_NEAR(got, want, 1e-12);
+    CHECK(got > 0.4 + 1e-3 && got < 0.8);
+    CHECK(fs_pitch_engaged_share(e2, 5, K, W, x, h) == got);
+    CHECK_NEAR(fs_pitch_engaged_share(e, 5, K, W, 0, h), 0.4, 1e-15);
+    const double lone[5] = {0, INFINITY, INFINITY, INFINITY, INFINITY};
+    CHECK(isnan(fs_pitch_engaged_share(lone, 5, K, W, x, 0.1))); /* K / 5 = 12 < W h = 25.5 N m */
+}
+
 FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
-             TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share))
+             TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share),
+             TEST(toes_engage_as_the_foot_pitches))

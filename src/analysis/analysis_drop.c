@@ -87,3 +87,26 @@ double fs_rocking_kept_J(double mass_kg, const double I_G[3], fs_vec3 G, fs_vec3
     fs_vec3 vG = fs_scale(fs_cross(u, rS), wS);
     return vG.x * u.y - vG.y * u.x > 0 ? 0.5 * IS * wS * wS : 0;
 }
+
+double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double W, double x, double h)
+{
+    if (n <= 0 || n > FS_CHAINS)
+        return NAN;
+    double at[FS_CHAINS];
+    for (int i = 0; i < n; i++)
+        at[i] = engage_rad[i];
+    for (int i = 1; i < n; i++) /* in the order they engage */
+        for (int j = i; j > 0 && at[j] < at[j - 1]; j--) {
+            double t = at[j];
+            at[j] = at[j - 1], at[j - 1] = t;
+        }
+    double k = K / n, sum = 0;
+    for (int m = 1; m <= n && isfinite(at[m - 1]); m++) {
+        sum += at[m - 1];
+        double den = m * k - W * h, theta = (W * x + k * sum) / den;
+        /* a chain engaging at theta itself bears there: it joins (the lean stays where it is) */
+        if (den > 0 && theta >= at[m - 1] && (m == n || theta < at[m]))
+            return theta > 0 ? k * (m * theta - sum) / (K * theta) : (double)m / n;
+    }
+    return NAN;
+}

@@ -71,12 +71,10 @@ static void fold_of(const fs_scenario *sc, double K, double load_N, foot_fold *c
         cache[(*ncache)++] = *out;
 }
 
-/* The share of the foot's pitch stiffness K its chains give at the robot's static lean (the chains
- * act side by side, K / n each): a toe that does not bear at rest, its ground g below the rest plane
- * and a ahead of the ankle, comes to bear once the foot has pitched forward by g / a, and adds its
- * chain's K / n (theta - g / a) from there. The lean where that moment meets the weight's, W (x + h
- * theta), found chain by chain in the order they engage; the share is the secant M(theta) / (K theta)
- * there (the bearing chains' when the robot leans back or no lean is held). */
+/* The share of the foot's pitch stiffness its chains give at the robot's static lean
+ * (fs_pitch_engaged_share): a toe whose ground lies g below the rest plane and a ahead of the ankle
+ * comes to bear once the foot has pitched forward by g / a. The share bearing at rest when the robot
+ * leans back or no lean is held. */
 static double engaged_share(const fs_trial_support *sup, double K, double W, double x, double h)
 {
     int n = sup->toes;
@@ -88,23 +86,12 @@ static double engaged_share(const fs_trial_support *sup, double K, double W, dou
     double at[FS_CHAINS];
     for (int i = 0; i < n; i++)
         at[i] = sup->toe_gap_m[i] <= 0 ? 0 : sup->toe_ahead_m[i] > 0 ? sup->toe_gap_m[i] / sup->toe_ahead_m[i] : INFINITY;
-    for (int i = 1; i < n; i++) /* in the order they engage */
-        for (int j = i; j > 0 && at[j] < at[j - 1]; j--) {
-            double t = at[j];
-            at[j] = at[j - 1], at[j - 1] = t;
-        }
-    double k = K / n, sum = 0;
-    for (int m = 1; m <= n && isfinite(at[m - 1]); m++) {
-        sum += at[m - 1];
-        double den = m * k - W * h, theta = (W * x + k * sum) / den;
-        if (den > 0 && theta >= at[m - 1] && (m == n || theta <= at[m]))
-            return theta > 0 ? k * (m * theta - sum) / (K * theta) : (double)m / n;
-    }
-    return share;
+    double engaged = fs_pitch_engaged_share(at, n, K, W, x, h);
+    return isnan(engaged) ? share : engaged;
 }
 
 /* The drop law on one seed's support for robot r (its centre of mass at height h): the foot's K and
- * fold counted for the chains whose toe bears; the foot's tilt at rest leans the robot (its centre of
+ * fold counted for the chains that bear at the static lean (engaged_share); the foot's tilt at rest leans the robot (its centre of
  * mass moves h tan(tilt) along the foot) and uses up that much of the lean bound, its roll too. */
 static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, double K_foot, const foot_fold *ff,
                        const fs_trial_support *sup, fs_drop_law *dl)

@@ -160,6 +160,15 @@ typedef struct fs_drop_law {
 void fs_drop_law_apply(const fs_pitch_law *statics, const fs_robot_def *robot, double gravity_m_per_s2, double drop_m,
                        double max_lean_rad, const fs_drop_support *support, fs_drop_law *out);
 
+/* The share of a foot's pitch stiffness K that its n chains (side by side, K / n each) give at a
+ * robot's static lean when chain i comes to bear only once the foot has pitched forward by
+ * engage_rad[i] (0: it bears at rest; INFINITY: never) and adds K / n (theta - engage_rad[i]) from
+ * there (docs/landing.md, The drop law: toes that come to bear). The lean theta is where that
+ * piecewise-linear moment meets the weight's, W (x + h theta), found segment by segment in the order
+ * the chains engage; the share is the secant M(theta) / (K theta) there (m / n for an upright rest
+ * on m chains). NAN when no segment holds an equilibrium (or n is outside 1..FS_CHAINS). */
+double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double W, double x, double h);
+
 /* The rocking onto the rest on uneven ground (docs/landing.md, The drop law): a rigid body of mass m,
  * its principal moments I_G[3] about its centre of mass G along the axes of the points' frame, turns
  * about the axis through `pivot` along `axis` (its first contact; horizontal) with the kinetic energy
