@@ -236,6 +236,88 @@ static void support_of_a_flat_sole(void)
     fs_scenario_free(&bump);
 }
 
+/* The rocking's plastic impact (fs_rocking_kept_J) against Housner's rectangular block, worked out
+ * apart from it: a uniform block of half-width b and half-height hb (I_G = m (b^2 + hb^2) / 3 about
+ * the axis of rocking) turning about one bottom corner lands on the other and keeps the angular
+ * momentum about it, omega'/omega = 1 - 3/2 sin^2 alpha, tan alpha = b / hb, so the energy left is
+ * the energy before times its square (exact; round-off 1e-15). Checked in a frame turned about the
+ * vertical (the axes' handling can fail), for a squat and a tall block (0.15 and 0.97 of the energy
+ * kept: the check fails if the two are swapped) and one so squat (sin^2 alpha > 2/3) that it turns
+ * back (nothing kept); about the side along the turn and about the pivot's
+ * own side the kept momentum carries G inwards: nothing left to tip it. */
+static void rocking_block_keeps_housners_share(void)
+{
+    const double m = 26, depth = 0.05, E = 0.7;
+    const double shapes[][2] = {{0.05, 0.06}, {0.03, 0.3}, {0.05, 0.03}}; /* b, hb */
+    for (int k = 0; k < 3; k++) {
+        double b = shapes[k][0], hb = shapes[k][1], Iy = m * (b * b + hb * hb) / 3;
+        double I[3] = {m * (depth * depth + hb * hb) / 3, Iy, m * (b * b + depth * depth) / 3};
+        /* past sin^2 alpha = 2/3 the ratio is negative: the block turns back onto the first corner */
+        double s2a = b * b / (b * b + hb * hb), ratio = 1 - 1.5 * s2a, want = ratio > 0 ? E * ratio * ratio : 0;
+        /* the block's frame: x across the sides, y along them; the points' frame turned by yaw, the
+           block's principal axes with it (so I_G stays diagonal only when yaw is 0: yaw 90 degrees
+           swaps x and y, which the call is given) */
+        for (int yaw = 0; yaw < 2; yaw++) {
+            double Ir[3] = {yaw ? I[1] : I[0], yaw ? I[0] : I[1], I[2]};
+            double cx = yaw ? 0 : 1, sx = yaw ? 1 : 0; /* x of the block is (cx, sx) in the points' frame */
+#define PT(X, Y, Z) fs_v3(cx * (X) - sx * (Y), sx * (X) + cx * (Y), (Z))
+            fs_vec3 Gc = PT(0, 0, hb), pivot = PT(-b, 0, 0), axis = PT(0, 1, 0);
+            /* the far side, its interior (x < b) on the left of s1 -> s2 */
+            double kept = fs_rocking_kept_J(m, Ir, Gc, pivot, axis, E, PT(b, -depth, 0), PT(b, depth, 0));
+            printf("block b %.2f h %.2f yaw %d: kept %.6f J of %.2f, Housner %.6f\n", b, hb, 90 * yaw, kept, E, want);
+            CHECK_NEAR(kept, want, 1e-12);
+            if (k == 0)
+                CHECK(kept > 0.1 * E && kept < 0.2 * E);
+            else if (k == 1)
+                CHECK(kept > 0.9 * E);
+            else
+                CHECK(kept == 0);
+            /* the side it turns about already (interior x > -b on the left of s1 -> s2): the turn
+               carries G away from it, inwards: nothing to tip over it */
+            CHECK(fs_rocking_kept_J(m, Ir, Gc, pivot, axis, E, PT(-b, depth, 0), PT(-b, -depth, 0)) == 0);
+            /* the side behind it at y = -depth: the kept momentum about it turns the body inwards */
+            CHECK(fs_rocking_kept_J(m, Ir, Gc, pivot, axis, E, PT(-b, -depth, 0), PT(b, -depth, 0)) == 0);
+#undef PT
+        }
+    }
+}
+
+/* The chains that come to bear as the foot pitches (fs_pitch_engaged_share) against the lean found
+ * apart from it: the piecewise-linear moment M(theta) = K/n sum max(0, theta - e_i) meets the
+ * weight's W (x + h theta) where their difference, negative at upright (-W x), first crosses zero,
+ * found here by bisection (to 1e-15 rad: the share to 1e-12). Two chains bear at rest and two more
+ * engage at 1.1 and 2.9 degrees: the share lies between 2/5 and 4/5, above the 2/5 of the chains
+ * bearing at rest (the check fails if the engaging ones are left out), and the same whatever the
+ * chains' order. Upright over its support (x = 0) the lean is 0 and the share the bearing 2/5; one
+ * chain too soft to hold a 10 cm robot alone, the others never bearing: no equilibrium (NAN). */
+static void toes_engage_as_the_foot_pitches(void)
+{
+    const double K = 60, W = 26 * G, x = 0.03, h = 0.02;
+    const double e[5] = {0.05, 0, INFINITY, 0.02, 0}, e2[5] = {0, 0.02, 0, INFINITY, 0.05};
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 200 && hi - lo > 1e-15; it++) {
+        double t = 0.5 * (lo + hi), M = 0;
+        for (int i = 0; i < 5; i++)
+            M += K / 5 * fmax(0, t - e[i]);
+        if (M - W * (x + h * t) < 0)
+            lo = t;
+        else
+            hi = t;
+    }
+    double theta = 0.5 * (lo + hi), M = 0;
+    for (int i = 0; i < 5; i++)
+        M += K / 5 * fmax(0, theta - e[i]);
+    double want = M / (K * theta), got = fs_pitch_engaged_share(e, 5, K, W, x, h);
+    printf("engaged: lean %.4f rad, share %.6f (bisection %.6f; bearing at rest 0.4)\n", theta, got, want);
+    CHECK_NEAR(got, want, 1e-12);
+    CHECK(got > 0.4 + 1e-3 && got < 0.8);
+    CHECK(fs_pitch_engaged_share(e2, 5, K, W, x, h) == got);
+    CHECK_NEAR(fs_pitch_engaged_share(e, 5, K, W, 0, h), 0.4, 1e-15);
+    const double lone[5] = {0, INFINITY, INFINITY, INFINITY, INFINITY};
+    CHECK(isnan(fs_pitch_engaged_share(lone, 5, K, W, x, 0.1))); /* K / 5 = 12 < W h = 25.5 N m */
+}
+
 FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
-             TEST(support_on_level_ground))
+             TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share),
+             TEST(toes_engage_as_the_foot_pitches))

@@ -15,19 +15,19 @@ set linetype 11 lc rgb '#2ca02c'
 set linetype 12 lc rgb '#ff9f1c'
 set linetype 13 lc rgb '#d62728'
 set title 'implicit springs, step'
-ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'step' && strcol(4) eq 'implicit' && column(11) == p
+ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'step' && strcol(4) eq 'implicit' && column(12) == p
 plot for [p=0:2] 'stability.csv' every ::1 using (ok(p) ? $5 : NaN):6:(11 + p) with points pt 5 ps 1.8 lc variable title word('stable drifting blown_up', p + 1), \
-     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'implicit' eq 'explicit' ? $22 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
+     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'implicit' eq 'explicit' ? $23 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
 set title 'explicit springs, step'
-ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'step' && strcol(4) eq 'explicit' && column(11) == p
+ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'step' && strcol(4) eq 'explicit' && column(12) == p
 plot for [p=0:2] 'stability.csv' every ::1 using (ok(p) ? $5 : NaN):6:(11 + p) with points pt 5 ps 1.8 lc variable title word('stable drifting blown_up', p + 1), \
-     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'explicit' eq 'explicit' ? $22 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
+     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'explicit' eq 'explicit' ? $23 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
 set title 'implicit springs, quickstep'
-ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'quickstep' && strcol(4) eq 'implicit' && column(11) == p
+ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'quickstep' && strcol(4) eq 'implicit' && column(12) == p
 plot for [p=0:2] 'stability.csv' every ::1 using (ok(p) ? $5 : NaN):6:(11 + p) with points pt 5 ps 1.8 lc variable title word('stable drifting blown_up', p + 1), \
-     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'implicit' eq 'explicit' ? $22 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
+     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'implicit' eq 'explicit' ? $23 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
 set title 'explicit springs, quickstep'
-ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'quickstep' && strcol(4) eq 'explicit' && column(11) == p
+ok(p) = strcol(1) eq 'stiffness' && strcol(2) eq 'quickstep' && strcol(4) eq 'explicit' && column(12) == p
 plot for [p=0:2] 'stability.csv' every ::1 using (ok(p) ? $5 : NaN):6:(11 + p) with points pt 5 ps 1.8 lc variable title word('stable drifting blown_up', p + 1), \
-     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'explicit' eq 'explicit' ? $22 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
+     'stability.csv' every ::1 using (ok(0) + ok(1) + ok(2) && 'explicit' eq 'explicit' ? $23 : NaN):6 with points pt 2 ps 1.5 lc rgb 'black' title 'predicted explicit limit'
 unset multiplot

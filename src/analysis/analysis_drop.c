@@ -56,3 +56,57 @@ void fs_drop_law_apply(const fs_pitch_law *statics, const fs_robot_def *r, doubl
     out->barrier_J = B;
     out->stands = out->energy_J < B;
 }
+
+/* the inertia I_G (principal, along the frame's axes) times v */
+static fs_vec3 inertia_times(const double I[3], fs_vec3 v) { return fs_v3(I[0] * v.x, I[1] * v.y, I[2] * v.z); }
+
+/* about the line through p along the unit u: the body's moment of inertia */
+static double inertia_about(double m, const double I[3], fs_vec3 G, fs_vec3 p, fs_vec3 u)
+{
+    fs_vec3 r = fs_sub(G, p);
+    fs_vec3 across = fs_sub(r, fs_scale(u, fs_dot(r, u)));
+    return fs_dot(u, inertia_times(I, u)) + m * fs_dot(across, across);
+}
+
+double fs_rocking_kept_J(double mass_kg, const double I_G[3], fs_vec3 G, fs_vec3 pivot, fs_vec3 axis, double energy_J,
+                         fs_vec3 s1, fs_vec3 s2)
+{
+    double la = fs_norm(axis), ls = fs_norm(fs_sub(s2, s1));
+    if (!(energy_J > 0) || !(la > 0) || !(ls > 0))
+        return 0;
+    fs_vec3 a = fs_scale(axis, 1 / la), u = fs_scale(fs_sub(s2, s1), 1 / ls), rP = fs_sub(G, pivot);
+    if (fs_cross(a, rP).z > 0) /* the sense that lowers G */
+        a = fs_scale(a, -1);
+    double Ia = inertia_about(mass_kg, I_G, G, pivot, a), IS = inertia_about(mass_kg, I_G, G, s1, u);
+    if (!(Ia > 0) || !(IS > 0))
+        return 0;
+    double omega = sqrt(2 * energy_J / Ia);
+    fs_vec3 rS = fs_sub(G, s1);
+    double wS = omega * fs_dot(u, fs_add(inertia_times(I_G, a), fs_scale(fs_cross(rS, fs_cross(a, rP)), mass_kg))) / IS;
+    /* G's velocity wS u x r_S against the side's outward normal (right of s1 -> s2, from above) */
+    fs_vec3 vG = fs_scale(fs_cross(u, rS), wS);
+    return vG.x * u.y - vG.y * u.x > 0 ? 0.5 * IS * wS * wS : 0;
+}
+
+double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double W, double x, double h)
+{
+    if (n <= 0 || n > FS_CHAINS)
+        return NAN;
+    double at[FS_CHAINS];
+    for (int i = 0; i < n; i++)
+        at[i] = engage_rad[i];
+    for (int i = 1; i < n; i++) /* in the order they engage */
+        for (int j = i; j > 0 && at[j] < at[j - 1]; j--) {
+            double t = at[j];
+            at[j] = at[j - 1], at[j - 1] = t;
+        }
+    double k = K / n, sum = 0;
+    for (int m = 1; m <= n && isfinite(at[m - 1]); m++) {
+        sum += at[m - 1];
+        double den = m * k - W * h, theta = (W * x + k * sum) / den;
+        /* a chain engaging at theta itself bears there: it joins (the lean stays where it is) */
+        if (den > 0 && theta >= at[m - 1] && (m == n || theta < at[m]))
+            return theta > 0 ? k * (m * theta - sum) / (K * theta) : (double)m / n;
+    }
+    return NAN;
+}

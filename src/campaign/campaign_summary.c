@@ -71,8 +71,27 @@ static void fold_of(const fs_scenario *sc, double K, double load_N, foot_fold *c
         cache[(*ncache)++] = *out;
 }
 
+/* The share of the foot's pitch stiffness its chains give at the robot's static lean
+ * (fs_pitch_engaged_share): a toe whose ground lies g below the rest plane and a ahead of the ankle
+ * comes to bear once the foot has pitched forward by g / a. The share bearing at rest when the robot
+ * leans back or no lean is held. */
+static double engaged_share(const fs_trial_support *sup, double K, double W, double x, double h)
+{
+    int n = sup->toes;
+    if (n <= 0 || n > FS_CHAINS || !(K > 0))
+        return 1;
+    double share = (double)sup->toes_bearing / n;
+    if (x < 0)
+        return share;
+    double at[FS_CHAINS];
+    for (int i = 0; i < n; i++)
+        at[i] = sup->toe_gap_m[i] <= 0 ? 0 : sup->toe_ahead_m[i] > 0 ? sup->toe_gap_m[i] / sup->toe_ahead_m[i] : INFINITY;
+    double engaged = fs_pitch_engaged_share(at, n, K, W, x, h);
+    return isnan(engaged) ? share : engaged;
+}
+
 /* The drop law on one seed's support for robot r (its centre of mass at height h): the foot's K and
- * fold counted for the chains whose toe bears; the foot's tilt at rest leans the robot (its centre of
+ * fold counted for the chains that bear at the static lean (engaged_share); the foot's tilt at rest leans the robot (its centre of
  * mass moves h tan(tilt) along the foot) and uses up that much of the lean bound, its roll too. */
 static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, double K_foot, const foot_fold *ff,
                        const fs_trial_support *sup, fs_drop_law *dl)
@@ -85,20 +104,33 @@ static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, 
     r.com_height_m = h;
     r.com_forward_m = r0->com_forward_m + h * tan(sup->tilt_forward_rad);
     double g = sc->def.gravity_m_per_s2, bound = sc->def.landed_tilt_deg * M_PI / 180;
-    double frac = sup->toes ? (double)sup->toes_bearing / sup->toes : 1;
+    double frac = engaged_share(sup, K_foot, r.mass_kg * g, r.com_forward_m, h);
     double side = bound * bound - sup->tilt_side_rad * sup->tilt_side_rad;
     double lean_bound = sqrt(fmax(0, side)) - (r.com_forward_m >= 0 ? 1 : -1) * sup->tilt_forward_rad;
     fs_pitch_law pl;
     fs_pitch_law_apply(K_foot * frac, &r, g, lean_bound, &pl);
     fs_drop_support ds = {sup->edge_m, sup->ankle_height_m, ff->fold_N_m * frac};
     fs_drop_law_apply(&pl, &r, g, sc->def.drop_m, lean_bound, &ds, dl);
-    /* rocking onto its rest frees the weight times how far the base under the centre of mass sank,
-       in whatever direction the rest's support lies: it adds to the drop's energy against the pitch's
-       work, and alone must not carry the centre of mass over the nearest side (a rigid tip about it) */
-    double W = r.mass_kg * g, settle = W * sup->settle_m, c = h + sup->ankle_height_m;
-    double tip = W * (hypot(sup->side_m, c) - c);
-    dl->energy_J += settle;
-    dl->stands = dl->stands && dl->energy_J < dl->barrier_J && settle < tip;
+    /* rocking onto its rest frees the weight times how far the base under the centre of mass sank;
+       the rest's impact is plastic and keeps only the angular momentum about the side the body then
+       turns on (fs_rocking_kept_J): about no side may that carry the centre of mass over it (a rigid
+       tip about it), and the most kept adds to the drop's energy against the pitch's work */
+    double W = r.mass_kg * g, settle = W * sup->settle_m, c = h + sup->ankle_height_m, I[3], kept = 0;
+    fs_robot_inertia(&r, I);
+    fs_vec3 G = fs_v3(0, 0, c), pivot = fs_v3(sup->first_x_m, sup->first_y_m, 0);
+    fs_vec3 axis = fs_v3(sup->rock_axis_x, sup->rock_axis_y, 0);
+    int tips = 0;
+    for (int i = 0; i < sup->ncorners; i++) {
+        int j = (i + 1) % sup->ncorners;
+        fs_vec3 s1 = fs_v3(sup->corner_x_m[i], sup->corner_y_m[i], 0), s2 = fs_v3(sup->corner_x_m[j], sup->corner_y_m[j], 0);
+        double k = fs_rocking_kept_J(r.mass_kg, I, G, pivot, axis, settle, s1, s2);
+        fs_vec3 u = fs_sub(s2, s1);
+        double b = fabs(s1.x * u.y - s1.y * u.x) / fs_norm(u); /* G's ground point from the side */
+        tips |= k >= W * (hypot(b, c) - c);
+        kept = fmax(kept, k);
+    }
+    dl->energy_J += kept;
+    dl->stands = dl->stands && dl->energy_J < dl->barrier_J && !tips;
     return dl->stands;
 }
 

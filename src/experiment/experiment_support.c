@@ -11,6 +11,8 @@
    the highest of SUB x SUB points over its share of the face: where the terrain rises under it (a
    bump under the middle of the sole) it bears there, not at a corner */
 enum { SOLE_NX = 11, SOLE_NY = 7, SUB = 5, MAX_POINTS = FS_MAX_SPHERES + SOLE_NX * SOLE_NY * FS_MAX_BOXES };
+/* one foot's shapes (a biped is refused): its hull's corners fit fs_trial_support's */
+_Static_assert(FS_FOOT_SPHERES + SOLE_NX * SOLE_NY <= FS_SUPPORT_MAX_CORNERS, "the support's corners fit");
 
 typedef struct point { double x, y; } point;
 
@@ -146,6 +148,12 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
                 out->heel_bearing |= heel[i];
             }
         out->bearing = np;
+        for (int i = 0, t = 0; out->over && i < n; i++)
+            if (toe[i] && t < FS_CHAINS) {
+                double gap = plane[0] + plane[1] * (at[i].x - x0) + plane[2] * (at[i].y - y0) - q[i] - travel_m;
+                out->toe_gap_m[t] = fmax(0, gap);
+                out->toe_ahead_m[t++] = c * (at[i].x - a.x) + sn * (at[i].y - a.y);
+            }
         int nh = hull(p, np, h);
         /* the edge: where the line from the ankle through the centre of mass leaves the polygon */
         double along = (com.x - a.x) * fwd.x + (com.y - a.y) * fwd.y, dir = along >= 0 ? 1 : -1;
@@ -171,8 +179,22 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
         }
         out->over = out->over && out->side_m > 0; /* moved by the tilt past the bearing points: it tips off */
         double first = -INFINITY;
+        int ifirst = 0;
         for (int i = 0; i < n; i++)
-            first = fmax(first, q[i]);
+            if (q[i] > first)
+                first = q[i], ifirst = i;
+        /* the rocking's geometry in the foot's frame, from the centre of mass's ground point */
+        out->first_x_m = c * (at[ifirst].x - com.x) + sn * (at[ifirst].y - com.y);
+        out->first_y_m = -sn * (at[ifirst].x - com.x) + c * (at[ifirst].y - com.y);
+        if (out->over) {
+            /* the plane z = ... + b . (x, y) is the level one turned about the horizontal (b_y, -b_x) */
+            out->rock_axis_x = c * plane[2] - sn * plane[1];
+            out->rock_axis_y = -sn * plane[2] - c * plane[1];
+            for (int i = 0; i < nh && out->ncorners < FS_SUPPORT_MAX_CORNERS; i++, out->ncorners++) {
+                out->corner_x_m[out->ncorners] = c * (h[i].x - com.x) + sn * (h[i].y - com.y);
+                out->corner_y_m[out->ncorners] = -sn * (h[i].x - com.x) + c * (h[i].y - com.y);
+            }
+        }
         out->settle_m = out->over ? first - (plane[0] + plane[1] * (com.x - x0) + plane[2] * (com.y - y0)) : NAN;
         double ex = a.x + out->edge_m * f.x, ey = a.y + out->edge_m * f.y;
         out->ankle_height_m = out->over ? g->ankle.z + plane[1] * (a.x - ex) + plane[2] * (a.y - ey) : NAN;

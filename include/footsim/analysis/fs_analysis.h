@@ -160,6 +160,31 @@ typedef struct fs_drop_law {
 void fs_drop_law_apply(const fs_pitch_law *statics, const fs_robot_def *robot, double gravity_m_per_s2, double drop_m,
                        double max_lean_rad, const fs_drop_support *support, fs_drop_law *out);
 
+/* The share of a foot's pitch stiffness K that its n chains (side by side, K / n each) give at a
+ * robot's static lean when chain i comes to bear only once the foot has pitched forward by
+ * engage_rad[i] (0: it bears at rest; INFINITY: never) and adds K / n (theta - engage_rad[i]) from
+ * there (docs/landing.md, The drop law: toes that come to bear). The lean theta is where that
+ * piecewise-linear moment meets the weight's, W (x + h theta), found segment by segment in the order
+ * the chains engage; the share is the secant M(theta) / (K theta) there (m / n for an upright rest
+ * on m chains). NAN when no segment holds an equilibrium (or n is outside 1..FS_CHAINS). */
+double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double W, double x, double h);
+
+/* The rocking onto the rest on uneven ground (docs/landing.md, The drop law): a rigid body of mass m,
+ * its principal moments I_G[3] about its centre of mass G along the axes of the points' frame, turns
+ * about the axis through `pivot` along `axis` (its first contact; horizontal) with the kinetic energy
+ * energy_J, and meets its rest. The impact is plastic and the body goes on turning about the side
+ * s1-s2 of its support alone, whose impulses pass through that line, so its angular momentum about
+ * the side is kept (Housner's rocking block): with u along the side, r_P = G - pivot, r_S = G - s1,
+ *   omega_S = omega u . (I_G a + m r_S x (a x r_P)) / I_S,   I_S = u . I_G u + m d_S^2,
+ * omega = sqrt(2 energy_J / I_a), I_a = a . I_G a + m d_a^2 (d the distances of G from the lines).
+ * The sense of omega is the one that lowers G. Returns the energy I_S omega_S^2 / 2 left turning about
+ * the side in the sense that carries G out over it (the polygon's interior left of s1 -> s2, seen
+ * from above); 0 when the kept momentum turns the body back onto its rest. For a rectangular block
+ * (half-width b, half-height h) passing from one bottom corner to the other it is energy_J times
+ * Housner's (1 - 3/2 sin^2 alpha)^2, tan alpha = b / h: a squat body keeps little, a tall one most. */
+double fs_rocking_kept_J(double mass_kg, const double I_G[3], fs_vec3 G, fs_vec3 pivot, fs_vec3 axis, double energy_J,
+                         fs_vec3 s1, fs_vec3 s2);
+
 /* The reference transient: chain `chain` (0-based, unsplayed) from rest, the load rising linearly
  * over ramp_s. Masses: a fifth of heel and talus, the whole metatarsal and phalanx; a fifth of the
  * load. */

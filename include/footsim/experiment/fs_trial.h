@@ -77,6 +77,7 @@ void fs_trial_placed_free(fs_scenario *sc);
  * its sides. The centre of mass is
  * not over the support (over 0) when it stands beyond every facet (the foot tips off) or the bearing
  * points span no area. A single foot only (FS_BAD_INPUT for a biped). */
+enum { FS_SUPPORT_MAX_CORNERS = 96 }; /* a sole's 11 x 7 points and a foot's spheres fit */
 typedef struct fs_trial_support {
     int bearing;               /* contact points that bear (a sole's grid points count one each) */
     int toes_bearing, toes;    /* of the toes' spheres (a biomimetic foot's phalanges): bearing, all */
@@ -90,6 +91,15 @@ typedef struct fs_trial_support {
     double side_m;             /* from the centre of mass to the polygon's nearest side, m */
     double settle_m;           /* how far the foot's base under the centre of mass sinks as the foot
                                   rocks from its first contact (lowered flat) onto its rest, m */
+    /* the rocking's geometry, in the foot's frame (x along the foot, y to its left) from the ground
+       point under the centre of mass at rest: the first contact, the axis of the rest plane's tilt
+       (horizontal; zero when it is level) and the support polygon's corners, counter-clockwise */
+    double first_x_m, first_y_m, rock_axis_x, rock_axis_y;
+    int ncorners;
+    double corner_x_m[FS_SUPPORT_MAX_CORNERS], corner_y_m[FS_SUPPORT_MAX_CORNERS];
+    /* each toe (of `toes`): how far below the rest plane its ground lies past the travel (0: it
+       bears), and how far ahead of the ankle along the foot it stands, m */
+    double toe_gap_m[FS_CHAINS], toe_ahead_m[FS_CHAINS];
 } fs_trial_support;
 fs_status fs_trial_support_of(const fs_scenario *sc, int seed, double travel_m, fs_trial_support *out, fs_error *err);
 
