@@ -85,13 +85,13 @@ static void refuses_bad_parameters(void)
 /* Stand-in trials: every trial lands exactly when k_d1 >= 3e5 and k_d3 >= 5e4 (k_d2 does not
  * matter), so the least stiff design meeting the targets is (3e5, 12000, 5e4); one that misses
  * stays up the longer the nearer it comes, as a toppling robot does on stiffer springs. */
-static fs_status known_boundary(void *user, const fs_optimize *o, fs_trial_result *results, fs_error *err)
+static fs_status known_boundary(void *user, const fs_campaign *c, fs_trial_result *results, fs_error *err)
 {
     (void)user, (void)err;
-    const fs_scenario *sc = fs_campaign_pair(&o->campaign, 0);
+    const fs_scenario *sc = fs_campaign_pair(c, 0);
     double a = sc->design.k_N_per_m[0] / 3e5, b = sc->design.k_N_per_m[2] / 5e4;
     int lands = a >= 1 && b >= 1;
-    for (int i = 0; i < fs_campaign_ntrials(&o->campaign); i++) {
+    for (int i = 0; i < fs_campaign_ntrials(c); i++) {
         results[i].outcome = lands ? FS_LANDED : FS_FELL;
         results[i].end_time_s = sc->def.duration_s * 0.9 * fmin(1, a) * fmin(1, b);
     }
