@@ -195,7 +195,7 @@ static int fill_pareto_gp(FILE *f, const void *user)
     fputs("set terminal pngcairo size 720,480 noenhanced font 'sans,10'\nset output out\n"
           "set datafile separator ','\nset title 'Design search ' . search . ': the candidates that ran and their Pareto front'\n"
           "set xlabel objective\nset ylabel 'shortfall: the targets missed, summed (0: every target met)'\n"
-          "set key top right\nset grid\n"
+          "set key top right\nset grid\nset yrange [-0.05:*]\n"
           "plot 'evaluations.csv' skip 1 using col:(column(col + 2) == 0 ? column(col + 1) : 1/0) with points pt 6 "
           "lc rgb '#999999' title 'candidates', \\\n"
           "     'pareto.csv' skip 1 using col:(column(col + 1)) with linespoints pt 7 lw 2 lc rgb '#b2182b' title "

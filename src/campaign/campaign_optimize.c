@@ -192,7 +192,8 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
         snprintf(csec, sizeof csec, "constraint.%s", o->constraint[n].name);
         if (o->constraint[n].of == FS_QUANTITY_NONE)
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] names no quantity; give of = foot_mass_kg or of = ankle_drop_m",
-                           fs_config_where(cfg, csec, NULL, where, sizeof where), csec);
+                           fs_config_where(cfg, csec, fs_config_has(cfg, csec, "max") ? "max" : "min", where, sizeof where),
+                           csec);
         int has_max = fs_config_has(cfg, csec, "max"), has_min = fs_config_has(cfg, csec, "min");
         if (!has_max && !has_min)
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] has no bound; give max = the largest value allowed and/or "
