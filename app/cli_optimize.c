@@ -118,15 +118,32 @@ typedef struct optimize_out {
 
 static const char *quantity_name(int q) { return q == FS_QUANTITY_FOOT_MASS_KG ? "foot_mass_kg" : "ankle_drop_m"; }
 
+/* An evaluation's number, parameters, objective and shortfall, as CSV fields (no newline). */
+static void point_csv(FILE *f, const fs_optimize *o, int n, const evaluation *e)
+{
+    char b[32];
+    fprintf(f, "%d", n + 1);
+    for (int p = 0; p < o->nparams; p++)
+        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->x[p]));
+    fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->objective));
+    fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->shortfall));
+}
+
+/* The header's parameter columns: "evaluation,KEY,...". */
+static void params_csv(FILE *f, const fs_optimize *o)
+{
+    fputs("evaluation", f);
+    for (int p = 0; p < o->nparams; p++)
+        fprintf(f, ",%s", o->param[p].key);
+}
+
 static int fill_evaluations(FILE *f, const void *user)
 {
     const optimize_out *x = user;
     const fs_optimize *o = x->o;
     const fs_campaign *c = &o->campaign;
     int ncells = fs_campaign_ncells(c) < MAX_CELLS_KEPT ? fs_campaign_ncells(c) : MAX_CELLS_KEPT;
-    fputs("evaluation", f);
-    for (int p = 0; p < o->nparams; p++)
-        fprintf(f, ",%s", o->param[p].key);
+    params_csv(f, o);
     fputs(",objective,shortfall,violation,pareto", f);
     for (int cell = 0; cell < ncells; cell++) {
         char name[3 * FS_NAME_MAX + 4];
@@ -137,11 +154,7 @@ static int fill_evaluations(FILE *f, const void *user)
     for (int n = 0; n < x->run->nlog; n++) {
         const evaluation *e = &x->run->log[n];
         char b[32];
-        fprintf(f, "%d", n + 1);
-        for (int p = 0; p < o->nparams; p++)
-            fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->x[p]));
-        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->objective));
-        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->shortfall));
+        point_csv(f, o, n, e);
         fprintf(f, ",%s,%d", cli_csv_num(b, sizeof b, "%.17g", e->violation), x->front[n]);
         for (int cell = 0; cell < ncells; cell++)
             fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->rate[cell]));
@@ -155,9 +168,7 @@ static int fill_pareto(FILE *f, const void *user)
 {
     const optimize_out *x = user;
     const fs_optimize *o = x->o;
-    fputs("evaluation", f);
-    for (int p = 0; p < o->nparams; p++)
-        fprintf(f, ",%s", o->param[p].key);
+    params_csv(f, o);
     fputs(",objective,shortfall\n", f);
     double last = -HUGE_VAL;
     for (;;) { /* in rising objective: the least one above the last written */
@@ -168,14 +179,9 @@ static int fill_pareto(FILE *f, const void *user)
                 next = n;
         if (next < 0)
             break;
-        const evaluation *e = &x->run->log[next];
-        char b[32];
-        fprintf(f, "%d", next + 1);
-        for (int p = 0; p < o->nparams; p++)
-            fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->x[p]));
-        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", e->objective));
-        fprintf(f, ",%s\n", cli_csv_num(b, sizeof b, "%.17g", e->shortfall));
-        last = e->objective;
+        point_csv(f, o, next, &x->run->log[next]);
+        fputc('\n', f);
+        last = x->run->log[next].objective;
     }
     return 1;
 }

@@ -122,6 +122,13 @@ static void search_finds_a_known_boundary(void)
     fs_optimize_free(&o);
 }
 
+/* Makes the file path names (a mkstemp template), empty; 0 when it cannot. */
+static int temp_file(char *path)
+{
+    int fd = mkstemp(path);
+    return fd >= 0 && close(fd) == 0;
+}
+
 /* Writes an optimize file over campaign (a file under scenarios/) with extra lines after [optimize]
  * and a k_d1 parameter, to path. */
 static void write_search(const char *path, const char *campaign, const char *optimize_lines, const char *tail)
@@ -172,9 +179,7 @@ static void relative_target_reads_the_reference(void)
     static fs_optimize o;
     fs_error err;
     char path[] = "/tmp/fs_optimize_XXXXXX";
-    int fd = mkstemp(path);
-    REQUIRE(fd >= 0);
-    close(fd);
+    REQUIRE(temp_file(path));
     write_search(path, "every_terrain.ini", "relative_to = flat\n", "");
     const char *set[] = {"campaign.seeds=2", "expect.flat_single_tall.min_success=0", "optimize.max_evaluations=3"};
     REQUIRE(fs_optimize_load(path, set, 3, &o, &err) == FS_OK);
@@ -234,9 +239,7 @@ static void constraint_makes_infeasible(void)
     static fs_optimize o;
     fs_error err;
     char path[] = "/tmp/fs_optimize_XXXXXX";
-    int fd = mkstemp(path);
-    REQUIRE(fd >= 0);
-    close(fd);
+    REQUIRE(temp_file(path));
     write_search(path, "search_single_tall.ini", "", "[constraint.light]\nof = foot_mass_kg\nmax = 0.25\n");
     REQUIRE(fs_optimize_load(path, small, 1, &o, &err) == FS_OK);
     double x[1] = {12000};
@@ -292,9 +295,7 @@ static void refuses_bad_targets(void)
     static fs_optimize o;
     fs_error err;
     char path[] = "/tmp/fs_optimize_XXXXXX";
-    int fd = mkstemp(path);
-    REQUIRE(fd >= 0);
-    close(fd);
+    REQUIRE(temp_file(path));
     write_search(path, "every_terrain.ini", "relative_to = wooden\n", "");
     CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
     fs_check_refusal(err.message, path, 4, "relative_to = wooden is not a foot of campaign");

@@ -35,49 +35,44 @@ static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_
     return k;
 }
 
-/* The [param.NAME] sections, in file order. */
-static fs_status collect_params(const fs_config *cfg, binder *b, fs_optimize *o, fs_error *err)
+/* The sections "PREFIX.NAME" of cfg, in file order, into sections[*n] (at most max; what: their
+ * kind, for the message). */
+static fs_status collect_sections(const fs_config *cfg, const char *prefix, char (*sections)[FS_NAME_MAX], int *n,
+                                  int max, const char *what, fs_error *err)
 {
+    size_t len = strlen(prefix);
     for (int i = 0; i < cfg->count; i++) {
         const char *sec = cfg->entries[i].section;
-        if (strncmp(sec, "param.", 6))
+        if (strncmp(sec, prefix, len) || sec[len] != '.')
             continue;
         int known = 0;
-        for (int p = 0; p < o->nparams; p++)
-            known |= !strcmp(b->sections[p], sec);
+        for (int k = 0; k < *n; k++)
+            known |= !strcmp(sections[k], sec);
         if (known)
             continue;
-        if (o->nparams == FS_OPTIMIZE_MAX_PARAMS)
-            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: at most %d parameters", cfg->path, sec, FS_OPTIMIZE_MAX_PARAMS);
-        snprintf(b->sections[o->nparams], FS_NAME_MAX, "%s", sec);
-        snprintf(o->param[o->nparams].name, FS_NAME_MAX, "%s", sec + 6);
-        o->nparams++;
+        if (*n == max)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: at most %d %s", cfg->path, sec, max, what);
+        snprintf(sections[(*n)++], FS_NAME_MAX, "%s", sec);
     }
-    if (!o->nparams)
-        return fs_fail(err, FS_BAD_INPUT, "%s: no parameters; add a section like [param.k_d1] with key = "
-                                          "springs.k_d1_N_per_m, min, max and start", cfg->path);
     return FS_OK;
 }
 
-/* The [constraint.NAME] sections, in file order. */
-static fs_status collect_constraints(const fs_config *cfg, binder *b, fs_optimize *o, fs_error *err)
+/* The [param.NAME] and [constraint.NAME] sections, in file order. */
+static fs_status collect_params(const fs_config *cfg, binder *b, fs_optimize *o, fs_error *err)
 {
-    for (int i = 0; i < cfg->count; i++) {
-        const char *sec = cfg->entries[i].section;
-        if (strncmp(sec, "constraint.", 11))
-            continue;
-        int known = 0;
-        for (int n = 0; n < o->nconstraints; n++)
-            known |= !strcmp(b->csections[n], sec);
-        if (known)
-            continue;
-        if (o->nconstraints == FS_OPTIMIZE_MAX_CONSTRAINTS)
-            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: at most %d constraints", cfg->path, sec,
-                           FS_OPTIMIZE_MAX_CONSTRAINTS);
-        snprintf(b->csections[o->nconstraints], FS_NAME_MAX, "%s", sec);
-        snprintf(o->constraint[o->nconstraints].name, FS_NAME_MAX, "%s", sec + 11);
-        o->nconstraints++;
-    }
+    fs_status s = collect_sections(cfg, "param", b->sections, &o->nparams, FS_OPTIMIZE_MAX_PARAMS, "parameters", err);
+    if (s == FS_OK)
+        s = collect_sections(cfg, "constraint", b->csections, &o->nconstraints, FS_OPTIMIZE_MAX_CONSTRAINTS,
+                             "constraints", err);
+    if (s != FS_OK)
+        return s;
+    for (int p = 0; p < o->nparams; p++)
+        snprintf(o->param[p].name, FS_NAME_MAX, "%s", b->sections[p] + 6);
+    for (int n = 0; n < o->nconstraints; n++)
+        snprintf(o->constraint[n].name, FS_NAME_MAX, "%s", b->csections[n] + 11);
+    if (!o->nparams)
+        return fs_fail(err, FS_BAD_INPUT, "%s: no parameters; add a section like [param.k_d1] with key = "
+                                          "springs.k_d1_N_per_m, min, max and start", cfg->path);
     return FS_OK;
 }
 
@@ -121,8 +116,6 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
     k->choices = "none|least_stiff|lightest";
     take_relative_to(cfg, b);
     fs_status s = collect_params(cfg, b, o, err);
-    if (s == FS_OK)
-        s = collect_constraints(cfg, b, o, err);
     if (s != FS_OK)
         return s;
     for (int n = 0; n < o->nconstraints; n++) {
