@@ -300,7 +300,9 @@ static int fill_result(FILE *f, const void *user)
     fputs("\nThe trade-off (`pareto.csv`, `pareto.png`): the Pareto front of the candidates that ran, shortfall "
           "(the targets missed, summed) against the objective, both minimised; every candidate ran on the same "
           "seeds, so they compare point for point. It is the front of the points the search visited, not of a "
-          "sweep of weights.\n\n| evaluation |", f);
+          "sweep of weights. The best is the least penalised: among candidates that miss alike, the one whose "
+          "misses stayed up longest ranks first (the search's slope), so it need not lie on the front.\n\n"
+          "| evaluation |", f);
     for (int p = 0; p < o->nparams; p++)
         fprintf(f, " %s |", o->param[p].name);
     fputs(" objective | shortfall |\n|--:|", f);
