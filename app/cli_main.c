@@ -178,9 +178,12 @@ static const command commands[] = {
     {"optimize", cli_optimize, CMD_OPTIMIZE, "FILE", 1, CLI_DATA_SCENARIO,
      "Searches a design (docs/landing.md, fs_optimize.h): the parameters of the file's [param.NAME]\n"
      "  sections within their bounds for the least stiff design whose trials (its campaign's) meet the\n"
-     "  campaign's expectations, by NLopt's Subplex on common seeds; reruns the best on fresh seeds and\n"
-     "  writes DIR/result.md and evaluations.csv (default DIR: results/optimize/<name>/). Exit 1 when\n"
-     "  the best misses a target. --set optimize.max_evaluations=N; other sections go to the campaign."},
+     "  campaign's expectations, and with [optimize] relative_to = FOOT land at least as often as that\n"
+     "  foot (run once) in every terrain and robot, within its [constraint.NAME] bounds, by NLopt's\n"
+     "  Subplex on common seeds; reruns the best on fresh seeds and writes DIR/result.md,\n"
+     "  evaluations.csv and the trade-off's Pareto front pareto.csv, pareto.png (default DIR:\n"
+     "  results/optimize/<name>/). Exit 1 when the best misses a target. --set\n"
+     "  optimize.max_evaluations=N; other sections go to the campaign."},
     {"compare", cli_compare, CMD_COMPARE, "RESULT BASELINE", 2, CLI_DATA_NONE,
      "Compares two summary.json files and prints, as Markdown, what is outside what the baseline\n"
      "  allows (--all: every quantity of every cell, with its verdict), or with --json one JSON object:\n"

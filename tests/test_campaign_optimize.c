@@ -6,7 +6,9 @@
 #include "footsim/base/fs_error.h"
 #include "footsim/campaign/fs_optimize.h"
 
+#include <math.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 static const char *small[] = {"campaign.seeds=2"};
 
@@ -85,13 +87,13 @@ static void refuses_bad_parameters(void)
 /* Stand-in trials: every trial lands exactly when k_d1 >= 3e5 and k_d3 >= 5e4 (k_d2 does not
  * matter), so the least stiff design meeting the targets is (3e5, 12000, 5e4); one that misses
  * stays up the longer the nearer it comes, as a toppling robot does on stiffer springs. */
-static fs_status known_boundary(void *user, const fs_optimize *o, fs_trial_result *results, fs_error *err)
+static fs_status known_boundary(void *user, const fs_campaign *c, fs_trial_result *results, fs_error *err)
 {
     (void)user, (void)err;
-    const fs_scenario *sc = fs_campaign_pair(&o->campaign, 0);
+    const fs_scenario *sc = fs_campaign_pair(c, 0);
     double a = sc->design.k_N_per_m[0] / 3e5, b = sc->design.k_N_per_m[2] / 5e4;
     int lands = a >= 1 && b >= 1;
-    for (int i = 0; i < fs_campaign_ntrials(&o->campaign); i++) {
+    for (int i = 0; i < fs_campaign_ntrials(c); i++) {
         results[i].outcome = lands ? FS_LANDED : FS_FELL;
         results[i].end_time_s = sc->def.duration_s * 0.9 * fmin(1, a) * fmin(1, b);
     }
@@ -120,4 +122,193 @@ static void search_finds_a_known_boundary(void)
     fs_optimize_free(&o);
 }
 
-FS_TEST_MAIN(TEST(loads_and_applies), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary))
+/* Makes the file path names (a mkstemp template), empty; 0 when it cannot. */
+static int temp_file(char *path)
+{
+    int fd = mkstemp(path);
+    return fd >= 0 && close(fd) == 0;
+}
+
+/* Writes an optimize file over campaign (a file under scenarios/) with extra lines after [optimize]
+ * and a k_d1 parameter, to path. */
+static void write_search(const char *path, const char *campaign, const char *optimize_lines, const char *tail)
+{
+    FILE *f = fopen(path, "w");
+    fprintf(f, "[optimize]\ncampaign = %s/scenarios/%s\nobjective = least_stiff\n%s[param.k_d1]\n"
+               "key = springs.k_d1_N_per_m\nmin = 12000\nmax = 1.2e6\nstart = 1e5\nlog = yes\n%s",
+            FS_SOURCE_DIR, campaign, optimize_lines, tail);
+    fclose(f);
+}
+
+/* Stand-in trials for the every-terrain campaign: the flat foot lands on even ground only; the
+ * biomimetic foot lands everywhere once k_d1 >= 2e5, else on even ground only under the drop
+ * weight. Counts the calls per foot (a view holds one foot's cells). */
+typedef struct counted {
+    int calls[2];   /* biomimetic, flat */
+    int trials[2];
+} counted;
+
+static fs_status by_foot(void *user, const fs_campaign *c, fs_trial_result *results, fs_error *err)
+{
+    (void)err;
+    counted *n = user;
+    for (int i = 0; i < fs_campaign_ntrials(c); i++) {
+        int cell, seed, foot, terrain, robot;
+        fs_campaign_trial_of(c, i, &cell, &seed);
+        fs_campaign_cell_of(c, cell, &foot, &terrain, &robot);
+        const fs_scenario *sc = fs_campaign_pair(c, cell);
+        int flat = sc->design.kind == FS_FOOT_FLAT, even = !strcmp(c->terrain[terrain].name, "flat");
+        int lands = flat ? even : sc->design.k_N_per_m[0] >= 2e5 || (even && !strcmp(c->robot[robot].name, "drop_weight"));
+        results[i].outcome = lands ? FS_LANDED : FS_FELL;
+        /* a fall comes later the nearer k_d1 is to the boundary, as a toppling robot's on stiffer springs */
+        results[i].end_time_s = sc->def.duration_s * (lands ? 1 : 0.9 * fmin(1, sc->design.k_N_per_m[0] / 2e5));
+        n->trials[flat]++;
+    }
+    int flat = fs_campaign_pair(c, 0)->design.kind == FS_FOOT_FLAT;
+    n->calls[flat]++;
+    return FS_OK;
+}
+
+/* relative_to = flat: every biomimetic cell must land at least as often as the flat foot's cell of
+ * the same terrain and robot. The shortfall reads the flat foot's rates (the stand-in's flat foot
+ * lands on even ground: the soft foot misses there under the tall robot by exactly 1, and nowhere
+ * else, since the flat foot falls wherever the soft foot does); the flat foot is never edited and
+ * its trials run once however many candidates the search runs. */
+static void relative_target_reads_the_reference(void)
+{
+    static fs_optimize o;
+    fs_error err;
+    char path[] = "/tmp/fs_optimize_XXXXXX";
+    REQUIRE(temp_file(path));
+    write_search(path, "every_terrain.ini", "relative_to = flat\n", "");
+    const char *set[] = {"campaign.seeds=2", "expect.flat_single_tall.min_success=0", "optimize.max_evaluations=3"};
+    REQUIRE(fs_optimize_load(path, set, 3, &o, &err) == FS_OK);
+    CHECK(o.reference == 1 && fs_optimize_ntargets(&o) == 2 + 6);
+    const fs_campaign *c = &o.campaign;
+    int ncells = fs_campaign_ncells(c);
+    fs_trial_result *results = calloc((size_t)fs_campaign_ntrials(c), sizeof *results);
+    fs_campaign_row *rows = calloc((size_t)ncells, sizeof *rows);
+    counted n = {{0, 0}, {0, 0}};
+    double soft[1] = {1e5};
+    REQUIRE(fs_optimize_apply(&o, soft, &err) == FS_OK);
+    /* the flat foot's cells keep their file's value (the design default), the others take k_d1 */
+    CHECK(fs_campaign_pair(c, 6)->design.k_N_per_m[0] == o.file_x[6] && o.file_x[6] != 1e5);
+    CHECK(fs_campaign_pair(c, 0)->design.k_N_per_m[0] == 1e5);
+    REQUIRE(fs_optimize_run_trials(&o, by_foot, &n, results, 1, &err) == FS_OK);
+    fs_campaign_summarize(c, results, rows);
+    CHECK(rows[6].success_rate == 1 && rows[0].success_rate == 0); /* flat foot even/tall; soft foot even/tall */
+    CHECK_NEAR(fs_optimize_shortfall(&o, rows), 1.0, 1e-12);
+    CHECK(fs_optimize_reference_cell(&o, 3) == 9);
+    /* the search (3 candidates, or one more where Subplex ends its step: each one summarised costs the laws of 12 cells): the flat
+       foot's trials run once, every candidate's biomimetic ones; a best at or above 2e5 meets every
+       target (no penalty left), one below misses */
+    n = (counted){{0, 0}, {0, 0}};
+    double best[1], value;
+    REQUIRE(fs_optimize_run(&o, by_foot, NULL, &n, results, rows, best, &value, &err) == FS_OK);
+    CHECK(n.calls[1] == 1 && n.trials[1] == 6 * 2);
+    CHECK(n.calls[0] >= 3 && n.trials[0] == n.calls[0] * 6 * 2);
+    REQUIRE(fs_optimize_apply(&o, best, &err) == FS_OK);
+    if (best[0] >= 2e5)
+        CHECK_NEAR(value, fs_optimize_objective(&o, best), 1e-9);
+    else
+        CHECK(value > fs_optimize_objective(&o, best) + 1);
+    free(results);
+    free(rows);
+    fs_optimize_free(&o);
+    remove(path);
+}
+
+/* A constraint: the foot's mass at most a bound. Table I's foot (0.277 kg) breaks 0.25 kg by
+ * (0.277 - 0.25) / 0.25 and meets 0.3 kg; the search runs no trial for a candidate that breaks it
+ * (a mass parameter: the stand-in checks every candidate it is given) and ends on a feasible one. */
+static fs_status light_only(void *user, const fs_campaign *c, fs_trial_result *results, fs_error *err)
+{
+    (void)err;
+    int *heavy_seen = user;
+    const fs_scenario *sc = fs_campaign_pair(c, 0);
+    *heavy_seen += sc->geom.total_mass_kg > 0.28 + 1e-12;
+    for (int i = 0; i < fs_campaign_ntrials(c); i++) {
+        results[i].outcome = FS_LANDED;
+        results[i].end_time_s = sc->def.duration_s;
+    }
+    return FS_OK;
+}
+
+static void constraint_makes_infeasible(void)
+{
+    static fs_optimize o;
+    fs_error err;
+    char path[] = "/tmp/fs_optimize_XXXXXX";
+    REQUIRE(temp_file(path));
+    write_search(path, "search_single_tall.ini", "", "[constraint.light]\nof = foot_mass_kg\nmax = 0.25\n");
+    REQUIRE(fs_optimize_load(path, small, 1, &o, &err) == FS_OK);
+    double x[1] = {12000};
+    REQUIRE(fs_optimize_apply(&o, x, &err) == FS_OK);
+    double m = fs_optimize_quantity(&o, FS_QUANTITY_FOOT_MASS_KG);
+    CHECK(m > 0.25 && m < 0.3);
+    CHECK_NEAR(fs_optimize_violation(&o), (m - 0.25) / 0.25, 1e-12);
+    o.constraint[0].max = 0.3;
+    CHECK(fs_optimize_violation(&o) == 0);
+    /* the arch's static drop: Table I's 0.30 mm (heel and toe sliding; `footsim stiffness`) against a
+       bound of 0.2 mm, then met by a foot 100 times stiffer (the drop falls about as 1/k) */
+    o.constraint[0] = (fs_opt_constraint){"travel", FS_QUANTITY_ANKLE_DROP_M, 0, 2e-4};
+    CHECK(fs_optimize_violation(&o) > 0.3);
+    fs_optimize_free(&o);
+    /* a search over the phalanges' mass with the foot at most 0.28 kg: candidates above it run no trial */
+    FILE *f = fopen(path, "w");
+    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\nobjective = lightest\n[param.m]\n"
+               "key = mass.phalanx_kg\nmin = 0.004\nmax = 0.03\nstart = 0.02\n[constraint.light]\nof = foot_mass_kg\n"
+               "max = 0.28\n", FS_SOURCE_DIR);
+    fclose(f);
+    const char *set[] = {small[0], "optimize.max_evaluations=6"};
+    REQUIRE(fs_optimize_load(path, set, 2, &o, &err) == FS_OK);
+    fs_trial_result *results = calloc((size_t)fs_campaign_ntrials(&o.campaign), sizeof *results);
+    fs_campaign_row *rows = calloc((size_t)fs_campaign_ncells(&o.campaign), sizeof *rows);
+    int heavy_seen = 0;
+    double best[1], value;
+    REQUIRE(fs_optimize_run(&o, light_only, NULL, &heavy_seen, results, rows, best, &value, &err) == FS_OK);
+    CHECK(heavy_seen == 0);
+    REQUIRE(fs_optimize_apply(&o, best, &err) == FS_OK);
+    CHECK(fs_optimize_violation(&o) == 0);
+    free(results);
+    free(rows);
+    fs_optimize_free(&o);
+    remove(path);
+}
+
+/* The Pareto front of made-up points (both minimised): the non-dominated set, an equal point kept once. */
+static void pareto_front(void)
+{
+    const double a[] = {0, 1, 2, 0.5, 2, 3, 1};
+    const double b[] = {5, 3, 1, 4, 2, 0.5, 3};
+    int keep[7];
+    CHECK(fs_optimize_pareto(a, b, 7, keep) == 5);
+    const int want[7] = {1, 1, 1, 1, 0, 1, 0}; /* (2, 2) is dominated by (2, 1); (1, 3) repeats */
+    for (int i = 0; i < 7; i++)
+        CHECK(keep[i] == want[i]);
+    CHECK(fs_optimize_pareto(a, b, 0, keep) == 0);
+}
+
+/* Bad input refused with file:line: a reference foot the campaign lacks, a constraint with no bound. */
+static void refuses_bad_targets(void)
+{
+    static fs_optimize o;
+    fs_error err;
+    char path[] = "/tmp/fs_optimize_XXXXXX";
+    REQUIRE(temp_file(path));
+    write_search(path, "every_terrain.ini", "relative_to = wooden\n", "");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 4, "relative_to = wooden is not a foot of campaign");
+    CHECK(strstr(err.message, "biomimetic, flat") != NULL);
+    write_search(path, "search_single_tall.ini", "", "[constraint.light]\nof = foot_mass_kg\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 11, "has no bound; give max");
+    write_search(path, "search_single_tall.ini", "", "[constraint.light]\nmax = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "names no quantity") != NULL);
+    remove(path);
+}
+
+FS_TEST_MAIN(TEST(loads_and_applies), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary),
+             TEST(relative_target_reads_the_reference), TEST(constraint_makes_infeasible), TEST(pareto_front),
+             TEST(refuses_bad_targets))

@@ -2,6 +2,7 @@
  * campaign's definitions, the penalised objective and NLopt's Subplex over it. */
 #include "footsim/campaign/fs_optimize.h"
 
+#include "footsim/analysis/fs_analysis.h"
 #include "footsim/base/fs_path.h"
 
 #include <math.h>
@@ -16,9 +17,12 @@
 #define O(member) offsetof(fs_optimize, member)
 
 typedef struct binder {
-    fs_key keys[3 + 6 * FS_OPTIMIZE_MAX_PARAMS];
+    fs_key keys[4 + 5 * FS_OPTIMIZE_MAX_PARAMS + 2 * FS_OPTIMIZE_MAX_CONSTRAINTS];
     int nkeys;
     char sections[FS_OPTIMIZE_MAX_PARAMS][FS_NAME_MAX];
+    char csections[FS_OPTIMIZE_MAX_CONSTRAINTS][FS_NAME_MAX];
+    char relative_to[FS_VALUE_MAX];         /* [optimize] relative_to, a foot's name (bound by hand) */
+    char relative_where[FS_PATH_MAX + 80];
     char key_choices[16384];
     int key_choice[FS_OPTIMIZE_MAX_PARAMS]; /* bound: the n-th sweepable key */
 } binder;
@@ -31,28 +35,59 @@ static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_
     return k;
 }
 
-/* The [param.NAME] sections, in file order. */
-static fs_status collect_params(const fs_config *cfg, binder *b, fs_optimize *o, fs_error *err)
+/* The sections "PREFIX.NAME" of cfg, in file order, into sections[*n] (at most max; what: their
+ * kind, for the message). */
+static fs_status collect_sections(const fs_config *cfg, const char *prefix, char (*sections)[FS_NAME_MAX], int *n,
+                                  int max, const char *what, fs_error *err)
 {
+    size_t len = strlen(prefix);
     for (int i = 0; i < cfg->count; i++) {
         const char *sec = cfg->entries[i].section;
-        if (strncmp(sec, "param.", 6))
+        if (strncmp(sec, prefix, len) || sec[len] != '.')
             continue;
         int known = 0;
-        for (int p = 0; p < o->nparams; p++)
-            known |= !strcmp(b->sections[p], sec);
+        for (int k = 0; k < *n; k++)
+            known |= !strcmp(sections[k], sec);
         if (known)
             continue;
-        if (o->nparams == FS_OPTIMIZE_MAX_PARAMS)
-            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: at most %d parameters", cfg->path, sec, FS_OPTIMIZE_MAX_PARAMS);
-        snprintf(b->sections[o->nparams], FS_NAME_MAX, "%s", sec);
-        snprintf(o->param[o->nparams].name, FS_NAME_MAX, "%s", sec + 6);
-        o->nparams++;
+        if (*n == max)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s]: at most %d %s", cfg->path, sec, max, what);
+        snprintf(sections[(*n)++], FS_NAME_MAX, "%s", sec);
     }
+    return FS_OK;
+}
+
+/* The [param.NAME] and [constraint.NAME] sections, in file order. */
+static fs_status collect_params(const fs_config *cfg, binder *b, fs_optimize *o, fs_error *err)
+{
+    fs_status s = collect_sections(cfg, "param", b->sections, &o->nparams, FS_OPTIMIZE_MAX_PARAMS, "parameters", err);
+    if (s == FS_OK)
+        s = collect_sections(cfg, "constraint", b->csections, &o->nconstraints, FS_OPTIMIZE_MAX_CONSTRAINTS,
+                             "constraints", err);
+    if (s != FS_OK)
+        return s;
+    for (int p = 0; p < o->nparams; p++)
+        snprintf(o->param[p].name, FS_NAME_MAX, "%s", b->sections[p] + 6);
+    for (int n = 0; n < o->nconstraints; n++)
+        snprintf(o->constraint[n].name, FS_NAME_MAX, "%s", b->csections[n] + 11);
     if (!o->nparams)
         return fs_fail(err, FS_BAD_INPUT, "%s: no parameters; add a section like [param.k_d1] with key = "
                                           "springs.k_d1_N_per_m, min, max and start", cfg->path);
     return FS_OK;
+}
+
+/* [optimize] relative_to names a foot of the campaign, which only the campaign's loading knows:
+ * taken here as text (and marked bound), checked once the campaign is loaded. */
+static void take_relative_to(fs_config *cfg, binder *b)
+{
+    for (int i = 0; i < cfg->count; i++) {
+        fs_entry *e = &cfg->entries[i];
+        if (strcmp(e->section, "optimize") || strcmp(e->name, "relative_to"))
+            continue;
+        snprintf(b->relative_to, sizeof b->relative_to, "%s", e->value); /* the last given wins */
+        fs_config_where(cfg, "optimize", "relative_to", b->relative_where, sizeof b->relative_where);
+        e->used = 1;
+    }
 }
 
 /* A fs_optimize to bind into, and where each param's choice index lands (the binder's). */
@@ -79,9 +114,22 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
                 "what the search minimises: least_stiff (the parameters' sum, each over its min) or lightest "
                 "(the foot's mass)");
     k->choices = "none|least_stiff|lightest";
+    take_relative_to(cfg, b);
     fs_status s = collect_params(cfg, b, o, err);
     if (s != FS_OK)
         return s;
+    for (int n = 0; n < o->nconstraints; n++) {
+        k = add_key(b, b->csections[n], "of", FS_KEY_CHOICE, T(o.constraint[n].of), "none",
+                    "what it bounds: foot_mass_kg (the foot's total mass) or ankle_drop_m (the arch's static "
+                    "ankle drop under its design load)");
+        k->choices = "none|foot_mass_kg|ankle_drop_m";
+        k = add_key(b, b->csections[n], "max", FS_KEY_NUMBER, T(o.constraint[n].max), "1e12",
+                    "the upper bound, in the quantity's unit");
+        k->min = 0, k->max = 1e12;
+        k = add_key(b, b->csections[n], "min", FS_KEY_NUMBER, T(o.constraint[n].min), "0",
+                    "the lower bound, in the quantity's unit");
+        k->min = 0, k->max = 1e12;
+    }
     snprintf(b->key_choices, sizeof b->key_choices, "none");
     for (int n = 1; fs_campaign_sweepable(n); n++) {
         char word[2 * FS_NAME_MAX + 2];
@@ -132,7 +180,58 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] log = yes needs min > 0 (it is %g)",
                            fs_config_where(cfg, sec, "log", where, sizeof where), sec, q->min);
     }
+    for (int n = 0; n < o->nconstraints; n++) {
+        char csec[FS_NAME_MAX + 16];
+        snprintf(csec, sizeof csec, "constraint.%s", o->constraint[n].name);
+        if (o->constraint[n].of == FS_QUANTITY_NONE)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] names no quantity; give of = foot_mass_kg or of = ankle_drop_m",
+                           fs_config_where(cfg, csec, fs_config_has(cfg, csec, "max") ? "max" : "min", where, sizeof where),
+                           csec);
+        int has_max = fs_config_has(cfg, csec, "max"), has_min = fs_config_has(cfg, csec, "min");
+        if (!has_max && !has_min)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] has no bound; give max = the largest value allowed and/or "
+                           "min = the smallest (%s)", fs_config_where(cfg, csec, "of", where, sizeof where), csec,
+                           o->constraint[n].of == FS_QUANTITY_FOOT_MASS_KG ? "kg" : "m");
+        if (!has_max)
+            o->constraint[n].max = HUGE_VAL;
+        if (!(o->constraint[n].min < o->constraint[n].max))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] min = %g is not below max = %g; give min < max",
+                           fs_config_where(cfg, csec, "min", where, sizeof where), csec, o->constraint[n].min,
+                           o->constraint[n].max);
+    }
     return FS_OK;
+}
+
+/* relative_to, taken as text, is one of the loaded campaign's feet, and some other foot is left. */
+static fs_status find_reference(const binder *b, fs_optimize *o, fs_error *err)
+{
+    o->reference = -1;
+    if (!b->relative_to[0])
+        return FS_OK;
+    char feet[FS_CAMPAIGN_MAX_FEET * (FS_NAME_MAX + 2)] = "";
+    for (int f = 0; f < o->campaign.nfeet; f++) {
+        if (!strcmp(o->campaign.foot[f].name, b->relative_to))
+            o->reference = f;
+        size_t len = strlen(feet);
+        snprintf(feet + len, sizeof feet - len, "%s%s", f ? ", " : "", o->campaign.foot[f].name);
+    }
+    if (o->reference < 0)
+        return fs_fail(err, FS_BAD_INPUT, "%s: [optimize] relative_to = %s is not a foot of campaign %s; its feet: %s",
+                       b->relative_where, b->relative_to, o->campaign.path, feet);
+    if (o->campaign.nfeet < 2)
+        return fs_fail(err, FS_BAD_INPUT, "%s: [optimize] relative_to = %s leaves no foot to search: campaign %s has "
+                       "only that foot; add the foot the parameters change", b->relative_where, b->relative_to,
+                       o->campaign.path);
+    return FS_OK;
+}
+
+static int foot_of(const fs_campaign *c, int cell) { return cell / c->nrobots / c->nterrains; }
+
+/* The first cell a candidate is put into: the first foot's, or the second's when the first is the
+ * reference. */
+static int first_candidate(const fs_optimize *o)
+{
+    return o->reference == 0 ? o->campaign.nterrains * o->campaign.nrobots : 0;
 }
 
 fs_status fs_optimize_load(const char *path, const char *const *sets, int nsets, fs_optimize *o, fs_error *err)
@@ -162,17 +261,19 @@ fs_status fs_optimize_load(const char *path, const char *const *sets, int nsets,
     }
     snprintf(o->path, sizeof o->path, "%s", path);
     fs_path_stem(path, o->name, sizeof o->name);
-    free(b);
     free(t);
     fs_config_free(&cfg);
     if (s == FS_OK)
         s = fs_campaign_load(o->campaign_path, rest, nrest, &o->campaign, err);
+    if (s == FS_OK)
+        s = find_reference(b, o, err);
+    free(b);
     if (s == FS_OK && !o->campaign.nexpect)
         s = fs_fail(err, FS_BAD_INPUT, "%s: campaign %s states no expectations: give it [expect.NAME] sections, the "
                     "targets the search must meet", path, o->campaign_path);
     /* every parameter must be a number of every cell's scenario, and its bounds within the key's range */
     for (int p = 0; s == FS_OK && p < o->nparams; p++) {
-        fs_scenario *sc = &o->campaign.pair[0];
+        fs_scenario *sc = &o->campaign.pair[first_candidate(o)];
         const fs_key *k;
         if (!fs_scenario_number(sc, o->param[p].key, &k))
             s = fs_fail(err, FS_BAD_INPUT, "%s: [param.%s] key = %s is not a number the trials have", path,
@@ -181,27 +282,48 @@ fs_status fs_optimize_load(const char *path, const char *const *sets, int nsets,
             s = fs_fail(err, FS_BAD_INPUT, "%s: [param.%s] min = %g, max = %g leave %s's range [%g, %g]", path,
                         o->param[p].name, o->param[p].min, o->param[p].max, o->param[p].key, k->min, k->max);
     }
+    int npairs = s == FS_OK ? fs_campaign_npairs(&o->campaign) : 0; /* cells, times a band's ends */
+    if (s == FS_OK) {
+        o->file_x = calloc((size_t)npairs * (size_t)o->nparams, sizeof o->file_x[0]);
+        o->view = malloc(sizeof *o->view);
+        if (!o->file_x || !o->view)
+            s = fs_fail(err, FS_NO_MEMORY, "out of memory");
+    }
+    for (int pair = 0; s == FS_OK && pair < npairs; pair++)
+        for (int p = 0; p < o->nparams; p++)
+            o->file_x[pair * o->nparams + p] = *fs_scenario_number(&o->campaign.pair[pair], o->param[p].key, NULL);
     if (s == FS_OK) {
         double x[FS_OPTIMIZE_MAX_PARAMS];
         for (int p = 0; p < o->nparams; p++)
             x[p] = o->param[p].start;
         s = fs_optimize_apply(o, x, err);
     }
-    if (s != FS_OK && o->campaign.pair)
-        fs_campaign_free(&o->campaign);
+    if (s != FS_OK)
+        fs_optimize_free(o);
     return s;
 }
 
-void fs_optimize_free(fs_optimize *o) { fs_campaign_free(&o->campaign); }
+void fs_optimize_free(fs_optimize *o)
+{
+    if (o->campaign.pair)
+        fs_campaign_free(&o->campaign);
+    free(o->file_x);
+    free(o->view);
+    o->file_x = NULL;
+    o->view = NULL;
+}
 
 /* ---- a candidate -------------------------------------------------------------------------- */
 
 fs_status fs_optimize_apply(fs_optimize *o, const double *x, fs_error *err)
 {
-    for (int cell = 0; cell < fs_campaign_npairs(&o->campaign); cell++) { /* a band's ends too */
-        fs_scenario *sc = &o->campaign.pair[cell];
+    int nends = fs_campaign_nends(&o->campaign);
+    for (int pair = 0; pair < fs_campaign_npairs(&o->campaign); pair++) { /* every cell at a band's every end */
+        if (foot_of(&o->campaign, pair / nends) == o->reference)
+            continue; /* the reference foot stays as its files give it */
+        fs_scenario *sc = &o->campaign.pair[pair];
         for (int p = 0; p < o->nparams; p++)
-            *fs_scenario_number(sc, o->param[p].key, NULL) = x[p];
+            *fs_scenario_number(sc, o->param[p].key, NULL) = x ? x[p] : o->file_x[pair * o->nparams + p];
         fs_status s = fs_scenario_compile(sc, err);
         if (s != FS_OK)
             return s;
@@ -212,22 +334,108 @@ fs_status fs_optimize_apply(fs_optimize *o, const double *x, fs_error *err)
 double fs_optimize_objective(const fs_optimize *o, const double *x)
 {
     if (o->objective == FS_OBJECTIVE_LIGHTEST)
-        return o->campaign.pair[0].geom.total_mass_kg;
+        return fs_optimize_quantity(o, FS_QUANTITY_FOOT_MASS_KG);
     double sum = 0;
     for (int p = 0; p < o->nparams; p++)
         sum += x[p] / o->param[p].min;
     return sum;
 }
 
-double fs_optimize_shortfall(const fs_campaign *c, const fs_campaign_row *rows)
+double fs_optimize_quantity(const fs_optimize *o, int q)
 {
+    const fs_scenario *sc = &o->campaign.pair[first_candidate(o)];
+    if (q == FS_QUANTITY_FOOT_MASS_KG)
+        return sc->geom.total_mass_kg;
+    if (q != FS_QUANTITY_ANKLE_DROP_M || sc->design.kind != FS_FOOT_BIOMIMETIC)
+        return NAN;
+    fs_planar_load load = {.load_N = sc->design.design_load_kg * sc->def.gravity_m_per_s2,
+                           .gravity_m_per_s2 = sc->def.gravity_m_per_s2, .frictionless = 1};
+    fs_planar_result r;
+    fs_error err;
+    if (fs_planar_equilibrium(&sc->design, &sc->geom, 2, &load, &r, &err) != FS_OK || !r.converged || !r.stable)
+        return NAN;
+    return r.ankle_drop_m;
+}
+
+double fs_optimize_violation(const fs_optimize *o)
+{
+    double v = 0;
+    for (int n = 0; n < o->nconstraints; n++) {
+        const fs_opt_constraint *k = &o->constraint[n];
+        double q = fs_optimize_quantity(o, k->of);
+        if (!isfinite(q))
+            v += 1;
+        else if (q > k->max)
+            v += k->max > 0 ? (q - k->max) / k->max : q - k->max;
+        else if (q < k->min)
+            v += (k->min - q) / k->min;
+    }
+    return v;
+}
+
+int fs_optimize_ntargets(const fs_optimize *o)
+{
+    const fs_campaign *c = &o->campaign;
+    return c->nexpect + (o->reference >= 0 ? (c->nfeet - 1) * c->nterrains * c->nrobots : 0);
+}
+
+int fs_optimize_reference_cell(const fs_optimize *o, int cell)
+{
+    const fs_campaign *c = &o->campaign;
+    if (o->reference < 0)
+        return -1;
+    int per_foot = c->nterrains * c->nrobots;
+    return o->reference * per_foot + cell % per_foot;
+}
+
+double fs_optimize_shortfall(const fs_optimize *o, const fs_campaign_row *rows)
+{
+    const fs_campaign *c = &o->campaign;
     double miss = 0;
     for (int i = 0; i < c->nexpect; i++) {
         const fs_expectation *e = &c->expect[i];
         double rate = rows[(e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot].success_rate;
         miss += fmax(0, e->min_success - rate) + fmax(0, rate - e->max_success);
     }
+    for (int cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
+        if (foot_of(c, cell) != o->reference)
+            miss += fmax(0, rows[fs_optimize_reference_cell(o, cell)].success_rate - rows[cell].success_rate);
     return miss;
+}
+
+int fs_optimize_pareto(const double *a, const double *b, int n, int *keep)
+{
+    int count = 0;
+    for (int i = 0; i < n; i++) {
+        keep[i] = 1;
+        for (int j = 0; j < n && keep[i]; j++) {
+            if (j == i)
+                continue;
+            int as_good = a[j] <= a[i] && b[j] <= b[i], better = a[j] < a[i] || b[j] < b[i];
+            if (as_good && (better || j < i)) /* dominated, or an equal point came first */
+                keep[i] = 0;
+        }
+        count += keep[i];
+    }
+    return count;
+}
+
+/* One cell's closeness: the mean over its trials (at every end of a band) that did not land of
+ * 1 - (time up / window). */
+static double cell_closeness(const fs_campaign *c, int cell, const fs_trial_result *results)
+{
+    double window = fs_campaign_pair(c, cell)->def.duration_s, miss = 0;
+    int n = 0;
+    int per_cell = c->seeds * fs_campaign_nends(c); /* a cell's trials, at every band end */
+    for (int k = 0; k < per_cell; k++) {
+        const fs_trial_result *r = &results[cell * per_cell + k];
+        if (r->outcome == FS_LANDED)
+            continue;
+        double up = isfinite(r->end_time_s) ? fmin(1, fmax(0, r->end_time_s / window)) : 0;
+        miss += 1 - up;
+        n++;
+    }
+    return n ? miss / n : 0;
 }
 
 double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results)
@@ -236,19 +444,36 @@ double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *result
     double sum = 0;
     for (int i = 0; i < c->nexpect; i++) {
         const fs_expectation *e = &c->expect[i];
-        int cell = (e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot, n = 0;
-        double window = fs_campaign_pair(c, cell)->def.duration_s, miss = 0;
-        for (int k = 0; k < c->seeds * fs_campaign_nends(c); k++) { /* a cell's trials, at every band end */
-            const fs_trial_result *r = &results[cell * fs_campaign_nends(c) * c->seeds + k];
-            if (r->outcome == FS_LANDED)
-                continue;
-            double up = isfinite(r->end_time_s) ? fmin(1, fmax(0, r->end_time_s / window)) : 0;
-            miss += 1 - up;
-            n++;
-        }
-        sum += n ? miss / n : 0;
+        sum += cell_closeness(c, (e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot, results);
     }
+    for (int cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
+        if (foot_of(c, cell) != o->reference)
+            sum += cell_closeness(c, cell, results);
     return sum;
+}
+
+fs_status fs_optimize_run_trials(fs_optimize *o, fs_optimize_trials trials, void *user, fs_trial_result *results,
+                                 int reference, fs_error *err)
+{
+    const fs_campaign *c = &o->campaign;
+    if (o->reference < 0)
+        return trials(user, c, results, err);
+    int per_foot = c->nterrains * c->nrobots;
+    for (int f = 0; f < c->nfeet; f++) {
+        if (f == o->reference && !reference)
+            continue;
+        /* foot f's cells alone: cells are numbered foot-major, so they and their trials are a block */
+        *o->view = *c;
+        o->view->foot[0] = c->foot[f];
+        o->view->nfeet = 1;
+        o->view->nexpect = 0;
+        o->view->pair = c->pair + f * per_foot * fs_campaign_nends(c); /* with its band's ends */
+        fs_status s = trials(user, o->view,
+                             results + (size_t)f * (size_t)per_foot * (size_t)fs_campaign_nends(c) * (size_t)c->seeds, err);
+        if (s != FS_OK)
+            return s;
+    }
+    return FS_OK;
 }
 
 /* ---- the search --------------------------------------------------------------------------- */
@@ -280,20 +505,31 @@ static double penalised(unsigned n, const double *u, double *grad, void *data)
     for (unsigned p = 0; p < n; p++)
         x[p] = fmin(o->param[p].max, fmax(o->param[p].min, to_x(&o->param[p], u[p])));
     fs_status st = fs_optimize_apply(o, x, &s->err);
-    if (st == FS_OK)
-        st = s->trials(s->user, o, s->results, &s->err);
-    if (st != FS_OK) {
-        s->status = st;
-        return HUGE_VAL;
+    double violation = st == FS_OK ? fs_optimize_violation(o) : 0, obj = fs_optimize_objective(o, x), value;
+    int ntargets = fs_optimize_ntargets(o);
+    if (st == FS_OK && violation > 0) {
+        /* infeasible: no trial runs; worse than any candidate that runs, however many targets it
+           misses (each target's shortfall is at most 1, its slope less than one) */
+        value = obj + s->weight * (ntargets + 1 + violation);
+        s->evaluations++;
+        if (s->report)
+            s->report(s->user, o, s->evaluations, x, obj, NAN, violation, NULL);
+    } else {
+        if (st == FS_OK)
+            st = fs_optimize_run_trials(o, s->trials, s->user, s->results, 0, &s->err);
+        if (st != FS_OK) {
+            s->status = st;
+            return HUGE_VAL;
+        }
+        fs_campaign_summarize(&o->campaign, s->results, s->rows);
+        double miss = fs_optimize_shortfall(o, s->rows);
+        /* how soon the misses fell, worth less than one seed on any target */
+        double slope = fs_optimize_closeness(o, s->results) / (ntargets + 1) / o->campaign.seeds;
+        value = obj + s->weight * (miss + slope);
+        s->evaluations++;
+        if (s->report)
+            s->report(s->user, o, s->evaluations, x, obj, miss, 0, s->rows);
     }
-    fs_campaign_summarize(&o->campaign, s->results, s->rows);
-    double obj = fs_optimize_objective(o, x), miss = fs_optimize_shortfall(&o->campaign, s->rows);
-    /* how soon the misses fell, worth less than one seed on any target */
-    double slope = fs_optimize_closeness(o, s->results) / (o->campaign.nexpect + 1) / o->campaign.seeds;
-    double value = obj + s->weight * (miss + slope);
-    s->evaluations++;
-    if (s->report)
-        s->report(s->user, o, s->evaluations, x, obj, miss, s->rows);
     if (value < s->best_value) {
         s->best_value = value;
         memcpy(s->best, x, n * sizeof x[0]);
@@ -318,6 +554,9 @@ fs_status fs_optimize_run(fs_optimize *o, fs_optimize_trials trials, fs_optimize
         return st;
     double range = fs_optimize_objective(o, upper);
     s.weight = 100 * range * o->campaign.seeds;
+    /* the reference foot's trials, once: they do not change with the candidate */
+    if (o->reference >= 0 && (st = fs_optimize_run_trials(o, trials, user, results, 1, err)) != FS_OK)
+        return st;
     double lo[FS_OPTIMIZE_MAX_PARAMS], hi[FS_OPTIMIZE_MAX_PARAMS], u[FS_OPTIMIZE_MAX_PARAMS], step[FS_OPTIMIZE_MAX_PARAMS];
     for (unsigned p = 0; p < n; p++) {
         const fs_opt_param *q = &o->param[p];

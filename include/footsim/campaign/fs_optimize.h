@@ -26,13 +26,29 @@
  * rerun on as many fresh seeds, and both sets of rates are reported with their Wilson intervals.
  *
  * A candidate is applied as typed edits of each cell's loaded definitions (fs_scenario_number) and
- * a compile, never by writing text. */
+ * a compile, never by writing text.
+ *
+ * Several targets at once are the campaign's several [expect.NAME] sections (any foot, terrain,
+ * robot, each with its own rate). Two more kinds of demand, in the optimize file:
+ *
+ *   [optimize]
+ *   relative_to = flat       ; a foot of the campaign: every cell of every other foot must land at
+ *                            ; least as often as this foot in the same terrain x robot on the same
+ *                            ; seeds. This foot is not a candidate: no parameter is put into its
+ *                            ; cells, and its trials run once, before the search, and are reused.
+ *   [constraint.light]
+ *   of = foot_mass_kg        ; or ankle_drop_m: the arch's static ankle drop under its design load
+ *   max = 0.5                ; the bounds: max, min or both (at least one)
+ *
+ * A constraint is static (the candidate's compiled design alone): checked after a candidate is put
+ * into the cells and before any of its trials run; a candidate that breaks one runs no trial and is
+ * penalised above any candidate that runs (more than every target missed entirely). */
 #ifndef FS_OPTIMIZE_H
 #define FS_OPTIMIZE_H
 
 #include "footsim/campaign/fs_campaign.h"
 
-enum { FS_OPTIMIZE_MAX_PARAMS = 16 };
+enum { FS_OPTIMIZE_MAX_PARAMS = 16, FS_OPTIMIZE_MAX_CONSTRAINTS = 8 };
 
 typedef struct fs_opt_param {
     char name[FS_NAME_MAX];        /* the section's NAME */
@@ -46,6 +62,20 @@ typedef struct fs_opt_param {
  * lightest (the foot's total mass, kg, as the candidate's design compiles it). */
 typedef enum fs_objective { FS_OBJECTIVE_NONE, FS_OBJECTIVE_LEAST_STIFF, FS_OBJECTIVE_LIGHTEST } fs_objective;
 
+/* What a constraint bounds ([constraint.NAME] of): the foot's total mass, kg, as the candidate's
+ * design compiles it; the arch's ankle drop, m: the planar statics (fs_planar_equilibrium) of its
+ * middle chain under the design's design_load_kg, heel and toe sliding freely (frictionless: the
+ * larger of the two drops `footsim stiffness` prints, 0.30 mm for Table I's foot); a design with
+ * no stable equilibrium there (the arch folds) breaks any ankle-drop bound. A lower bound on the
+ * drop keeps a foot compliant; an upper one bounds its travel. */
+typedef enum fs_quantity { FS_QUANTITY_NONE, FS_QUANTITY_FOOT_MASS_KG, FS_QUANTITY_ANKLE_DROP_M } fs_quantity;
+
+typedef struct fs_opt_constraint {
+    char name[FS_NAME_MAX];        /* the section's NAME */
+    int of;                        /* fs_quantity */
+    double min, max;               /* the bounds, in the quantity's unit (max HUGE_VAL: none) */
+} fs_opt_constraint;
+
 typedef struct fs_optimize {
     char path[FS_PATH_MAX];
     char name[FS_NAME_MAX];
@@ -55,7 +85,14 @@ typedef struct fs_optimize {
     int objective;                 /* fs_objective: what the search minimises, named in the file */
     int nparams;
     fs_opt_param param[FS_OPTIMIZE_MAX_PARAMS];
+    int reference;                 /* relative_to: the index of the campaign's reference foot; -1 none */
+    int nconstraints;
+    fs_opt_constraint constraint[FS_OPTIMIZE_MAX_CONSTRAINTS];
     fs_campaign campaign;          /* loaded: its cells' scenarios are what a candidate edits */
+    double *file_x;                /* each cell's parameters as its files give them, at every end of a
+                                      band: [(cell * nends + end) * nparams + p]
+                                      (the foot's own design: Table I's for feet/biomimetic.ini) */
+    fs_campaign *view;             /* one foot's cells of campaign, for running them alone */
 } fs_optimize;
 
 /* Reads and checks path (file:line messages, FS_BAD_INPUT) and loads its campaign with sets (as
@@ -64,16 +101,33 @@ typedef struct fs_optimize {
 fs_status fs_optimize_load(const char *path, const char *const *sets, int nsets, fs_optimize *o, fs_error *err);
 void fs_optimize_free(fs_optimize *o);
 
-/* Puts candidate x (nparams values) into every cell's scenario and compiles them. */
+/* Puts candidate x (nparams values) into every cell's scenario but the reference foot's, and
+ * compiles them. x NULL: each cell's values as its files give them (o->file_x). */
 fs_status fs_optimize_apply(fs_optimize *o, const double *x, fs_error *err);
+
+/* The quantity q of the candidate as fs_optimize_apply left it (the first cell that is not the
+ * reference foot's); NAN for an ankle drop the statics cannot find (the arch folds). */
+double fs_optimize_quantity(const fs_optimize *o, int q);
+
+/* How far the candidate as applied breaks its constraints: the sum over them of (value - max) /
+ * max for those above their bound (a bound of 0: value - max), (min - value) / min for those below,
+ * 1 for an ankle drop that is NAN; 0 when it is feasible. */
+double fs_optimize_violation(const fs_optimize *o);
+
+/* The targets: the campaign's expectations, then (with relative_to) every cell of every other foot. */
+int fs_optimize_ntargets(const fs_optimize *o);
 
 /* The objective of x, after fs_optimize_apply(o, x): the sum of x_i / min_i (least_stiff), or the
  * foot's total mass in kg (lightest). */
 double fs_optimize_objective(const fs_optimize *o, const double *x);
 
-/* How far the rows miss the campaign's expectations: the sum over expectations of the distance of
- * the success rate outside [min_success, max_success]; 0 when every target is met. */
-double fs_optimize_shortfall(const fs_campaign *c, const fs_campaign_row *rows);
+/* How far the rows miss the targets: the sum over expectations of the distance of the success rate
+ * outside [min_success, max_success], plus (relative_to) over every other foot's cell how far its
+ * rate lies below the reference foot's in the same terrain x robot; 0 when every target is met. */
+double fs_optimize_shortfall(const fs_optimize *o, const fs_campaign_row *rows);
+
+/* The cell of the reference foot in the terrain and robot of cell; -1 without relative_to. */
+int fs_optimize_reference_cell(const fs_optimize *o, int cell);
 
 /* How close the trials that missed came, a continuous measure for the search where the success
  * rates are flat (every candidate near the start may miss every target alike): for each
@@ -81,16 +135,29 @@ double fs_optimize_shortfall(const fs_campaign *c, const fs_campaign_row *rows);
  * the window): 0 when all landed, near 1 when all fell at once. */
 double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results);
 
-/* Runs one candidate's trials (every trial of o->campaign, as fs_optimize_apply left it) into
- * results; the caller's (the command runs them in its worker pool). */
-typedef fs_status (*fs_optimize_trials)(void *user, const fs_optimize *o, fs_trial_result *results, fs_error *err);
+/* Runs every trial of c (a campaign, or one foot's cells of it: o->view) into results, by c's trial
+ * index; the caller's (the command runs them in its worker pool). */
+typedef fs_status (*fs_optimize_trials)(void *user, const fs_campaign *c, fs_trial_result *results, fs_error *err);
 
-/* Called after every evaluation with its number, candidate, objective, shortfall and rows. */
+/* Runs the trials of o->campaign through trials, foot by foot (each foot's cells a view of the
+ * campaign: a trial depends on its cell's scenario and its seed alone), into results (every trial
+ * of the campaign, by its index): the reference foot's only when reference is 1, every other
+ * foot's always. */
+fs_status fs_optimize_run_trials(fs_optimize *o, fs_optimize_trials trials, void *user, fs_trial_result *results,
+                                 int reference, fs_error *err);
+
+/* Called after every evaluation with its number, candidate, objective, shortfall, violation (of
+ * the constraints; > 0: infeasible, no trial ran, rows NULL) and rows. */
 typedef void (*fs_optimize_report)(void *user, const fs_optimize *o, int evaluation, const double *x, double objective,
-                                   double shortfall, const fs_campaign_row *rows);
+                                   double shortfall, double violation, const fs_campaign_row *rows);
+
+/* The Pareto front of n points (a[i], b[i]), both minimised: keep[i] = 1 when no other point is at
+ * least as good in both and better in one (of equal points, the first kept); returns how many. */
+int fs_optimize_pareto(const double *a, const double *b, int n, int *keep);
 
 /* Searches: starts at the parameters' start values, evaluates at most max_evaluations candidates,
  * leaves the best (least penalised objective) in best[nparams] and its penalised value in *value.
+ * With relative_to, first runs the reference foot's trials once (into results, kept there).
  * results holds fs_campaign_ntrials(&o->campaign) trials, rows fs_campaign_ncells rows. */
 fs_status fs_optimize_run(fs_optimize *o, fs_optimize_trials trials, fs_optimize_report report, void *user,
                           fs_trial_result *results, fs_campaign_row *rows, double *best, double *value,
