@@ -260,14 +260,17 @@ static int fill_result(FILE *f, const void *user)
     fputs("\n| parameter | key | the foot's file | start | best | best / file |\n|---|---|--:|--:|--:|--:|\n", f);
     int cand = o->reference == 0 ? 1 : 0, cell0 = cand * c->nterrains * c->nrobots;
     for (int p = 0; p < o->nparams; p++) {
-        double file = o->file_x[cell0 * o->nparams + p];
+        double file = o->file_x[cell0 * fs_campaign_nends(c) * o->nparams + p]; /* a band's first end */
         fprintf(f, "| %s | `%s` | %.4g | %.4g | %.4g | %.3g |\n", o->param[p].name, o->param[p].key, file, x->start[p],
                 x->best[p], x->best[p] / file);
     }
     fprintf(f, "\nFoot mass: %.4g kg as its file gives it, %.4g kg the best; the arch's static ankle drop under its "
-               "design load: %.3g mm, %.3g mm (NaN: no stable equilibrium).\n",
+               "design load: %.3g mm, %.3g mm%s.\n",
             x->quantity_file[FS_QUANTITY_FOOT_MASS_KG], x->quantity_best[FS_QUANTITY_FOOT_MASS_KG],
-            1e3 * x->quantity_file[FS_QUANTITY_ANKLE_DROP_M], 1e3 * x->quantity_best[FS_QUANTITY_ANKLE_DROP_M]);
+            1e3 * x->quantity_file[FS_QUANTITY_ANKLE_DROP_M], 1e3 * x->quantity_best[FS_QUANTITY_ANKLE_DROP_M],
+            isnan(x->quantity_file[FS_QUANTITY_ANKLE_DROP_M]) || isnan(x->quantity_best[FS_QUANTITY_ANKLE_DROP_M])
+                ? " (NaN: the arch has no stable equilibrium under that load)"
+                : "");
     fputs("\nSuccess (landed / trials, 95 % Wilson interval) in each terrain and robot:\n\n| design |", f);
     for (int i = 0; i < c->nterrains * c->nrobots; i++)
         fprintf(f, " %s, %s |", c->terrain[i / c->nrobots].name, c->robot[i % c->nrobots].name);
