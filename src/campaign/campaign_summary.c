@@ -45,10 +45,25 @@ static int same_foot(const fs_scenario *a, const fs_scenario *b)
     return !memcmp(&a->design, &b->design, sizeof a->design) && a->def.contact_layer_m == b->def.contact_layer_m;
 }
 
+/* Two scenarios whose arch is the same: a biomimetic foot's K, fold and travel are the model's on
+ * rigid ground and do not depend on its sole's contact (a band's ends differ in it); a flat sole's K
+ * is its contacts', so for it the whole foot must be the same. */
+static int same_arch(const fs_scenario *a, const fs_scenario *b)
+{
+    if (a->geom.kind != FS_FOOT_BIOMIMETIC || b->geom.kind != FS_FOOT_BIOMIMETIC)
+        return same_foot(a, b);
+    fs_design_def da;
+    memcpy(&da, &a->design, sizeof da);
+    da.sole_stiffness_N_per_m = b->design.sole_stiffness_N_per_m;
+    da.sole_damping_Ns_per_m = b->design.sole_damping_Ns_per_m;
+    da.sole_mu = b->design.sole_mu;
+    return !memcmp(&da, &b->design, sizeof da) && a->def.contact_layer_m == b->def.contact_layer_m;
+}
+
 static void fold_of(const fs_scenario *sc, double K, double load_N, foot_fold *cache, int *ncache, foot_fold *out)
 {
     for (int i = 0; i < *ncache; i++)
-        if (cache[i].K == K && cache[i].load_N == load_N && same_foot(cache[i].sc, sc)) {
+        if (cache[i].K == K && cache[i].load_N == load_N && same_arch(cache[i].sc, sc)) {
             *out = cache[i];
             return;
         }
@@ -211,7 +226,14 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contac
     fs_error err;
     if (r->mass_kg <= 0)
         return;
-    fs_status s = fs_pitch_stiffness_foot(sc, r->mass_kg * g, &K, &err);
+    /* a band's ends (and a sweep's cells) share the arch and its load: its K worked out once (the fold
+       cache's; a flat sole's K is its contacts', worked out each time) */
+    fs_status s = FS_NUMERICAL;
+    for (int i = 0; i < *ncache && s != FS_OK && sc->geom.kind == FS_FOOT_BIOMIMETIC; i++)
+        if (cache[i].load_N == r->mass_kg * g && cache[i].K > 0 && same_arch(cache[i].sc, sc))
+            K = cache[i].K, s = FS_OK;
+    if (s != FS_OK)
+        s = fs_pitch_stiffness_foot(sc, r->mass_kg * g, &K, &err);
     fs_pitch_law law;
     fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, max_lean, &law);
     row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
