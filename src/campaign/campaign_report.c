@@ -290,8 +290,8 @@ static void md_law_ends(FILE *f, const fs_campaign *c, const fs_campaign_row *r)
         if (isfinite(r->end_law_K[e]))
             fprintf(f, " (K %.3g, e %.2f)", r->end_law_K[e], r->end_restitution[e]);
         if (r->end_drop_law[e] != FS_LAW_NONE)
-            fprintf(f, ", drop %s %d (E %.3g J, B %.3g J)", fs_law_name(r->end_drop_law[e]), r->end_drop_stands[e],
-                    r->end_drop_energy_J[e], r->end_drop_barrier_J[e]);
+            fprintf(f, ", drop %s (stands in %d of %d seeds; E %.3g J, B %.3g J)", fs_law_name(r->end_drop_law[e]),
+                    r->end_drop_stands[e], r->drop_seeds, r->end_drop_energy_J[e], r->end_drop_barrier_J[e]);
     }
 }
 
