@@ -528,6 +528,17 @@ static void sql_text(FILE *f, const char *s)
     fputc('\'', f);
 }
 
+/* For each band end, n columns NAME_END of the given types (name and type pairs in nt). */
+static void sql_end_columns(sql_list *l, const fs_campaign *c, const char *const *nt, int n)
+{
+    for (int e = 0; e < fs_campaign_nends(c); e++)
+        for (int i = 0; i < n; i++) {
+            char key[48];
+            snprintf(key, sizeof key, "%s_%s", nt[2 * i], c->end[e].name);
+            sql_column(l, key, nt[2 * i + 1]);
+        }
+}
+
 /* The columns of trials.csv (summary 0) or summary.csv (1), in the files' order, each with its type:
  * the names and the order are those the CSV writers above write. */
 static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
@@ -574,24 +585,12 @@ static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
     sql_column(l, "drop_law_critical_com_height_m", "REAL");
     if (!c->band[0])
         return;
+    static const char *const rates[] = {"landed", "INTEGER NOT NULL", "success_rate", "REAL"};
+    static const char *const laws[] = {"law_prediction", "TEXT", "drop_law_prediction", "TEXT", "drop_law_stands", "INTEGER"};
     sql_column(l, "band_end", "TEXT NOT NULL");
-    for (int e = 0; e < fs_campaign_nends(c); e++) {
-        char key[32];
-        snprintf(key, sizeof key, "landed_%s", c->end[e].name);
-        sql_column(l, key, "INTEGER NOT NULL");
-        snprintf(key, sizeof key, "success_rate_%s", c->end[e].name);
-        sql_column(l, key, "REAL");
-    }
+    sql_end_columns(l, c, rates, 2);
     sql_column(l, "law_end", "TEXT");
-    for (int e = 0; e < fs_campaign_nends(c); e++) {
-        char key[48];
-        snprintf(key, sizeof key, "law_prediction_%s", c->end[e].name);
-        sql_column(l, key, "TEXT");
-        snprintf(key, sizeof key, "drop_law_prediction_%s", c->end[e].name);
-        sql_column(l, key, "TEXT");
-        snprintf(key, sizeof key, "drop_law_stands_%s", c->end[e].name);
-        sql_column(l, key, "INTEGER");
-    }
+    sql_end_columns(l, c, laws, 3);
 }
 
 /* One table filled from its CSV file: made, imported (the header row skipped), and every empty
