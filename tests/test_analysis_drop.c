@@ -196,10 +196,24 @@ static void support_on_level_ground(void)
         fs_vec3 u = ring[k], v = ring[(k + 1) % 4];
         side = fmin(side, fabs((v.x - u.x) * (com.y - u.y) - (v.y - u.y) * (com.x - u.x)) / hypot(v.x - u.x, v.y - u.y));
     }
+    /* the bearing points' spread along the foot (the contacts' pitch stiffness per unit k): the two
+       heel and five toe spheres about their mean x */
+    double mean = 0, spread = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < g->nspheres; i++) {
+            int bears = g->sphere[i].body == FS_BODY_HEEL;
+            for (int c = 0; c < FS_CHAINS; c++)
+                bears |= g->sphere[i].body == g->chain[c].phalanx;
+            if (bears && pass == 0)
+                mean += g->sphere[i].centre.x / 7;
+            else if (bears)
+                spread += (g->sphere[i].centre.x - mean) * (g->sphere[i].centre.x - mean);
+        }
     for (int seed = 1; seed <= 3; seed++) {
         fs_trial_support s;
         REQUIRE(fs_trial_support_of(&sc, seed, 1e-3, &s, &err) == FS_OK);
         CHECK(s.bearing == 7 && s.toes_bearing == 5 && s.toes == 5 && s.heel_bearing && s.over);
+        CHECK_NEAR(s.spread_m2, spread, 1e-12);
         CHECK_NEAR(s.edge_m, xe - g->ankle.x, 1e-12);
         CHECK_NEAR(s.ankle_height_m, g->ankle.z, 1e-12);
         CHECK_NEAR(s.side_m, side, 1e-12);
@@ -317,7 +331,39 @@ static void toes_engage_as_the_foot_pitches(void)
     CHECK(isnan(fs_pitch_engaged_share(lone, 5, K, W, x, 0.1))); /* K / 5 = 12 < W h = 25.5 N m */
 }
 
-FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
+/* The band end's contact in the law (fs_analysis.h): the closed forms against hand calculations.
+ * Restitution at the pad's damping ratio 0.22: exp(-pi 0.22 / sqrt(1 - 0.0484)) = exp(-0.708510) =
+ * 0.492378 (six digits by hand: 1e-6); the band's definition inverts it, zeta = -ln e / sqrt(pi^2 +
+ * ln^2 e), which must give e = 0.5 back to round-off (an identity); overdamped (1.12, the hard sole)
+ * and critical contacts do not rebound. The pad's damping ratio from its series k and c (the sole's
+ * 100100 N/m and 208.011 N s/m with the ground's 1e8 and 2e4: k = 1.00000e5, c = 205.870) under 26.27 kg
+ * on 12 spheres (2.18917 kg): 205.870 / (2 sqrt(2.18917e5)) = 0.22000 (1e-4). The rebound gain at
+ * e = 0.5 is (1.5 / 0.5)^2 = 9. In series: a rigid foot (K infinite) on two points d = 0.1 m apart
+ * turned about their middle is k d^2 / 2 (k S, S = 2 (d/2)^2), to round-off; Table I at 21.5 times (K
+ * 298) on the pad's 1e5 against the hard 9.0909e6 with S = 0.0086 m^2: 1 / (1 / 298 + (1e-5 -
+ * 1.1e-7) / 0.0086) = 221.94 (to 0.01 by hand); the stiffest end (k = k_ref) gives K back, bit for bit. */
+static void contact_closed_forms(void)
+{
+    CHECK_NEAR(fs_contact_restitution(0.22), 0.492378, 1e-6);
+    double e = 0.5, zeta = -log(e) / sqrt(M_PI * M_PI + log(e) * log(e));
+    CHECK_NEAR(fs_contact_restitution(zeta), 0.5, 1e-12);
+    CHECK(fs_contact_restitution(1.12) == 0 && fs_contact_restitution(1) == 0 && fs_contact_restitution(0) == 1);
+    CHECK(fs_contact_restitution(0.3) < fs_contact_restitution(0.2));
+    double k = 100100 * 1e8 / (100100 + 1e8), c = 208.011 * 2e4 / (208.011 + 2e4);
+    CHECK_NEAR(k, 1.0e5, 1);
+    CHECK_NEAR(c, 205.870, 1e-3);
+    CHECK_NEAR(fs_contact_damping_ratio(k, c, 26.27 / 12), 0.22000, 1e-4);
+    CHECK_NEAR(fs_contact_rebound_gain(0.5), 9, 1e-12);
+    CHECK(fs_contact_rebound_gain(0) == 1);
+    double d = 0.1, kp = 2e5;
+    CHECK_NEAR(fs_pitch_contact_series(INFINITY, 2 * (d / 2) * (d / 2), kp, INFINITY), kp * d * d / 2, 1e-9 * kp * d * d);
+    CHECK_NEAR(fs_pitch_contact_series(298, 0.0086, 1e5, 1e7 * 1e8 / (1e7 + 1e8)), 221.94, 0.01);
+    double K = 297.77310000000001;
+    CHECK(fs_pitch_contact_series(K, 0.0086, 9.0909e6, 9.0909e6) == K);
+    CHECK(fs_pitch_contact_series(K, 0.0086, 2e7, 9.0909e6) == K); /* a stiffer contact than the reference */
+}
+
+FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(contact_closed_forms), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
              TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share),
              TEST(toes_engage_as_the_foot_pitches))

@@ -364,6 +364,40 @@ static void test_a_band_runs_each_trial_at_both_ends(void)
     unload(l);
 }
 
+/* The laws over a band (no trial run: the summary of made-up outcomes). The low end puts drop_weight's
+ * centre of mass at 0.3 m on a lively rubber pad (docs/contact.md's: e = 0.49), the high end is the
+ * trial as it is. The low end lands and the high end falls, so the measured worse end is the high
+ * one; but the laws topple at the low end (K = 12.8 N m/rad against m g h = 76.5) and stand at the
+ * high end (against 5.1): the cell's law must be the low end's, each end's verdict given. The high
+ * end's contact is the band's stiffest and overdamped (zeta 1.12): its law is the band-less
+ * campaign's, every number the same; the pad's compliance softens the low end's K. */
+static void test_a_band_cells_law_is_its_worse_ends(void)
+{
+    make_band_campaign("band_law.ini", "low = robot.com_height_m=0.3, sole.stiffness_N_per_m=100100, "
+                                       "sole.damping_Ns_per_m=208.011\nhigh =");
+    loaded *l = load_file("band_law.ini", NULL, 0, 1, 1);
+    fs_trial_result res[2];
+    memset(res, 0, sizeof res);
+    res[0].outcome = FS_LANDED, res[1].outcome = FS_FELL;
+    fs_campaign_row rows[1], plain[1];
+    fs_campaign_summarize(&l->c, res, rows);
+    CHECK(rows[0].band_end == 1 && rows[0].law_end == 0);
+    CHECK(rows[0].end_law[0] == FS_LAW_TOPPLES && rows[0].end_drop_law[0] == FS_LAW_TOPPLES);
+    CHECK(rows[0].end_law[1] == FS_LAW_STANDS && rows[0].end_drop_law[1] == FS_LAW_STANDS);
+    CHECK(rows[0].law == FS_LAW_TOPPLES && rows[0].drop_law == FS_LAW_TOPPLES && rows[0].drop_stands == 0);
+    CHECK_NEAR(rows[0].end_restitution[0], 0.49, 0.01);
+    CHECK(rows[0].end_restitution[1] == 0);
+    CHECK(rows[0].end_law_K[0] < rows[0].end_law_K[1]);
+    static const char *const none[] = {"campaign.band=none"};
+    loaded *p = load_file("band_law.ini", none, 1, 1, 1);
+    fs_campaign_summarize(&p->c, &res[1], plain);
+    CHECK(plain[0].law_end == -1 && plain[0].law == rows[0].end_law[1] && plain[0].drop_law == rows[0].end_drop_law[1]);
+    CHECK(plain[0].law_K == rows[0].end_law_K[1] && plain[0].drop_stands == rows[0].end_drop_stands[1]);
+    CHECK(plain[0].drop_energy_J == rows[0].end_drop_energy_J[1] && plain[0].drop_barrier_J == rows[0].end_drop_barrier_J[1]);
+    unload(p);
+    unload(l);
+}
+
 /* A design search over a campaign with a band: a candidate reaches both ends' scenarios (each keeping
  * its end's edits), and the closeness of its misses counts the trials of both ends. */
 static void test_a_band_reaches_the_optimizer(void)
@@ -440,4 +474,5 @@ static void test_cleanup(void)
 FS_TEST_MAIN(TEST(test_workers_do_not_change_the_bytes), TEST(test_a_stop_is_resumed_into_the_same_bytes),
              TEST(test_shards_merge_into_the_same_bytes), TEST(test_a_crashed_worker_is_failed_numerics),
              TEST(test_a_band_runs_each_trial_at_both_ends), TEST(test_a_wrong_band_is_refused),
-             TEST(test_a_band_reaches_the_optimizer), TEST(test_cleanup))
+             TEST(test_a_band_reaches_the_optimizer), TEST(test_a_band_cells_law_is_its_worse_ends),
+             TEST(test_cleanup))

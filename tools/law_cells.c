@@ -3,7 +3,9 @@
  * law newer than its summary. `build/law-cells CAMPAIGN [section.key=value ...]`, from the source
  * folder; JSON on stdout: {"seeds", "rows": [{foot, terrain, robot, law_prediction,
  * drop_law_prediction, drop_law_seeds, drop_law_stands, drop_law_energy_J, drop_law_barrier_J,
- * drop_law_saturation_N_m, drop_law_critical_com_height_m}]}, which tools/law-agreement.py --laws
+ * drop_law_saturation_N_m, drop_law_critical_com_height_m; with a band each end's laws too, NAME_END:
+ * law_prediction_, drop_law_prediction_, drop_law_stands_, law_K_N_m_per_rad_, contact_restitution_,
+ * drop_law_energy_J_, drop_law_barrier_J_}]}, which tools/law-agreement.py --laws
  * reads beside the campaign's summary.json. */
 #include "footsim/campaign/fs_campaign.h"
 
@@ -50,7 +52,22 @@ int main(int argc, char **argv)
         number("drop_law_energy_J", r->drop_energy_J, ", ");
         number("drop_law_barrier_J", r->drop_barrier_J, ", ");
         number("drop_law_saturation_N_m", r->drop_saturation_N_m, ", ");
-        number("drop_law_critical_com_height_m", r->drop_critical_m, "}");
+        number("drop_law_critical_com_height_m", r->drop_critical_m, "");
+        for (int e = 0; c.band[0] && r->law_end >= 0 && e < fs_campaign_nends(&c); e++) { /* a band: each end's laws */
+            const char *n = c.end[e].name;
+            printf(", \"law_prediction_%s\": \"%s\", \"drop_law_prediction_%s\": \"%s\", \"drop_law_stands_%s\": %d, ", n,
+                   fs_law_name(r->end_law[e]), n, fs_law_name(r->end_drop_law[e]), n, r->end_drop_stands[e]);
+            char key[64];
+            snprintf(key, sizeof key, "law_K_N_m_per_rad_%s", n);
+            number(key, r->end_law_K[e], ", ");
+            snprintf(key, sizeof key, "contact_restitution_%s", n);
+            number(key, r->end_restitution[e], ", ");
+            snprintf(key, sizeof key, "drop_law_energy_J_%s", n);
+            number(key, r->end_drop_energy_J[e], ", ");
+            snprintf(key, sizeof key, "drop_law_barrier_J_%s", n);
+            number(key, r->end_drop_barrier_J[e], "");
+        }
+        printf("}");
         printf("%s\n", i + 1 < fs_campaign_ncells(&c) ? "," : "");
     }
     printf("]}\n");

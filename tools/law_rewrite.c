@@ -5,7 +5,7 @@
  * them and writes OUT_DIR's trials.csv, summary.csv, summary.md, schema.sql, summary.json and the
  * chart's data, as `footsim campaign` would have (the provenance this version's, as `footsim merge
  * --force` writes it). OUT_DIR/trials.csv must come out byte for byte as RESULTS_DIR's (cmp them):
- * that checks the reading. Exit 2 on bad input, 4 when it cannot write. */
+ * that checks the reading. A campaign with a contact band reads each trial's band_end too. Exit 2 on bad input, 4 when it cannot write. */
 #include "footsim/campaign/fs_campaign.h"
 #include "footsim/experiment/fs_outcome.h"
 
@@ -109,6 +109,11 @@ int main(int argc, char **argv)
             fprintf(stderr, "law-rewrite: %s: no column %s\n", path, names[i]);
             return 2;
         }
+    int band_col = c.band[0] ? column(head, nhead, "band_end") : -1, nends = fs_campaign_nends(&c);
+    if (c.band[0] && band_col < 0) {
+        fprintf(stderr, "law-rewrite: %s: no column band_end, and the campaign has a band\n", path);
+        return 2;
+    }
     int lineno = 1, read = 0;
     while (fgets(line, sizeof line, f)) {
         lineno++;
@@ -124,8 +129,11 @@ int main(int argc, char **argv)
                 !strcmp(c.robot[ro].name, field[col[2]]))
                 cell = k;
         }
-        int index = cell * c.seeds + seed - c.first_seed;
-        if (cell < 0 || seed < c.first_seed || seed >= c.first_seed + c.seeds || seen[index]) {
+        int end = 0;
+        while (band_col >= 0 && end < nends && strcmp(c.end[end].name, field[band_col]))
+            end++;
+        int index = (cell * nends + end) * c.seeds + seed - c.first_seed;
+        if (cell < 0 || end >= nends || seed < c.first_seed || seed >= c.first_seed + c.seeds || seen[index]) {
             fprintf(stderr, "law-rewrite: %s:%d: a trial the campaign does not have, or one seen already\n", path,
                     lineno);
             return 2;

@@ -110,3 +110,41 @@ double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double 
     }
     return NAN;
 }
+
+double fs_contact_damping_ratio(double k_N_per_m, double c_Ns_per_m, double mass_kg)
+{
+    return k_N_per_m > 0 && mass_kg > 0 ? c_Ns_per_m / (2 * sqrt(k_N_per_m * mass_kg)) : INFINITY;
+}
+
+/* x'' + 2 zeta w x' + w^2 x = 0 from x = 0, x' = v: x = v / w_d e^(-zeta w t) sin(w_d t), w_d = w
+   sqrt(1 - zeta^2), back at x = 0 at t = pi / w_d with x' = -v e^(-zeta w pi / w_d) */
+double fs_contact_restitution(double zeta)
+{
+    if (!(zeta < 1))
+        return 0;
+    if (!(zeta > 0))
+        return 1;
+    return exp(-M_PI * zeta / sqrt(1 - zeta * zeta));
+}
+
+/* Each impact at speed u reverses the ankle's vertical speed to e u and leaves (1 + e) m x u of
+   angular momentum about it (the impulse through the ankle; plastic: m x u); the rebounds come in
+   at e v, e^2 v, ..., so at most (1 + e) m x v (1 + e + e^2 + ...) = m x v (1 + e) / (1 - e) in all,
+   energy quadratic in it */
+double fs_contact_rebound_gain(double e)
+{
+    if (!(e > 0))
+        return 1;
+    if (!(e < 1))
+        return INFINITY;
+    double r = (1 + e) / (1 - e);
+    return r * r;
+}
+
+double fs_pitch_contact_series(double K_N_m_per_rad, double spread_m2, double k_N_per_m, double k_ref_N_per_m)
+{
+    if (!(k_N_per_m < k_ref_N_per_m) || !(spread_m2 > 0) || !(k_N_per_m > 0) || !(K_N_m_per_rad > 0))
+        return K_N_m_per_rad;
+    double extra = (1 / k_N_per_m - (isfinite(k_ref_N_per_m) ? 1 / k_ref_N_per_m : 0)) / spread_m2;
+    return isinf(K_N_m_per_rad) ? 1 / extra : 1 / (1 / K_N_m_per_rad + extra);
+}

@@ -117,6 +117,7 @@ fs_status fs_campaign_reload(const char *path, fs_campaign *c, fs_campaign_row *
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             row->median[m] = NAN;
         row->band_end = -1;
+        row->law_end = -1; /* the laws by end are not read back */
         for (int e = 0; c->band[0] && e < FS_BAND_ENDS; e++) {
             char key[32];
             snprintf(key, sizeof key, "landed_%s", c->end[e].name);

@@ -179,6 +179,10 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
         fputs(",band_end", f);
         for (int e = 0; e < fs_campaign_nends(c); e++)
             fprintf(f, ",landed_%s,success_rate_%s", c->end[e].name, c->end[e].name);
+        fputs(",law_end", f);
+        for (int e = 0; e < fs_campaign_nends(c); e++)
+            fprintf(f, ",law_prediction_%s,drop_law_prediction_%s,drop_law_stands_%s", c->end[e].name, c->end[e].name,
+                    c->end[e].name);
     }
     fputc('\n', f);
     for (int i = 0; i < fs_campaign_ncells(c); i++) {
@@ -208,6 +212,16 @@ static int fill_summary_csv(FILE *f, const out_ctx *x)
                 fprintf(f, ",%d", r->end_landed[e]);
                 csv_number(f, r->end_rate[e]);
             }
+            fprintf(f, ",%s", r->law_end >= 0 ? c->end[r->law_end].name : "");
+            for (int e = 0; e < fs_campaign_nends(c); e++) {
+                int none = r->law_end < 0 || r->end_drop_law[e] == FS_LAW_NONE;
+                fprintf(f, ",%s,%s", r->law_end < 0 || r->end_law[e] == FS_LAW_NONE ? "" : fs_law_name(r->end_law[e]),
+                        none ? "" : fs_law_name(r->end_drop_law[e]));
+                if (none)
+                    fputc(',', f);
+                else
+                    fprintf(f, ",%d", r->end_drop_stands[e]);
+            }
         }
         fputc('\n', f);
     }
@@ -227,10 +241,13 @@ static void md_law_agreement(FILE *f, const out_ctx *x, int end)
             continue;
         int lands = rate >= FS_RATE_LANDS;
         decided++;
-        if (r->law != FS_LAW_NONE)
-            law_n++, law_ok += (r->law == FS_LAW_STANDS) == lands;
-        if (r->drop_law != FS_LAW_NONE)
-            drop_n++, drop_ok += (r->drop_law == FS_LAW_STANDS) == lands;
+        /* an end's rate against the law at that end (with its contact), the band's against the cell's */
+        int by_end = end >= 0 && r->law_end >= 0;
+        int law = by_end ? r->end_law[end] : r->law, drop = by_end ? r->end_drop_law[end] : r->drop_law;
+        if (law != FS_LAW_NONE)
+            law_n++, law_ok += (law == FS_LAW_STANDS) == lands;
+        if (drop != FS_LAW_NONE)
+            drop_n++, drop_ok += (drop == FS_LAW_STANDS) == lands;
     }
     if (end < 0)
         fputs("| the band's (the smaller) |", f);
@@ -252,13 +269,30 @@ static void md_band(FILE *f, const out_ctx *x, int intro)
               "so a cell lands only as often as it lands across the band; `band` gives each end's landings.\n\n", f);
         return;
     }
-    fprintf(f, "\n## The laws against the band\n\nThe static and the drop law's verdicts (the worse end's) against "
-               "the rates where they decide (at least %.1f: lands; at most %.1f: falls; between: not counted).\n\n"
+    fprintf(f, "\n## The laws against the band\n\nThe static and the drop law's verdicts (the band's: the law's worse "
+               "end's; an end's: the law at that end, with its contact) against the rates where they decide (at least %.1f: lands; at most %.1f: falls; between: not counted).\n\n"
                "| rate | cells decided | static law agrees | drop law agrees |\n|---|--:|--:|--:|\n",
             FS_RATE_LANDS, FS_RATE_FALLS);
     md_law_agreement(f, x, -1);
     for (int e = 0; e < fs_campaign_nends(c); e++)
         md_law_agreement(f, x, e);
+}
+
+/* With a band: the laws at each end (each with its contact: fs_pitch_contact_series, the rebound
+ * gain of its restitution e), after the cell's, which is the law's worse end's. */
+static void md_law_ends(FILE *f, const fs_campaign *c, const fs_campaign_row *r)
+{
+    if (!c->band[0] || r->law_end < 0)
+        return;
+    fprintf(f, "; the %s end's; by end:", c->end[r->law_end].name);
+    for (int e = 0; e < fs_campaign_nends(c); e++) {
+        fprintf(f, "%s %s %s", e ? "," : "", c->end[e].name, fs_law_name(r->end_law[e]));
+        if (isfinite(r->end_law_K[e]))
+            fprintf(f, " (K %.3g, e %.2f)", r->end_law_K[e], r->end_restitution[e]);
+        if (r->end_drop_law[e] != FS_LAW_NONE)
+            fprintf(f, ", drop %s (stands in %d of %d seeds; E %.3g J, B %.3g J)", fs_law_name(r->end_drop_law[e]),
+                    r->end_drop_stands[e], r->drop_seeds, r->end_drop_energy_J[e], r->end_drop_barrier_J[e]);
+    }
 }
 
 static int fill_summary_md(FILE *f, const out_ctx *x)
@@ -297,14 +331,16 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
             fprintf(f, "%s%s %d/%d%s", e ? ", " : " ", c->end[e].name, r->end_landed[e], r->end_trials[e],
                     e + 1 == fs_campaign_nends(c) ? " |" : "");
         if (isfinite(r->law_K) && r->drop_law != FS_LAW_NONE)
-            fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m); drop: %s in %d of %d seeds (E %.3g J, B %.3g J) |",
+            fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m); drop: %s in %d of %d seeds (E %.3g J, B %.3g J)",
                     fs_law_name(r->law), r->law_K, r->law_critical_m, fs_law_name(r->drop_law), r->drop_stands,
                     r->drop_seeds, r->drop_energy_J, r->drop_barrier_J);
         else if (isfinite(r->law_K))
-            fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m) |", fs_law_name(r->law), r->law_K,
+            fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m)", fs_law_name(r->law), r->law_K,
                     r->law_critical_m);
         else
-            fprintf(f, " %s |", r->law == FS_LAW_STANDS ? "stands (pitch held)" : r->law == FS_LAW_NONE ? "–" : fs_law_name(r->law));
+            fprintf(f, " %s", r->law == FS_LAW_STANDS ? "stands (pitch held)" : r->law == FS_LAW_NONE ? "–" : fs_law_name(r->law));
+        md_law_ends(f, c, r);
+        fputs(" |", f);
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++)
             fprintf(f, isfinite(r->median[m]) ? " %.4g |" : " – |", r->median[m]);
         fputc('\n', f);
@@ -410,6 +446,20 @@ static cJSON *summary_json(const out_ctx *x)
                 snprintf(key, sizeof key, "success_rate_%s", c->end[e].name);
                 ok &= cJSON_AddNumberToObject(o, key, r->end_rate[e]) != NULL;
             }
+            ok &= (r->law_end < 0 ? cJSON_AddNullToObject(o, "law_end")
+                                  : cJSON_AddStringToObject(o, "law_end", c->end[r->law_end].name)) != NULL;
+            for (int e = 0; e < fs_campaign_nends(c); e++) {
+                char key[48];
+                snprintf(key, sizeof key, "law_prediction_%s", c->end[e].name);
+                ok &= (r->law_end < 0 || r->end_law[e] == FS_LAW_NONE
+                           ? cJSON_AddNullToObject(o, key)
+                           : cJSON_AddStringToObject(o, key, fs_law_name(r->end_law[e]))) != NULL;
+                snprintf(key, sizeof key, "drop_law_prediction_%s", c->end[e].name);
+                int none = r->law_end < 0 || r->end_drop_law[e] == FS_LAW_NONE;
+                ok &= (none ? cJSON_AddNullToObject(o, key) : cJSON_AddStringToObject(o, key, fs_law_name(r->end_drop_law[e]))) != NULL;
+                snprintf(key, sizeof key, "drop_law_stands_%s", c->end[e].name);
+                ok &= (none ? cJSON_AddNullToObject(o, key) : cJSON_AddNumberToObject(o, key, r->end_drop_stands[e])) != NULL;
+            }
         }
         for (int m = 0; m < FS_CAMPAIGN_NMETRICS; m++) {
             char key[FS_NAME_MAX + 8];
@@ -478,6 +528,17 @@ static void sql_text(FILE *f, const char *s)
     fputc('\'', f);
 }
 
+/* For each band end, n columns NAME_END of the given types (name and type pairs in nt). */
+static void sql_end_columns(sql_list *l, const fs_campaign *c, const char *const *nt, int n)
+{
+    for (int e = 0; e < fs_campaign_nends(c); e++)
+        for (int i = 0; i < n; i++) {
+            char key[48];
+            snprintf(key, sizeof key, "%s_%s", nt[2 * i], c->end[e].name);
+            sql_column(l, key, nt[2 * i + 1]);
+        }
+}
+
 /* The columns of trials.csv (summary 0) or summary.csv (1), in the files' order, each with its type:
  * the names and the order are those the CSV writers above write. */
 static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
@@ -524,14 +585,12 @@ static void sql_columns(sql_list *l, const fs_campaign *c, int summary)
     sql_column(l, "drop_law_critical_com_height_m", "REAL");
     if (!c->band[0])
         return;
+    static const char *const rates[] = {"landed", "INTEGER NOT NULL", "success_rate", "REAL"};
+    static const char *const laws[] = {"law_prediction", "TEXT", "drop_law_prediction", "TEXT", "drop_law_stands", "INTEGER"};
     sql_column(l, "band_end", "TEXT NOT NULL");
-    for (int e = 0; e < fs_campaign_nends(c); e++) {
-        char key[32];
-        snprintf(key, sizeof key, "landed_%s", c->end[e].name);
-        sql_column(l, key, "INTEGER NOT NULL");
-        snprintf(key, sizeof key, "success_rate_%s", c->end[e].name);
-        sql_column(l, key, "REAL");
-    }
+    sql_end_columns(l, c, rates, 2);
+    sql_column(l, "law_end", "TEXT");
+    sql_end_columns(l, c, laws, 3);
 }
 
 /* One table filled from its CSV file: made, imported (the header row skipped), and every empty

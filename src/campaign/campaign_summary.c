@@ -45,10 +45,25 @@ static int same_foot(const fs_scenario *a, const fs_scenario *b)
     return !memcmp(&a->design, &b->design, sizeof a->design) && a->def.contact_layer_m == b->def.contact_layer_m;
 }
 
+/* Two scenarios whose arch is the same: a biomimetic foot's K, fold and travel are the model's on
+ * rigid ground and do not depend on its sole's contact (a band's ends differ in it); a flat sole's K
+ * is its contacts', so for it the whole foot must be the same. */
+static int same_arch(const fs_scenario *a, const fs_scenario *b)
+{
+    if (a->geom.kind != FS_FOOT_BIOMIMETIC || b->geom.kind != FS_FOOT_BIOMIMETIC)
+        return same_foot(a, b);
+    fs_design_def da;
+    memcpy(&da, &a->design, sizeof da);
+    da.sole_stiffness_N_per_m = b->design.sole_stiffness_N_per_m;
+    da.sole_damping_Ns_per_m = b->design.sole_damping_Ns_per_m;
+    da.sole_mu = b->design.sole_mu;
+    return !memcmp(&da, &b->design, sizeof da) && a->def.contact_layer_m == b->def.contact_layer_m;
+}
+
 static void fold_of(const fs_scenario *sc, double K, double load_N, foot_fold *cache, int *ncache, foot_fold *out)
 {
     for (int i = 0; i < *ncache; i++)
-        if (cache[i].K == K && cache[i].load_N == load_N && same_foot(cache[i].sc, sc)) {
+        if (cache[i].K == K && cache[i].load_N == load_N && same_arch(cache[i].sc, sc)) {
             *out = cache[i];
             return;
         }
@@ -69,6 +84,41 @@ static void fold_of(const fs_scenario *sc, double K, double load_N, foot_fold *c
     }
     if (*ncache < FOLD_CACHE)
         cache[(*ncache)++] = *out;
+}
+
+/* A band end's contact in the laws (fs_analysis.h, fs_pitch_contact_series): the end's contact
+ * stiffness per point k against the band's stiffest k_ref, and the rebound gain of its restitution.
+ * Without a band (on = 0) the laws are those of a rigid, plastic contact, as they always were. */
+typedef struct law_contact {
+    int on;
+    double k_N_per_m, k_ref_N_per_m, restitution, gain;
+} law_contact;
+
+static const law_contact no_contact = {0, 0, 0, 0, 1};
+
+/* Two materials in contact: stiffness or damping in series, as the sim's contacts take them. */
+static double in_series(double a, double b) { return a > 0 && b > 0 ? a * b / (a + b) : 0; }
+
+static double contact_k(const fs_scenario *sc)
+{
+    return in_series(sc->design.sole_stiffness_N_per_m, sc->terrain.def.stiffness_N_per_m);
+}
+
+/* Scenario sc's contact, against the band's stiffest k_ref. The mass one point decelerates is the
+ * robot's and the foot's over the foot's spheres (docs/contact.md's convention, the MJCF export's:
+ * 26.27 kg / 12 = 2.19 kg for Table I under single_tall, so that the band's ends are the damping
+ * ratios 0.22 and 1.12 it names); a flat sole has no series term (its K is its contacts' already). */
+static law_contact contact_of(const fs_scenario *sc, double k_ref)
+{
+    law_contact lc = no_contact;
+    lc.on = 1;
+    lc.k_N_per_m = sc->geom.kind == FS_FOOT_BIOMIMETIC ? contact_k(sc) : k_ref;
+    lc.k_ref_N_per_m = k_ref;
+    double m = sc->geom.nspheres > 0 ? (sc->def.robot.mass_kg + sc->geom.total_mass_kg) / sc->geom.nspheres : 0;
+    double c = in_series(sc->design.sole_damping_Ns_per_m, sc->terrain.def.damping_Ns_per_m);
+    lc.restitution = fs_contact_restitution(fs_contact_damping_ratio(contact_k(sc), c, m));
+    lc.gain = fs_contact_rebound_gain(lc.restitution);
+    return lc;
 }
 
 /* The share of the foot's pitch stiffness its chains give at the robot's static lean
@@ -94,7 +144,7 @@ static double engaged_share(const fs_trial_support *sup, double K, double W, dou
  * fold counted for the chains that bear at the static lean (engaged_share); the foot's tilt at rest leans the robot (its centre of
  * mass moves h tan(tilt) along the foot) and uses up that much of the lean bound, its roll too. */
 static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, double K_foot, const foot_fold *ff,
-                       const fs_trial_support *sup, fs_drop_law *dl)
+                       const fs_trial_support *sup, const law_contact *lc, fs_drop_law *dl)
 {
     memset(dl, 0, sizeof *dl);
     dl->energy_J = dl->barrier_J = dl->saturation_N_m = NAN;
@@ -108,9 +158,16 @@ static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, 
     double side = bound * bound - sup->tilt_side_rad * sup->tilt_side_rad;
     double lean_bound = sqrt(fmax(0, side)) - (r.com_forward_m >= 0 ? 1 : -1) * sup->tilt_forward_rad;
     fs_pitch_law pl;
-    fs_pitch_law_apply(K_foot * frac, &r, g, lean_bound, &pl);
+    double K_eff = K_foot * frac;
+    if (lc->on) /* the end's contact in series with the bearing chains */
+        K_eff = fs_pitch_contact_series(K_eff, sup->spread_m2, lc->k_N_per_m, lc->k_ref_N_per_m);
+    fs_pitch_law_apply(K_eff, &r, g, lean_bound, &pl);
     fs_drop_support ds = {sup->edge_m, sup->ankle_height_m, ff->fold_N_m * frac};
     fs_drop_law_apply(&pl, &r, g, sc->def.drop_m, lean_bound, &ds, dl);
+    if (lc->on && lc->gain != 1) { /* a lively contact's rebounds (fs_contact_rebound_gain) */
+        dl->energy_J *= lc->gain;
+        dl->stands = dl->stands && !(dl->energy_J >= dl->barrier_J);
+    }
     /* rocking onto its rest frees the weight times how far the base under the centre of mass sank;
        the rest's impact is plastic and keeps only the angular momentum about the side the body then
        turns on (fs_rocking_kept_J): about no side may that carry the centre of mass over it (a rigid
@@ -137,7 +194,7 @@ static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, 
 /* The highest centre of mass (below the static law's critical height) at which the drop law stands
  * on at least half of the supports: bisection, the law being monotone in it on these robots. */
 static double drop_critical(const fs_scenario *sc, double K_foot, const fs_trial_support *sup, int n,
-                            const foot_fold *ff, double hmax)
+                            const foot_fold *ff, const law_contact *lc, double hmax)
 {
     double lo = 0, hi = hmax;
     for (int it = 0; it < 40 && isfinite(hi); it++) {
@@ -145,7 +202,7 @@ static double drop_critical(const fs_scenario *sc, double K_foot, const fs_trial
         int stands = 0;
         for (int k = 0; k < n; k++) {
             fs_drop_law dl;
-            stands += seed_stands(sc, &sc->def.robot, h, K_foot, ff, &sup[k], &dl);
+            stands += seed_stands(sc, &sc->def.robot, h, K_foot, ff, &sup[k], lc, &dl);
         }
         if (2 * stands >= n)
             lo = h;
@@ -158,7 +215,8 @@ static double drop_critical(const fs_scenario *sc, double K_foot, const fs_trial
 /* The law for a cell's foot and robot: the foot's pitch stiffness under the robot's weight (a flat
  * sole's from its contacts, fs_pitch_stiffness_foot); an arch that folds under the weight has none
  * left. The drop law's too, seed by seed on what each seed's terrain offers (fs_trial_support_of). */
-static void law_of(const fs_campaign *c, const fs_scenario *sc, fs_campaign_row *row, foot_fold *cache, int *ncache)
+static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contact *lc, fs_campaign_row *row,
+                   foot_fold *cache, int *ncache)
 {
     row->law = row->drop_law = FS_LAW_NONE;
     row->law_K = row->law_critical_m = NAN;
@@ -168,7 +226,14 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, fs_campaign_row 
     fs_error err;
     if (r->mass_kg <= 0)
         return;
-    fs_status s = fs_pitch_stiffness_foot(sc, r->mass_kg * g, &K, &err);
+    /* a band's ends (and a sweep's cells) share the arch and its load: its K worked out once (the fold
+       cache's; a flat sole's K is its contacts', worked out each time) */
+    fs_status s = FS_NUMERICAL;
+    for (int i = 0; i < *ncache && s != FS_OK && sc->geom.kind == FS_FOOT_BIOMIMETIC; i++)
+        if (cache[i].load_N == r->mass_kg * g && cache[i].K > 0 && same_arch(cache[i].sc, sc))
+            K = cache[i].K, s = FS_OK;
+    if (s != FS_OK)
+        s = fs_pitch_stiffness_foot(sc, r->mass_kg * g, &K, &err);
     fs_pitch_law law;
     fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, max_lean, &law);
     row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
@@ -192,10 +257,19 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, fs_campaign_row 
         if (!ok)
             break;
         fs_drop_law dl;
-        row->drop_stands += seed_stands(sc, r, r->com_height_m, s == FS_OK ? K : 0, &ff, &sup[n], &dl);
+        row->drop_stands += seed_stands(sc, r, r->com_height_m, s == FS_OK ? K : 0, &ff, &sup[n], lc, &dl);
         if (!isnan(dl.barrier_J)) /* a seed whose support holds no centre of mass has none */
             E[nv] = dl.energy_J, B[nv] = dl.barrier_J, M[nv++] = dl.saturation_N_m;
         n++;
+    }
+    if (ok && n > 0 && lc->on && s == FS_OK) {
+        /* the static law on the end's contact: the foot's K in series with the contacts of the first
+           seed's support (on level ground every seed's) */
+        fs_pitch_law_apply(fs_pitch_contact_series(K, sup[0].spread_m2, lc->k_N_per_m, lc->k_ref_N_per_m), r, g,
+                           max_lean, &law);
+        row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
+        row->law_K = law.K;
+        row->law_critical_m = law.critical_height_m;
     }
     if (ok && n > 0) {
         row->drop_seeds = n;
@@ -203,12 +277,54 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, fs_campaign_row 
         row->drop_energy_J = fs_median(E, nv);
         row->drop_barrier_J = fs_median(B, nv);
         row->drop_saturation_N_m = fs_median(M, nv);
-        row->drop_critical_m = drop_critical(sc, s == FS_OK ? K : 0, sup, n, &ff,
+        row->drop_critical_m = drop_critical(sc, s == FS_OK ? K : 0, sup, n, &ff, lc,
                                              isfinite(law.critical_height_m) ? law.critical_height_m : 10);
     } else {
         row->drop_stands = 0;
     }
     free(sup), free(E), free(B), free(M);
+}
+
+/* With a band, the laws at each end with the end's contact in them (contact_of, against the band's
+ * stiffest contact), and the cell's at the law's worse end: the one where the drop law stands on the
+ * fewest seeds (then where the static law topples, then the smaller K, then the measured worse end),
+ * so a design "stands" only if it stands across the band. row's counts are kept; its law fields
+ * become that end's. */
+static void band_law(const fs_campaign *c, int cell, int worse, fs_campaign_row *row, foot_fold *cache, int *ncache)
+{
+    int nends = fs_campaign_nends(c), pick = worse;
+    double k_ref = 0;
+    for (int e = 0; e < nends; e++)
+        k_ref = fmax(k_ref, contact_k(fs_campaign_pair_of(c, cell, e)));
+    fs_campaign_row end_law[FS_BAND_ENDS];
+    memset(end_law, 0, sizeof end_law);
+    for (int e = 0; e < nends; e++) {
+        const fs_scenario *sc = fs_campaign_pair_of(c, cell, e);
+        law_contact lc = contact_of(sc, k_ref);
+        end_law[e] = *row;
+        law_of(c, sc, &lc, &end_law[e], cache, ncache);
+        row->end_law[e] = end_law[e].law;
+        row->end_drop_law[e] = end_law[e].drop_law;
+        row->end_drop_stands[e] = end_law[e].drop_stands;
+        row->end_law_K[e] = end_law[e].law_K;
+        row->end_drop_energy_J[e] = end_law[e].drop_energy_J;
+        row->end_drop_barrier_J[e] = end_law[e].drop_barrier_J;
+        row->end_restitution[e] = lc.restitution;
+    }
+    for (int e = 0; e < nends; e++) {
+        const fs_campaign_row *a = &end_law[e], *b = &end_law[pick];
+        int fewer = a->drop_stands < b->drop_stands, same = a->drop_stands == b->drop_stands;
+        int topples = a->law == FS_LAW_TOPPLES && b->law != FS_LAW_TOPPLES;
+        int same_law = a->law == b->law;
+        if (fewer || (same && (topples || (same_law && a->law_K < b->law_K))))
+            pick = e;
+    }
+    const fs_campaign_row *p = &end_law[pick];
+    row->law = p->law, row->law_K = p->law_K, row->law_critical_m = p->law_critical_m;
+    row->drop_law = p->drop_law, row->drop_seeds = p->drop_seeds, row->drop_stands = p->drop_stands;
+    row->drop_energy_J = p->drop_energy_J, row->drop_barrier_J = p->drop_barrier_J;
+    row->drop_saturation_N_m = p->drop_saturation_N_m, row->drop_critical_m = p->drop_critical_m;
+    row->law_end = pick;
 }
 
 /* A cell's counts, rate, interval and medians over its seeds' results r[0 .. seeds - 1] (v: room for
@@ -266,8 +382,11 @@ void fs_campaign_summarize(const fs_campaign *c, const fs_trial_result *results,
             row->end_trials[e] = end_row[e].trials;
             row->end_rate[e] = end_row[e].success_rate;
         }
-        if (c->pair)
-            law_of(c, fs_campaign_pair_of(c, cell, worse), row, cache, &ncache);
+        row->law_end = -1;
+        if (c->pair && nends > 1)
+            band_law(c, cell, worse, row, cache, &ncache);
+        else if (c->pair)
+            law_of(c, fs_campaign_pair_of(c, cell, worse), &no_contact, row, cache, &ncache);
         else
             row->law = row->drop_law = FS_LAW_NONE, row->law_K = row->law_critical_m = NAN;
     }

@@ -148,6 +148,13 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
                 out->heel_bearing |= heel[i];
             }
         out->bearing = np;
+        double mean = 0;
+        for (int i = 0; i < np; i++)
+            mean += (c * (p[i].x - a.x) + sn * (p[i].y - a.y)) / np;
+        for (int i = 0; i < np; i++) {
+            double d = c * (p[i].x - a.x) + sn * (p[i].y - a.y) - mean;
+            out->spread_m2 += d * d;
+        }
         for (int i = 0, t = 0; out->over && i < n; i++)
             if (toe[i] && t < FS_CHAINS) {
                 double gap = plane[0] + plane[1] * (at[i].x - x0) + plane[2] * (at[i].y - y0) - q[i] - travel_m;

@@ -185,6 +185,31 @@ double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double 
 double fs_rocking_kept_J(double mass_kg, const double I_G[3], fs_vec3 G, fs_vec3 pivot, fs_vec3 axis, double energy_J,
                          fs_vec3 s1, fs_vec3 s2);
 
+/* The contact in the drop law, per end of a contact band (docs/contact.md, "The band, and how a
+ * verdict should carry it"; docs/landing.md, The drop law). Each contact point is a linear
+ * spring-damper (k, c) under the mass m it decelerates:
+ *   zeta = c / (2 sqrt(k m))                                      fs_contact_damping_ratio
+ *   e = exp(-pi zeta / sqrt(1 - zeta^2)) for zeta < 1, else 0     fs_contact_restitution
+ * (the half-period of the damped oscillation in contact, the point leaving where the spring is back
+ * at its length: the displacement criterion the band's definition uses; overdamped contacts do not
+ * rebound). A contact of restitution e at the ankle's touchdown turns the robot about the ankle with
+ * (1 + e) times the angular momentum a plastic one leaves, and every rebound (speeds e v, e^2 v, ...)
+ * at most adds its own: the drop's energy E grows by at most
+ *   G(e) = ((1 + e) / (1 - e))^2                                  fs_contact_rebound_gain
+ * (1 at e = 0; 9.0 at e = 0.5). The contacts' compliance acts in series with the arch's pitch
+ * stiffness K: a rigid foot on n points of stiffness k each, turned by a small angle about the
+ * points' centre along the foot, resists with k S, S = sum (x_i - x_mean)^2 (m^2) over the bearing
+ * points' positions x_i along the foot. The law's K is the model's on rigid ground, checked in ODE on
+ * the trials' hard contacts (docs/landing.md: within 0.5 % up to 30 times Table I's springs), so it
+ * stands for the foot on the band's stiffest contact k_ref; a softer end adds the difference in
+ * compliance:
+ *   1 / K_end = 1 / K + (1 / k - 1 / k_ref) / S                   fs_pitch_contact_series
+ * K itself when k >= k_ref or S <= 0 (to the bit: the stiffest end's law is the law without a band). */
+double fs_contact_damping_ratio(double k_N_per_m, double c_Ns_per_m, double mass_kg);
+double fs_contact_restitution(double zeta);
+double fs_contact_rebound_gain(double e);
+double fs_pitch_contact_series(double K_N_m_per_rad, double spread_m2, double k_N_per_m, double k_ref_N_per_m);
+
 /* The reference transient: chain `chain` (0-based, unsplayed) from rest, the load rising linearly
  * over ramp_s. Masses: a fifth of heel and talus, the whole metatarsal and phalanx; a fifth of the
  * load. */

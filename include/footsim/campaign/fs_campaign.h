@@ -186,6 +186,13 @@ typedef struct fs_campaign_row {
     int band_end;                          /* the end that decides, or -1 without a band */
     int end_landed[FS_BAND_ENDS], end_trials[FS_BAND_ENDS];
     double end_rate[FS_BAND_ENDS];
+    /* with a band, the laws at each end, with that end's contact in them (fs_pitch_contact_series,
+       fs_contact_rebound_gain); the law fields above are those of the end where the drop law stands
+       on the fewest seeds (then: the static law topples, the smaller K, the measured worse end) */
+    int law_end;                           /* that end, or -1 without a band */
+    int end_law[FS_BAND_ENDS], end_drop_law[FS_BAND_ENDS], end_drop_stands[FS_BAND_ENDS];
+    double end_law_K[FS_BAND_ENDS], end_drop_energy_J[FS_BAND_ENDS], end_drop_barrier_J[FS_BAND_ENDS];
+    double end_restitution[FS_BAND_ENDS];  /* the end's contact's e (fs_contact_restitution) */
 } fs_campaign_row;
 enum { FS_LAW_NONE = -1, FS_LAW_TOPPLES = 0, FS_LAW_STANDS = 1 };
 

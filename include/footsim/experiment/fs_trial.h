@@ -89,6 +89,9 @@ typedef struct fs_trial_support {
                                   or behind for a centre of mass behind the ankle at rest), m */
     double ankle_height_m;     /* the ankle above the terrain at that edge, m */
     double side_m;             /* from the centre of mass to the polygon's nearest side, m */
+    double spread_m2;          /* sum over the bearing points of the squared distance along the foot
+                                  from their mean, m^2: the contacts' pitch stiffness per unit of each
+                                  point's (fs_pitch_contact_series) */
     double settle_m;           /* how far the foot's base under the centre of mass sinks as the foot
                                   rocks from its first contact (lowered flat) onto its rest, m */
     /* the rocking's geometry, in the foot's frame (x along the foot, y to its left) from the ground
