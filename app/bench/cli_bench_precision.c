@@ -302,7 +302,7 @@ static double rtf(const row *r) { return r->ok && r->wall_s > 0 ? r->sc->duratio
  * Under the rig the slide holds the foot's attitude and the sole is rigid, so the sole's depth below
  * the undisturbed surface differs from the reference's by exactly that; the row's sinkage is the
  * reference's (its deepest carried node, on the fine grid) less it. Read from the bodies, not from
- * the row's own nodes: at a large step the soil may carry the sole only every other step. NAN on
+ * the row's own nodes: at a step of 1e-2 s they may carry none of the sole in its last step. NAN on
  * rigid ground. */
 static double sinkage_err(const row *r) { return r->sc->soil ? fabs(r->e.end_dz_m) : NAN; }
 static double sinkage(const row *r) { return r->sc->soil ? r->sc->ref.sinkage_end_m - r->e.end_dz_m : NAN; }
