@@ -34,6 +34,7 @@ typedef struct cli_args {
     const char *steps;              /* --steps S1,S2,...: the steps to judge (bench equivalence) */
     const char *data;               /* --data DIR: where relative data files are looked for first */
     int quick;                      /* --quick: a smaller sweep (bench) */
+    const char *scene;              /* --scene NAME[,NAME...]: only these scenes (bench precision) */
     int replace;                    /* --replace: replace a non-empty --out footsim did not make */
     int force;                      /* --force: compare results of different provenance */
     int equivalence;                /* --equivalence: compare judges equivalence to a reference */
@@ -113,6 +114,9 @@ int cli_merge(const cli_args *a);     /* app/cli_campaign.c: shard folders into 
  * (app/bench/cli_bench_equivalence.c) writes its own folder (default build/equivalence/<name>/). */
 int cli_bench(const cli_args *a);
 int cli_bench_precision(const cli_args *a, const char *dir);
+/* bench precision's --scene checked (0, or FS_BAD_INPUT with the names said on stderr): before the
+ * output folder is touched. */
+int cli_bench_precision_scenes(const cli_args *a);
 int cli_bench_stability(const cli_args *a, const char *dir);
 int cli_bench_speed(const cli_args *a, const char *dir);
 int cli_bench_equivalence(const cli_args *a);

@@ -75,6 +75,10 @@ static const cli_option options[] = {
     {"--json", ARG_FLAG, NULL, CMD_MODEL | CMD_STIFFNESS | CMD_TRIAL | CMD_COMPARE | CMD_WALK, 0, 0, FIELD(json), 0,
      "print the result as JSON"},
     {"--quick", ARG_FLAG, NULL, CMD_BENCH, 0, 0, FIELD(quick), 0, "a smaller sweep: minutes instead of tens of minutes"},
+    {"--scene", ARG_VALUE, "NAME[,NAME...]", CMD_BENCH, 0, 0, FIELD(scene), 0,
+     "bench precision: run only the named scenes (chain, landing_flat, landing_biomimetic, landing_biomimetic_rough, "
+     "flat_rig_TERRAIN: docs/bench.md), with --quick too, and skip the campaign-equivalence stage; an unknown name is "
+     "refused, exit 2"},
     {"--force", ARG_FLAG, NULL, CMD_COMPARE | CMD_MERGE, 0, 0, FIELD(force), 0,
      "compare results made of other seeds, overrides or input files (reported, not refused); merge shards "
      "run by another footsim version"},
@@ -214,6 +218,8 @@ static const command commands[] = {
      "  precision  run time against error: ODE's steppers, step sizes and both spring implementations\n"
      "             against the planar reference model, and a landing trial against its finest run;\n"
      "             last, campaign equivalence of scenarios/equivalence_flat.ini (DIR/precision_equivalence/);\n"
+     "             --scene NAME[,NAME...] runs only those scenes (their rows, fronts and goals; a\n"
+     "             flat_rig_* scene with --quick too) and skips the equivalence stage;\n"
      "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height;\n"
      "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves;\n"
      "  equivalence  a campaign (default scenarios/equivalence_flat.ini) at the --reference step (1e-5)\n"

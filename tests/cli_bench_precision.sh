@@ -10,7 +10,9 @@ check '[ "$status" -eq 0 ]'
 csv="$tmp/bench/precision.csv" eq_ref="$tmp/bench/precision_equivalence/reference"
 # the header first; what made it beside it (the scenarios' files with their hashes, relative to scenarios/)
 check 'tr -d " \t\n" <"$tmp/bench/precision.provenance.json" | grep -q "\"file\":\"precision.csv\",\"provenance\":{\"footsim\":\"[^\"]*\",\"overrides\":\[\],\"inputs\":\[{\"path\":\"static_load.ini\",\"hash\":\"[0-9a-f]\{16\}\"}.*\"landing_trial.ini\".*\"../terrains/rough.ini\""'
-check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps$"'
+check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps,sinkage_m,sinkage_err_m$"'
+# no scene of the quick sweep is on a soil: its sinkage columns are empty (missing, not 0)
+check '[ "$(awk -F, "NR > 1 && (\$21 != \"\" || \$22 != \"\")" "$csv" | wc -l)" -eq 0 ]'
 # read right: one header row, rows as wide, a blown-up run's error an empty field (issue 32)
 check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" csv "$csv:max_err_m" "$eq_ref/trials.csv:steps" >&2'
 check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" sqlite "$csv:max_err_m" "$eq_ref/summary.csv:trials" >&2'
@@ -64,6 +66,28 @@ check 'grep -q "^### Campaign equivalence" "$tmp/bench/precision.md"'
 check 'grep -q "against the reference $tmp/bench/precision_equivalence/reference/summary.json" "$eq/h1e-3.md"'
 check '[ -z "$(ls -A "$eq" | grep -e partial -e lock)" ]'
 if command -v gnuplot >/dev/null 2>&1; then check '[ -s "$tmp/bench/precision.png" ]'; fi
+# --scene: only the scenes named, their rows alone, and no campaign-equivalence stage (said in the .md)
+"$fs" bench precision --quick --scene chain --out "$tmp/chain" >/dev/null 2>"$tmp/err.txt"
+status=$?
+check '[ "$status" -eq 0 ]'
+check '[ "$(tail -n +2 "$tmp/chain/precision.csv" | wc -l)" -eq 12 ]'
+check '[ "$(tail -n +2 "$tmp/chain/precision.csv" | cut -d, -f1 | sort -u)" = chain ]'
+check '[ ! -e "$tmp/chain/precision_equivalence" ]'
+check 'grep -q "^### chain: the Pareto front" "$tmp/chain/precision.md"'
+check '! grep -q "^### landing" "$tmp/chain/precision.md"'
+check 'grep -q "^Not run: .--scene. named" "$tmp/chain/precision.md"'
+check 'grep -q "no campaign-equivalence stage" "$tmp/err.txt"'
+# an unknown scene (or an empty name) is refused before anything runs, the names listed
+for bad in nonsense chain,; do
+  "$fs" bench precision --quick --scene "$bad" --out "$tmp/bad" >/dev/null 2>"$tmp/err.txt"
+  status=$?
+  check '[ "$status" -eq 2 ]'
+  check 'grep -q "give one or more of chain, landing_flat, .*, flat_rig_dry_sand" "$tmp/err.txt"'
+  check '[ ! -e "$tmp/bad" ]'
+done
+"$fs" bench speed --scene chain --out "$tmp/bad" >/dev/null 2>&1
+status=$?
+check '[ "$status" -eq 2 ]'
 "$fs" bench nonsense 2>/dev/null
 status=$?
 check '[ "$status" -eq 2 ]'

@@ -53,5 +53,9 @@ printf '[soil]\nmodel = rft\ndepth_m = 0.05\n' >"$tmp/rft.ini"
 expect 2 "zeta_N_per_m3" -- run scenarios/static_load.ini --set "scenario.terrain=$tmp/rft.ini" --out "$tmp/no2"
 expect 2 "max_nodes" -- run scenarios/static_load.ini --set scenario.terrain=../terrains/soils/dry_sand.ini \
     --set soil.grid_m=1e-4 --set soil.max_nodes=1000 --out "$tmp/no3"
-check '[ ! -e "$tmp/no1" ] && [ ! -e "$tmp/no2" ] && [ ! -e "$tmp/no3" ]'
+# the grid's memory cap, judged once the feet's region is known, still names the file and grid_m's line
+printf '[soil]\nmodel = bekker\ngrid_m = 1e-4\nmax_nodes = 1000\n' >"$tmp/cap.ini"
+expect 2 "cap.ini:3: the soil's grid_m of 0.0001 m .* over \[soil\] max_nodes = 1000" -- run scenarios/static_load.ini \
+    --set "scenario.terrain=$tmp/cap.ini" --out "$tmp/no4"
+check '[ ! -e "$tmp/no1" ] && [ ! -e "$tmp/no2" ] && [ ! -e "$tmp/no3" ] && [ ! -e "$tmp/no4" ]'
 finish

@@ -12,6 +12,10 @@
 
 int cli_bench(const cli_args *a)
 {
+    if (a->scene && strcmp(a->input, "precision")) {
+        fprintf(stderr, "footsim bench %s: --scene is for bench precision only\n", a->input);
+        return FS_BAD_INPUT;
+    }
     if (!strcmp(a->input, "equivalence"))
         return cli_bench_equivalence(a);
     /* build/bench by default: the committed results/bench/ changes only on purpose (--out results/bench) */
@@ -26,10 +30,12 @@ int cli_bench(const cli_args *a)
     const char *only = a->nset ? "--set" : a->reference ? "--reference" : a->steps ? "--steps" : NULL;
     if (a->input2 || only) {
         fprintf(stderr, "footsim bench %s: %s%s%s is for bench equivalence only; bench %s takes -j, --quick, --out, "
-                "--replace and --data\n", a->input, a->input2 ? "a campaign ('" : "", a->input2 ? a->input2 : only,
-                a->input2 ? "')" : "", a->input);
+                "--replace and --data%s\n", a->input, a->input2 ? "a campaign ('" : "", a->input2 ? a->input2 : only,
+                a->input2 ? "')" : "", a->input, !strcmp(a->input, "precision") ? " (and --scene)" : "");
         return FS_BAD_INPUT;
     }
+    if (!strcmp(a->input, "precision") && cli_bench_precision_scenes(a)) /* said */
+        return FS_BAD_INPUT;
     fs_error err;
     /* the folder must be one footsim writes into (marked, or only bench files), before measuring */
     if (fs_outdir_shared(dir, a->replace, "--out", &err) != FS_OK)

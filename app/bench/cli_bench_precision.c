@@ -8,8 +8,13 @@
  *   drop_weight on flat ground (seed 1) and on rough ground (seed 4), and (full sweep only) the flat
  *   foot under the rig on each other shipped terrain (seed 1), each against its own run at 1e-5 s
  *   with dWorldStep, where the landing converges (docs/model.md, friction).
+ * --scene NAME[,NAME...] runs only the scenes named (SCENES below; a full-sweep-only one with --quick
+ * too), checked before anything runs (an unknown name: exit 2, the names listed), and skips the
+ * campaign-equivalence stage (said on stderr and in precision.md).
  * Error is the ankle's distance (and the hinge angles' difference) from the reference, largest and
- * RMS over the run; cost is the median wall time of the steps over repeated runs. Last, campaign
+ * RMS over the run; on a soil also the feet's sinkage at the end and the ankle's height against the
+ * reference's then (under the rig, whose slide holds the foot's attitude, the sinkage's error);
+ * cost is the median wall time of the steps over repeated runs. Last, campaign
  * equivalence (cli_bench_equivalence.c) of scenarios/equivalence_flat.ini on one worker, into
  * DIR/precision_equivalence/ (its folder checked before anything runs). Writes DIR/precision.csv (and
  * precision.provenance.json beside it),
@@ -29,26 +34,41 @@
 #include <time.h>
 
 /* the chain and three landings; with the full sweep also the flat foot on each other shipped terrain */
-enum { MAX_ROWS = 2048, NBASE = 4, NTERRAINS = 9, NSCENES = NBASE + NTERRAINS };
+enum { MAX_ROWS = 2048, NSCENES = 13 };
 
-/* The flat foot's landing on each shipped terrain but rough (landing_flat): under the rig, which
- * holds its pitch, so that it lands on every one (seed 1) and its path is well posed; issue 12's
- * "flat foot, any shipped terrain, >= 100x". Full sweep only. */
-static const struct {
-    const char *name, *title, *terrain;
-} FLAT_TERRAINS[NTERRAINS] = {
-    {"flat_rig_flat", "flat foot on flat ground (rig)", "../terrains/flat.ini"},
-    {"flat_rig_simply_uneven", "flat foot on simply uneven ground (rig)", "../terrains/simply_uneven.ini"},
-    {"flat_rig_complex_uneven", "flat foot on complex uneven ground (rig)", "../terrains/complex_uneven.ini"},
-    {"flat_rig_stepped", "flat foot on stepped ground (rig)", "../terrains/stepped.ini"},
-    {"flat_rig_heightmap", "flat foot on the heightmap (rig)", "../terrains/heightmap.ini"},
-    {"flat_rig_partly_rough", "flat foot on partly rough ground (rig)", "../terrains/partly_rough.ini"},
-    {"flat_rig_slope", "flat foot on the slope (rig)", "../terrains/slope.ini"},
-    {"flat_rig_soft", "flat foot on soft ground (rig)", "../terrains/soft.ini"},
+/* Every scene, by the name --scene takes: the chain (no design), the three landings that land (the
+ * flat foot under the tall robot with seed 10's pose on rough ground; the biomimetic foot under
+ * drop_weight, which the tall robot folds (docs/landing.md), with seed 1's on flat ground and seed 4's
+ * on rough ground), and (full sweep only, unless named) the flat foot's landing on each other shipped
+ * terrain under the rig, which holds its pitch, so that it lands on every one (seed 1) and its path
+ * is well posed: issue 12's "flat foot, any shipped terrain, >= 100x". goal_rtf: the real-time factor
+ * wanted within GOAL_ERR_M (0: none, the chain); goal_fine_rtf: within GOAL_FINE_ERR_M (0: none). */
+static const struct scene_spec {
+    const char *name, *title, *design, *robot, *terrain;
+    int seed, full_only;
+    double goal_rtf, goal_fine_rtf;
+} SCENES[NSCENES] = {
+    {"chain", "pinned chain against the planar reference", NULL, NULL, NULL, 0, 0, 0, 0},
+    {"landing_flat", "flat foot landing on rough ground", "feet/flat.ini", "robots/single_tall.ini",
+     "../terrains/rough.ini", 10, 0, 100, 0},
+    {"landing_biomimetic", "biomimetic foot landing on flat ground (drop_weight)", "feet/biomimetic.ini",
+     "robots/drop_weight.ini", "../terrains/flat.ini", 1, 0, 100, 10},
+    {"landing_biomimetic_rough", "biomimetic foot landing on rough ground (drop_weight)", "feet/biomimetic.ini",
+     "robots/drop_weight.ini", "../terrains/rough.ini", 4, 0, 30, 0},
+#define FS_RIG(name, title, terrain) {name, title, "feet/flat.ini", "robots/rig.ini", terrain, 1, 1, 100, 0}
+    FS_RIG("flat_rig_flat", "flat foot on flat ground (rig)", "../terrains/flat.ini"),
+    FS_RIG("flat_rig_simply_uneven", "flat foot on simply uneven ground (rig)", "../terrains/simply_uneven.ini"),
+    FS_RIG("flat_rig_complex_uneven", "flat foot on complex uneven ground (rig)", "../terrains/complex_uneven.ini"),
+    FS_RIG("flat_rig_stepped", "flat foot on stepped ground (rig)", "../terrains/stepped.ini"),
+    FS_RIG("flat_rig_heightmap", "flat foot on the heightmap (rig)", "../terrains/heightmap.ini"),
+    FS_RIG("flat_rig_partly_rough", "flat foot on partly rough ground (rig)", "../terrains/partly_rough.ini"),
+    FS_RIG("flat_rig_slope", "flat foot on the slope (rig)", "../terrains/slope.ini"),
+    FS_RIG("flat_rig_soft", "flat foot on soft ground (rig)", "../terrains/soft.ini"),
     /* a soil (docs/soil.md): its reference also on the fine grid everywhere (the sole's nodes 0.5 mm
      * apart, not coarse_grid_m's 2 mm), so that the error holds the coarse grid's as well as the step's */
-    {"flat_rig_dry_sand", "flat foot on dry sand (rig; reference at 1e-5 s on the 0.5 mm grid)",
-     "../terrains/soils/dry_sand.ini"},
+    FS_RIG("flat_rig_dry_sand", "flat foot on dry sand (rig; reference at 1e-5 s on the 0.5 mm grid)",
+           "../terrains/soils/dry_sand.ini"),
+#undef FS_RIG
 };
 
 static const double REF_STEP_S = 1e-5;          /* the finest step, and the reference's sample spacing */
@@ -213,14 +233,15 @@ static fs_status chain_scene(scene *s, fs_error *err)
     return st;
 }
 
-/* A landing trial of `design` under `robot` on `terrain` (files relative to the trial scenario), the
- * pose drawn for `seed` (as a campaign would). */
-static fs_status landing_scene(scene *s, const char *name, const char *title, const char *design, const char *robot,
-                               const char *terrain_file, int seed, double duration_s, fs_error *err)
+/* The landing trial of spec's design under its robot on its terrain (files relative to the trial
+ * scenario), the pose drawn for its seed (as a campaign would). */
+static fs_status landing_scene(scene *s, const struct scene_spec *spec, double duration_s, fs_error *err)
 {
     memset(s, 0, sizeof *s);
-    s->name = name;
-    s->title = title;
+    s->name = spec->name;
+    s->title = spec->title;
+    const char *design = spec->design, *robot = spec->robot, *terrain_file = spec->terrain;
+    int seed = spec->seed;
     s->path = cli_data_path("scenarios/landing_trial.ini");
     s->duration_s = duration_s;
     char terrain[FS_PATH_MAX + 32], foot[FS_PATH_MAX + 32], body[FS_PATH_MAX + 32];
@@ -276,6 +297,15 @@ static int is_default(const row *r)
 }
 
 static double rtf(const row *r) { return r->ok && r->wall_s > 0 ? r->sc->duration_s / r->wall_s : 0; }
+
+/* On a soil, the sinkage at the end and its error: the ankle's height against the reference's then.
+ * Under the rig the slide holds the foot's attitude and the sole is rigid, so the sole's depth below
+ * the undisturbed surface differs from the reference's by exactly that; the row's sinkage is the
+ * reference's (its deepest carried node, on the fine grid) less it. Read from the bodies, not from
+ * the row's own nodes: at a step of 1e-2 s they may carry none of the sole in its last step. NAN on
+ * rigid ground. */
+static double sinkage_err(const row *r) { return r->sc->soil ? fabs(r->e.end_dz_m) : NAN; }
+static double sinkage(const row *r) { return r->sc->soil ? r->sc->ref.sinkage_end_m - r->e.end_dz_m : NAN; }
 
 static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nrows, fs_error *err)
 {
@@ -348,9 +378,10 @@ typedef struct report {
     const scene *scenes;
     int nscenes;
     const char *machine;
+    const char *command;        /* as it ran: with --quick and --scene */
     int quick;
     const fs_provenance *prov;
-    const cli_equivalence *eq;  /* the campaign-equivalence stage */
+    const cli_equivalence *eq;  /* the campaign-equivalence stage; NULL: skipped (--scene) */
 } report;
 
 static int fill_csv(FILE *f, const void *user)
@@ -359,21 +390,25 @@ static int fill_csv(FILE *f, const void *user)
     const row *rows = x->rows;
     int n = x->n;
     fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
-            "wall_s,wall_per_sim_s,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps\n");
+            "wall_s,wall_per_sim_s,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps,sinkage_m,"
+            "sinkage_err_m\n");
     for (int i = 0; i < n; i++) {
         const row *r = &rows[i];
-        char b[7][32]; /* a figure a row does not have (not finite): an empty field */
+        char b[9][32]; /* a figure a row does not have (not finite): an empty field */
         if (r->ok)
-            fprintf(f, "%s,%s,%d,%s,%g,%s,%s,%s,%s,%s,%s,%s,%s,%d,%d,%d,%g,%ld,%ld,%ld\n", r->sc->name, stepper_name(r->stepper),
+            fprintf(f, "%s,%s,%d,%s,%g,%s,%s,%s,%s,%s,%s,%s,%s,%d,%d,%d,%g,%ld,%ld,%ld,%s,%s\n", r->sc->name,
+                stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, cli_csv_num(b[0], sizeof b[0], "%.4e", r->e.max_m),
                 cli_csv_num(b[1], sizeof b[1], "%.4e", r->e.rms_m), cli_csv_num(b[2], sizeof b[2], "%.4e", r->e.max_rad),
                 cli_csv_num(b[3], sizeof b[3], "%.4e", r->e.rms_rad), cli_csv_num(b[4], sizeof b[4], "%.4e", r->wall_s),
                 cli_csv_num(b[5], sizeof b[5], "%.4e", r->wall_s / r->sc->duration_s),
                 cli_csv_num(b[6], sizeof b[6], "%.4g", rtf(r)), r->drifting ? "drifting" : "ok", r->pareto,
-                r->is_default, substeps_of(r), r->tolerance_m, r->steps, r->rejected, r->ode_steps);
+                r->is_default, substeps_of(r), r->tolerance_m, r->steps, r->rejected, r->ode_steps,
+                cli_csv_num(b[7], sizeof b[7], "%.4e", sinkage(r)),
+                cli_csv_num(b[8], sizeof b[8], "%.4e", sinkage_err(r)));
         else
             /* a blown-up run has no error nor speed: missing, empty fields */
-            fprintf(f, "%s,%s,%d,%s,%g,,,,,,,,blown_up,0,%d,%d,%g,,,\n", r->sc->name, stepper_name(r->stepper),
+            fprintf(f, "%s,%s,%d,%s,%g,,,,,,,,blown_up,0,%d,%d,%g,,,,,\n", r->sc->name, stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, r->is_default, substeps_of(r), r->tolerance_m);
     }
     return 1;
@@ -412,17 +447,23 @@ static int sorted_front(const row *rows, int n, const scene *s, int with_default
 static void front_table(FILE *f, const row *rows, int n, const scene *s)
 {
     fprintf(f, "\n### %s: the Pareto front\n\n| stepper | springs | step (s) | max ankle error (m) | RMS (m) | "
-           "max angle error (rad) | real-time factor | default |\n|---|---|---|---|---|---|---|---|\n", s->name);
+           "max angle error (rad) | real-time factor | default |%s\n|---|---|---|---|---|---|---|---|%s\n", s->name,
+           s->soil ? " sinkage at the end (m) | its error (m) |" : "", s->soil ? "---|---|" : "");
     const row *sorted[MAX_ROWS];
     int m = sorted_front(rows, n, s, 1, sorted);
     for (int i = 0; i < m; i++) {
         const row *r = sorted[i];
         describe(f, r);
         if (r->ok)
-            fprintf(f, " %.2e | %.2e | %.2e | %.3g | %s%s |\n", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
+            fprintf(f, " %.2e | %.2e | %.2e | %.3g | %s%s |", r->e.max_m, r->e.rms_m, r->e.max_rad, rtf(r),
                 r->is_default ? "yes" : "", r->pareto ? "" : " (not on the front)");
         else
-            fprintf(f, " blew up | | | | %s |\n", r->is_default ? "yes" : "");
+            fprintf(f, " blew up | | | | %s |", r->is_default ? "yes" : "");
+        if (s->soil && r->ok)
+            fprintf(f, " %.4e | %.2e |", sinkage(r), sinkage_err(r));
+        else if (s->soil)
+            fprintf(f, " | |");
+        fprintf(f, "\n");
     }
 }
 
@@ -480,20 +521,45 @@ static int fill_md(FILE *f, const void *user)
     char date[32];
     time_t now = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
-    fprintf(f, "# Precision: run time against error\n\n`footsim bench precision%s` on %s; %s; load average %.2f at the "
-            "end. Every row of `precision.csv` is one configuration; the chart is `precision.png`.\n",
-        quick ? " --quick" : "", date, machine, cli_load_average());
-    fprintf(f, "\nReferences: **chain**: the planar dynamic model (GSL rk8pd, tolerance %g; halving it moves the ankle "
-            "by %.1e m; %.2f s to compute). The landings: footsim's own run of the same trial at h = %g s with "
-            "dWorldStep, over %g s from release (",
-        REF_TOLERANCE, scenes[0].ref_check_m, scenes[0].ref_wall_s, REF_STEP_S, scenes[1].duration_s);
-    for (int c = 1; c < nscenes; c++)
-        fprintf(f, "%s**%s** %.1f s", c > 1 ? ", " : "", scenes[c].name, scenes[c].ref_wall_s);
-    fprintf(f, " to compute).\n");
+    fprintf(f, "# Precision: run time against error\n\n`%s` on %s; %s; load average %.2f at the end. Every row of "
+            "`precision.csv` is one configuration; the chart is `precision.png`.\n", x->command, date, machine,
+            cli_load_average());
+    fprintf(f, "\nReferences: ");
+    int landings = 0;
+    for (int c = 0; c < nscenes; c++) {
+        const scene *s = &scenes[c];
+        if (s->pinned_chain) {
+            fprintf(f, "**%s**: the planar dynamic model (GSL rk8pd, tolerance %g; halving it moves the ankle by "
+                    "%.1e m; %.2f s to compute)%s", s->name, REF_TOLERANCE, s->ref_check_m, s->ref_wall_s,
+                    nscenes > 1 ? ". " : ".\n");
+            continue;
+        }
+        if (!landings++)
+            fprintf(f, "The landings: footsim's own run of the same trial at h = %g s with dWorldStep, over %g s from "
+                    "release; wall time to compute it: ", REF_STEP_S, s->duration_s);
+        fprintf(f, "%s**%s** %.1f s", landings > 1 ? ", " : "", s->name, s->ref_wall_s);
+        if (s->soil)
+            fprintf(f, " (every shape on the soil's %g mm grid; the feet %.3f mm below its undisturbed surface at "
+                    "the end)", s->base.terrain.def.soil.grid_m * 1e3, s->ref.sinkage_end_m * 1e3);
+    }
+    if (landings)
+        fprintf(f, ".\n");
+    for (int c = 0; c < nscenes; c++)
+        if (scenes[c].soil) {
+            fprintf(f, "\nOn a soil (**%s**, under the rig) the rows also give the sinkage at the end and its error. "
+                    "The rig's slide holds the foot's attitude and the sole is rigid, so at every instant the "
+                    "ankle's distance from the reference's is the difference of the sole's depth below the soil's "
+                    "undisturbed surface: the largest ankle error is the largest sinkage error, its error at the "
+                    "end the ankle's height against the reference's then, and the sinkage at the end the "
+                    "reference's (the deepest node its sole carries) less that.\n",
+                    scenes[c].name);
+            break;
+        }
     for (int c = 0; c < nscenes; c++)
         front_table(f, rows, n, &scenes[c]);
-    for (int c = 1; c < nscenes; c++)
-        goal(f, rows, n, &scenes[c]);
+    for (int c = 0; c < nscenes; c++)
+        if (!scenes[c].pinned_chain)
+            goal(f, rows, n, &scenes[c]);
     int blown = 0, drifting = 0;
     for (int i = 0; i < n; i++) {
         blown += !rows[i].ok;
@@ -502,14 +568,18 @@ static int fill_md(FILE *f, const void *user)
     fprintf(f, "\n%d of %d configurations blew up and %d drifted (a hinge opened by more than 1 mm, or energy grew "
             "from nowhere: `status` in the CSV; neither is put on a front); `footsim bench stability` maps where.\n",
         blown, n, drifting);
-    fprintf(f, "\n### Campaign equivalence\n\n`%s`%s at each step against its own run at h = %s s with the same "
-            "seeds, on one worker, as `footsim bench equivalence` runs it: every cell's success intervals must "
-            "overlap the reference's and its medians lie within 5 %% or a floor (docs/bench.md). The header, "
-            "machine and provenance are in `precision_equivalence/equivalence.md`, each step's comparison in "
-            "`precision_equivalence/h<STEP>.md`, the reference campaign in `precision_equivalence/reference/`.\n\n",
-        EQUIVALENCE_CAMPAIGN, quick ? " on 2 seeds" : "",
-        quick ? EQUIVALENCE_REFERENCE_QUICK : EQUIVALENCE_REFERENCE_FULL);
-    cli_equivalence_table(f, x->eq);
+    fprintf(f, "\n### Campaign equivalence\n\n");
+    if (x->eq) {
+        fprintf(f, "`%s`%s at each step against its own run at h = %s s with the same seeds, on one worker, as "
+                "`footsim bench equivalence` runs it: every cell's success intervals must overlap the reference's "
+                "and its medians lie within 5 %% or a floor (docs/bench.md). The header, machine and provenance are "
+                "in `precision_equivalence/equivalence.md`, each step's comparison in "
+                "`precision_equivalence/h<STEP>.md`, the reference campaign in `precision_equivalence/reference/`."
+                "\n\n", EQUIVALENCE_CAMPAIGN, quick ? " on 2 seeds" : "",
+                quick ? EQUIVALENCE_REFERENCE_QUICK : EQUIVALENCE_REFERENCE_FULL);
+        cli_equivalence_table(f, x->eq);
+    } else
+        fprintf(f, "Not run: `--scene` named the scenes to run, and this stage runs only with every scene.\n");
     fputs("\nProvenance: ", f);
     fs_provenance_print(x->prov, f);
     fputs(".\n", f);
@@ -576,8 +646,45 @@ static int fill_chart(FILE *f, const void *user)
     return 1;
 }
 
+/* --scene's list into chosen (one flag a SCENES entry); 0, or FS_BAD_INPUT (said) for a name not in
+ * SCENES or an empty one. Without --scene every scene of the sweep (the full sweep's only without
+ * --quick). */
+static int choose_scenes(const cli_args *a, int chosen[NSCENES])
+{
+    for (int k = 0; k < NSCENES; k++)
+        chosen[k] = !a->scene && !(a->quick && SCENES[k].full_only);
+    for (const char *p = a->scene; p; p++) { /* each name, p then past its comma */
+        size_t len = strcspn(p, ",");
+        int k = 0;
+        while (k < NSCENES && (strlen(SCENES[k].name) != len || strncmp(SCENES[k].name, p, len)))
+            k++;
+        if (k == NSCENES) {
+            fprintf(stderr, "footsim bench precision: --scene %s: %s%.*s%s; give one or more of", a->scene,
+                    len ? "no scene is called '" : "an empty name", (int)len, p, len ? "'" : "");
+            for (int j = 0; j < NSCENES; j++)
+                fprintf(stderr, "%s %s", j ? "," : "", SCENES[j].name);
+            fprintf(stderr, ", separated by commas\n");
+            return FS_BAD_INPUT;
+        }
+        chosen[k] = 1;
+        p += len;
+        if (*p == 0)
+            break;
+    }
+    return 0;
+}
+
+int cli_bench_precision_scenes(const cli_args *a)
+{
+    int chosen[NSCENES];
+    return choose_scenes(a, chosen);
+}
+
 int cli_bench_precision(const cli_args *a, const char *dir)
 {
+    int chosen[NSCENES];
+    if (choose_scenes(a, chosen)) /* before anything runs */
+        return FS_BAD_INPUT;
     fs_error err;
     scene *scenes = calloc(NSCENES, sizeof *scenes); /* large: on the heap for this command */
     row *rows = calloc(MAX_ROWS, sizeof *rows);
@@ -587,53 +694,41 @@ int cli_bench_precision(const cli_args *a, const char *dir)
         return cli_report(FS_NO_MEMORY, "out of memory");
     }
     int nrows = 0;
-    char machine[512];
+    char machine[512], command[512];
     cli_machine(machine, sizeof machine);
-    /* the equivalence stage's folder and campaign checked before anything is measured */
+    snprintf(command, sizeof command, "footsim bench precision%s%s%.400s", a->quick ? " --quick" : "",
+             a->scene ? " --scene " : "", a->scene ? a->scene : "");
+    /* the equivalence stage's folder and campaign checked before anything is measured; none with --scene */
     char eq_dir[FS_OUT_PATH + 32];
     snprintf(eq_dir, sizeof eq_dir, "%s/precision_equivalence", dir);
     cli_equivalence_spec spec = {.campaign = cli_data_path(EQUIVALENCE_CAMPAIGN), .shown = EQUIVALENCE_CAMPAIGN,
                                  .set = a->quick ? EQUIVALENCE_SET_QUICK : NULL, .nset = a->quick,
                                  .reference = a->quick ? EQUIVALENCE_REFERENCE_QUICK : EQUIVALENCE_REFERENCE_FULL,
                                  .steps = a->quick ? EQUIVALENCE_STEPS_QUICK : EQUIVALENCE_STEPS_FULL, .jobs = 1,
-                                 .command = a->quick ? "footsim bench precision --quick" : "footsim bench precision",
-                                 .who = "footsim bench precision", .option = "--out"};
-    cli_equivalence *eq;
-    int eq_status = cli_equivalence_open(&eq, &spec, eq_dir, a->replace);
+                                 .command = command, .who = "footsim bench precision", .option = "--out"};
+    cli_equivalence *eq = NULL;
+    int eq_status = a->scene ? 0 : cli_equivalence_open(&eq, &spec, eq_dir, a->replace);
     if (eq_status) {
         cli_equivalence_close(eq);
         free(scenes);
         free(rows);
         return eq_status;
     }
+    if (a->scene)
+        fprintf(stderr, "footsim bench precision: --scene given: only %s, and no campaign-equivalence stage\n",
+                a->scene);
     fs_status s = fs_make_dirs(dir, &err);
     /* touchdown at about 35 ms, the impact over by 0.1 s; --quick stops soon after */
     double landing_s = a->quick ? 0.2 : 0.5;
     fprintf(stderr, "footsim bench precision: the references ...\n");
-    if (s == FS_OK)
-        s = chain_scene(&scenes[0], &err);
-    /* landings that land: the flat foot under the tall robot with seed 10's pose on rough ground; the
-     * biomimetic foot under drop_weight (the tall robot folds it: docs/landing.md) with seed 1's pose
-     * on flat ground and seed 4's on rough ground */
-    if (s == FS_OK)
-        s = landing_scene(&scenes[1], "landing_flat", "flat foot landing on rough ground", "feet/flat.ini",
-                          "robots/single_tall.ini", "../terrains/rough.ini", 10, landing_s, &err);
-    if (s == FS_OK)
-        s = landing_scene(&scenes[2], "landing_biomimetic", "biomimetic foot landing on flat ground (drop_weight)",
-                          "feet/biomimetic.ini", "robots/drop_weight.ini", "../terrains/flat.ini", 1, landing_s, &err);
-    if (s == FS_OK)
-        s = landing_scene(&scenes[3], "landing_biomimetic_rough",
-                          "biomimetic foot landing on rough ground (drop_weight)", "feet/biomimetic.ini",
-                          "robots/drop_weight.ini", "../terrains/rough.ini", 4, landing_s, &err);
-    int nscenes = a->quick ? NBASE : NSCENES;
-    for (int t = 0; t < nscenes - NBASE && s == FS_OK; t++)
-        s = landing_scene(&scenes[NBASE + t], FLAT_TERRAINS[t].name, FLAT_TERRAINS[t].title, "feet/flat.ini",
-                          "robots/rig.ini", FLAT_TERRAINS[t].terrain, 1, landing_s, &err);
-    scenes[1].goal_rtf = 100;
-    scenes[2].goal_rtf = 100, scenes[2].goal_fine_rtf = 10;
-    scenes[3].goal_rtf = 30;
-    for (int c = NBASE; c < nscenes; c++)
-        scenes[c].goal_rtf = 100;
+    int nscenes = 0;
+    for (int k = 0; k < NSCENES && s == FS_OK; k++) {
+        if (!chosen[k])
+            continue;
+        scene *sc = &scenes[nscenes++];
+        s = SCENES[k].design ? landing_scene(sc, &SCENES[k], landing_s, &err) : chain_scene(sc, &err);
+        sc->goal_rtf = SCENES[k].goal_rtf, sc->goal_fine_rtf = SCENES[k].goal_fine_rtf;
+    }
     fs_provenance prov = {.ninputs = 0};
     const fs_scenario *loaded[NSCENES];
     for (int c = 0; c < nscenes; c++)
@@ -647,17 +742,17 @@ int cli_bench_precision(const cli_args *a, const char *dir)
                                  &err);
     if (s == FS_OK)
         s = sweep(scenes, nscenes, a->quick, rows, &nrows, &err);
-    if (s == FS_OK && (eq_status = cli_equivalence_run(eq)) != 0) /* said already */
+    if (s == FS_OK && eq && (eq_status = cli_equivalence_run(eq)) != 0) /* said already */
         s = fs_fail(&err, (fs_status)eq_status, "bench precision: the campaign-equivalence stage failed (above)");
-    const report x = {rows, nrows, scenes, nscenes, machine, a->quick, &prov, eq};
+    const report x = {rows, nrows, scenes, nscenes, machine, command, a->quick, &prov, eq};
     if (s == FS_OK)
         s = fs_write_in(dir, "precision.csv", fill_csv, &x, &err);
     if (s == FS_OK) {
         char date[32];
         time_t now = time(NULL);
         strftime(date, sizeof date, "%Y-%m-%d %H:%M", gmtime(&now));
-        s = (fs_status)cli_csv_beside(dir, "precision.csv", &prov, a->quick ? "footsim bench precision --quick"
-                                      : "footsim bench precision", date, machine, NAN, cli_load_average(), &err);
+        s = (fs_status)cli_csv_beside(dir, "precision.csv", &prov, command, date, machine, NAN, cli_load_average(),
+                                      &err);
     }
     if (s == FS_OK)
         s = fs_write_in(dir, "precision.md", fill_md, &x, &err);
@@ -675,7 +770,9 @@ int cli_bench_precision(const cli_args *a, const char *dir)
     free(rows);
     if (s != FS_OK)
         return cli_report(s, err.message);
-    printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}; campaign equivalence "
-           "in %s/\n", nrows, dir, eq_dir);
+    printf("footsim bench precision: %d configurations; results in %s/precision.{csv,md,png}", nrows, dir);
+    if (eq)
+        printf("; campaign equivalence in %s/", eq_dir);
+    printf("\n");
     return 0;
 }

@@ -4,6 +4,7 @@
 #include "footsim/sim/fs_drive.h"
 
 #include "footsim/sim/fs_check.h"
+#include "footsim/sim/fs_sim_soil.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -12,6 +13,7 @@
 static fs_status track_alloc(fs_track *t, double dt_s, int n, int nangles, int timed, fs_error *err)
 {
     memset(t, 0, sizeof *t);
+    t->sinkage_end_m = NAN;
     t->dt_s = dt_s;
     t->n = n;
     t->nangles = nangles;
@@ -87,6 +89,7 @@ fs_status fs_track_run(const fs_scenario *sc, const fs_sim_options *opts, double
         out->steps = fs_sim_step_stats(sim)->taken;
         out->rejected = fs_sim_step_stats(sim)->rejected;
         out->ode_steps = fs_sim_step_stats(sim)->ode_steps;
+        out->sinkage_end_m = fs_sim_soil_grid(sim) ? fs_sim_soil_sinkage(sim, -1) : NAN;
     }
     fs_sim_free(sim);
     if (s != FS_OK)
@@ -150,6 +153,7 @@ fs_status fs_track_compare(const fs_track *run, const fs_track *ref, fs_track_er
         const double *a = run->ankle[i];
         double d = sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
         out->max_m = fmax(out->max_m, d);
+        out->end_dz_m = a[2] - b[2];
         sum_m += d * d;
         for (int k = 0; k < nangles; k++) {
             double e = fabs(run->angle[i][k] - angle[k]);

@@ -170,7 +170,9 @@ static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
                 box[2], box[3]);
     fs_status s = fs_terrain_crop(&sc->terrain, box[0] - m, box[1] + m, box[2] - m, box[3] + m, err);
     if (s == FS_OK && sc->terrain.def.soil.model != FS_SOIL_NONE) /* the soil's grid over the same region */
-        s = fs_soil_region(&sc->terrain.def.soil, box, sc->terrain.path, sc->terrain.soil_region, NULL, err);
+        s = fs_soil_region(&sc->terrain.def.soil, box,
+                           sc->terrain.soil_grid_at[0] ? sc->terrain.soil_grid_at : sc->terrain.path,
+                           sc->terrain.soil_region, NULL, err);
     return s;
 }
 

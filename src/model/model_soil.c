@@ -34,7 +34,7 @@ fs_status fs_soil_region(const fs_soil_def *d, const double box[4], const char *
         *nodes = n;
     if (!(n <= d->max_nodes))
         return fs_fail(err, FS_BAD_INPUT,
-                       "%s [soil] grid_m: the soil's grid of %.3g m over the region the feet reach (%.3g x %.3g m with its margin) "
+                       "%s: the soil's grid_m of %.3g m over the region the feet reach (%.3g x %.3g m with its margin) "
                        "would have %.4g nodes, over [soil] max_nodes = %d; use a coarser grid_m, a smaller margin_m, "
                        "or raise max_nodes", path, d->grid_m, region[1] - region[0], region[3] - region[2], n,
                        d->max_nodes);

@@ -454,6 +454,8 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
                  fs_config_where(&cfg, "heightmap", "x0_m", where, sizeof where),
                  fs_config_where(&cfg, "heightmap", "y0_m", where_y, sizeof where_y));
     }
+    if (s == FS_OK && t->def.soil.model != FS_SOIL_NONE)
+        fs_config_where(&cfg, "soil", "grid_m", t->soil_grid_at, sizeof t->soil_grid_at);
     fs_config_free(&cfg);
     if (s == FS_OK)
         draw_rocks(t);

@@ -27,6 +27,9 @@ typedef struct fs_track {
     double *t_s;               /* with an error-controlled step (run.tolerance_m): sample i's time (the
                                   end of step i); NULL: i * dt_s */
     long steps, rejected, ode_steps; /* fs_track_run: steps accepted, rejected, and ODE steps in all */
+    double sinkage_end_m;      /* fs_track_run on a soil: how deep the feet reach below its undisturbed
+                                  surface at the end (fs_sim_soil_sinkage: the deepest node carried), m;
+                                  NAN without a soil */
 } fs_track;
 
 /* Runs sc built with opts (NULL: the whole foot on its ground) for duration_s at sc's step (or its
@@ -44,6 +47,7 @@ typedef struct fs_track_error {
     double max_m, rms_m;       /* ankle position: largest and RMS distance */
     double max_rad, rms_rad;   /* hinge angles: largest and RMS difference over all angles; NAN without */
     int compared;              /* samples compared */
+    double end_dz_m;           /* the ankle's height less the reference's at the last sample compared, m */
 } fs_track_error;
 
 /* Compares run with ref at run's sample times, which must fall on ref's (run.dt_s a whole

@@ -57,7 +57,9 @@ typedef struct fs_soil_def {
 fs_status fs_soil_check(const fs_soil_def *d, const fs_config *cfg, const char *path, fs_error *err);
 
 /* The rectangle the grid covers (the region the feet can reach, box, plus margin_m) and the nodes
- * it has; FS_BAD_INPUT when they pass max_nodes (naming the grid, the region and the cap). */
+ * it has; FS_BAD_INPUT when they pass max_nodes (naming the grid, the region and the cap), the
+ * message starting with path: where grid_m came from (fs_terrain.soil_grid_at, "FILE:LINE"), or
+ * the file. */
 fs_status fs_soil_region(const fs_soil_def *d, const double box[4], const char *path, double region[4], double *nodes,
                          fs_error *err);
 

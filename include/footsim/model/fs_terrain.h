@@ -67,6 +67,8 @@ typedef struct fs_terrain {
     double *zblock;
     /* with a soil: the rectangle its grid covers, [xmin, xmax, ymin, ymax] (fs_soil_region), m */
     double soil_region[4];
+    char soil_grid_at[FS_PATH_MAX + 80]; /* with a soil: where [soil] grid_m came from, for the grid's
+                                            memory cap ("FILE:LINE", "--set soil.grid_m", ...) */
 } fs_terrain;
 
 enum { FS_TERRAIN_BLOCK = 8 };
