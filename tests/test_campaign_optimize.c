@@ -309,6 +309,44 @@ static void refuses_bad_targets(void)
     remove(path);
 }
 
-FS_TEST_MAIN(TEST(loads_and_applies), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary),
+/* A list's element and a whole list's factor as parameters: chains.splay_deg[1] (counted from 1)
+ * and chains.scale_factor put into the cell's design and compiled; a bad index refused with the
+ * key's line and the valid range. */
+static void list_parameters(void)
+{
+    static fs_optimize o;
+    fs_error err;
+    char path[] = "/tmp/fs_optimize_XXXXXX";
+    REQUIRE(temp_file(path));
+    write_search(path, "search_single_tall.ini", "",
+                 "[param.splay1]\nkey = chains.splay_deg[1]\nmin = 0\nmax = 20\nstart = 8\n"
+                 "[param.toes]\nkey = chains.scale_factor\nmin = 0.8\nmax = 1.2\nstart = 1\n");
+    REQUIRE(fs_optimize_load(path, small, 1, &o, &err) == FS_OK);
+    CHECK(o.nparams == 3 && !strcmp(o.param[1].key, "chains.splay_deg[1]") && !strcmp(o.param[2].key, "chains.scale_factor"));
+    const double x[3] = {1e5, 15, 1.1};
+    REQUIRE(fs_optimize_apply(&o, x, &err) == FS_OK);
+    const fs_scenario *sc = fs_campaign_pair(&o.campaign, 0);
+    CHECK(sc->design.splay_deg[0] == 15 && sc->design.splay_deg[1] == 4 && sc->design.scale_factor == 1.1);
+    /* compiled: chain 1's toe along its plane, turned 15 deg */
+    double dx = sc->geom.chain[0].toe.x - sc->geom.chain[0].mtp.x, dy = sc->geom.chain[0].toe.y - sc->geom.chain[0].mtp.y;
+    CHECK_NEAR(atan2(dy, dx) * 180 / M_PI, 15, 1e-9);
+    fs_optimize_free(&o);
+    /* elements 0 and 6 do not exist; a number key has no elements; the bounds stay within the list's range */
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[0]\nmin = 0\nmax = 9\nstart = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 11, "no such element; chains.splay_deg has 5, give chains.splay_deg[1] to chains.splay_deg[5]");
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[6]\nmin = 0\nmax = 9\nstart = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 11, "no such element");
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = links.l3_m[1]\nmin = 0.01\nmax = 0.05\nstart = 0.04\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 11, "names no element of a list");
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[2]\nmin = 0\nmax = 60\nstart = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "leave chains.splay_deg[2]'s range [-45, 45]") != NULL);
+    remove(path);
+}
+
+FS_TEST_MAIN(TEST(loads_and_applies), TEST(list_parameters), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary),
              TEST(relative_target_reads_the_reference), TEST(constraint_makes_infeasible), TEST(pareto_front),
              TEST(refuses_bad_targets))

@@ -90,6 +90,46 @@ static void take_relative_to(fs_config *cfg, binder *b)
     }
 }
 
+/* A [param.NAME] key naming one element of a list key ("chains.splay_deg[3]", counted from 1) is no
+ * word of the key's choices: taken here as text (and marked bound), checked against the schemas with
+ * its line. *taken: 1 when it was such a key. */
+static fs_status take_element_key(fs_config *cfg, const char *sec, fs_opt_param *q, int *taken, fs_error *err)
+{
+    *taken = 0;
+    for (int i = 0; i < cfg->count; i++) {
+        fs_entry *e = &cfg->entries[i];
+        if (strcmp(e->section, sec) || strcmp(e->name, "key") || !strchr(e->value, '['))
+            continue;
+        char where[FS_PATH_MAX + 80], base[FS_VALUE_MAX];
+        fs_config_where(cfg, sec, "key", where, sizeof where);
+        const char *text = e->value + strspn(e->value, " \t");
+        snprintf(base, sizeof base, "%.*s", (int)(strchr(text, '[') - text), text);
+        int element;
+        const fs_key *k = fs_scenario_key(text, 0, &element);
+        fs_key_type type = FS_KEY_NUMBER;
+        int count = 0;
+        if (!k) { /* why: a list key's element out of its range, or no list key of that name */
+            char first[FS_VALUE_MAX + 4];
+            snprintf(first, sizeof first, "%s[1]", base);
+            const fs_key *list = fs_scenario_key(first, 0, &element);
+            if (list)
+                type = list->type, count = list->count;
+        }
+        if (!k && type == FS_KEY_LIST)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] key = %s: no such element; %s has %d, give %s[1] to %s[%d] "
+                           "(elements are counted from 1)", where, sec, text, base, count, base, base, count);
+        if (!k)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] key = %s names no element of a list of a design, robot, "
+                           "scenario or terrain file; give e.g. chains.splay_deg[1], or a number such as "
+                           "chains.splay_factor", where, sec, text);
+        snprintf(q->key, sizeof q->key, "%s", text);
+        q->key[strcspn(q->key, " \t")] = 0;
+        e->used = 1;
+        *taken = 1;
+    }
+    return FS_OK;
+}
+
 /* A fs_optimize to bind into, and where each param's choice index lands (the binder's). */
 typedef struct target {
     fs_optimize o;
@@ -139,8 +179,14 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
     }
     for (int p = 0; p < o->nparams; p++) {
         const char *sec = b->sections[p];
-        k = add_key(b, sec, "key", FS_KEY_CHOICE, T(key_choice[p]), "none", "the number the search varies");
-        k->choices = b->key_choices;
+        int taken;
+        if ((s = take_element_key(cfg, sec, &o->param[p], &taken, err)) != FS_OK)
+            return s;
+        t->key_choice[p] = -1; /* taken: a list's element */
+        if (!taken) {
+            k = add_key(b, sec, "key", FS_KEY_CHOICE, T(key_choice[p]), "none", "the number the search varies");
+            k->choices = b->key_choices;
+        }
         k = add_key(b, sec, "min", FS_KEY_NUMBER, T(o.param[p].min), "0", "its lower bound");
         k->min = -1e12, k->max = 1e12;
         k = add_key(b, sec, "max", FS_KEY_NUMBER, T(o.param[p].max), "0", "its upper bound");
@@ -167,10 +213,12 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
         fs_opt_param *q = &o->param[p];
         snprintf(sec, sizeof sec, "param.%s", q->name);
         const fs_key *k = t->key_choice[p] > 0 ? fs_campaign_sweepable(t->key_choice[p]) : NULL;
-        if (!k)
+        if (!k && t->key_choice[p] != -1)
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] needs key = a number of a design, robot, scenario or terrain "
-                           "file, e.g. springs.k_d1_N_per_m", cfg->path, sec);
-        snprintf(q->key, sizeof q->key, "%s.%s", k->section, k->name);
+                           "file, e.g. springs.k_d1_N_per_m, or a list's element, e.g. chains.splay_deg[1]",
+                           cfg->path, sec);
+        if (k)
+            snprintf(q->key, sizeof q->key, "%s.%s", k->section, k->name);
         q->log = t->log[p];
         if (!(q->min < q->max) || q->start < q->min || q->start > q->max)
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] min = %g, max = %g, start = %g: give min < max and the start "
