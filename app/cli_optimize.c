@@ -230,6 +230,18 @@ static void rates_md(FILE *f, const fs_optimize *o, const fs_campaign_row *rows,
     fputc('\n', f);
 }
 
+/* The head of a rates table: a column per terrain x robot. */
+static void rates_header_md(FILE *f, const fs_campaign *c)
+{
+    fputs("\nSuccess (landed / trials, 95 % Wilson interval) in each terrain and robot:\n\n| design |", f);
+    for (int i = 0; i < c->nterrains * c->nrobots; i++)
+        fprintf(f, " %s, %s |", c->terrain[i / c->nrobots].name, c->robot[i % c->nrobots].name);
+    fputs("\n|---|", f);
+    for (int i = 0; i < c->nterrains * c->nrobots; i++)
+        fputs("---|", f);
+    fputc('\n', f);
+}
+
 static int fill_result(FILE *f, const void *user)
 {
     const optimize_out *x = user;
@@ -272,13 +284,7 @@ static int fill_result(FILE *f, const void *user)
             isnan(x->quantity_file[FS_QUANTITY_ANKLE_DROP_M]) || isnan(x->quantity_best[FS_QUANTITY_ANKLE_DROP_M])
                 ? " (NaN: the arch has no stable equilibrium under that load)"
                 : "");
-    fputs("\nSuccess (landed / trials, 95 % Wilson interval) in each terrain and robot:\n\n| design |", f);
-    for (int i = 0; i < c->nterrains * c->nrobots; i++)
-        fprintf(f, " %s, %s |", c->terrain[i / c->nrobots].name, c->robot[i % c->nrobots].name);
-    fputs("\n|---|", f);
-    for (int i = 0; i < c->nterrains * c->nrobots; i++)
-        fputs("---|", f);
-    fputc('\n', f);
+    rates_header_md(f, c);
     char what[256];
     for (int foot = 0; foot < c->nfeet; foot++) {
         if (foot == o->reference)
@@ -571,13 +577,7 @@ static int fill_sweep_result(FILE *f, const void *user)
         fprintf(f, " %.4g | %.4g | %.3f | %.3f | %s |\n", pt->objective, pt->quantity[q], pt->shortfall,
                 pt->shortfall_fresh, x->front[i] ? "yes" : pt->violation > 0 ? "breaks a constraint" : "");
     }
-    fputs("\nSuccess (landed / trials, 95 % Wilson interval) in each terrain and robot:\n\n| design |", f);
-    for (int i = 0; i < c->nterrains * c->nrobots; i++)
-        fprintf(f, " %s, %s |", c->terrain[i / c->nrobots].name, c->robot[i % c->nrobots].name);
-    fputs("\n|---|", f);
-    for (int i = 0; i < c->nterrains * c->nrobots; i++)
-        fputs("---|", f);
-    fputc('\n', f);
+    rates_header_md(f, c);
     char what[256];
     snprintf(what, sizeof what, "%s as its file gives it, seeds %d to %d", c->foot[cand].name, c->first_seed, last);
     rates_md(f, o, x->rows + 2 * n * ncells, cand, what);

@@ -9,7 +9,8 @@
  *   campaign = search_single_tall.ini   ; the trials and the targets
  *   max_evaluations = 40
  *   [param.k_d1]
- *   key = springs.k_d1_N_per_m          ; any number of a design, robot, scenario or terrain file
+ *   key = springs.k_d1_N_per_m          ; any number of a design, robot, scenario or terrain file,
+ *                                       ; or one element of a list, counted from 1: chains.splay_deg[1]
  *   min = 12000                         ; the search stays within [min, max]
  *   max = 1.2e6
  *   start = 120000
