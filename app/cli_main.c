@@ -186,8 +186,11 @@ static const command commands[] = {
      "  foot (run once) in every terrain and robot, within its [constraint.NAME] bounds, by NLopt's\n"
      "  Subplex on common seeds; reruns the best on fresh seeds and writes DIR/result.md,\n"
      "  evaluations.csv and the trade-off's Pareto front pareto.csv, pareto.png (default DIR:\n"
-     "  results/optimize/<name>/). Exit 1 when the best misses a target. --set\n"
-     "  optimize.max_evaluations=N; other sections go to the campaign."},
+     "  results/optimize/<name>/). Exit 1 when the best misses a target. With [optimize] sweep =\n"
+     "  NAME.max (or .min) and sweep_values = v1, v2, ...: one search per value of that constraint's\n"
+     "  bound, each in its folder DIR/NAME_max_v/, and DIR/front.csv, front.png, result.md of their\n"
+     "  bests (exit 1 when none meets every target). --set optimize.max_evaluations=N; other sections\n"
+     "  go to the campaign."},
     {"compare", cli_compare, CMD_COMPARE, "RESULT BASELINE", 2, CLI_DATA_NONE,
      "Compares two summary.json files and prints, as Markdown, what is outside what the baseline\n"
      "  allows (--all: every quantity of every cell, with its verdict), or with --json one JSON object:\n"

@@ -6,6 +6,7 @@
  * reference foot. */
 #include "cli.h"
 
+#include "footsim/base/fs_path.h"
 #include "footsim/campaign/fs_optimize.h"
 #include "footsim/io/fs_gnuplot.h"
 #include "footsim/io/fs_output.h"
@@ -229,6 +230,18 @@ static void rates_md(FILE *f, const fs_optimize *o, const fs_campaign_row *rows,
     fputc('\n', f);
 }
 
+/* The head of a rates table: a column per terrain x robot. */
+static void rates_header_md(FILE *f, const fs_campaign *c)
+{
+    fputs("\nSuccess (landed / trials, 95 % Wilson interval) in each terrain and robot:\n\n| design |", f);
+    for (int i = 0; i < c->nterrains * c->nrobots; i++)
+        fprintf(f, " %s, %s |", c->terrain[i / c->nrobots].name, c->robot[i % c->nrobots].name);
+    fputs("\n|---|", f);
+    for (int i = 0; i < c->nterrains * c->nrobots; i++)
+        fputs("---|", f);
+    fputc('\n', f);
+}
+
 static int fill_result(FILE *f, const void *user)
 {
     const optimize_out *x = user;
@@ -271,13 +284,7 @@ static int fill_result(FILE *f, const void *user)
             isnan(x->quantity_file[FS_QUANTITY_ANKLE_DROP_M]) || isnan(x->quantity_best[FS_QUANTITY_ANKLE_DROP_M])
                 ? " (NaN: the arch has no stable equilibrium under that load)"
                 : "");
-    fputs("\nSuccess (landed / trials, 95 % Wilson interval) in each terrain and robot:\n\n| design |", f);
-    for (int i = 0; i < c->nterrains * c->nrobots; i++)
-        fprintf(f, " %s, %s |", c->terrain[i / c->nrobots].name, c->robot[i % c->nrobots].name);
-    fputs("\n|---|", f);
-    for (int i = 0; i < c->nterrains * c->nrobots; i++)
-        fputs("---|", f);
-    fputc('\n', f);
+    rates_header_md(f, c);
     char what[256];
     for (int foot = 0; foot < c->nfeet; foot++) {
         if (foot == o->reference)
@@ -372,6 +379,291 @@ static int *pareto_of(const optimize_run *run)
     return front;
 }
 
+/* What one search found, for a sweep's front: its best, that best's objective and quantities, and
+ * its shortfall on the search's seeds and on fresh ones; the foot's file design the same way. */
+typedef struct search_point {
+    double best[FS_OPTIMIZE_MAX_PARAMS];
+    double objective, quantity[3];
+    double shortfall, shortfall_fresh;
+    double violation;                /* of the constraints (fs_optimize_violation); 0: feasible */
+    double file_x[FS_OPTIMIZE_MAX_PARAMS], file_objective, file_quantity[3];
+} search_point;
+
+/* One search and its reruns (rows: 4 cells' worth: the best, the file's design, the start, the best
+ * on fresh seeds), its files written into dir (shown: where the user will find it). *gnuplot: what
+ * cli_gnuplot_shown said (> 0: the exit status of a damaged chart). */
+static fs_status search_into(fs_optimize *o, optimize_run *run, fs_trial_result *results, fs_campaign_row *rows,
+                             const fs_provenance *prov, const char *dir, const char *shown, search_point *pt,
+                             int *gnuplot, fs_error *err)
+{
+    const fs_campaign *c = &o->campaign;
+    int ncells = fs_campaign_ncells(c), cand = o->reference == 0 ? 1 : 0;
+    double start[FS_OPTIMIZE_MAX_PARAMS], value;
+    for (int p = 0; p < o->nparams; p++) {
+        start[p] = o->param[p].start;
+        pt->file_x[p] = o->file_x[cand * c->nterrains * c->nrobots * fs_campaign_nends(c) * o->nparams + p];
+    }
+    run->nlog = 0;
+    run->round = 1;
+    *gnuplot = 0;
+    fs_status st = fs_optimize_run(o, run_trials, report, run, results, rows, pt->best, &value, err);
+    /* the foot's own design, the start and the best again on the search's seeds (the reference's
+       trials kept), then the best and the reference on fresh ones */
+    optimize_out x = {o, run, start, pt->best, rows + ncells, rows + 2 * ncells, rows, rows + 3 * ncells,
+                      .first_fresh = o->validation_first_seed, .prov = prov};
+    run->round = o->max_evaluations + (o->reference >= 0); /* the reruns are the last rounds */
+    if (st == FS_OK)
+        st = evaluate_at(o, run, NULL, results, rows + ncells, x.quantity_file, err);
+    pt->file_objective = st == FS_OK ? fs_optimize_objective(o, pt->file_x) : NAN;
+    if (st == FS_OK)
+        st = evaluate_at(o, run, start, results, rows + 2 * ncells, x.quantity_start, err);
+    if (st == FS_OK)
+        st = evaluate_at(o, run, pt->best, results, rows, x.quantity_best, err);
+    pt->objective = st == FS_OK ? fs_optimize_objective(o, pt->best) : NAN;
+    pt->violation = st == FS_OK ? fs_optimize_violation(o) : NAN;
+    int first = o->campaign.first_seed;
+    o->campaign.first_seed = o->validation_first_seed;
+    if (st == FS_OK)
+        st = evaluate(o, run, results, rows + 3 * ncells, 1, err);
+    o->campaign.first_seed = first;
+    cli_progress_round(NULL, 0, 0);
+    memcpy(pt->quantity, x.quantity_best, sizeof pt->quantity);
+    memcpy(pt->file_quantity, x.quantity_file, sizeof pt->file_quantity);
+    int *front = st == FS_OK ? pareto_of(run) : NULL;
+    if (st == FS_OK && !front)
+        st = fs_fail(err, FS_NO_MEMORY, "out of memory");
+    x.front = front;
+    if (st == FS_OK)
+        st = fs_write_in(dir, "evaluations.csv", fill_evaluations, &x, err);
+    if (st == FS_OK)
+        st = fs_provenance_write_beside(dir, "evaluations.csv", prov, NULL, err);
+    if (st == FS_OK)
+        st = fs_write_in(dir, "pareto.csv", fill_pareto, &x, err);
+    if (st == FS_OK)
+        st = fs_write_in(dir, "pareto.gp", fill_pareto_gp, &x, err);
+    if (st == FS_OK)
+        st = fs_write_in(dir, "result.md", fill_result, &x, err);
+    int g = st == FS_OK ? cli_gnuplot_shown(dir, shown, "pareto.gp", "pareto.png", "optimize") : 0;
+    if (g > 0)
+        st = (fs_status)g, *gnuplot = g; /* said */
+    if (st == FS_OK) {
+        pt->shortfall = fs_optimize_shortfall(o, rows);
+        pt->shortfall_fresh = fs_optimize_shortfall(o, rows + 3 * ncells);
+        printf("best:");
+        for (int p = 0; p < o->nparams; p++)
+            printf(" %s = %.6g (start %.6g)", o->param[p].key, pt->best[p], start[p]);
+        printf("\ntargets %s on the search's seeds and %s on fresh seeds %d to %d", pt->shortfall == 0 ? "met" : "MISSED",
+               pt->shortfall_fresh == 0 ? "met" : "MISSED", o->validation_first_seed,
+               o->validation_first_seed + o->campaign.seeds - 1);
+        if (pt->violation > 0)
+            printf("; its constraints BROKEN by %.3g (no candidate met them)", pt->violation);
+        printf("\n");
+    }
+    free(front);
+    return st;
+}
+
+/* ---- a sweep of a constraint's bound: front.csv, front.gp, result.md -------------------------- */
+
+typedef struct sweep_out {
+    const fs_optimize *o;
+    const search_point *pt;          /* one per value */
+    const int *front;                /* by value: on the trade-off's front */
+    const fs_campaign_row *rows;     /* per value: the best on the search's seeds, then on fresh ones
+                                        (2 * ncells); then the file's design's and the reference's
+                                        (the first search's: every search runs them alike) */
+    const char (*folder)[FS_NAME_MAX];
+    const fs_provenance *prov;
+} sweep_out;
+
+static const fs_opt_constraint *swept(const fs_optimize *o) { return &o->constraint[o->sweep_constraint]; }
+
+/* A search's folder: "NAME_max_VALUE" (or _min_). */
+static void sweep_folder(const fs_optimize *o, int i, char *buf, size_t size)
+{
+    snprintf(buf, size, "%s_%s_%g", swept(o)->name, o->sweep_min ? "min" : "max", o->sweep_values.v[i]);
+}
+
+static int fill_front(FILE *f, const void *user)
+{
+    const sweep_out *x = user;
+    const fs_optimize *o = x->o;
+    char b[32];
+    fprintf(f, "design,%s_%s", swept(o)->name, o->sweep_min ? "min" : "max");
+    for (int p = 0; p < o->nparams; p++)
+        fprintf(f, ",%s", o->param[p].key);
+    fprintf(f, ",objective,%s,shortfall,shortfall_fresh,front\n", quantity_name(swept(o)->of));
+    int q = swept(o)->of;
+    for (int i = -1; i < o->sweep_values.n; i++) { /* the foot's file design first */
+        const search_point *pt = &x->pt[i < 0 ? 0 : i];
+        fprintf(f, "%s,%s", i < 0 ? "file" : "best", i < 0 ? "" : cli_csv_num(b, sizeof b, "%.17g", o->sweep_values.v[i]));
+        for (int p = 0; p < o->nparams; p++)
+            fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", i < 0 ? pt->file_x[p] : pt->best[p]));
+        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", i < 0 ? pt->file_objective : pt->objective));
+        fprintf(f, ",%s", cli_csv_num(b, sizeof b, "%.17g", i < 0 ? pt->file_quantity[q] : pt->quantity[q]));
+        if (i < 0)
+            fputs(",,,0\n", f); /* its shortfall is in result.md's table of rates */
+        else
+            fprintf(f, ",%s,%s,%d\n", cli_csv_num(b, sizeof b, "%.17g", pt->shortfall),
+                    cli_csv_num(b, sizeof b, "%.17g", pt->shortfall_fresh), x->front[i]);
+    }
+    return 1;
+}
+
+static int fill_front_gp(FILE *f, const void *user)
+{
+    const sweep_out *x = user;
+    const fs_optimize *o = x->o;
+    fputs("# A sweep of a constraint's bound: 'gnuplot front.gp' in this folder draws front.png from front.csv\n"
+          "# (each search's best, and the foot's file design).\nif (!exists(\"out\")) out = 'front.png'\nsearch = ", f);
+    fs_gp_string(f, o->name);
+    fputs("\nobjective = ", f);
+    fs_gp_string(f, o->objective == FS_OBJECTIVE_LIGHTEST ? "objective: the foot's mass, kg"
+                                                           : "objective: the parameters' sum, each over its min");
+    fputs("\nquantity = ", f);
+    fs_gp_string(f, quantity_name(swept(o)->of));
+    fprintf(f, "\nobj = %d\n", o->nparams + 3);
+    fputs("set terminal pngcairo size 720,480 noenhanced font 'sans,10'\nset output out\n"
+          "set datafile separator ','\nset title 'Design search ' . search . ': each bound''s best'\n"
+          "set xlabel quantity . ' of the design (the swept bound''s quantity)'\nset ylabel objective\n"
+          "set key outside bottom center horizontal\nset grid\n"
+          "plot 'front.csv' skip 1 using (strcol(1) eq 'best' && column(obj + 2) > 0 ? column(obj + 1) : 1/0):obj "
+          "with points pt 6 ps 1.5 lc rgb '#999999' title 'best, missing a target', \\\n"
+          "     'front.csv' skip 1 using (column(obj + 4) == 1 ? column(obj + 1) : 1/0):obj with linespoints pt 7 lw 2 "
+          "lc rgb '#b2182b' title 'front (targets met)', \\\n"
+          "     'front.csv' skip 1 using (strcol(1) eq 'best' ? column(obj + 1) : 1/0):obj:(sprintf('%g', column(2))) "
+          "with labels offset 0,1 notitle, \\\n"
+          "     'front.csv' skip 1 using (strcol(1) eq 'file' ? column(obj + 1) : 1/0):obj with points pt 5 ps 1.5 "
+          "lc rgb '#2166ac' title 'the foot''s file design'\n", f);
+    return 1;
+}
+
+static int fill_sweep_result(FILE *f, const void *user)
+{
+    const sweep_out *x = user;
+    const fs_optimize *o = x->o;
+    const fs_campaign *c = &o->campaign;
+    const fs_opt_constraint *k = swept(o);
+    int n = o->sweep_values.n, ncells = fs_campaign_ncells(c), q = k->of, last = c->first_seed + c->seeds - 1;
+    const char *bound = o->sweep_min ? "min" : "max";
+    fprintf(f, "# Design search %s: a sweep of %s.%s\n\nOne search per value of constraint %s's %s (%s), each at most "
+               "%d evaluations of NLopt's Subplex on campaign `%s`'s %d common seeds per cell (seeds %d to %d), "
+               "objective %s; each search's own files (result.md, evaluations.csv, pareto.png) in its folder. The "
+               "front (`front.csv`, `front.png`): each bound's best, objective against its %s; a best is on it when "
+               "it meets every target on the search's seeds within its bound and no other such best is at least as good in "
+               "both.\n\n",
+            o->name, k->name, bound, k->name, bound, quantity_name(q), o->max_evaluations, c->name, c->seeds,
+            c->first_seed, last, o->objective == FS_OBJECTIVE_LIGHTEST ? "the foot's mass" : "the parameters' sum "
+            "each over its min", quantity_name(q));
+    fprintf(f, "| design | %s | folder |", bound);
+    for (int p = 0; p < o->nparams; p++)
+        fprintf(f, " %s |", o->param[p].name);
+    fprintf(f, " objective | %s | shortfall, seeds %d to %d | shortfall, fresh seeds %d to %d | front |\n|---|--:|---|",
+            quantity_name(q), c->first_seed, last, o->validation_first_seed, o->validation_first_seed + c->seeds - 1);
+    for (int p = 0; p < o->nparams + 5; p++)
+        fputs("--:|", f);
+    fputc('\n', f);
+    int cand = o->reference == 0 ? 1 : 0;
+    fprintf(f, "| %s as its file gives it | | |", c->foot[cand].name);
+    for (int p = 0; p < o->nparams; p++)
+        fprintf(f, " %.4g |", x->pt[0].file_x[p]);
+    fprintf(f, " %.4g | %.4g | %.3f | | |\n", x->pt[0].file_objective, x->pt[0].file_quantity[q],
+            fs_optimize_shortfall(o, x->rows + 2 * n * ncells));
+    for (int i = 0; i < n; i++) {
+        const search_point *pt = &x->pt[i];
+        fprintf(f, "| best | %.4g | `%s/` |", o->sweep_values.v[i], x->folder[i]);
+        for (int p = 0; p < o->nparams; p++)
+            fprintf(f, " %.4g |", pt->best[p]);
+        fprintf(f, " %.4g | %.4g | %.3f | %.3f | %s |\n", pt->objective, pt->quantity[q], pt->shortfall,
+                pt->shortfall_fresh, x->front[i] ? "yes" : pt->violation > 0 ? "breaks a constraint" : "");
+    }
+    rates_header_md(f, c);
+    char what[256];
+    snprintf(what, sizeof what, "%s as its file gives it, seeds %d to %d", c->foot[cand].name, c->first_seed, last);
+    rates_md(f, o, x->rows + 2 * n * ncells, cand, what);
+    for (int i = 0; i < n; i++) {
+        snprintf(what, sizeof what, "best at %s = %g, seeds %d to %d", bound, o->sweep_values.v[i], c->first_seed, last);
+        rates_md(f, o, x->rows + 2 * i * ncells, cand, what);
+        snprintf(what, sizeof what, "best at %s = %g, fresh seeds %d to %d", bound, o->sweep_values.v[i],
+                 o->validation_first_seed, o->validation_first_seed + c->seeds - 1);
+        rates_md(f, o, x->rows + (2 * i + 1) * ncells, cand, what);
+    }
+    if (o->reference >= 0) {
+        snprintf(what, sizeof what, "%s (the reference), seeds %d to %d", c->foot[o->reference].name, c->first_seed, last);
+        rates_md(f, o, x->rows, o->reference, what);
+        snprintf(what, sizeof what, "%s (the reference), fresh seeds %d to %d", c->foot[o->reference].name,
+                 o->validation_first_seed, o->validation_first_seed + c->seeds - 1);
+        rates_md(f, o, x->rows + ncells, o->reference, what);
+    }
+    fputs("\nProvenance: ", f);
+    fs_provenance_print(x->prov, f);
+    fputs(".\n", f);
+    return 1;
+}
+
+/* The sweep: one search per value into its folder under dir, then the front. */
+static fs_status sweep_into(fs_optimize *o, optimize_run *run, fs_trial_result *results, fs_campaign_row *rows,
+                            const fs_provenance *prov, const fs_outdir *out, int *gnuplot, int *met, fs_error *err)
+{
+    int n = o->sweep_values.n, ncells = fs_campaign_ncells(&o->campaign);
+    search_point *pt = calloc((size_t)n, sizeof *pt);
+    fs_campaign_row *kept = calloc((size_t)(2 * n + 1) * (size_t)ncells, sizeof *kept);
+    char (*folder)[FS_NAME_MAX] = calloc((size_t)n, sizeof *folder);
+    int *front = calloc((size_t)n, sizeof *front), *index = calloc((size_t)n, sizeof *index);
+    double *a = calloc((size_t)n, sizeof *a), *b = calloc((size_t)n, sizeof *b);
+    fs_status st = pt && kept && folder && front && index && a && b ? FS_OK : fs_fail(err, FS_NO_MEMORY, "out of memory");
+    *met = 0;
+    for (int i = 0; st == FS_OK && i < n; i++) {
+        char dir[FS_OUT_PATH], shown[FS_OUT_PATH];
+        sweep_folder(o, i, folder[i], sizeof folder[i]);
+        fs_optimize_sweep_to(o, i);
+        printf("sweep %d/%d: %s.%s = %g, into %s/\n", i + 1, n, swept(o)->name, o->sweep_min ? "min" : "max",
+               o->sweep_values.v[i], folder[i]);
+        st = fs_path_format(dir, sizeof dir, "a sweep's folder", err, "%s/%s", out->partial, folder[i]);
+        if (st == FS_OK)
+            st = fs_path_format(shown, sizeof shown, "a sweep's folder", err, "%s/%s", out->path, folder[i]);
+        if (st == FS_OK)
+            st = fs_make_dirs(dir, err);
+        if (st == FS_OK)
+            st = search_into(o, run, results, rows, prov, dir, shown, &pt[i], gnuplot, err);
+        if (st != FS_OK)
+            break;
+        memcpy(kept + 2 * i * ncells, rows, (size_t)ncells * sizeof *rows);
+        memcpy(kept + (2 * i + 1) * ncells, rows + 3 * ncells, (size_t)ncells * sizeof *rows);
+        if (i == 0) /* the file's design (the reference's rows are in every block: its trials are kept) */
+            memcpy(kept + 2 * n * ncells, rows + ncells, (size_t)ncells * sizeof *rows);
+        *met |= pt[i].shortfall == 0 && pt[i].shortfall_fresh == 0 && pt[i].violation == 0;
+    }
+    /* the front: the bests that meet every target on the search's seeds, objective against the
+       quantity (toward the bound: less of it for a max, more for a min) */
+    int m = 0;
+    for (int i = 0; st == FS_OK && i < n; i++)
+        if (pt[i].shortfall == 0 && pt[i].violation == 0) {
+            double v = pt[i].quantity[swept(o)->of];
+            a[m] = o->sweep_min ? -v : v, b[m] = pt[i].objective, index[m++] = i;
+        }
+    if (st == FS_OK) {
+        int kept_flags[FS_SERIES_MAX] = {0}; /* for the m bests that met, then spread by index */
+        fs_optimize_pareto(a, b, m, kept_flags);
+        for (int i = 0; i < m; i++)
+            front[index[i]] = kept_flags[i];
+    }
+    sweep_out x = {o, pt, front, kept, (const char(*)[FS_NAME_MAX])folder, prov};
+    if (st == FS_OK)
+        st = fs_write_in(out->partial, "front.csv", fill_front, &x, err);
+    if (st == FS_OK)
+        st = fs_provenance_write_beside(out->partial, "front.csv", prov, NULL, err);
+    if (st == FS_OK)
+        st = fs_write_in(out->partial, "front.gp", fill_front_gp, &x, err);
+    if (st == FS_OK)
+        st = fs_write_in(out->partial, "result.md", fill_sweep_result, &x, err);
+    int g = st == FS_OK ? cli_gnuplot_shown(out->partial, out->path, "front.gp", "front.png", "optimize") : 0;
+    if (g > 0)
+        st = (fs_status)g, *gnuplot = g;
+    free(pt), free(kept), free(folder), free(front), free(index), free(a), free(b);
+    return st;
+}
+
 int cli_optimize(const cli_args *a)
 {
     int jobs;
@@ -410,74 +702,38 @@ int cli_optimize(const cli_args *a)
                         .nrounds = o->max_evaluations + 4 + (o->reference >= 0)};
     fs_trial_result *results = calloc((size_t)ntrials, sizeof *results);
     fs_campaign_row *rows = calloc(4 * (size_t)ncells, sizeof *rows);
-    double start[FS_OPTIMIZE_MAX_PARAMS], best[FS_OPTIMIZE_MAX_PARAMS], value;
-    for (int p = 0; p < o->nparams; p++)
-        start[p] = o->param[p].start;
     fs_status st = run.log && results && rows ? FS_OK : fs_fail(&err, FS_NO_MEMORY, "out of memory");
     printf("optimize %s: %d parameters, %d trials per candidate", o->name, o->nparams,
            o->reference >= 0 ? ntrials - per_foot_trials : ntrials);
     if (o->reference >= 0)
         printf(" (foot %s's %d run once, the reference)", o->campaign.foot[o->reference].name, per_foot_trials);
-    printf(", at most %d candidates\n", o->max_evaluations);
-    if (st == FS_OK)
-        st = fs_optimize_run(o, run_trials, report, &run, results, rows, best, &value, &err);
-    /* the foot's own design, the start and the best again on the search's seeds (the reference's
-       trials kept), then the best and the reference on fresh ones */
-    optimize_out x = {o, &run, start, best, rows + ncells, rows + 2 * ncells, rows, rows + 3 * ncells,
-                      .first_fresh = o->validation_first_seed};
-    run.round = o->max_evaluations + (o->reference >= 0); /* the reruns are the last rounds */
-    if (st == FS_OK)
-        st = evaluate_at(o, &run, NULL, results, rows + ncells, x.quantity_file, &err);
-    if (st == FS_OK)
-        st = evaluate_at(o, &run, start, results, rows + 2 * ncells, x.quantity_start, &err);
-    if (st == FS_OK)
-        st = evaluate_at(o, &run, best, results, rows, x.quantity_best, &err);
-    int first = o->campaign.first_seed;
-    o->campaign.first_seed = o->validation_first_seed;
-    if (st == FS_OK)
-        st = evaluate(o, &run, results, rows + 3 * ncells, 1, &err);
-    o->campaign.first_seed = first;
-    cli_progress_round(NULL, 0, 0);
-    int *front = st == FS_OK ? pareto_of(&run) : NULL;
-    if (st == FS_OK && !front)
-        st = fs_fail(&err, FS_NO_MEMORY, "out of memory");
-    x.front = front;
+    printf(", at most %d candidates", o->max_evaluations);
+    if (o->sweep_constraint >= 0)
+        printf(" per search, %d searches (a sweep of %s.%s)", o->sweep_values.n, swept(o)->name,
+               o->sweep_min ? "min" : "max");
+    printf("\n");
     /* what made the results: the optimize file, every --set, and its campaign's inputs and settings */
     fs_provenance prov = {.ninputs = 0};
     if (st == FS_OK && (st = fs_provenance_init(&prov, o->path, &err)) == FS_OK &&
         (st = fs_provenance_overrides(&prov, a->set, a->nset, &err)) == FS_OK &&
         (st = fs_provenance_add_ini(&prov, o->path, &err)) == FS_OK)
         st = fs_provenance_include(&prov, &o->campaign.provenance, &err);
-    x.prov = &prov;
-    if (st == FS_OK)
-        st = fs_write_in(out->partial, "evaluations.csv", fill_evaluations, &x, &err);
-    if (st == FS_OK)
-        st = fs_provenance_write_beside(out->partial, "evaluations.csv", &prov, NULL, &err);
-    if (st == FS_OK)
-        st = fs_write_in(out->partial, "pareto.csv", fill_pareto, &x, &err);
-    if (st == FS_OK)
-        st = fs_write_in(out->partial, "pareto.gp", fill_pareto_gp, &x, &err);
-    if (st == FS_OK)
-        st = fs_write_in(out->partial, "result.md", fill_result, &x, &err);
-    int g = st == FS_OK ? cli_gnuplot_shown(out->partial, out->path, "pareto.gp", "pareto.png", "optimize") : 0;
-    if (g > 0)
-        st = (fs_status)g; /* said */
+    int g = 0, met = 0;
+    search_point pt;
+    if (st == FS_OK && o->sweep_constraint >= 0)
+        st = sweep_into(o, &run, results, rows, &prov, out, &g, &met, &err);
+    else if (st == FS_OK && (st = search_into(o, &run, results, rows, &prov, out->partial, out->path, &pt, &g, &err)) ==
+                                FS_OK)
+        met = pt.shortfall == 0 && pt.shortfall_fresh == 0 && pt.violation == 0;
     if (st == FS_OK)
         st = fs_outdir_commit(out, &err);
-    int met = st == FS_OK && fs_optimize_shortfall(o, rows) == 0 && fs_optimize_shortfall(o, rows + 3 * ncells) == 0;
-    if (st == FS_OK) {
-        printf("best:");
-        for (int p = 0; p < o->nparams; p++)
-            printf(" %s = %.6g (start %.6g)", o->param[p].key, best[p], start[p]);
-        printf("\ntargets %s on the search's seeds and %s on fresh seeds %d to %d\nresults: %s/result.md, "
-               "evaluations.csv, evaluations.provenance.json, pareto.csv, pareto.png\n",
-               fs_optimize_shortfall(o, rows) == 0 ? "met" : "MISSED",
-               fs_optimize_shortfall(o, rows + 3 * ncells) == 0 ? "met" : "MISSED", o->validation_first_seed,
-               o->validation_first_seed + o->campaign.seeds - 1, out->path);
-    }
+    if (st == FS_OK && o->sweep_constraint >= 0)
+        printf("results: %s/result.md, front.csv, front.provenance.json, front.png; each search's in its folder\n",
+               out->path);
+    else if (st == FS_OK)
+        printf("results: %s/result.md, evaluations.csv, evaluations.provenance.json, pareto.csv, pareto.png\n", out->path);
     fs_outdir_abort(out);
     fs_provenance_free(&prov);
-    free(front);
     free(run.log);
     free(results);
     free(rows);

@@ -19,6 +19,9 @@ expect 2 "give a SCENARIO file" -- run
 expect 2 "unknown command" -- sprint
 expect 2 "cannot create folder" -- run scenarios/static_load.ini --out /proc/footsim/out
 expect 2 "unknown section \[wheels\]" -- stiffness scenarios/feet/biomimetic.ini --set wheels.count=4
+# a list's element is counted from 1: [0] and past the end refused with the valid range
+expect 2 "--set chains.splay_deg\[0\]: splay_deg\[0\]: no such element; give one of splay_deg\[1\] to splay_deg\[5\]" -- \
+    stiffness scenarios/feet/biomimetic.ini --set 'chains.splay_deg[0]=0'
 # --data must be a folder; a relative path not found as given is looked for there (and in its
 # scenarios/feet/ for a design), and paths inside the file stay relative to the file
 expect 2 "--data $tmp/none: not a folder" -- run static_load.ini --data "$tmp/none"

@@ -95,6 +95,20 @@ check_that "optimize: evaluations.provenance.json says what made evaluations.csv
 # the search's one evaluation, then the reruns: the foot's own design, the start and the best on the
 # search's seeds, the best on fresh ones
 check_that "optimize: evaluations done of at most, then trials" grep -q '^footsim optimize: evaluation 5/5, 2/2 trials done, 0 failed, ' "$tmp/opt.err"
+# a sweep of a constraint's bound: one search per value, each in its folder, and the front of their
+# bests; 0.2 kg is below Table I's foot (0.277 kg: every candidate breaks it), 0.3 kg above it
+printf '[constraint.light]\nof = foot_mass_kg\n' >>"$tmp/opt.ini"
+"$fs" optimize "$tmp/opt.ini" -j 2 --set run.duration_s=0.05 --set campaign.seeds=1 --set optimize.sweep=light.max \
+    --set optimize.sweep_values=0.2,0.3 --out "$tmp/sweep" >"$tmp/sweep.out" 2>&1
+check_that "a sweep of two bounds runs (exit 0: one bound's best meets its target)" [ $? -eq 0 ]
+check_that "a sweep: each search's files in its folder" sh -c "[ -s '$tmp/sweep/light_max_0.2/result.md' ] &&
+    [ -s '$tmp/sweep/light_max_0.3/evaluations.csv' ] && [ -s '$tmp/sweep/front.provenance.json' ]"
+check_that "a sweep: front.csv has the file's design and each bound's best, only the feasible one on the front" sh -c \
+    "sed -n 2p '$tmp/sweep/front.csv' | grep -q '^file,,12000,' && sed -n 3p '$tmp/sweep/front.csv' | grep -q '^best,0.2.*,0\$' &&
+     sed -n 4p '$tmp/sweep/front.csv' | grep -q '^best,0.2999.*,1\$'"
+check_that "a sweep: result.md says which best breaks its bound" grep -q '| best | 0.2 | .*breaks a constraint |' "$tmp/sweep/result.md"
+"$fs" optimize "$tmp/opt.ini" --set optimize.sweep=light.max --set optimize.sweep_values=0.3,0.3 --out "$tmp/sweep2" >/dev/null 2>"$tmp/sweep2.err"
+check_that "a sweep: a value given twice refused before anything runs (exit 2)" sh -c "[ $? -eq 2 ] && grep -q 'given twice' '$tmp/sweep2.err' && [ ! -e '$tmp/sweep2' ]"
 
 # compare: identical summaries exit 0; a planted change in a rate or a median exits 1
 "$fs" compare "$tmp/j4/summary.json" "$tmp/j1/summary.json" >"$tmp/cmp.out"

@@ -276,6 +276,75 @@ static void constraint_makes_infeasible(void)
     remove(path);
 }
 
+/* Stand-in trials for a trade-off: a foot lands only when its phalanges weigh at least 12 g each
+ * (a heavier foot lands; the foot's mass then at least 0.277 + 0.004 x 5.25 = 0.298 kg: five
+ * phalanges, times their chains' scales, sum 5.25). */
+static fs_status heavy_lands(void *user, const fs_campaign *c, fs_trial_result *results, fs_error *err)
+{
+    (void)user, (void)err;
+    const fs_scenario *sc = fs_campaign_pair(c, 0);
+    int lands = sc->design.phalanx_kg >= 0.012;
+    for (int i = 0; i < fs_campaign_ntrials(c); i++) {
+        results[i].outcome = lands ? FS_LANDED : FS_FELL;
+        results[i].end_time_s = sc->def.duration_s * fmin(1, sc->design.phalanx_kg / 0.012);
+    }
+    return FS_OK;
+}
+
+/* A sweep of a constraint's bound: one search per value on the same seeds. Under max = 0.29 kg no
+ * foot can land (landing needs 0.298 kg): the best keeps the bound and misses the target; under
+ * 0.31 kg the best lands within the bound (3 evaluations: from 10 g, Subplex's first step, an eighth of the
+ * range, reaches 13.25 g). Bad sweeps refused. */
+static void sweep_of_a_bound(void)
+{
+    static fs_optimize o;
+    fs_error err;
+    char path[] = "/tmp/fs_optimize_XXXXXX";
+    REQUIRE(temp_file(path));
+    FILE *f = fopen(path, "w");
+    fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\nobjective = lightest\nmax_evaluations = 3\n"
+               "sweep = light.max\nsweep_values = 0.29, 0.31\n[param.m]\nkey = mass.phalanx_kg\nmin = 0.004\nmax = 0.03\n"
+               "start = 0.01\n[constraint.light]\nof = foot_mass_kg\n", FS_SOURCE_DIR);
+    fclose(f);
+    REQUIRE(fs_optimize_load(path, small, 1, &o, &err) == FS_OK);
+    CHECK(o.sweep_constraint == 0 && !o.sweep_min && o.sweep_values.n == 2);
+    fs_trial_result *results = calloc((size_t)fs_campaign_ntrials(&o.campaign), sizeof *results);
+    fs_campaign_row *rows = calloc((size_t)fs_campaign_ncells(&o.campaign), sizeof *rows);
+    double best[2][1], value;
+    for (int i = 0; i < 2; i++) {
+        fs_optimize_sweep_to(&o, i);
+        CHECK(o.constraint[0].max == (i ? 0.31 : 0.29));
+        REQUIRE(fs_optimize_run(&o, heavy_lands, NULL, NULL, results, rows, best[i], &value, &err) == FS_OK);
+        REQUIRE(fs_optimize_apply(&o, best[i], &err) == FS_OK);
+        CHECK(fs_optimize_violation(&o) == 0);
+        CHECK(fs_optimize_quantity(&o, FS_QUANTITY_FOOT_MASS_KG) <= o.constraint[0].max);
+        REQUIRE(fs_optimize_run_trials(&o, heavy_lands, NULL, results, 0, &err) == FS_OK);
+        fs_campaign_summarize(&o.campaign, results, rows);
+        CHECK(i ? fs_optimize_shortfall(&o, rows) == 0 : fs_optimize_shortfall(&o, rows) > 0);
+    }
+    CHECK(best[1][0] >= 0.012 && best[0][0] < 0.012);
+    fs_optimize_free(&o);
+    /* refused before anything runs, with the line: values without a bound, a value twice, a max not
+       above the constraint's min, a bound of no constraint */
+    const char *bad[][3] = {{"sweep_values = 0.3\n", "4", "sweep_values without sweep"},
+                            {"sweep = light.max\nsweep_values = 0.3, 0.3\n", "5", "0.3 is given twice"},
+                            {"sweep = light.max\nsweep_values = 0.3, 0.1\n", "5", "light.max = 0.1 is not above its min = 0.2"},
+                            {"sweep = light.max\n", "4", "has no values"},
+                            {"sweep = heavy.max\nsweep_values = 0.3\n", "4", "allowed: none|light.max|light.min"}};
+    for (int i = 0; i < 5; i++) {
+        f = fopen(path, "w");
+        fprintf(f, "[optimize]\ncampaign = %s/scenarios/search_single_tall.ini\nobjective = lightest\n"
+                   "%s[param.m]\nkey = mass.phalanx_kg\nmin = 0.004\nmax = 0.03\nstart = 0.006\n"
+                   "[constraint.light]\nof = foot_mass_kg\nmin = 0.2\n", FS_SOURCE_DIR, bad[i][0]);
+        fclose(f);
+        CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+        fs_check_refusal(err.message, path, atoi(bad[i][1]), bad[i][2]);
+    }
+    free(results);
+    free(rows);
+    remove(path);
+}
+
 /* The Pareto front of made-up points (both minimised): the non-dominated set, an equal point kept once. */
 static void pareto_front(void)
 {
@@ -309,6 +378,44 @@ static void refuses_bad_targets(void)
     remove(path);
 }
 
-FS_TEST_MAIN(TEST(loads_and_applies), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary),
-             TEST(relative_target_reads_the_reference), TEST(constraint_makes_infeasible), TEST(pareto_front),
+/* A list's element and a whole list's factor as parameters: chains.splay_deg[1] (counted from 1)
+ * and chains.scale_factor put into the cell's design and compiled; a bad index refused with the
+ * key's line and the valid range. */
+static void list_parameters(void)
+{
+    static fs_optimize o;
+    fs_error err;
+    char path[] = "/tmp/fs_optimize_XXXXXX";
+    REQUIRE(temp_file(path));
+    write_search(path, "search_single_tall.ini", "",
+                 "[param.splay1]\nkey = chains.splay_deg[1]\nmin = 0\nmax = 20\nstart = 8\n"
+                 "[param.toes]\nkey = chains.scale_factor\nmin = 0.8\nmax = 1.2\nstart = 1\n");
+    REQUIRE(fs_optimize_load(path, small, 1, &o, &err) == FS_OK);
+    CHECK(o.nparams == 3 && !strcmp(o.param[1].key, "chains.splay_deg[1]") && !strcmp(o.param[2].key, "chains.scale_factor"));
+    const double x[3] = {1e5, 15, 1.1};
+    REQUIRE(fs_optimize_apply(&o, x, &err) == FS_OK);
+    const fs_scenario *sc = fs_campaign_pair(&o.campaign, 0);
+    CHECK(sc->design.splay_deg[0] == 15 && sc->design.splay_deg[1] == 4 && sc->design.scale_factor == 1.1);
+    /* compiled: chain 1's toe along its plane, turned 15 deg */
+    double dx = sc->geom.chain[0].toe.x - sc->geom.chain[0].mtp.x, dy = sc->geom.chain[0].toe.y - sc->geom.chain[0].mtp.y;
+    CHECK_NEAR(atan2(dy, dx) * 180 / M_PI, 15, 1e-9);
+    fs_optimize_free(&o);
+    /* elements 0 and 6 do not exist; a number key has no elements; the bounds stay within the list's range */
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[0]\nmin = 0\nmax = 9\nstart = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 11, "no such element; chains.splay_deg has 5, give chains.splay_deg[1] to chains.splay_deg[5]");
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[6]\nmin = 0\nmax = 9\nstart = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 11, "no such element");
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = links.l3_m[1]\nmin = 0.01\nmax = 0.05\nstart = 0.04\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 11, "names no element of a list");
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[2]\nmin = 0\nmax = 60\nstart = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "leave chains.splay_deg[2]'s range [-45, 45]") != NULL);
+    remove(path);
+}
+
+FS_TEST_MAIN(TEST(loads_and_applies), TEST(list_parameters), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary),
+             TEST(relative_target_reads_the_reference), TEST(constraint_makes_infeasible), TEST(pareto_front), TEST(sweep_of_a_bound),
              TEST(refuses_bad_targets))

@@ -176,6 +176,49 @@ static void overrides_are_checked_like_files(void)
     }
 }
 
+/* One element of a list key, counted from 1, in a file and by --set, set over the whole list; the
+ * splay and the toes' size as one number each (chains.splay_factor, chains.scale_factor), compiled
+ * into the geometry as the products; a bad index or a product out of the list's range refused. */
+static void list_elements_and_factors(void)
+{
+    static fs_design_def def;
+    static fs_foot_geom geom, plain;
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_design_load(write_file("el.ini", "[chains]\nsplay_deg = 8, 4, 0, -4, -8\nsplay_deg[2] = 0\nscale[5] = 2\n"),
+                           NULL, 0, &def, &geom, &err) == FS_OK);
+    CHECK(def.splay_deg[0] == 8 && def.splay_deg[1] == 0 && def.splay_deg[2] == 0 && def.scale[4] == 2);
+    CHECK(def.scale[0] == 1.25 && def.scale[3] == 1); /* the rest as the list (the default) gives them */
+    const char *set[] = {"chains.splay_deg[5]=-20"};
+    REQUIRE(fs_scenario_load("scenarios/static_load.ini", set, 1, &sc, &err) == FS_OK);
+    CHECK(sc.design.splay_deg[4] == -20 && sc.design.splay_deg[3] == -4);
+    /* a list element is a number of the scenario, with the list's range */
+    const fs_key *k;
+    double *el = fs_scenario_number(&sc, "chains.splay_deg[5]", &k);
+    CHECK(el == &sc.design.splay_deg[4] && k->max == 45);
+    CHECK(!fs_scenario_number(&sc, "chains.splay_deg[6]", NULL) && !fs_scenario_number(&sc, "chains.splay_deg", NULL));
+    /* the factor: the chains' planes turned as by the products (a chain's toe lies along its plane,
+       so its direction from the MTP joint gives the angle) */
+    const char *twice[] = {"chains.splay_factor=2"};
+    REQUIRE(fs_design_load("scenarios/feet/biomimetic.ini", twice, 1, &def, &geom, &err) == FS_OK);
+    CHECK(fs_design_splay_deg(&def, 0) == 16 && fs_design_splay_deg(&def, 4) == -16);
+    double dx = geom.chain[0].toe.x - geom.chain[0].mtp.x, dy = geom.chain[0].toe.y - geom.chain[0].mtp.y;
+    CHECK_NEAR(atan2(dy, dx) * 180 / M_PI, 16, 1e-9);
+    /* scale_factor: every forefoot length times it, so the phalanx (l4) of chain 2 (scale 1) grows 1.5 times */
+    const char *big[] = {"chains.scale_factor=1.5"};
+    REQUIRE(fs_design_load("scenarios/feet/biomimetic.ini", NULL, 0, &def, &plain, &err) == FS_OK);
+    REQUIRE(fs_design_load("scenarios/feet/biomimetic.ini", big, 1, &def, &geom, &err) == FS_OK);
+    fs_vec3 l_big = fs_sub(geom.chain[1].toe, geom.chain[1].mtp), l_plain = fs_sub(plain.chain[1].toe, plain.chain[1].mtp);
+    CHECK_NEAR(sqrt(fs_dot(l_big, l_big)) / sqrt(fs_dot(l_plain, l_plain)), 1.5, 1e-12);
+    refused_design("[chains]\nsplay_deg[0] = 1\n", 2, "splay_deg[0]: no such element; give one of splay_deg[1] to splay_deg[5]");
+    refused_design("[chains]\n\nsplay_deg[6] = 1\n", 3, "no such element");
+    refused_design("[chains]\nsplay_deg[x] = 1\n", 2, "not an element's name");
+    refused_design("[chains]\nsplay_deg[2] = 50\n", 2, "splay_deg[2] = '50' is out of range");
+    refused_design("[links]\nl1_m[1] = 0.02\n", 2, "unknown key 'l1_m[1]'");
+    refused_design("[chains]\nsplay_deg = 30, 4, 0, -4, -8\nsplay_factor = 2\n", 3, "must lie in [-45, 45] deg");
+    refused_design("[chains]\nscale_factor = 4.5\n", 2, "makes chain 1's scale 5.625");
+}
+
 /* Provenance hashes what a file says, not how it is written: a comment, a blank line or other
  * spacing leaves a design's hash as it was, a changed value changes it; a heightmap's image is
  * hashed by its bytes; inputs are recorded relative to the scenario's folder. */
@@ -314,4 +357,4 @@ static void gnuplot_reads_names_back(void)
 
 FS_TEST_MAIN(TEST(setup), TEST(good_files_load), TEST(unknown_names_are_refused), TEST(malformed_values_are_refused), TEST(misread_files_are_refused), TEST(caps_are_refused),
              TEST(out_of_range_values_are_refused), TEST(missing_files_are_refused),
-             TEST(overrides_are_checked_like_files), TEST(provenance_hashes_content), TEST(gnuplot_reads_names_back), TEST(teardown))
+             TEST(overrides_are_checked_like_files), TEST(list_elements_and_factors), TEST(provenance_hashes_content), TEST(gnuplot_reads_names_back), TEST(teardown))

@@ -52,7 +52,7 @@ void fs_chain2d_setup(fs_chain2d *c, const fs_design_def *d, const fs_foot_geom 
                       double gravity, double tilt)
 {
     memset(c, 0, sizeof *c);
-    double psi = d->splay_deg[i] * DEG, s = d->scale[i];
+    double psi = fs_design_splay_deg(d, i) * DEG, s = fs_design_chain_scale(d, i);
     c->f = fs_v3(cos(psi), sin(psi), 0);
     c->lat = fs_v3(-sin(psi), cos(psi), 0);
     double beta[4] = {d->heel_deg * DEG, d->talus_deg * DEG, g->chain[i].metatarsal_deg * DEG, d->toe_deg * DEG};

@@ -246,10 +246,10 @@ static fs_status setup(chain_dyn *m, const fs_design_def *d, const fs_foot_geom 
         return fs_fail(err, FS_BAD_INPUT, "the reference model is for the biomimetic foot only");
     if (chain < 0 || chain >= FS_CHAINS)
         return fs_fail(err, FS_BAD_INPUT, "chain %d does not exist; give 1 to %d", chain + 1, FS_CHAINS);
-    if (d->splay_deg[chain] != 0)
+    if (fs_design_splay_deg(d, chain) != 0)
         return fs_fail(err, FS_BAD_INPUT,
                        "chain %d is splayed by %g deg: the planar reference needs a chain in the heel's plane "
-                       "(chains.splay_deg = 0 for it)", chain + 1, d->splay_deg[chain]);
+                       "(chains.splay_deg = 0 for it)", chain + 1, fs_design_splay_deg(d, chain));
     fs_chain2d_setup(&m->c, d, g, chain, load_N, gravity, tilt);
     m->c.rolling = 0;
     fs_chain_joints J0;

@@ -17,13 +17,14 @@
 #define O(member) offsetof(fs_optimize, member)
 
 typedef struct binder {
-    fs_key keys[4 + 5 * FS_OPTIMIZE_MAX_PARAMS + 2 * FS_OPTIMIZE_MAX_CONSTRAINTS];
+    fs_key keys[6 + 5 * FS_OPTIMIZE_MAX_PARAMS + 3 * FS_OPTIMIZE_MAX_CONSTRAINTS];
     int nkeys;
     char sections[FS_OPTIMIZE_MAX_PARAMS][FS_NAME_MAX];
     char csections[FS_OPTIMIZE_MAX_CONSTRAINTS][FS_NAME_MAX];
     char relative_to[FS_VALUE_MAX];         /* [optimize] relative_to, a foot's name (bound by hand) */
     char relative_where[FS_PATH_MAX + 80];
     char key_choices[16384];
+    char sweep_choices[FS_OPTIMIZE_MAX_CONSTRAINTS * 2 * (FS_NAME_MAX + 6) + 8];
     int key_choice[FS_OPTIMIZE_MAX_PARAMS]; /* bound: the n-th sweepable key */
 } binder;
 
@@ -90,11 +91,52 @@ static void take_relative_to(fs_config *cfg, binder *b)
     }
 }
 
+/* A [param.NAME] key naming one element of a list key ("chains.splay_deg[3]", counted from 1) is no
+ * word of the key's choices: taken here as text (and marked bound), checked against the schemas with
+ * its line. *taken: 1 when it was such a key. */
+static fs_status take_element_key(fs_config *cfg, const char *sec, fs_opt_param *q, int *taken, fs_error *err)
+{
+    *taken = 0;
+    for (int i = 0; i < cfg->count; i++) {
+        fs_entry *e = &cfg->entries[i];
+        if (strcmp(e->section, sec) || strcmp(e->name, "key") || !strchr(e->value, '['))
+            continue;
+        char where[FS_PATH_MAX + 80], base[FS_VALUE_MAX];
+        fs_config_where(cfg, sec, "key", where, sizeof where);
+        const char *text = e->value + strspn(e->value, " \t");
+        snprintf(base, sizeof base, "%.*s", (int)(strchr(text, '[') - text), text);
+        int element;
+        const fs_key *k = fs_scenario_key(text, 0, &element);
+        fs_key_type type = FS_KEY_NUMBER;
+        int count = 0;
+        if (!k) { /* why: a list key's element out of its range, or no list key of that name */
+            char first[FS_VALUE_MAX + 4];
+            snprintf(first, sizeof first, "%s[1]", base);
+            const fs_key *list = fs_scenario_key(first, 0, &element);
+            if (list)
+                type = list->type, count = list->count;
+        }
+        if (!k && type == FS_KEY_LIST)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] key = %s: no such element; %s has %d, give %s[1] to %s[%d] "
+                           "(elements are counted from 1)", where, sec, text, base, count, base, base, count);
+        if (!k)
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] key = %s names no element of a list of a design, robot, "
+                           "scenario or terrain file; give e.g. chains.splay_deg[1], or a number such as "
+                           "chains.splay_factor", where, sec, text);
+        snprintf(q->key, sizeof q->key, "%s", text);
+        q->key[strcspn(q->key, " \t")] = 0;
+        e->used = 1;
+        *taken = 1;
+    }
+    return FS_OK;
+}
+
 /* A fs_optimize to bind into, and where each param's choice index lands (the binder's). */
 typedef struct target {
     fs_optimize o;
     int key_choice[FS_OPTIMIZE_MAX_PARAMS];
     int log[FS_OPTIMIZE_MAX_PARAMS];
+    int sweep_choice;              /* 0 none; 2n + 1: constraint n's max, 2n + 2: its min */
 } target;
 
 #define T(member) offsetof(target, member)
@@ -130,6 +172,18 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
                     "the lower bound, in the quantity's unit");
         k->min = 0, k->max = 1e12;
     }
+    snprintf(b->sweep_choices, sizeof b->sweep_choices, "none");
+    for (int n = 0; n < o->nconstraints; n++) {
+        size_t len = strlen(b->sweep_choices);
+        snprintf(b->sweep_choices + len, sizeof b->sweep_choices - len, "|%s.max|%s.min", o->constraint[n].name,
+                 o->constraint[n].name);
+    }
+    k = add_key(b, "optimize", "sweep", FS_KEY_CHOICE, T(sweep_choice), "none",
+                "a constraint's bound, NAME.max or NAME.min: one search per value of sweep_values, on the same seeds");
+    k->choices = b->sweep_choices;
+    k = add_key(b, "optimize", "sweep_values", FS_KEY_SERIES, T(o.sweep_values), "",
+                "the swept bound's values, comma-separated, in the quantity's unit");
+    k->min = 0, k->max = 1e12, k->count = FS_SERIES_MAX;
     snprintf(b->key_choices, sizeof b->key_choices, "none");
     for (int n = 1; fs_campaign_sweepable(n); n++) {
         char word[2 * FS_NAME_MAX + 2];
@@ -139,8 +193,14 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
     }
     for (int p = 0; p < o->nparams; p++) {
         const char *sec = b->sections[p];
-        k = add_key(b, sec, "key", FS_KEY_CHOICE, T(key_choice[p]), "none", "the number the search varies");
-        k->choices = b->key_choices;
+        int taken;
+        if ((s = take_element_key(cfg, sec, &o->param[p], &taken, err)) != FS_OK)
+            return s;
+        t->key_choice[p] = -1; /* taken: a list's element */
+        if (!taken) {
+            k = add_key(b, sec, "key", FS_KEY_CHOICE, T(key_choice[p]), "none", "the number the search varies");
+            k->choices = b->key_choices;
+        }
         k = add_key(b, sec, "min", FS_KEY_NUMBER, T(o.param[p].min), "0", "its lower bound");
         k->min = -1e12, k->max = 1e12;
         k = add_key(b, sec, "max", FS_KEY_NUMBER, T(o.param[p].max), "0", "its upper bound");
@@ -151,6 +211,46 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
         k->choices = "no|yes";
     }
     return fs_config_bind(cfg, b->keys, b->nkeys, t, err);
+}
+
+/* [optimize] sweep names a constraint's bound and sweep_values gives it distinct values, each on
+ * the right side of the constraint's other bound. */
+static fs_status check_sweep(const fs_config *cfg, const target *t, fs_optimize *o, fs_error *err)
+{
+    char where[FS_PATH_MAX + 80];
+    const fs_series *v = &o->sweep_values;
+    o->sweep_constraint = t->sweep_choice > 0 ? (t->sweep_choice - 1) / 2 : -1;
+    o->sweep_min = t->sweep_choice > 0 && !(t->sweep_choice % 2);
+    if (o->sweep_constraint < 0 && v->n)
+        return fs_fail(err, FS_BAD_INPUT, "%s: sweep_values without sweep; name the bound they are values of, e.g. "
+                       "sweep = NAME.max for a [constraint.NAME]",
+                       fs_config_where(cfg, "optimize", "sweep_values", where, sizeof where));
+    if (o->sweep_constraint < 0)
+        return FS_OK;
+    const fs_opt_constraint *c = &o->constraint[o->sweep_constraint];
+    const char *bound = o->sweep_min ? "min" : "max";
+    if (!v->n)
+        return fs_fail(err, FS_BAD_INPUT, "%s: sweep = %s.%s has no values; give sweep_values = v1, v2, ... (one "
+                       "search each)", fs_config_where(cfg, "optimize", "sweep", where, sizeof where), c->name, bound);
+    fs_config_where(cfg, "optimize", "sweep_values", where, sizeof where);
+    for (int i = 0; i < v->n; i++) {
+        for (int j = 0; j < i; j++)
+            if (v->v[j] == v->v[i])
+                return fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: %g is given twice (values %d and %d); give each "
+                               "value once", where, v->v[i], j + 1, i + 1);
+        double other = o->sweep_min ? c->max : c->min;
+        if (o->sweep_min ? !(v->v[i] < other) : !(v->v[i] > other))
+            return fs_fail(err, FS_BAD_INPUT, "%s: sweep_values: %s.%s = %g is not %s its %s = %g; give values %s it",
+                           where, c->name, bound, v->v[i], o->sweep_min ? "below" : "above",
+                           o->sweep_min ? "max" : "min", other, o->sweep_min ? "below" : "above");
+    }
+    return FS_OK;
+}
+
+void fs_optimize_sweep_to(fs_optimize *o, int i)
+{
+    fs_opt_constraint *c = &o->constraint[o->sweep_constraint];
+    *(o->sweep_min ? &c->min : &c->max) = o->sweep_values.v[i];
 }
 
 /* Every parameter names a key, with min < max, the start within, min > 0 for a log one. */
@@ -167,10 +267,12 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
         fs_opt_param *q = &o->param[p];
         snprintf(sec, sizeof sec, "param.%s", q->name);
         const fs_key *k = t->key_choice[p] > 0 ? fs_campaign_sweepable(t->key_choice[p]) : NULL;
-        if (!k)
+        if (!k && t->key_choice[p] != -1)
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] needs key = a number of a design, robot, scenario or terrain "
-                           "file, e.g. springs.k_d1_N_per_m", cfg->path, sec);
-        snprintf(q->key, sizeof q->key, "%s.%s", k->section, k->name);
+                           "file, e.g. springs.k_d1_N_per_m, or a list's element, e.g. chains.splay_deg[1]",
+                           cfg->path, sec);
+        if (k)
+            snprintf(q->key, sizeof q->key, "%s.%s", k->section, k->name);
         q->log = t->log[p];
         if (!(q->min < q->max) || q->start < q->min || q->start > q->max)
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] min = %g, max = %g, start = %g: give min < max and the start "
@@ -187,19 +289,21 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] names no quantity; give of = foot_mass_kg or of = ankle_drop_m",
                            fs_config_where(cfg, csec, fs_config_has(cfg, csec, "max") ? "max" : "min", where, sizeof where),
                            csec);
-        int has_max = fs_config_has(cfg, csec, "max"), has_min = fs_config_has(cfg, csec, "min");
+        int swept = t->sweep_choice > 0 && (t->sweep_choice - 1) / 2 == n;
+        int has_max = fs_config_has(cfg, csec, "max") || (swept && t->sweep_choice % 2),
+            has_min = fs_config_has(cfg, csec, "min") || (swept && !(t->sweep_choice % 2));
         if (!has_max && !has_min)
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] has no bound; give max = the largest value allowed and/or "
                            "min = the smallest (%s)", fs_config_where(cfg, csec, "of", where, sizeof where), csec,
                            o->constraint[n].of == FS_QUANTITY_FOOT_MASS_KG ? "kg" : "m");
         if (!has_max)
             o->constraint[n].max = HUGE_VAL;
-        if (!(o->constraint[n].min < o->constraint[n].max))
+        if (!swept && !(o->constraint[n].min < o->constraint[n].max))
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] min = %g is not below max = %g; give min < max",
                            fs_config_where(cfg, csec, "min", where, sizeof where), csec, o->constraint[n].min,
                            o->constraint[n].max);
     }
-    return FS_OK;
+    return check_sweep(cfg, t, o, err);
 }
 
 /* relative_to, taken as text, is one of the loaded campaign's feet, and some other foot is left. */

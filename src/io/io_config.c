@@ -7,6 +7,7 @@
 #include "footsim/base/fs_hash.h"
 
 #include <ini.h>
+#include <ctype.h>
 #include <errno.h>
 #include <float.h>
 #include <limits.h>
@@ -410,6 +411,20 @@ int fs_list_split(char *list, char **item, int max, int *empty_at)
     }
 }
 
+int fs_list_element(const char *text, int count)
+{
+    if (text[0] != '[' || !isdigit((unsigned char)text[1]))
+        return -1;
+    long i = 0;
+    const char *p = text + 1;
+    for (; isdigit((unsigned char)*p); p++)
+        if ((i = 10 * i + (*p - '0')) > 1000000)
+            return -2;
+    if (p[0] != ']' || p[1])
+        return -1;
+    return i >= 1 && i <= count ? (int)i - 1 : -2;
+}
+
 static void describe_range(const fs_key *k, char *buf, size_t size)
 {
     snprintf(buf, size, "%s%g, %g]%s%s", (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max,
@@ -666,6 +681,34 @@ fs_status fs_config_check(const fs_key *schema, int nkeys, const void *def, cons
     return FS_OK;
 }
 
+/* The elements of list key k given one by one ("name[i] = v", fs_list_element), each set after the
+ * whole list by the key's own rules; a bad index refused with its line and the valid range. */
+static fs_status bind_elements(fs_config *cfg, const fs_key *k, void *def, fs_error *err)
+{
+    size_t len = strlen(k->name);
+    for (int i = 0; i < cfg->count; i++) {
+        fs_entry *e = &cfg->entries[i];
+        if (strcmp(e->section, k->section) || strncmp(e->name, k->name, len) || e->name[len] != '[')
+            continue;
+        char where[FS_PATH_MAX + 80];
+        where_entry(cfg, e, where, sizeof where);
+        int index = fs_list_element(e->name + len, k->count);
+        if (index < 0)
+            return fs_fail(err, FS_BAD_INPUT, "%s: %s: %s; give one of %s[1] to %s[%d] (elements are counted from 1)",
+                           where, e->name, index == -2 ? "no such element" : "not an element's name", k->name,
+                           k->name, k->count);
+        fs_key one = *k; /* the element: a number with the list's range */
+        one.name = e->name;
+        one.type = FS_KEY_NUMBER;
+        one.offset = k->offset + (size_t)index * sizeof(double);
+        e->used = 1;
+        fs_status s = bind_value(&one, e->value, where, "", 0, def, err);
+        if (s != FS_OK)
+            return s;
+    }
+    return FS_OK;
+}
+
 fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *def, fs_error *err)
 {
     char dir[FS_PATH_MAX], where[FS_PATH_MAX + 80];
@@ -687,6 +730,8 @@ fs_status fs_config_bind(fs_config *cfg, const fs_key *schema, int nkeys, void *
             snprintf(where, sizeof where, "footsim's default for [%s] %s", k->section, k->name);
         }
         fs_status s = bind_value(k, value, where, dir, e && e->line == 0, def, err);
+        if (s == FS_OK && k->type == FS_KEY_LIST)
+            s = bind_elements(cfg, k, def, err);
         if (s != FS_OK)
             return s;
     }

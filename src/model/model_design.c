@@ -66,6 +66,10 @@ const fs_key fs_design_keys[] = {
     LIST("chains", "lateral_m", lateral_m, -1, 1, "m", "0.024, 0.012, 0, -0.012, -0.024", "y of each midfoot joint, big toe first"),
     LIST("chains", "splay_deg", splay_deg, -45, 45, "deg", "8, 4, 0, -4, -8", "each chain's plane turned about z"),
     LIST("chains", "scale", scale, 0.2, 5, "", "1.25, 1, 1, 1, 1", "forefoot size factor per chain (the big toe is larger)"),
+    NUM("chains", "splay_factor", splay_factor, 0, 5, 0, "", "1",
+        "multiplies every chain's splay_deg (the splay as one number; each product within [-45, 45] deg)"),
+    NUM("chains", "scale_factor", scale_factor, 0, 5, POS, "",  "1",
+        "multiplies every chain's scale (the toes' size as one number; each product within [0.2, 5])"),
     NUM("mass", "heel_kg", heel_kg, 0, 100, POS, "kg", "0.05", "heel body mass"),
     NUM("mass", "talus_kg", talus_kg, 0, 100, POS, "kg", "0.08", "talus (ankle) body mass"),
     NUM("mass", "metatarsal_kg", metatarsal_kg, 0, 100, POS, "kg", "0.02", "each metatarsal (times the chain's scale)"),
@@ -250,7 +254,7 @@ static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, in
                                 fs_foot_geom *g, fs_error *err)
 {
     char where[FS_PATH_MAX + 80];
-    double s = d->scale[i], psi = d->splay_deg[i] * DEG;
+    double s = fs_design_chain_scale(d, i), psi = fs_design_splay_deg(d, i) * DEG;
     double a2 = d->talus_deg * DEG, a4 = d->toe_deg * DEG;
     fs_vec3 f = fs_v3(cos(psi), sin(psi), 0);
     fs_vec3 axis = fs_v3(sin(psi), -cos(psi), 0); /* positive rotation turns the link up */
@@ -351,9 +355,34 @@ static void flat_geometry(const fs_design_def *d, const fs_foot_geom *bio, fs_fo
     g->total_mass_kg = bio->total_mass_kg;
 }
 
+double fs_design_splay_deg(const fs_design_def *d, int i) { return d->splay_deg[i] * d->splay_factor; }
+double fs_design_chain_scale(const fs_design_def *d, int i) { return d->scale[i] * d->scale_factor; }
+
+/* Each chain's splay and scale times its factor stays within the list's own range. */
+static fs_status check_factors(const fs_design_def *d, const fs_config *cfg, fs_error *err)
+{
+    char where[FS_PATH_MAX + 80];
+    for (int i = 0; i < FS_CHAINS; i++) {
+        double psi = fs_design_splay_deg(d, i), s = fs_design_chain_scale(d, i);
+        if (fabs(psi) > 45)
+            return fs_fail(err, FS_BAD_INPUT, "%s: splay_factor = %g turns chain %d by %g deg (splay_deg %g); each "
+                           "chain's splay times the factor must lie in [-45, 45] deg: give a factor of at most %g",
+                           fs_config_where(cfg, "chains", "splay_factor", where, sizeof where), d->splay_factor, i + 1,
+                           psi, d->splay_deg[i], 45 / fabs(d->splay_deg[i]));
+        if (s < 0.2 || s > 5)
+            return fs_fail(err, FS_BAD_INPUT, "%s: scale_factor = %g makes chain %d's scale %g (scale %g); each "
+                           "chain's scale times the factor must lie in [0.2, 5]",
+                           fs_config_where(cfg, "chains", "scale_factor", where, sizeof where), d->scale_factor, i + 1,
+                           s, d->scale[i]);
+    }
+    return FS_OK;
+}
+
 fs_status fs_design_geometry(const fs_design_def *d, const fs_config *cfg, fs_foot_geom *geom, fs_error *err)
 {
     fs_status law_status = check_laws(d, cfg, err);
+    if (law_status == FS_OK)
+        law_status = check_factors(d, cfg, err);
     if (law_status != FS_OK)
         return law_status;
     fs_foot_geom g;
@@ -429,7 +458,7 @@ fs_status fs_design_pinned_chain(const fs_design_def *d, const fs_foot_geom *foo
 {
     if (foot->kind != FS_FOOT_BIOMIMETIC)
         return fs_fail(err, FS_BAD_INPUT, "a pinned chain needs the biomimetic foot (foot.kind = biomimetic)");
-    if (chain < 0 || chain >= FS_CHAINS || d->splay_deg[chain] != 0)
+    if (chain < 0 || chain >= FS_CHAINS || fs_design_splay_deg(d, chain) != 0)
         return fs_fail(err, FS_BAD_INPUT, "chain %d: give an unsplayed chain (1 to %d with chains.splay_deg = 0)",
                        chain + 1, FS_CHAINS);
     memset(out, 0, sizeof *out);

@@ -437,26 +437,48 @@ fs_status fs_scenario_for_design(const char *design_path, const char *const *ove
     return fs_design_load(design_path, overrides, noverrides, &sc->design, &sc->geom, err);
 }
 
-/* The field of sc's definitions that the number key "section.key" sets (FS_KEY_NUMBER, or also
- * FS_KEY_INTEGER when integers), with its schema entry; NULL when no schema has it. */
+const fs_key *fs_scenario_key(const char *name, int integers, int *element)
+{
+    const fs_key *schema[4] = {fs_scenario_keys, fs_design_keys, fs_robot_keys, fs_terrain_keys};
+    const int nkeys[4] = {fs_scenario_nkeys, fs_design_nkeys, fs_robot_nkeys, fs_terrain_nkeys};
+    const char *dot = strchr(name, '.');
+    *element = -1;
+    if (!dot)
+        return NULL;
+    size_t len = (size_t)(dot - name), nlen = strlen(dot + 1);
+    const char *bracket = strchr(dot + 1, '[');
+    if (bracket)
+        nlen = (size_t)(bracket - dot - 1);
+    for (int s = 0; s < 4; s++)
+        for (int i = 0; i < nkeys[s]; i++) {
+            const fs_key *k = &schema[s][i];
+            if (strlen(k->section) != len || strncmp(k->section, name, len) || strlen(k->name) != nlen ||
+                strncmp(k->name, dot + 1, nlen))
+                continue;
+            if (bracket && k->type == FS_KEY_LIST) {
+                *element = fs_list_element(bracket, k->count);
+                return *element >= 0 ? k : NULL;
+            }
+            if (!bracket && (k->type == FS_KEY_NUMBER || (integers && k->type == FS_KEY_INTEGER)))
+                return k;
+        }
+    return NULL;
+}
+
+/* The field of sc's definitions that the number key "section.key" (or list element
+ * "section.key[i]") sets, with its schema entry; NULL when no schema has it. */
 static void *number_field(fs_scenario *sc, const char *name, int integers, const fs_key **key)
 {
     const fs_key *schema[4] = {fs_scenario_keys, fs_design_keys, fs_robot_keys, fs_terrain_keys};
     const int nkeys[4] = {fs_scenario_nkeys, fs_design_nkeys, fs_robot_nkeys, fs_terrain_nkeys};
     char *def[4] = {(char *)&sc->def, (char *)&sc->design, (char *)&sc->def.robot, (char *)&sc->terrain.def};
-    const char *dot = strchr(name, '.');
-    if (!dot)
-        return NULL;
-    size_t len = (size_t)(dot - name);
-    for (int s = 0; s < 4; s++)
-        for (int i = 0; i < nkeys[s]; i++) {
-            const fs_key *k = &schema[s][i];
-            if ((k->type == FS_KEY_NUMBER || (integers && k->type == FS_KEY_INTEGER)) && strlen(k->section) == len &&
-                !strncmp(k->section, name, len) && !strcmp(k->name, dot + 1)) {
-                if (key)
-                    *key = k;
-                return def[s] + k->offset;
-            }
+    int element;
+    const fs_key *k = fs_scenario_key(name, integers, &element);
+    for (int s = 0; k && s < 4; s++)
+        if (k >= schema[s] && k < schema[s] + nkeys[s]) {
+            if (key)
+                *key = k;
+            return def[s] + k->offset + (element >= 0 ? (size_t)element * sizeof(double) : 0);
         }
     return NULL;
 }
@@ -473,7 +495,7 @@ fs_status fs_scenario_set(fs_scenario *sc, const char *name, double value, fs_er
     if (!field)
         return fs_fail(err, FS_BAD_INPUT, "%s: %s is not a number of a scenario, design, robot or terrain file", sc->path,
                        name);
-    if (k->type == FS_KEY_NUMBER) {
+    if (k->type != FS_KEY_INTEGER) { /* a number, or a list's element */
         *(double *)field = value;
         if (field == &sc->def.log_interval_s) /* set, as by --set: it no longer follows the step */
             sc->log_interval_default_s = 0;

@@ -9,7 +9,8 @@
  *   campaign = search_single_tall.ini   ; the trials and the targets
  *   max_evaluations = 40
  *   [param.k_d1]
- *   key = springs.k_d1_N_per_m          ; any number of a design, robot, scenario or terrain file
+ *   key = springs.k_d1_N_per_m          ; any number of a design, robot, scenario or terrain file,
+ *                                       ; or one element of a list, counted from 1: chains.splay_deg[1]
  *   min = 12000                         ; the search stays within [min, max]
  *   max = 1.2e6
  *   start = 120000
@@ -42,7 +43,16 @@
  *
  * A constraint is static (the candidate's compiled design alone): checked after a candidate is put
  * into the cells and before any of its trials run; a candidate that breaks one runs no trial and is
- * penalised above any candidate that runs (more than every target missed entirely). */
+ * penalised above any candidate that runs (more than every target missed entirely).
+ *
+ * The trade-off between the objective and a constraint: a sweep of one bound, one search per value
+ * on the same common seeds (`footsim optimize` writes each search's files in a folder of its own,
+ * and front.csv of their bests):
+ *
+ *   [optimize]
+ *   sweep = light.max               ; a constraint's bound: NAME.max or NAME.min
+ *   sweep_values = 0.26, 0.28, 0.3  ; its values, distinct, each on the right side of the other bound
+ */
 #ifndef FS_OPTIMIZE_H
 #define FS_OPTIMIZE_H
 
@@ -88,6 +98,9 @@ typedef struct fs_optimize {
     int reference;                 /* relative_to: the index of the campaign's reference foot; -1 none */
     int nconstraints;
     fs_opt_constraint constraint[FS_OPTIMIZE_MAX_CONSTRAINTS];
+    int sweep_constraint;          /* [optimize] sweep: the constraint whose bound is swept; -1 none */
+    int sweep_min;                 /* 1: its min is swept; 0: its max */
+    fs_series sweep_values;        /* the bound's values: one search each, in the file's order */
     fs_campaign campaign;          /* loaded: its cells' scenarios are what a candidate edits */
     double *file_x;                /* each cell's parameters as its files give them, at every end of a
                                       band: [(cell * nends + end) * nparams + p]
@@ -100,6 +113,9 @@ typedef struct fs_optimize {
  * cell's scenario before anything runs. fs_optimize_free releases it. */
 fs_status fs_optimize_load(const char *path, const char *const *sets, int nsets, fs_optimize *o, fs_error *err);
 void fs_optimize_free(fs_optimize *o);
+
+/* Sets the swept bound (o->sweep_constraint's max or min) to o->sweep_values.v[i]. */
+void fs_optimize_sweep_to(fs_optimize *o, int i);
 
 /* Puts candidate x (nparams values) into every cell's scenario but the reference foot's, and
  * compiles them. x NULL: each cell's values as its files give them (o->file_x). */

@@ -84,6 +84,14 @@ const char *fs_number_problem(fs_number n);
  * sweep values) is read by it. */
 int fs_list_split(char *list, char **item, int max, int *empty_at);
 
+/* One element of a list key (FS_KEY_LIST) is named by the key's name and its place in brackets,
+ * counted from 1: `splay_deg[3] = 0` in a file, `--set chains.splay_deg[3]=0`. It is set after the
+ * whole list (the file's or the default), read by the key's own rules (a number in its range).
+ * fs_list_element reads text "[i]" (nothing before or after it): i - 1, the element's 0-based index,
+ * when i is a whole number from 1 to count; -1 when text is not of that form; -2 for a whole number
+ * outside 1..count (0 included: elements are counted from 1). */
+int fs_list_element(const char *text, int count);
+
 /* Reads path into cfg. Refuses, with file:line and the real reason: a missing, unreadable or
  * not regular file, one over FS_CONFIG_MAX_BYTES or FS_CONFIG_MAX_KEYS keys, a NUL byte, a
  * carriage return that does not end a line, text after a section's ']', a section without keys,

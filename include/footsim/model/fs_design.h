@@ -56,6 +56,8 @@ typedef struct fs_design_def {
     double lateral_m[FS_CHAINS];       /* y of each midfoot joint, chain 1 (big toe) first */
     double splay_deg[FS_CHAINS];       /* chain plane turned about z */
     double scale[FS_CHAINS];           /* forefoot size factor (lengths, anchors, radii, mass) */
+    double splay_factor;               /* multiplies every splay_deg (one number for a search) */
+    double scale_factor;               /* multiplies every scale */
     double heel_kg, talus_kg, metatarsal_kg, phalanx_kg;
     double link_width_m;               /* square cross-section of the links, for their inertia */
     double heel_radius_m, ball_radius_m, toe_radius_m; /* contact spheres */
@@ -147,6 +149,12 @@ fs_status fs_design_load(const char *path, const char *const *overrides, int nov
 
 /* The defaults, as fs_design_load would give for an empty file. */
 void fs_design_defaults(fs_design_def *def);
+
+/* Chain i's splay angle (deg) and forefoot size factor as the geometry, the stiffness model and the
+ * planar statics use them: chains.splay_deg[i] times chains.splay_factor, chains.scale[i] times
+ * chains.scale_factor (fs_design_geometry refuses a product outside the list's range). */
+double fs_design_splay_deg(const fs_design_def *d, int i);
+double fs_design_chain_scale(const fs_design_def *d, int i);
 
 /* Builds the geometry of a def; cfg (may be NULL) only locates keys in messages. Refuses a
  * def whose toe cannot reach the ground or whose ball would sit below it. */

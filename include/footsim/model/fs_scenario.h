@@ -132,10 +132,17 @@ fs_status fs_scenario_copy(fs_scenario *dst, const fs_scenario *src, fs_error *e
  * terrain, heightmap) need fs_scenario_load. */
 fs_status fs_scenario_compile(fs_scenario *sc, fs_error *err);
 
-/* The number a key "section.key" of the scenario, its design, robot or terrain sets, as a typed
- * field of sc's definitions: for code that varies a model (a search, a sweep) by editing its
- * definitions and compiling (fs_scenario_compile). NULL when no schema has that key as a number;
- * *key (may be NULL) gets its schema entry, for its range and unit. */
+/* The schema entry of the number "section.key" of a scenario, design, robot or terrain file (also
+ * of an integer key when integers), or of one element of a list key, "section.key[i]" with i from 1
+ * (fs_list_element): then *element is its 0-based index, else -1. NULL when no schema has it (for
+ * a list key named with a bad index, *element is -2). */
+const fs_key *fs_scenario_key(const char *name, int integers, int *element);
+
+/* The number a key "section.key" of the scenario, its design, robot or terrain sets, or one element
+ * of a list key "section.key[i]" (fs_scenario_key), as a typed field of sc's definitions: for code
+ * that varies a model (a search, a sweep) by editing its definitions and compiling
+ * (fs_scenario_compile). NULL when no schema has that key as a number; *key (may be NULL) gets its
+ * schema entry, for its range (an element's) and unit. */
 double *fs_scenario_number(fs_scenario *sc, const char *name, const fs_key **key);
 
 /* Sets the number or integer key "section.key" of sc's definitions to value, as a sweep does
