@@ -33,7 +33,9 @@ $tmp/run/trajectory.csv $tmp/trial/trajectory.csv $tmp/opt/evaluations.csv:objec
 # timings and results/equivalence* are older: see issue 32's report; render.csv is tools/bench-render.sh's)
 committed="results/landing/trials.csv:rest_ankle_drop_m:steps results/landing/summary.csv:median_steps
 results/roughness/trials.csv:steps results/roughness/summary.csv results/envelope/trials.csv:steps
-results/envelope/summary.csv results/bench/render.csv:fps results/bench/own_code_before_after.csv:wall_s"
+results/envelope/summary.csv results/envelope_best/trials.csv:steps results/envelope_best/summary.csv
+results/envelope_best_drop/trials.csv:steps results/envelope_best_drop/summary.csv
+results/bench/render.csv:fps results/bench/own_code_before_after.csv:wall_s"
 for r in $readers; do
     # shellcheck disable=SC2086
     "$py" "$checker" "$r" $written $committed >"$tmp/check.out" 2>&1

@@ -150,7 +150,15 @@ done
 check_that "bars: 960x540 (got $(png_size "$tmp/camp/success.png"))" [ "$(png_size "$tmp/camp/success.png")" = 960x540 ]
 check_that "bars: a rate of zero drawn under the zero line" grep -q '== 0 ? -0.025' "$tmp/camp/chart.gp"
 check_that "bars: every cell's rate in the data" [ "$(grep -c '^"' "$tmp/camp/chart.dat")" -eq 2 ]
-check_that "heat map: one panel, 560x440" [ "$(png_size "$tmp/heat/success.png")" = 560x440 ]
+# a heat-map panel: 560x480, the map over a legend of the laws (issue 34 item 5)
+check_that "heat map: one panel, 560x480 (got $(png_size "$tmp/heat/success.png"))" [ "$(png_size "$tmp/heat/success.png")" = 560x480 ]
+# both laws' lines drawn against the height (columns 9 and 11 of chart.dat), each keyed
+check_that "heat map: the static law's critical height drawn and keyed" \
+    grep -q 'using 1:9 with lines lw 2 lc' "$tmp/heat/chart.gp" && grep -q "title 'its critical height K/(m g)'" "$tmp/heat/chart.gp"
+check_that "heat map: the drop law's highest centre of mass drawn dashed and keyed" \
+    grep -q 'using 1:11 with lines lw 2 dt 2' "$tmp/heat/chart.gp" && grep -q "title 'its highest centre of mass'" "$tmp/heat/chart.gp"
+check_that "heat map: the drop law's column in the data (11 fields a cell)" \
+    [ "$(grep -v '^#' "$tmp/heat/chart.dat" | awk 'NF { print NF }' | sort -u)" = 11 ]
 # issue 32 item 4: bars grouped by robot, each foot in one colour whatever the robot, the law marked
 mkdir -p "$tmp/grouped"
 law() { printf '{"foot": "%s", "terrain": "flat", "robot": "%s", "trials": 4, "landed": 2, "success_rate": 0.5, "ci_low": 0.15, "ci_high": 0.85, "law_prediction": "%s"}' "$1" "$2" "$3"; }

@@ -808,35 +808,45 @@ static void heat_map_script(FILE *f, const fs_campaign *c)
     double ex[2], ey[2], xr[2], yr[2];
     cell_edges(c, 0, 0, ex), cell_edges(c, 0, c->nvalues[0] - 1, xr);
     cell_edges(c, 1, 0, ey), cell_edges(c, 1, c->nvalues[1] - 1, yr);
+    /* each panel 560 by 480 px: the heat map, and under its axis label a legend of the laws' marks
+     * and lines (three rows at 9 pt, held by a bottom margin of 7 character heights) */
     fprintf(f, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\nset output out\n"
-               "set multiplot layout %d,%d title 'Campaign ' . campaign . ': success rate (%d seeds per point); law: "
-               "o stands, x topples%s; drop law: dot stands%s'\n"
+               "set multiplot layout %d,%d title 'Campaign ' . campaign . ': success rate (%d seeds per point) and "
+               "the laws'\n"
                "set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')\nset cbrange [0:1]\n"
                "set cblabel 'success rate'\nset xlabel key1\nset ylabel key2\n%s%s"
                "set xrange [%.17g:%.17g]\nset yrange [%.17g:%.17g]\n"
-               "set key off\nset style fill solid 1.0 noborder\n",
-            560 * cols, 440 * rows, rows, cols, c->seeds, hk >= 0 ? "; line: the critical height K/(m g)" : "",
-            hk >= 0 ? ", dashed: its highest centre of mass" : "",
-            log_axis(c, 0) ? "set logscale x\n" : "", log_axis(c, 1) ? "set logscale y\n" : "", fmin(ex[0], xr[1]),
-            fmax(ex[0], xr[1]), fmin(ey[0], yr[1]), fmax(ey[0], yr[1]));
+               "set bmargin 7\nset key at graph 0.5, graph -0.19 center top horizontal maxrows 3 reverse Left "
+               "samplen 2 width 1 font 'sans,9'\nset style fill solid 1.0 noborder\n",
+            560 * cols, 480 * rows, rows, cols, c->seeds, log_axis(c, 0) ? "set logscale x\n" : "",
+            log_axis(c, 1) ? "set logscale y\n" : "", fmin(ex[0], xr[1]), fmax(ex[0], xr[1]), fmin(ey[0], yr[1]),
+            fmax(ey[0], yr[1]));
     for (int k = 0; k < n; k++) {
-        fprintf(f, "set title series%d\nplot 'chart.dat' index %d using 1:2:3:4:5:6:7 with boxxyerror lc palette, \\\n"
-                   "     '' index %d using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black', \\\n"
-                   "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black', \\\n"
-                   "     '' index %d using 1:($10 == 1 ? $2 : 1/0) with points pt 7 ps 0.5 lc rgb 'black'",
+        fprintf(f, "set title series%d\nplot 'chart.dat' index %d using 1:2:3:4:5:6:7 with boxxyerror lc palette "
+                   "notitle, \\\n"
+                   "     '' index %d using 1:($8 == 1 ? $2 : 1/0) with points pt 6 ps 1.2 lc rgb 'black' notitle, \\\n"
+                   "     '' index %d using 1:($8 == 0 ? $2 : 1/0) with points pt 2 ps 1.2 lc rgb 'black' notitle, \\\n"
+                   "     '' index %d using 1:($10 == 1 ? $2 : 1/0) with points pt 7 ps 0.5 lc rgb 'black' notitle",
                 k + 1, k, k, k, k);
         /* the critical height against the other key: one point per value of it (a row of the block
          * each, picked with every, so that the line is not broken by skipped rows), clipped by the
          * axes' ranges, which the data set */
         if (hk == 1)
-            fprintf(f, ", \\\n     '' index %d every %d using 1:9 with lines lw 2 lc rgb 'black', \\\n"
-                       "     '' index %d every %d using 1:11 with lines lw 2 dt 2 lc rgb 'black'", k, c->nvalues[1], k,
-                    c->nvalues[1]);
+            fprintf(f, ", \\\n     '' index %d every %d using 1:9 with lines lw 2 lc rgb 'black' notitle, \\\n"
+                       "     '' index %d every %d using 1:11 with lines lw 2 dt 2 lc rgb 'black' notitle", k,
+                    c->nvalues[1], k, c->nvalues[1]);
         else if (hk == 0)
-            fprintf(f, ", \\\n     '' index %d every ::0::%d using 9:2 with lines lw 2 lc rgb 'black', \\\n"
-                       "     '' index %d every ::0::%d using 11:2 with lines lw 2 dt 2 lc rgb 'black'", k,
+            fprintf(f, ", \\\n     '' index %d every ::0::%d using 9:2 with lines lw 2 lc rgb 'black' notitle, \\\n"
+                       "     '' index %d every ::0::%d using 11:2 with lines lw 2 dt 2 lc rgb 'black' notitle", k,
                     c->nvalues[1] - 1, k, c->nvalues[1] - 1);
-        fputc('\n', f);
+        /* the legend: the static law's marks and line, then the drop law's (the lines only where a
+         * key is the height) */
+        fprintf(f, ", \\\n     keyentry with points pt 6 ps 1.2 lc rgb 'black' title 'static law: stands', \\\n"
+                   "     keyentry with points pt 2 ps 1.2 lc rgb 'black' title 'static law: topples'%s, \\\n"
+                   "     keyentry with points pt 7 ps 0.5 lc rgb 'black' title 'drop law: stands'%s\n",
+                hk >= 0 ? ", \\\n     keyentry with lines lw 2 lc rgb 'black' title 'its critical height K/(m g)'" : "",
+                hk >= 0 ? ", \\\n     keyentry with lines lw 2 dt 2 lc rgb 'black' title 'its highest centre of mass'"
+                        : "");
     }
     fputs("unset multiplot\n", f);
 }
