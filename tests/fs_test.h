@@ -74,7 +74,23 @@ static inline int fs_test_named(const char *name, int argc, char **argv)
     return 0;
 }
 
-/* `test_x NAME...` runs only the tests whose name contains one of the NAMEs. */
+/* How many of the names given match no test (each said): a case renamed fails the run that names it. */
+static inline int fs_test_unmatched(const fs_test_case *cases, int n, int argc, char **argv)
+{
+    int unmatched = 0;
+    for (int a = 1; a < argc; a++) {
+        int found = 0;
+        for (int i = 0; i < n; i++)
+            found |= strstr(cases[i].name, argv[a]) != NULL;
+        if (!found) {
+            printf("FAIL no test's name contains '%s'\n", argv[a]);
+            unmatched++;
+        }
+    }
+    return unmatched;
+}
+
+/* `test_x NAME...` runs only the tests whose name contains one of the NAMEs (each must name one). */
 #define FS_TEST_MAIN(...)                                                                    \
     int main(int argc, char **argv)                                                          \
     {                                                                                        \
@@ -91,6 +107,7 @@ static inline int fs_test_named(const char *name, int argc, char **argv)
             ok ? passed++ : failed++;                                                        \
         }                                                                                    \
         fs_ode_close();                                                                      \
+        failed += fs_test_unmatched(cases, n, argc, argv);                                   \
         printf("%d passed, %d failed\n", passed, failed);                                    \
         return failed ? 1 : 0;                                                               \
     }
