@@ -137,8 +137,9 @@ same_as_ref "$tmp/bad" "resumed after a damaged record"
 
 # ---- issue 33 -------------------------------------------------------------------------------
 # A whole journal (every trial recorded, killed before the results were written) cut at every
-# record boundary, one byte either side of it and in the middle of each record, then resumed: an
-# uninterrupted run's bytes every time.
+# record boundary, in the middle of each record and one byte either side of one boundary (the same
+# torn-record path as a cut mid-record; test_campaign_journal cuts the library's reader at every
+# byte), then resumed: an uninterrupted run's bytes every time.
 FOOTSIM_TEST_SIGNAL_AFTER="6 9" camp -j 2 --out "$tmp/all" >/dev/null 2>&1
 full="$tmp/all.journal/journal"
 check_that "a journal of all 6 trials" [ "$(records "$full")" -eq 6 ]
@@ -146,9 +147,12 @@ rm -rf "$tmp"/all.partial.* "$tmp/.all.footsim-lock" # what the kill left beside
 head_bytes=$(grep -v '^[0-9]' "$full" | wc -c)
 offsets=""
 at=$head_bytes
+k=0
 for len in $(grep '^[0-9]' "$full" | awk '{ print length($0) + 1 }') ""; do
-    offsets="$offsets $((at - 1)) $at $((at + 1))"
+    offsets="$offsets $at"
+    [ $k -eq 2 ] && offsets="$offsets $((at - 1)) $((at + 1))"
     [ -n "$len" ] && offsets="$offsets $((at + len / 2))" && at=$((at + len))
+    k=$((k + 1))
 done
 size=$(wc -c <"$full")
 bad_cuts=""
@@ -163,7 +167,7 @@ for cut in $offsets; do
     [ ! -e "$tmp/cut$n.journal" ] || bad_cuts="$bad_cuts $cut(journal left)"
     rm -rf "$tmp/cut$n"
 done
-check_that "cut at $n offsets (boundaries, +-1 byte, mid-record) and resumed: an uninterrupted run's bytes each time (wrong at:$bad_cuts)" [ -z "$bad_cuts" ] && [ "$n" -ge 25 ]
+check_that "cut at $n offsets (boundaries, mid-record, +-1 byte) and resumed: an uninterrupted run's bytes each time (wrong at:$bad_cuts)" [ -z "$bad_cuts" ] && [ "$n" -eq 15 ]
 mkdir "$tmp/head.journal" && head -c "$((head_bytes - 1))" "$full" >"$tmp/head.journal/journal"
 camp -j 2 --out "$tmp/head" >/dev/null 2>"$tmp/head.err"
 check_that "a journal cut inside its header: refused (exit 2)" [ $? -eq 2 ]

@@ -180,6 +180,9 @@ check_that "grouped bars: the law marked (o stands, x topples) and keyed" \
 # ---- names reach gnuplot as data, never as code (issue 33, item 4) --------------------------------------
 # campaign files named with a quote, a gnuplot command and a newline: each drawn, nothing run
 . "$(dirname "$0")/small_campaign.sh"
+# the flat foot alone: nothing here reads the biomimetic foot's results, and a campaign with it works
+# out the arch's fold moment for the drop law (about 3 s of CPU, several times that under the sanitizers)
+sed -i '/^\[foot.bio\]/,/^$/d' "$tmp/small.ini"
 mkdir -p "$tmp/names"
 nl='
 '

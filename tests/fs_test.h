@@ -65,7 +65,32 @@ static inline void fs_test_run_one(void (*fn)(void))
 
 typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case;
 
-/* `test_x NAME` runs only the tests whose name contains NAME. */
+/* Whether a test's name contains one of the names given (argv[1 ..]). */
+static inline int fs_test_named(const char *name, int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (strstr(name, argv[i]))
+            return 1;
+    return 0;
+}
+
+/* How many of the names given match no test (each said): a case renamed fails the run that names it. */
+static inline int fs_test_unmatched(const fs_test_case *cases, int n, int argc, char **argv)
+{
+    int unmatched = 0;
+    for (int a = 1; a < argc; a++) {
+        int found = 0;
+        for (int i = 0; i < n; i++)
+            found |= strstr(cases[i].name, argv[a]) != NULL;
+        if (!found) {
+            printf("FAIL no test's name contains '%s'\n", argv[a]);
+            unmatched++;
+        }
+    }
+    return unmatched;
+}
+
+/* `test_x NAME...` runs only the tests whose name contains one of the NAMEs (each must name one). */
 #define FS_TEST_MAIN(...)                                                                    \
     int main(int argc, char **argv)                                                          \
     {                                                                                        \
@@ -73,7 +98,7 @@ typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case
         int n = (int)(sizeof cases / sizeof cases[0]), passed = 0, failed = 0;               \
         fs_ode_init();                                                                       \
         for (int i = 0; i < n; i++) {                                                        \
-            if (argc > 1 && !strstr(cases[i].name, argv[1]))                                 \
+            if (argc > 1 && !fs_test_named(cases[i].name, argc, argv))                      \
                 continue;                                                                    \
             int before = fs_test_failures;                                                   \
             fs_test_run_one(cases[i].fn);                                                    \
@@ -82,6 +107,7 @@ typedef struct fs_test_case { const char *name; void (*fn)(void); } fs_test_case
             ok ? passed++ : failed++;                                                        \
         }                                                                                    \
         fs_ode_close();                                                                      \
+        failed += fs_test_unmatched(cases, n, argc, argv);                                   \
         printf("%d passed, %d failed\n", passed, failed);                                    \
         return failed ? 1 : 0;                                                               \
     }
