@@ -77,8 +77,8 @@ def main(argv):
         for ground, r, d in misses:
             where = r["terrain"]
             print(f"- drop law misses {r['foot']} on {where} under {r['robot']}: measured {r['landed']} of "
-                  f"{r['trials']} ({d}); drop law {r.get('drop_law_prediction')} in {r.get('drop_law_stands')} of "
-                  f"{r.get('drop_law_seeds')} seeds, E {r.get('drop_law_energy_J')}, B {r.get('drop_law_barrier_J')}, "
+                  f"{r['trials']} ({d}); drop law {r.get('drop_law_prediction')} (stands in {r.get('drop_law_stands')} of "
+                  f"{r.get('drop_law_seeds')} seeds), E {r.get('drop_law_energy_J')}, B {r.get('drop_law_barrier_J')}, "
                   f"M_s {r.get('drop_law_saturation_N_m')}; static law {r.get('law_prediction')}")
         print()
     return 0
