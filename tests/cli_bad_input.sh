@@ -45,7 +45,12 @@ expect 2 "--set robot.design: .*robots/biped.ini is a biped, and the walking mac
 # spring laws (docs/model.md): a key of another law, a curve that does not rise; a law MuJoCo cannot take
 expect 2 "--set springs.d1_x0_m: d1_x0_m is a key of the progressive law, but d1_law is linear" -- run scenarios/static_load.ini --set springs.d1_x0_m=0.002 --out "$tmp/o6"
 expect 2 "--set springs.d3_curve_N: d3_curve_N is not increasing" -- run scenarios/static_load.ini --set springs.d3_law=curve --set "springs.d3_curve_m=0, 0.001" --set "springs.d3_curve_N=0, -1" --out "$tmp/o7"
-expect 2 "scenarios/feet/progressive_cable.ini: spring d1_chain1's law is progressive, which MuJoCo 2.2.2's tendons cannot express" -- export scenarios/feet/progressive_cable.ini --mjcf --out "$tmp/prog.xml"
+# (named at the line of that spring's law key, or its --set, as every refusal; with --scenario too)
+law_line=$(grep -n '^d1_law' scenarios/feet/progressive_cable.ini | cut -d: -f1)
+expect 2 "scenarios/feet/progressive_cable.ini:$law_line: spring d1_chain1's law is progressive, which MuJoCo 2.2.2's tendons cannot express" -- export scenarios/feet/progressive_cable.ini --mjcf --out "$tmp/prog.xml"
+printf '[springs]\nd2_law = bilinear\nd2_stop_m = 0.001\nd2_k2_N_per_m = 50000\n' >"$tmp/bilinear.ini"
+expect 2 "$tmp/bilinear.ini:2: spring d2_chain1's law is bilinear" -- export "$tmp/bilinear.ini" --mjcf --scenario scenarios/landing_trial.ini --out "$tmp/bilinear.xml"
+expect 2 "--set springs.d3_law: spring d3_chain1's law is progressive" -- export scenarios/feet/biomimetic.ini --mjcf --set springs.d3_law=progressive --out "$tmp/prog3.xml"
 expect 2 "scenarios/robots/biped.ini: kind = biped: the biped is not exported" -- export scenarios/feet/biomimetic.ini --mjcf --scenario scenarios/landing_trial.ini --set robot.design=robots/biped.ini --out "$tmp/biped.xml"
 # moments of inertia no body has (one above the other two together): refused where they are given
 expect 2 "--set robot.inertia_kgm2: inertia_kgm2 = 0.01, 0.01, 1 is no rigid body's: the moment about z (1 kg m^2) is more than those about x and y together (0.02).*give the moment about z at most 0.02" -- trial scenarios/landing_trial.ini --set robot.inertia_kgm2=0.01,0.01,1

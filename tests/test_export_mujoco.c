@@ -284,6 +284,8 @@ static void cable_is_a_one_sided_limit(void)
     fs_mjcf out;
     CHECK(fs_mjcf_build(&sc, 0, NULL, &out, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "d1_chain1's law is progressive") != NULL);
+    /* at the law key's place, as every refusal: here its --set (cli_bad_input.sh: a file's line) */
+    CHECK(strncmp(err.message, "--set springs.d1_law: ", 22) == 0);
     fs_scenario_free(&sc);
 }
 

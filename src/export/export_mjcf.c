@@ -688,12 +688,19 @@ fs_status fs_mjcf_build(const fs_scenario *sc, int with_scenario, const char *hf
                        "with a single robot (robots/single_tall.ini), or without --scenario", sc->def.robot_path);
     for (int i = 0; i < sc->geom.nsprings; i++) {
         const fs_spring_law *law = &sc->geom.spring[i].law;
-        if (law->kind != FS_LAW_LINEAR)
-            return fs_fail(err, FS_BAD_INPUT,
-                           "%s: spring %s's law is %s, which MuJoCo 2.2.2's tendons cannot express (one linear spring "
-                           "and one rest length each): export a design whose springs are linear (tension-only ones "
-                           "map, as limited tendons; docs/export.md)",
-                           sc->def.design_path, sc->geom.spring[i].name, fs_spring_law_name(law));
+        if (law->kind == FS_LAW_LINEAR)
+            continue;
+        /* the line of its kind's law key (springs.dN_law) */
+        const char *where = sc->def.design_path;
+        for (int c = 0; c < FS_CHAINS; c++)
+            for (int w = 0; w < FS_SPRINGS_PER_CHAIN; w++)
+                if (sc->geom.chain[c].spring[w] == i && sc->law_where[w][0])
+                    where = sc->law_where[w];
+        return fs_fail(err, FS_BAD_INPUT,
+                       "%s: spring %s's law is %s, which MuJoCo 2.2.2's tendons cannot express (one linear spring "
+                       "and one rest length each): export a design whose springs are linear (tension-only ones "
+                       "map, as limited tendons; docs/export.md)",
+                       where, sc->geom.spring[i].name, fs_spring_law_name(law));
     }
     fs_model *model;
     /* the robot as its own body, welded to the ankle body as footsim's fixed joint welds it: a reader

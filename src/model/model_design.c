@@ -439,6 +439,12 @@ fs_status fs_design_geometry(const fs_design_def *d, const fs_config *cfg, fs_fo
 fs_status fs_design_load(const char *path, const char *const *overrides, int noverrides, fs_design_def *def,
                          fs_foot_geom *geom, fs_error *err)
 {
+    return fs_design_load_located(path, overrides, noverrides, def, geom, NULL, err);
+}
+
+fs_status fs_design_load_located(const char *path, const char *const *overrides, int noverrides, fs_design_def *def,
+                                 fs_foot_geom *geom, char law_where[3][FS_DESIGN_WHERE_MAX], fs_error *err)
+{
     fs_config cfg;
     fs_status s = fs_config_load(&cfg, path, err);
     for (int i = 0; s == FS_OK && i < noverrides; i++)
@@ -449,6 +455,11 @@ fs_status fs_design_load(const char *path, const char *const *overrides, int nov
     }
     if (s == FS_OK)
         s = fs_design_geometry(def, &cfg, geom, err);
+    for (int w = 0; s == FS_OK && law_where && w < 3; w++) {
+        char key[16];
+        snprintf(key, sizeof key, "d%d_law", w + 1);
+        fs_config_where(&cfg, "springs", key, law_where[w], FS_DESIGN_WHERE_MAX);
+    }
     fs_config_free(&cfg);
     return s;
 }

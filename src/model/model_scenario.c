@@ -268,7 +268,7 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
                     "name a single robot (robots/single_tall_achilles.ini)", robot_where, sc->def.robot_path);
     sc->is_trial |= sc->def.robot.mass_kg > 0; /* a robot given by --set alone */
     if (s == FS_OK)
-        s = fs_design_load(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, err);
+        s = fs_design_load_located(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, sc->law_where, err);
     if (s == FS_OK)
         s = fs_terrain_load(sc->def.terrain_path, part[1], n[1], &sc->terrain, err);
     if (s == FS_OK)
@@ -434,7 +434,7 @@ fs_status fs_scenario_for_design(const char *design_path, const char *const *ove
     if (s != FS_OK)
         return s;
     snprintf(sc->def.design_path, sizeof sc->def.design_path, "%s", design_path);
-    return fs_design_load(design_path, overrides, noverrides, &sc->design, &sc->geom, err);
+    return fs_design_load_located(design_path, overrides, noverrides, &sc->design, &sc->geom, sc->law_where, err);
 }
 
 const fs_key *fs_scenario_key(const char *name, int integers, int *element)

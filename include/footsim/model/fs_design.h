@@ -147,6 +147,16 @@ extern const int fs_design_nkeys;
 fs_status fs_design_load(const char *path, const char *const *overrides, int noverrides, fs_design_def *def,
                          fs_foot_geom *geom, fs_error *err);
 
+/* Where a key of a design is given, for a later check's message: "file:line", "--set section.key",
+ * or "file ([section] key, default)" (fs_config_where). */
+enum { FS_DESIGN_WHERE_MAX = FS_PATH_MAX + 80 };
+
+/* fs_design_load, and where each spring kind's law (springs.d1_law, d2_law, d3_law) is given, into
+ * law_where[0 .. 2] (may be NULL): for a check that comes after loading, such as the MJCF export's
+ * refusal of a law MuJoCo cannot express. */
+fs_status fs_design_load_located(const char *path, const char *const *overrides, int noverrides, fs_design_def *def,
+                                 fs_foot_geom *geom, char law_where[3][FS_DESIGN_WHERE_MAX], fs_error *err);
+
 /* The defaults, as fs_design_load would give for an empty file. */
 void fs_design_defaults(fs_design_def *def);
 

@@ -97,6 +97,9 @@ typedef struct fs_scenario {
        0 when the file or --set gave one; the value it was given last, so that an edit in code of
        def.log_interval_s counts as setting it */
     double log_interval_default_s, log_interval_followed_s;
+    /* where the design gives each spring kind's law (fs_design_load_located; "" for a scenario
+       not loaded from files), for checks after loading that name its line */
+    char law_where[3][FS_DESIGN_WHERE_MAX];
 } fs_scenario;
 
 extern const fs_key fs_scenario_keys[];
