@@ -144,6 +144,8 @@ static const command commands[] = {
     {"stiffness", cli_stiffness, CMD_STIFFNESS, "DESIGN", 1, CLI_DATA_DESIGN,
      "Prints each chain's joint stiffness K (midfoot, MTP), analytic (exact geometry and the paper's\n"
      "  eq. 4) beside K measured in the ODE model, and the arch's static check under the design load.\n"
+     "  A design with a nonlinear spring law (docs/model.md) also gets chain 3's K at that check's\n"
+     "  gripping equilibrium, each law's tangent there (JSON: static_check.loaded_stiffness).\n"
      "  Exit 1 when analytic and measured differ by more than 1 %."},
     {"terrain", cli_terrain, CMD_TERRAIN, "TERRAIN", 1, CLI_DATA_TERRAIN,
      "Describes a terrain file: --height X Y prints the surface height (m) at (X, Y), the surface the\n"

@@ -46,9 +46,27 @@ check_that "its terrain the shipped one" grep -q '"path":[[:space:]]*"[^"]*terra
 (cd "$work" && "$fs" run static_load.ini --data "$src" --set scenario.design=nothere.ini >/dev/null 2>"$tmp/err")
 check_that "a --set path found nowhere: exit 2" [ $? -eq 2 ]
 check_that "naming where it looked" grep -q "nothere.ini': no such file (looked for nothere.ini, then .*scenarios/nothere.ini)" "$tmp/err"
-# stiffness of a design outside scenarios/feet/: the shipped robots' law all the same
-(cd "$work" && "$fs" stiffness myfoot.ini --data "$src" >"$tmp/stiff" 2>&1)
+# stiffness of a design outside scenarios/feet/: the shipped robots' law all the same. Its d1 made
+# progressive (k0 = Table I's, stiffness doubled at x0 = 0.02 mm), so the same run checks the line a
+# nonlinear design adds: chain 3's K at the gripping equilibrium, eqs. 1-3 on each law's tangent there.
+(cd "$work" && "$fs" stiffness myfoot.ini --data "$src" --set springs.d1_law=progressive --set springs.d1_x0_m=2e-5 \
+    >"$tmp/stiff" 2>&1)
 check_that "stiffness myfoot.ini gives the law for the shipped robots" sh -c "grep -q '^  single_tall ' '$tmp/stiff' && grep -q '^  drop_weight ' '$tmp/stiff'"
+# d1 spans the midfoot joint alone and is the only nonlinear spring, so against the neutral chain 3
+# the loaded K differs in K_midfoot,midfoot only, by k0 (x/x0)^2 G1^2 with x d1's printed deflection:
+# more than 0 (d1 is stretched there), and at most (x/x0)^2 times the neutral K_mm (k0 G1^2 is one
+# of its three nonnegative terms); the other entries equal to the printed digits
+check_that "a nonlinear design: chain 3's K at the loaded pose, d1's tangent in its midfoot term" awk -v x0_mm=0.02 '
+    /^  chain 3 / { c3 = 1 }
+    c3 && /exact geometry/ { gsub(/[][;]/, " "); n00 = $3; n01 = $4; n11 = $6; c3 = 0 }
+    /chain 3.s K at the gripping equilibrium/ {
+        line = $0; sub(/.*deflected /, "", line); split(line, x, /[, ]+/)
+        sub(/.*\[/, "", $0); gsub(/[];]/, " "); split($0, k, / +/); found = 1
+    }
+    END {
+        d = k[2] - n00; r = (x[1] / x0_mm) ^ 2
+        exit !(found && x[1] > 0 && d > 0 && d <= r * n00 + 1e-4 && k[3] == n01 && k[5] == n11)
+    }' "$tmp/stiff"
 # the order is said where users look
 "$fs" run --help >"$tmp/help" 2>&1
 check_that "--help says a --set path is looked for from the current folder first" grep -q 'current folder first' "$tmp/help"

@@ -182,7 +182,9 @@ fs_status fs_planar_equilibrium(const fs_design_def *d, const fs_foot_geom *g, i
     out->midfoot_rad = (b[2] - b[1]) - (c.beta0[2] - c.beta0[1]);
     out->mtp_rad = (b[3] - b[2]) - (c.beta0[3] - c.beta0[2]);
     out->ball_clearance_m = J.p[3][1] - c.r_ball;
-    for (int k = 0; k < 3; k++)
-        out->spring_force_N[k] = fs_spring_law_force(&c.law[k], spring_length(&c, &J, b, k) - c.rest[k], NULL);
+    for (int k = 0; k < 3; k++) {
+        out->spring_deflection_m[k] = spring_length(&c, &J, b, k) - c.rest[k];
+        out->spring_force_N[k] = fs_spring_law_force(&c.law[k], out->spring_deflection_m[k], NULL);
+    }
     return FS_OK;
 }

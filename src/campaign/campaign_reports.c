@@ -156,6 +156,19 @@ fs_status fs_stiffness_report_make(const fs_scenario *sc, const char *design_pat
             fs_planar_load load = {sc->design.design_load_kg * g, g, 0, f};
             s = fs_planar_equilibrium(&sc->design, &sc->geom, 2, &load, &r->eq[f], err);
         }
+        /* a nonlinear law's stiffness depends on its deflection: chain 3's at the loaded (gripping) pose
+           too, every chain's springs deflected as chain 3's there (the static check's chains alike) */
+        for (int i = 0; i < sc->geom.nsprings; i++)
+            r->nonlinear |= !fs_spring_law_is_linear(&sc->geom.spring[i].law);
+        if (s == FS_OK && r->nonlinear) {
+            double x[FS_MAX_SPRINGS] = {0};
+            fs_chain_stiffness at[FS_CHAINS];
+            for (int i = 0; i < FS_CHAINS; i++)
+                for (int w = 0; w < 3; w++)
+                    x[sc->geom.chain[i].spring[w]] = r->eq[0].spring_deflection_m[w];
+            fs_stiffness_tangent(&sc->geom, x, at);
+            memcpy(r->loaded, at[2].exact, sizeof r->loaded);
+        }
     }
     /* the whole foot against pitching its ankle body, under the design load: the model, and ODE on
        the default ground's friction and on gripping ground */
@@ -250,6 +263,15 @@ void fs_stiffness_report_print(const fs_stiffness_report *r, const char *design,
                 e->stable ? "stable" : "UNSTABLE", e->ankle_drop_m * 1e3, e->midfoot_rad * 180 / M_PI,
                 e->mtp_rad * 180 / M_PI, e->ball_clearance_m * 1e3);
     }
+    if (r->nonlinear && r->eq[0].converged) {
+        const double *x = r->eq[0].spring_deflection_m;
+        fprintf(out, "  chain 3's K at the gripping equilibrium (eqs. 1-3 on each law's tangent at d1, d2, d3 deflected "
+                     "%+.4f, %+.4f, %+.4f mm) [%9.4f %9.4f; %9.4f %9.4f] N m/rad\n",
+                x[0] * 1e3, x[1] * 1e3, x[2] * 1e3, r->loaded[0][0], r->loaded[0][1], r->loaded[1][0],
+                r->loaded[1][1]);
+    } else if (r->nonlinear) {
+        fprintf(out, "  chain 3's K under the load: not taken (no gripping equilibrium)\n");
+    }
     pitch_print(r, out);
 }
 
@@ -315,5 +337,11 @@ cJSON *fs_stiffness_report_json(const fs_stiffness_report *r, const char *design
              num(o, "ball_clearance_m", e->ball_clearance_m) &&
              fs_json_put(o, "spring_force_N", cJSON_CreateDoubleArray(e->spring_force_N, 3));
     }
+    /* a nonlinear design: chain 3's joint stiffness at the gripping equilibrium (absent for Table I's laws) */
+    cJSON *ld = ok && r->nonlinear && r->eq[0].converged ? child(st, "loaded_stiffness", cJSON_CreateObject()) : NULL;
+    if (ok && r->nonlinear && r->eq[0].converged)
+        ok = ld && text(ld, "at", "gripping equilibrium") && num(ld, "chain", 3) &&
+             fs_json_put(ld, "spring_deflection_m", cJSON_CreateDoubleArray(r->eq[0].spring_deflection_m, 3)) &&
+             fs_json_put(ld, "analytic", mat_json((const double(*)[2])r->loaded));
     return whole(root, ok, "the stiffness report", err);
 }

@@ -47,6 +47,7 @@ typedef struct fs_planar_result {
     double midfoot_rad, mtp_rad, ankle_joint_rad; /* joint angles from the neutral pose */
     double ball_clearance_m; /* ball sphere's lowest point above the ground */
     double spring_force_N[3];
+    double spring_deflection_m[3]; /* d1, d2, d3: length less rest length there */
     double K_reduced[2][2]; /* stiffness in (heel, talus) angles at equilibrium, N m/rad */
 } fs_planar_result;
 

@@ -39,6 +39,10 @@ typedef struct fs_stiffness_report {
                                                    at the rest length: docs/model.md) */
     double static_load_kg;
     fs_planar_result eq[2];                     /* chain 3 under the design load: gripping, frictionless */
+    int nonlinear;                              /* a spring not linear and two-sided (fs_spring_law_is_linear) */
+    double loaded[2][2];                        /* nonlinear: chain 3's joint stiffness at the gripping
+                                                   equilibrium (eqs. 1-3 on each law's tangent at its deflection
+                                                   there, fs_stiffness_tangent), N m/rad */
     /* the whole foot against pitching its ankle body under the design load */
     double load_kg, K_model, K_ode_mu1, K_ode_grip;
     double K_ode_plane;                         /* gripping in each chain's plane, free across (biomimetic) */
