@@ -46,6 +46,10 @@ done
 "$fs" terrain "$tmp/surf/surface.ini" --png "$tmp/surf_map.png" >/dev/null 2>&1
 check_that "footsim terrain draws the surface" [ -s "$tmp/surf_map.png" ]
 
+# footsim terrain names a soil on a line of its own (model, name, depth, grid); rigid ground has none
+check '"$fs" terrain terrains/soils/dry_sand.ini | grep -q "^  soil: bekker (dry_sand), 0.1 m deep .* grid 0.5 mm"'
+check '! "$fs" terrain terrains/flat.ini | grep -q "soil"'
+
 # refusals, before anything is written
 printf '[soil]\nmodel = bekker\n\n[bekker]\nn = 0\n' >"$tmp/n.ini"
 expect 2 "n.ini:5" -- run scenarios/static_load.ini --set "scenario.terrain=$tmp/n.ini" --out "$tmp/no1"
