@@ -157,7 +157,10 @@ static const command commands[] = {
      "  the drawn pose, the outcome (landed, fell or undecided), the rule that decided it and the\n"
      "  metrics. With --frames (or --out DIR) it also writes DIR/trial.json, its time series\n"
      "  DIR/trajectory.csv (with the robot's lean: footsim plot DIR draws it) and the frames of\n"
-     "  exactly that trial (default DIR: results/trials/<scenario>-seed<N>/)."},
+     "  exactly that trial (default DIR: results/trials/<scenario>-seed<N>/). On a soil (a terrain\n"
+     "  with [soil], docs/soil.md) DIR also gets the soil's final surface: surface.png (16-bit\n"
+     "  heightmap), surface.csv (mm), surface.provenance.json and surface.ini (a terrain file that\n"
+     "  loads it back as rigid ground)."},
     {"campaign", cli_campaign, CMD_CAMPAIGN, "CAMPAIGN", 1, CLI_DATA_SCENARIO,
      "Runs every foot on every terrain for every seed of a campaign file (docs/campaign.md) in -j N\n"
      "  worker processes (default: the CPUs it may use) and writes DIR/summary.md, summary.csv, summary.json,\n"
@@ -216,7 +219,9 @@ static const command commands[] = {
      "Runs the walking machine of a walk scenario (scenarios/walking.ini): steps completed, falls,\n"
      "  toe contact points on the rough section and off it, peak ground force. With --frames (or\n"
      "  --out DIR) it also writes DIR/walk.json and the frames of the walk (default DIR:\n"
-     "  results/walks/<scenario>/), whole."},
+     "  results/walks/<scenario>/), whole. On a soil (a terrain with [soil], docs/soil.md) each step's\n"
+     "  sinkage, slip and the energy the soil took are printed and in walk.json, and DIR also gets\n"
+     "  the soil's final surface: surface.png, .csv, .provenance.json and .ini, as trial writes it."},
     {"bench", cli_bench, CMD_BENCH, "precision|stability|speed|equivalence [CAMPAIGN]", 2, CLI_DATA_NONE,
      "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
      "  refreshed only with --out results/bench):\n"

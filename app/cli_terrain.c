@@ -217,6 +217,11 @@ static int summary(fs_terrain *t, const cli_args *a)
            "  over x %.3f..%.3f m, y %.3f..%.3f m%s: heights %.4f..%.4f m, mean %.4f m, RMS about the mean %.4f m\n",
            t->path, kinds[t->def.kind], t->def.mu, t->def.restitution, t->def.stiffness_N_per_m,
            t->def.damping_Ns_per_m, r[0], r[1], r[2], r[3], outline ? " (what the scenario's foot reaches, and its margin)" : "", lo, hi, mean, sqrt(fmax(0, sum2 / n - mean * mean)));
+    const fs_soil_def *d = &t->def.soil;
+    if (d->model != FS_SOIL_NONE) /* the heights above are its bedrock's */
+        printf("  soil: %s (%s), %.3g m deep over the heights above (its bedrock), grid %.3g mm (shapes met on up to "
+               "%.3g mm); docs/soil.md\n", d->model == FS_SOIL_BEKKER ? "bekker" : "rft", t->name, d->depth_m,
+               d->grid_m * 1e3, fmax(d->grid_m, d->coarse_grid_m) * 1e3);
     return 0;
 }
 

@@ -46,16 +46,36 @@ done
 "$fs" terrain "$tmp/surf/surface.ini" --png "$tmp/surf_map.png" >/dev/null 2>&1
 check_that "footsim terrain draws the surface" [ -s "$tmp/surf_map.png" ]
 
+# footsim terrain names a soil on a line of its own (model, name, depth, grid); rigid ground has none
+check '"$fs" terrain terrains/soils/dry_sand.ini | grep -q "^  soil: bekker (dry_sand), 0.1 m deep .* grid 0.5 mm"'
+check '! "$fs" terrain terrains/flat.ini | grep -q "soil"'
+
 # refusals, before anything is written
-printf '[soil]\nmodel = bekker\n\n[bekker]\nn = 0\n' >"$tmp/n.ini"
-expect 2 "n.ini:5" -- run scenarios/static_load.ini --set "scenario.terrain=$tmp/n.ini" --out "$tmp/no1"
-printf '[soil]\nmodel = rft\ndepth_m = 0.05\n' >"$tmp/rft.ini"
-expect 2 "zeta_N_per_m3" -- run scenarios/static_load.ini --set "scenario.terrain=$tmp/rft.ini" --out "$tmp/no2"
+# refused N NAME TEXT PATTERN: a terrain file NAME.ini of TEXT (a printf format), laid under the static
+# load with `run`, is refused with exit 2 and "NAME.ini:PATTERN" on stderr (into $tmp/noN, never made)
+refused() {
+    printf "$3" >"$tmp/$2.ini"
+    expect 2 "$2.ini:$4" -- run scenarios/static_load.ini --set "scenario.terrain=$tmp/$2.ini" --out "$tmp/no$1"
+}
+refused 1 n '[soil]\nmodel = bekker\n\n[bekker]\nn = 0\n' "5"
+# an rft soil that does not give zeta: [soil] model's line without [rft], the [rft] header's with it; the key to add
+refused 2 rft '[soil]\nmodel = rft\ndepth_m = 0.05\n' "2: .*zeta_N_per_m3 .*: add zeta_N_per_m3"
+refused 5 rft2 '[soil]\nmodel = rft\n\n[rft]\ndensity_kg_per_m3 = 1500\n' \
+    "4: an rft soil needs \[rft\] zeta_N_per_m3 .*: add zeta_N_per_m3"
 expect 2 "max_nodes" -- run scenarios/static_load.ini --set scenario.terrain=../terrains/soils/dry_sand.ini \
     --set soil.grid_m=1e-4 --set soil.max_nodes=1000 --out "$tmp/no3"
 # the grid's memory cap, judged once the feet's region is known, still names the file and grid_m's line
-printf '[soil]\nmodel = bekker\ngrid_m = 1e-4\nmax_nodes = 1000\n' >"$tmp/cap.ini"
-expect 2 "cap.ini:3: the soil's grid_m of 0.0001 m .* over \[soil\] max_nodes = 1000" -- run scenarios/static_load.ini \
-    --set "scenario.terrain=$tmp/cap.ini" --out "$tmp/no4"
-check '[ ! -e "$tmp/no1" ] && [ ! -e "$tmp/no2" ] && [ ! -e "$tmp/no3" ] && [ ! -e "$tmp/no4" ]'
+refused 4 cap '[soil]\nmodel = bekker\ngrid_m = 1e-4\nmax_nodes = 1000\n\n[bekker]\nn = 1.1\n' \
+    "3: the soil's grid_m of 0.0001 m .* over \[soil\] max_nodes = 1000"
+# phi's range is [0, 90): said so for a negative phi too
+refused 6 phi '[soil]\nmodel = bekker\n\n[bekker]\nfriction_deg = -1\n' "5: friction_deg = '-1' .*\[0, 90) deg"
+# a [bekker] section without [soil] would leave the ground rigid: refused at its header
+refused 7 nosoil '[terrain]\nkind = flat\n\n[bekker]\nn = 1.1\n' "4: \[bekker\] has no effect without a \[soil\] section"
+# a bekker soil without [bekker] would run on the keys' defaults, no soil: refused at [soil] model
+refused 8 nobekker '[soil]\nmodel = bekker\ndepth_m = 0.05\n' "2: a bekker soil needs a \[bekker\] section .*terrains/soils/"
+# a tolerance from --set on a soil names the --set (it read "(set in code)")
+expect 2 "^footsim: --set run.tolerance_m: tolerance_m = 0.0001 cannot be used here: a soil" -- trial \
+    scenarios/landing_trial.ini --set scenario.terrain=../terrains/soils/dry_sand.ini --set run.tolerance_m=1e-4 \
+    --out "$tmp/no9"
+for i in 1 2 3 4 5 6 7 8 9; do check "[ ! -e \"\$tmp/no$i\" ]"; done
 finish

@@ -29,6 +29,7 @@ typedef struct reader {
     const char *text, *end, *pos;
     fs_config *cfg;
     int line;       /* line most recently handed to inih */
+    int section_line; /* line of the most recent [section] header, 0 before the first */
     int long_line;  /* first line longer than the buffer, or 0 */
     fs_error *err;
     fs_status status;
@@ -52,6 +53,9 @@ static char *read_line(char *buf, int size, void *stream)
     memcpy(buf, r->pos, n);
     buf[n] = 0;
     r->pos = stop;
+    const char *c = buf + strspn(buf, " \t");
+    if (*c == '[') /* check_text has made sure a '[' line is a section header */
+        r->section_line = r->line;
     return buf;
 }
 
@@ -168,6 +172,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
         return 0;
     }
     e->line = r->line;
+    e->section_line = r->section_line;
     index_insert(r->cfg, r->cfg->count - 1);
     return 1;
 }
@@ -320,6 +325,25 @@ static const char *where_entry(const fs_config *cfg, const fs_entry *e, char *bu
     return buf;
 }
 
+const char *fs_config_where_section(const fs_config *cfg, const char *section, char *buf, size_t size)
+{
+    const fs_entry *first = NULL;
+    for (int i = 0; cfg && i < cfg->count; i++) {
+        const fs_entry *e = &cfg->entries[i];
+        if (strcmp(e->section, section))
+            continue;
+        if (!first || (e->line > 0 && (first->line == 0 || e->section_line < first->section_line)))
+            first = e;
+    }
+    if (!first)
+        return NULL;
+    if (first->line > 0)
+        snprintf(buf, size, "%s:%d", cfg->path, first->section_line);
+    else
+        snprintf(buf, size, "--set %s.%s", first->section, first->name);
+    return buf;
+}
+
 int fs_config_has(const fs_config *cfg, const char *section, const char *name)
 {
     for (int i = 0; i < cfg->count; i++)
@@ -425,17 +449,25 @@ int fs_list_element(const char *text, int count)
     return i >= 1 && i <= count ? (int)i - 1 : -2;
 }
 
+/* "[min, max]", "(min, max]", "[min, max)" as the key's flags say */
+static void range_text(const fs_key *k, char *buf, size_t size)
+{
+    snprintf(buf, size, "%s%g, %g%s", (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max,
+             (k->flags & FS_KEY_OPEN_MAX) ? ")" : "]");
+}
+
 static void describe_range(const fs_key *k, char *buf, size_t size)
 {
-    snprintf(buf, size, "%s%g, %g]%s%s", (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max,
-             k->unit && *k->unit ? " " : "", k->unit ? k->unit : "");
+    char r[64];
+    range_text(k, r, sizeof r);
+    snprintf(buf, size, "%s%s%s", r, k->unit && *k->unit ? " " : "", k->unit ? k->unit : "");
 }
 
 static int in_range(const fs_key *k, double v)
 {
     if (k->flags & FS_KEY_OPEN_MIN ? v <= k->min : v < k->min)
         return 0;
-    return v <= k->max;
+    return k->flags & FS_KEY_OPEN_MAX ? v < k->max : v <= k->max;
 }
 
 static fs_status bad_value(fs_error *err, const char *where, const fs_key *k, const char *value, const char *why)
@@ -673,9 +705,15 @@ fs_status fs_config_check(const fs_key *schema, int nkeys, const void *def, cons
             for (const char *c = k->choices ? k->choices : ""; *c; c++)
                 nchoices += *c == '|';
             int ok = k->type == FS_KEY_CHOICE ? v >= 0 && v < nchoices : isfinite(v) && in_range(k, v);
-            if (!ok)
-                return fs_fail(err, FS_BAD_INPUT, "%s: [%s] %s = %.17g is out of range (%g to %g %s)", what,
-                               k->section, k->name, v, k->min, k->max, k->unit ? k->unit : "");
+            if (!ok && k->type == FS_KEY_CHOICE)
+                return fs_fail(err, FS_BAD_INPUT, "%s: [%s] %s = %.17g is out of range; allowed: %s", what, k->section,
+                               k->name, v, k->choices);
+            if (!ok) {
+                char range[96];
+                describe_range(k, range, sizeof range);
+                return fs_fail(err, FS_BAD_INPUT, "%s: [%s] %s = %.17g is out of range; allowed %s", what, k->section,
+                               k->name, v, range);
+            }
         }
     }
     return FS_OK;
@@ -777,15 +815,13 @@ void fs_config_print_keys(const fs_key *schema, int nkeys, const char *title, vo
         }
         case FS_KEY_PATH: snprintf(range, sizeof range, "existing file"); break;
         case FS_KEY_LIST:
-            snprintf(range, sizeof range, "%d values in %s%g, %g]", k->count, (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[",
-                     k->min, k->max);
+        case FS_KEY_SERIES: {
+            char r[64];
+            range_text(k, r, sizeof r);
+            snprintf(range, sizeof range, "%s%d values in %s", k->type == FS_KEY_SERIES ? "up to " : "", k->count, r);
             break;
-        case FS_KEY_SERIES:
-            snprintf(range, sizeof range, "up to %d values in %s%g, %g]", k->count,
-                     (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max);
-            break;
-        default:
-            snprintf(range, sizeof range, "%s%g, %g]", (k->flags & FS_KEY_OPEN_MIN) ? "(" : "[", k->min, k->max);
+        }
+        default: range_text(k, range, sizeof range);
         }
         fprintf(out, "| %s | %s | %s | %s | %s | %s |\n", k->section, k->name, k->unit ? k->unit : "", range,
                 k->fallback, k->help);

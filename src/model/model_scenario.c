@@ -260,7 +260,6 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
     char robot_where[FS_PATH_MAX + 80] = "";
     if (s == FS_OK)
         fs_config_where(&cfg, "robot", "design", robot_where, sizeof robot_where);
-    fs_config_free(&cfg);
     if (s == FS_OK)
         s = fs_robot_load(sc->def.robot_path, part[3], n[3], &sc->def.robot, err);
     if (s == FS_OK && sc->def.kind == FS_SCENARIO_WALK && sc->def.robot.kind == FS_ROBOT_BIPED)
@@ -271,6 +270,9 @@ fs_status fs_scenario_load(const char *path, const char *const *overrides, int n
         s = fs_design_load_located(sc->def.design_path, part[2], n[2], &sc->design, &sc->geom, sc->law_where, err);
     if (s == FS_OK)
         s = fs_terrain_load(sc->def.terrain_path, part[1], n[1], &sc->terrain, err);
+    if (s == FS_OK && sc->terrain.def.soil.model != FS_SOIL_NONE) /* the relations a soil adds, with file:line */
+        s = check_relations(sc, &cfg, err);
+    fs_config_free(&cfg);
     if (s == FS_OK)
         s = crop_terrain(sc, 1, err);
     return s;

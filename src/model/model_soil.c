@@ -4,22 +4,46 @@
 #include <math.h>
 #include <stdio.h>
 
+/* Where to point at a key an rft soil must give: its own line when given (with a value of 0),
+ * else the [rft] header, else [soil] model's line; *absent says which. */
+static const char *where_rft_key(const fs_config *cfg, const char *name, char *buf, size_t size, int *absent)
+{
+    *absent = cfg && !fs_config_has(cfg, "rft", name);
+    if (*absent && fs_config_where_section(cfg, "rft", buf, size))
+        return buf;
+    return fs_config_where(cfg, *absent ? "soil" : "rft", *absent ? "model" : name, buf, size);
+}
+
 fs_status fs_soil_check(const fs_soil_def *d, const fs_config *cfg, const char *path, fs_error *err)
 {
     char where[FS_PATH_MAX + 80];
+    static const char *const model_section[] = {"bekker", "rft"};
+    for (int i = 0; cfg && i < 2 && !fs_config_has(cfg, "soil", NULL); i++)
+        if (fs_config_where_section(cfg, model_section[i], where, sizeof where))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] has no effect without a [soil] section (the ground stays "
+                           "rigid); add [soil] with model = %s and depth_m = the layer's thickness, or remove [%s]",
+                           where, model_section[i], model_section[i], model_section[i]);
     if (d->model == FS_SOIL_NONE)
         return FS_OK;
-    if (d->model == FS_SOIL_BEKKER && !(d->friction_deg < 90))
-        return fs_fail(err, FS_BAD_INPUT, "%s: friction_deg is %g; the friction angle must lie in [0, 90) degrees",
-                       fs_config_where(cfg, "bekker", "friction_deg", where, sizeof where), d->friction_deg);
-    if (d->model == FS_SOIL_RFT && !(d->zeta_N_per_m3 > 0))
+    if (d->model == FS_SOIL_BEKKER && cfg && !fs_config_has(cfg, "bekker", NULL))
+        return fs_fail(err, FS_BAD_INPUT, "%s: a bekker soil needs a [bekker] section with the soil's moduli (n, "
+                       "k_c_N_per_m_n1, k_phi_N_per_m_n2, cohesion_Pa, friction_deg, shear_K_m, K_e_Pa_per_m); the "
+                       "keys' defaults are no measured soil: start from a preset in terrains/soils/ (dry_sand, "
+                       "lete_sand, sandy_loam, lean_clay, snow, mud)",
+                       fs_config_where(cfg, "soil", "model", where, sizeof where));
+    int absent = 0;
+    if (d->model == FS_SOIL_RFT && !(d->zeta_N_per_m3 > 0)) {
+        where_rft_key(cfg, "zeta_N_per_m3", where, sizeof where, &absent);
         return fs_fail(err, FS_BAD_INPUT, "%s: an rft soil needs [rft] zeta_N_per_m3 > 0, the medium's scale from one "
-                       "plate test (about 1e6 N/m^3 for dry sand or glass beads; terrains/soils/ has presets)",
-                       fs_config_where(cfg, "rft", "zeta_N_per_m3", where, sizeof where));
-    if (d->model == FS_SOIL_RFT && !(d->density_kg_per_m3 > 0))
+                       "plate test (about 1e6 N/m^3 for dry sand or glass beads; terrains/soils/ has presets)%s",
+                       where, absent ? ": add zeta_N_per_m3 = ... to [rft]" : "");
+    }
+    if (d->model == FS_SOIL_RFT && !(d->density_kg_per_m3 > 0)) {
+        where_rft_key(cfg, "density_kg_per_m3", where, sizeof where, &absent);
         return fs_fail(err, FS_BAD_INPUT, "%s: an rft soil needs [rft] density_kg_per_m3 > 0, the medium's bulk density "
-                       "(about 1500-1700 kg/m^3 for dry sand)",
-                       fs_config_where(cfg, "rft", "density_kg_per_m3", where, sizeof where));
+                       "(about 1500-1700 kg/m^3 for dry sand)%s", where,
+                       absent ? ": add density_kg_per_m3 = ... to [rft]" : "");
+    }
     (void)path;
     return FS_OK;
 }

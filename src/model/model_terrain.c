@@ -82,7 +82,7 @@ const fs_key fs_terrain_keys[] = {
     NUM("bekker", "k_c_N_per_m_n1", soil.k_c_N_per_m_n1, 0, 1e12, 0, "N/m^(n+1)", "0", "cohesive modulus k_c"),
     NUM("bekker", "k_phi_N_per_m_n2", soil.k_phi_N_per_m_n2, 0, 1e12, 0, "N/m^(n+2)", "2e6", "frictional modulus k_phi"),
     NUM("bekker", "cohesion_Pa", soil.cohesion_Pa, 0, 1e9, 0, "Pa", "50", "cohesion c"),
-    NUM("bekker", "friction_deg", soil.friction_deg, 0, 90, 0, "deg", "20", "internal friction angle phi, below 90"),
+    NUM("bekker", "friction_deg", soil.friction_deg, 0, 90, FS_KEY_OPEN_MAX, "deg", "20", "internal friction angle phi"),
     NUM("bekker", "shear_K_m", soil.shear_K_m, 0, 1, POS, "m", "0.01", "Janosi's shear deformation modulus K"),
     NUM("bekker", "K_e_Pa_per_m", soil.K_e_Pa_per_m, 0, 1e13, POS, "Pa/m", "5e7", "elastic unloading and reloading slope K_e"),
     NUM("bekker", "damping_Pa_s_per_m", soil.damping_Pa_s_per_m, 0, 1e9, 0, "Pa s/m", "0",

@@ -34,6 +34,7 @@ typedef struct fs_entry {
     char name[FS_NAME_MAX];
     char value[FS_VALUE_MAX];
     int line;  /* line in the file, or 0 for an override from the command line */
+    int section_line; /* line of the [section] header it stands under, or 0 */
     int used;  /* set by binding */
 } fs_entry;
 
@@ -45,7 +46,8 @@ typedef struct fs_config {
 } fs_config;
 
 typedef enum fs_key_type {
-    FS_KEY_NUMBER,  /* double, finite, in [min, max] (or (min, max] with FS_KEY_OPEN_MIN) */
+    FS_KEY_NUMBER,  /* double, finite, in [min, max] ((min, ...] with FS_KEY_OPEN_MIN, [..., max) with
+                       FS_KEY_OPEN_MAX) */
     FS_KEY_INTEGER, /* int, in [min, max] */
     FS_KEY_LIST,    /* exactly `count` comma-separated doubles, each in range */
     FS_KEY_CHOICE,  /* one word of `choices` ("a|b|c"), stored as its int index */
@@ -55,7 +57,7 @@ typedef enum fs_key_type {
                        into an fs_series (a spring's force-deflection curve) */
 } fs_key_type;
 
-enum { FS_KEY_OPEN_MIN = 1 };
+enum { FS_KEY_OPEN_MIN = 1, FS_KEY_OPEN_MAX = 2 };
 
 typedef struct fs_key {
     const char *section;
@@ -125,6 +127,11 @@ fs_status fs_config_check(const fs_key *schema, int nkeys, const void *def, cons
  * NULL for a definition edited in code: "[section] key (set in code)". */
 const char *fs_config_where(const fs_config *cfg, const char *section, const char *name, char *buf,
                             size_t size);
+
+/* "file:line" of the [section] header a key of the section stands under (the first such header), or
+ * "--set section.key" when only an override gives the section; NULL when nothing gives it or cfg is
+ * NULL. For messages about a section as a whole (one that has no effect, one that lacks a key). */
+const char *fs_config_where_section(const fs_config *cfg, const char *section, char *buf, size_t size);
 
 /* Whether the file or an override gives [section] name (any key of the section when name is NULL). */
 int fs_config_has(const fs_config *cfg, const char *section, const char *name);

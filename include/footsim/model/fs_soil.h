@@ -11,9 +11,9 @@
  *   stress on a surface element at depth |z| is zeta * alpha_{z,x}(beta, gamma) |z| with nine
  *   generic Fourier coefficients, plus an inertial pressure lambda rho (v.n)^2 (dynamic RFT).
  *
- * The keys are rows of the terrain schema (fs_terrain_keys, docs/keys.md); fs_soil_check judges
- * what one key cannot (RFT without zeta or density, phi of 90 degrees or more), before anything
- * runs, with file:line. */
+ * The keys are rows of the terrain schema (fs_terrain_keys, docs/keys.md; phi in [0, 90) degrees);
+ * fs_soil_check judges what one key cannot (RFT without zeta or density, a model's section without
+ * [soil] or the other way round), before anything runs, with file:line. */
 #ifndef FS_SOIL_H
 #define FS_SOIL_H
 
@@ -52,8 +52,11 @@ typedef struct fs_soil_def {
 } fs_soil_def;
 
 /* Refuses (FS_BAD_INPUT, "where: what is wrong, and what would be right") what no single key can
- * judge: phi of 90 degrees or more, an RFT soil without zeta_N_per_m3 or density_kg_per_m3. cfg
- * (may be NULL: "set in code") locates the keys. */
+ * judge: a [bekker] or [rft] section in a file without a [soil] section (it would be ignored), a
+ * bekker soil without a [bekker] section (the keys' defaults are no soil), an RFT soil without
+ * zeta_N_per_m3 or density_kg_per_m3 (pointing at the [rft] header or at [soil] model when the key
+ * is absent). cfg (may be NULL: "set in code"; the checks on sections are then skipped) locates the
+ * keys. */
 fs_status fs_soil_check(const fs_soil_def *d, const fs_config *cfg, const char *path, fs_error *err);
 
 /* The rectangle the grid covers (the region the feet can reach, box, plus margin_m) and the nodes
