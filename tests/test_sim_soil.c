@@ -119,9 +119,29 @@ static void sole_on(const char *soil, double load_kg, double grid_m, double coar
 /* The grid's share of the sole's area: nodes within half a spacing of its edge may fall either way. */
 static double area_bound(const sole_run *r, double grid_m) { return r->P_m * 0.5 * grid_m / r->A_m2 + 1e-3; }
 
-/* The sole under load_kg on soil (exponent n) against Bekker's closed form, its rebound and its print,
+/* The sinkage the sole may have on a grid of spacing ds, at most and at least, m. Its nodes carry its
+ * exact area (coverage: a_box_carries_its_plans_area), so under a dead load only Bekker's b = 2A/P
+ * moves with the grid: the patch's perimeter is counted on the nodes' open sides, a staircase, which
+ * along a side at angle a to the grid is (|cos a| + |sin a|) its length, at most sqrt(2) times, give
+ * or take a cell at each of the side's ends: P_grid in [P - 8 ds, sqrt(2) P + 8 ds]. The sinkage
+ * (p / (k_c/b + k_phi))^(1/n) at the two ends of b's range bounds it. */
+static void sole_sinkage_range(const char *soil, const sole_run *r, double ds, double *lo, double *hi)
+{
+    static fs_terrain t;
+    fs_error err;
+    char path[200];
+    snprintf(path, sizeof path, "terrains/soils/%s", soil);
+    REQUIRE(fs_terrain_load(path, NULL, 0, &t, &err) == FS_OK);
+    double p = r->W_N / r->A_m2;
+    double wide = fs_bekker_sinkage(&t.def.soil, 2 * r->A_m2 / (r->P_m - 8 * ds), p);
+    double narrow = fs_bekker_sinkage(&t.def.soil, 2 * r->A_m2 / (sqrt(2) * r->P_m + 8 * ds), p);
+    *lo = fmin(wide, narrow), *hi = fmax(wide, narrow); /* which is which: k_c's sign */
+    fs_terrain_free(&t);
+}
+
+/* The sole under load_kg on soil against Bekker's closed form, its rebound and its print,
  * with tolerances from the spacing of the sole's nodes (grid_m, or coarse_m when it serves the sole). */
-static void sole_against_bekker(const char *soil, double n, double load_kg, double grid_m, double coarse_m,
+static void sole_against_bekker(const char *soil, double load_kg, double grid_m, double coarse_m,
                                 double yaw_deg, sole_run *out)
 {
     sole_run r;
@@ -134,12 +154,15 @@ static void sole_against_bekker(const char *soil, double n, double load_kg, doub
     REQUIRE(fs_terrain_load(path, NULL, 0, &t, &err) == FS_OK);
     double b = r.A_m2 * 2 / r.P_m, p = r.W_N / r.A_m2;
     double z = fs_bekker_sinkage(&t.def.soil, b, p);
-    /* the grid's area and the patch's b differ from the sole's by the nodes along its edge: the
-     * sinkage, as p^(1/n), by 1/n of that; the rest is 1e-5 m/s for the settling's time */
-    double tol = z * area_bound(&r, grid) / n * 1.5 + 1e-5;
-    printf("  %s, %g kg, nodes %g mm apart: sinkage %.3f mm, closed form %.3f mm (b %.4f m, grid's %.4f m), within %.3f mm\n",
-           soil, load_kg, grid * 1e3, r.sink_m * 1e3, z * 1e3, b, r.b_m, tol * 1e3);
-    CHECK_NEAR(r.sink_m, z, tol);
+    /* the sole's nodes carry its area (coverage), so the grid moves the sinkage only through the
+     * patch's perimeter in b (sole_sinkage_range); the rest is 1e-5 m/s for the settling's time */
+    double lo, hi;
+    sole_sinkage_range(soil, &r, grid, &lo, &hi);
+    printf("  %s, %g kg, nodes %g mm apart: sinkage %.3f mm, closed form %.3f mm (b %.4f m, grid's %.4f m), within "
+           "%.3f to %.3f mm\n",
+           soil, load_kg, grid * 1e3, r.sink_m * 1e3, z * 1e3, b, r.b_m, (lo - 1e-5) * 1e3, (hi + 1e-5) * 1e3);
+    CHECK(r.sink_m >= lo - 1e-5 && r.sink_m <= hi + 1e-5);
+    double tol = fmax(hi - z, z - lo) + 1e-5;
     /* load removed: the sole rises by the pressure's drop over K_e, the foot's own weight left */
     double Ke = t.def.soil.K_e_Pa_per_m, drop = (r.W_N - (r.W_N - load_kg * 9.81)) / (r.A_m2 * Ke);
     printf("    rebound %.4f mm, p_max / K_e less the foot's own weight %.4f mm\n", r.rebound_m * 1e3, drop * 1e3);
@@ -159,23 +182,23 @@ static void sole_against_bekker(const char *soil, double n, double load_kg, doub
 static void sole_sinks_as_bekker_says(void)
 {
     const char *soils[2] = {"dry_sand.ini", "sandy_loam.ini"};
-    const double n[2] = {1.1, 0.7}, loads[2] = {13, 26};
+    const double loads[2] = {13, 26};
     for (int s = 0; s < 2; s++)
         for (int k = 0; k < 2; k++)
-            sole_against_bekker(soils[s], n[s], loads[k], 1e-3, 0, 0, NULL);
+            sole_against_bekker(soils[s], loads[k], 1e-3, 0, 0, NULL);
 }
 
-/* The presets' grid (0.5 mm) serves the flat sole every fourth node (coarse_grid_m 2 mm, docs/soil.md,
- * Speed): the same law as on a 2 mm grid, whose sinkage the halving test bounds against 1 mm. */
+/* The presets' grid (0.5 mm) serves the flat sole every 16th node (coarse_grid_m 8 mm, docs/soil.md,
+ * Grid spacing): the same law as on an 8 mm grid, whose sinkage the halving test bounds against 4 mm. */
 static void the_sole_on_its_coarse_grid(void)
 {
     sole_run c, g;
-    sole_against_bekker("dry_sand.ini", 1.1, 26, 5e-4, 2e-3, 7, &c);
-    CHECK_NEAR(c.spacing_m, 2e-3, 1e-12);
-    sole_on("dry_sand.ini", 26, 2e-3, 0, 7, &g);
-    /* the same nodes at the same points (i 4 dx against i 2 mm: rounding apart), so the same state:
-     * far closer than the 46 um the halving test sees between 2 and 1 mm */
-    printf("  every 4th node of 0.5 mm: sinkage %.6f mm on %ld nodes; a 2 mm grid: %.6f mm on %ld nodes\n",
+    sole_against_bekker("dry_sand.ini", 26, 5e-4, 8e-3, 7, &c);
+    CHECK_NEAR(c.spacing_m, 8e-3, 1e-12);
+    sole_on("dry_sand.ini", 26, 8e-3, 0, 7, &g);
+    /* the same nodes at the same points (i 16 dx against i 8 mm: rounding apart), so the same state:
+     * far closer than the halving test's bound between 8 and 4 mm */
+    printf("  every 16th node of 0.5 mm: sinkage %.6f mm on %ld nodes; an 8 mm grid: %.6f mm on %ld nodes\n",
            c.sink_m * 1e3, c.nodes, g.sink_m * 1e3, g.nodes);
     CHECK(c.nodes == g.nodes);
     CHECK_NEAR(c.sink_m, g.sink_m, 1e-6);
@@ -184,16 +207,23 @@ static void the_sole_on_its_coarse_grid(void)
 
 static void halving_the_grid_moves_sinkage_little(void)
 {
-    /* turned 7 degrees, so that the sole's edges cut the grid's rows at every offset (aligned, both
-     * grids would hold the sole's exact area and give the same bits) */
+    /* turned 7 degrees, so that the sole's edges cut the grid's rows at every offset; 8 mm is the
+     * sole's spacing (coarse_grid_m), 4 mm half of it */
     sole_run a, b;
-    sole_on("dry_sand.ini", 26, 2e-3, 0, 7, &a);
-    sole_on("dry_sand.ini", 26, 1e-3, 0, 7, &b);
-    /* each grid's area is the sole's to within its edge band: the two differ by at most the sum */
-    double bound = b.sink_m * (area_bound(&a, 2e-3) + area_bound(&b, 1e-3)) / 1.1;
-    printf("  sinkage on a 2 mm grid %.4f mm, on 1 mm %.4f mm: %.4f mm apart, bound %.4f mm\n", a.sink_m * 1e3,
-           b.sink_m * 1e3, fabs(a.sink_m - b.sink_m) * 1e3, bound * 1e3);
+    sole_on("dry_sand.ini", 26, 8e-3, 0, 7, &a);
+    sole_on("dry_sand.ini", 26, 4e-3, 0, 7, &b);
+    /* both within the range b's perimeter allows on the coarser grid (which holds the finer's), plus
+     * 1e-5 m/s for the settling's time; were the coverage to miscount the area by a cell along each
+     * side (P ds / 2, 19 % at 8 mm), the sinkage would move 1/n of that, about 6 mm */
+    double lo, hi;
+    sole_sinkage_range("dry_sand.ini", &a, 8e-3, &lo, &hi);
+    double bound = hi - lo + 2e-5;
+    printf("  sinkage on an 8 mm grid %.4f mm, on 4 mm %.4f mm: %.4f mm apart, bound %.4f mm (b's range: %.4f to "
+           "%.4f mm)\n",
+           a.sink_m * 1e3, b.sink_m * 1e3, fabs(a.sink_m - b.sink_m) * 1e3, bound * 1e3, lo * 1e3, hi * 1e3);
     CHECK(fabs(a.sink_m - b.sink_m) <= bound);
+    CHECK(a.sink_m >= lo - 1e-5 && a.sink_m <= hi + 1e-5);
+    CHECK(b.sink_m >= lo - 1e-5 && b.sink_m <= hi + 1e-5);
 }
 
 /* ---- a link's capsule on its own spacing ---------------------------------------------------- */
@@ -252,10 +282,11 @@ static void halving_the_capsules_spacing_moves_sinkage_little(void)
     REQUIRE(fs_terrain_load("terrains/soils/lete_sand.ini", set, across ? 1 : 0, &t, &err) == FS_OK);
     const fs_soil_def d = t.def.soil;
     fs_terrain_free(&t);
-    if (!across) { /* the default rule's spacings for the feet's widths (0.5 mm grid, 2 mm at most) */
+    if (!across) { /* the default rule's spacings for the feet's widths (0.5 mm grid, 8 mm at most) */
         CHECK(d.nodes_across == 6);
         CHECK(fs_soil_stride(&d, 0.006) == 2 && fs_soil_stride(&d, 0.0075) == 2 && fs_soil_stride(&d, 0.008) == 2);
-        CHECK(fs_soil_stride(&d, 0.010) == 2 && fs_soil_stride(&d, 0.012) == 4 && fs_soil_stride(&d, 0.070) == 4);
+        CHECK(fs_soil_stride(&d, 0.010) == 2 && fs_soil_stride(&d, 0.012) == 4 && fs_soil_stride(&d, 0.070) == 16);
+        CHECK(fs_soil_stride(&d, 0.024) == 8 && fs_soil_stride(&d, 0.0479) == 8 && fs_soil_stride(&d, 0.048) == 16);
         CHECK(fs_soil_stride(&d, 0.0059) == 1);
     }
     /* each capsule as the foot's (docs/soil.md, The feet's shapes): radius and plan area at rest,
@@ -334,6 +365,58 @@ static fs_soil_body plate_body(double x, double z, double beta, double vx, doubl
     double R[9] = {c, 0, s, 0, 1, 0, -s, 0, c};
     memcpy(b.R, R, sizeof R);
     return b;
+}
+
+/* Coverage (fs_soil_grid.h): a box's nodes carry its plan's area wherever its edges fall on the grid.
+ * The flat sole's plate (70 x 100 x 10 mm), level or pitched 5 degrees, its bottom 10 mm into the soil
+ * everywhere (so that every node under its plan is pressed), turned 0, 7 and 30 degrees about z and
+ * moved by quarters of a cell, met every 4th, 8th and 16th node of 0.5 mm (2, 4 and 8 mm). The rows
+ * partition the plan exactly (each strip's area, the first and last taking all below and above
+ * them), so the weighted area is the plan's save rounding and a row whose span holds no node (a
+ * corner's sliver, narrower than a cell over less than a cell's height): bound one cell, ds^2. The
+ * count of nodes alone would miss by up to half a cell along the perimeter, P ds / 2 (about 20 cells
+ * at 8 mm): the check fails if the weighting miscounts, and one unweighted count must be off by more
+ * than the bound (else the test would prove nothing). */
+static void a_box_carries_its_plans_area(void)
+{
+    static fs_terrain t;
+    static fs_soil_grid g;
+    const double L = 0.07, W = 0.1, half = 0.005, pitch = 5 * M_PI / 180;
+    const char *set[] = {"soil.grid_m=5e-4"};
+    const int strides[3] = {4, 8, 16};
+    const double yaws[3] = {0, 7, 30};
+    double worst = 0, worst_count = 0;
+    for (int k = 0; k < 3; k++)
+        for (int tilt = 0; tilt < 2; tilt++)
+            for (int y = 0; y < 3; y++)
+                for (int q = 0; q < 4; q++) {
+                    plate_grid("terrains/soils/dry_sand.ini", set, 1, L, W, half, &t, &g);
+                    g.shape[0].stride = strides[k];
+                    double ds = strides[k] * g.dx, b = tilt ? pitch : 0, a = yaws[y] * M_PI / 180;
+                    fs_soil_body body = plate_body(0.25 * q * ds, t.def.soil.depth_m - 0.01 + half, b, 0, 0);
+                    /* yaw about z after the pitch about y: R = Rz(a) Ry(b) */
+                    double ca = cos(a), sa = sin(a), Ry[9];
+                    memcpy(Ry, body.R, sizeof Ry);
+                    for (int c = 0; c < 3; c++) {
+                        body.R[c] = ca * Ry[c] - sa * Ry[3 + c];
+                        body.R[3 + c] = sa * Ry[c] + ca * Ry[3 + c];
+                    }
+                    body.p[1] = 0.25 * (3 - q) * ds;
+                    fs_error err;
+                    REQUIRE(fs_soil_grid_step(&g, &body, 1e-4, &err) == FS_OK);
+                    /* the plan of the pitched plate: its length over the pitch plus the two ends' faces */
+                    double plan = (L * cos(b) + 2 * half * sin(b)) * W, P = 2 * (L + W);
+                    double err_w = fabs(g.area_m2[0] - plan), err_n = fabs(g.nodes[0] * ds * ds - plan);
+                    worst = fmax(worst, err_w / (ds * ds));
+                    worst_count = fmax(worst_count, err_n / (ds * ds));
+                    CHECK(err_w <= ds * ds);
+                    CHECK(err_n <= P * ds / 2 + ds * ds);
+                    fs_soil_grid_free(&g);
+                    fs_terrain_free(&t);
+                }
+    printf("  weighted area within %.3g cells of the plan's; the node count alone within %.3g cells\n", worst,
+           worst_count);
+    CHECK(worst_count > 1);
 }
 
 /* A plate longer than 3K (80.2 mm against 60 mm, so that its reference holds at every j asked) pressed
@@ -664,4 +747,4 @@ FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_til
              TEST(soil_landing_impulse_is_the_falls_momentum), TEST(plate_dragged_follows_janosi), TEST(bad_soils_are_refused),
              TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little),
              TEST(the_sole_on_its_coarse_grid), TEST(stacked_shapes_outgrow_the_claims),
-             TEST(halving_the_capsules_spacing_moves_sinkage_little))
+             TEST(halving_the_capsules_spacing_moves_sinkage_little), TEST(a_box_carries_its_plans_area))

@@ -4,8 +4,8 @@
  * drop and no drawn pose, run until at rest or 1 s. (The static-load scenario's bare force at the
  * ankle turns a foot on soil over: nothing holds its pitch once the heel sinks.) Per run: the
  * ankle's drop, the deepest print under the foot, the foot's tilt (its ankle body's z axis from
- * vertical), the time to rest, the area the soil carries the foot on (its nodes times the grid's
- * cell), and the soil's share of the ground force (the rest on the bedrock).
+ * vertical), the time to rest, the area the soil carries the foot on (fs_sim_soil_area: its nodes
+ * times their cells, the sole's edge nodes times the share of its plan they stand for), and the soil's share of the ground force (the rest on the bedrock).
  * Built with footsim (`cmake --build build` makes build/soil-figures); run from the source folder:
  * `build/soil-figures > results/soil/static_load.md` (`build/soil-figures FOOT`: only that foot's rows).
  * A Markdown table on stdout. */

@@ -65,7 +65,7 @@ static const struct scene_spec {
     FS_RIG("flat_rig_slope", "flat foot on the slope (rig)", "../terrains/slope.ini"),
     FS_RIG("flat_rig_soft", "flat foot on soft ground (rig)", "../terrains/soft.ini"),
     /* a soil (docs/soil.md): its reference also on the fine grid everywhere (the sole's nodes 0.5 mm
-     * apart, not coarse_grid_m's 2 mm), so that the error holds the coarse grid's as well as the step's */
+     * apart, not coarse_grid_m's 8 mm), so that the error holds the coarse grid's as well as the step's */
     FS_RIG("flat_rig_dry_sand", "flat foot on dry sand (rig; reference at 1e-5 s on the 0.5 mm grid)",
            "../terrains/soils/dry_sand.ini"),
 #undef FS_RIG

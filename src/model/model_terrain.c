@@ -65,9 +65,9 @@ const fs_key fs_terrain_keys[] = {
     NUM("soil", "grid_m", soil.grid_m, 1e-4, 0.05, 0, "m", "5e-4",
         "the finest spacing of the soil's nodes: each shape is met on it or on a power-of-two multiple of it "
         "(nodes_across, coarse_grid_m; docs/soil.md, Grid spacing)"),
-    NUM("soil", "coarse_grid_m", soil.coarse_grid_m, 0, 0.05, 0, "m", "0.002",
+    NUM("soil", "coarse_grid_m", soil.coarse_grid_m, 0, 0.05, 0, "m", "0.008",
         "the widest spacing a shape's nodes may have (the flat sole's; a power-of-two multiple of grid_m, at most "
-        "16; 0: every shape on grid_m; docs/soil.md, Grid spacing)"),
+        "16 times it; 0: every shape on grid_m; docs/soil.md, Grid spacing)"),
     INT("soil", "nodes_across", soil.nodes_across, 1, 256, "6",
         "each shape is met on the widest power-of-two multiple of grid_m (up to coarse_grid_m) that leaves at least "
         "this many nodes across its narrowest side (docs/soil.md, Grid spacing)"),

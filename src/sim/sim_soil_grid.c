@@ -29,6 +29,9 @@ typedef struct placed {
     double cA[3], cB[3]; /* capsule: the part of its segment whose balls reach below a height (clip_below) */
     double D[3], a, aD, r2; /* capsule: B - A, |D_xy|^2, |D|^2 (as a + D_z^2), r^2 */
     int flat[3];            /* box: its axis k is horizontal (the line runs along its faces k) */
+    double hull[8][2];      /* box: its plan, the hull of its corners' plans, counter-clockwise (coverage) */
+    int nh;
+    double hull_m2, ylo, yhi; /* ... its area and its extent in y */
 } placed;
 
 /* The lowest point of the capsule (segment A-B, radius r) on the vertical line through (x, y): the
@@ -92,6 +95,54 @@ static inline double box_lowest(const placed *p, double x, double y, double n[3]
     return p->A[2] + t0;
 }
 
+/* A box's eight corners in plan. */
+static void box_corners(const placed *p, double pt[8][2])
+{
+    for (int c = 0; c < 8; c++) {
+        double sx = c & 1 ? 1 : -1, sy = c & 2 ? 1 : -1, sz = c & 4 ? 1 : -1;
+        for (int k = 0; k < 2; k++)
+            pt[c][k] = p->A[k] + p->R[3 * k] * sx * p->half[0] + p->R[3 * k + 1] * sy * p->half[1] +
+                       p->R[3 * k + 2] * sz * p->half[2];
+    }
+}
+
+static double cross3(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+/* A box's plan: the convex hull of its corners (Andrew's monotone chain, counter-clockwise, no
+ * repeated or collinear points), its area and its extent in y. */
+static void box_hull(placed *p)
+{
+    double pt[8][2], h[16][2];
+    box_corners(p, pt);
+    for (int a = 1; a < 8; a++) /* by x, then y */
+        for (int b = a; b > 0 && (pt[b][0] < pt[b - 1][0] || (pt[b][0] == pt[b - 1][0] && pt[b][1] < pt[b - 1][1])); b--) {
+            double t0 = pt[b][0], t1 = pt[b][1];
+            pt[b][0] = pt[b - 1][0], pt[b][1] = pt[b - 1][1], pt[b - 1][0] = t0, pt[b - 1][1] = t1;
+        }
+    int n = 0;
+    for (int pass = 0; pass < 2; pass++) { /* the lower chain left to right, the upper right to left */
+        int base = n;
+        for (int k = 0; k < 8; k++) {
+            const double *q = pt[pass ? 7 - k : k];
+            while (n >= base + 2 && cross3(h[n - 2], h[n - 1], q) <= 0)
+                n--;
+            h[n][0] = q[0], h[n][1] = q[1], n++;
+        }
+        n--; /* each chain's last point starts the other */
+    }
+    p->nh = n < 8 ? n : 8;
+    p->hull_m2 = 0, p->ylo = INFINITY, p->yhi = -INFINITY;
+    for (int k = 0; k < p->nh; k++) {
+        p->hull[k][0] = h[k][0], p->hull[k][1] = h[k][1];
+        p->ylo = lo2(p->ylo, h[k][1]), p->yhi = hi2(p->yhi, h[k][1]);
+    }
+    for (int k = 0; k < p->nh; k++)
+        p->hull_m2 += 0.5 * cross3(p->hull[0], p->hull[k], p->hull[(k + 1) % p->nh]);
+}
+
 static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
 {
     p->kind = s->kind;
@@ -111,9 +162,12 @@ static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
     p->a = p->D[0] * p->D[0] + p->D[1] * p->D[1];
     p->aD = p->a + p->D[2] * p->D[2];
     p->r2 = p->r * p->r;
+    p->nh = 0;
+    if (p->kind == FS_SOIL_BOX)
+        box_hull(p);
 }
 
-static double placed_lowest(const placed *p, double x, double y, double n[3])
+static inline double placed_lowest(const placed *p, double x, double y, double n[3])
 {
     return p->kind == FS_SOIL_CAPSULE ? capsule_lowest(p, x, y, n) : box_lowest(p, x, y, n);
 }
@@ -531,18 +585,13 @@ static void row_span(const placed *p, double y, double *lo, double *hi)
         return;
     }
     double pt[8][2];
-    for (int c = 0; c < 8; c++) {
-        double sx = c & 1 ? 1 : -1, sy = c & 2 ? 1 : -1, sz = c & 4 ? 1 : -1;
-        for (int k = 0; k < 2; k++)
-            pt[c][k] = p->A[k] + p->R[3 * k] * sx * p->half[0] + p->R[3 * k + 1] * sy * p->half[1] +
-                       p->R[3 * k + 2] * sz * p->half[2];
-    }
+    box_corners(p, pt);
     static const int e[24] = {0, 1, 2, 3, 4, 5, 6, 7, 0, 2, 1, 3, 4, 6, 5, 7, 0, 4, 1, 5, 2, 6, 3, 7};
     row_edges((const double(*)[2])pt, e, 12, y, lo, hi);
 }
 
 /* The nodes [*i0, *i1] of row j that a shape's plan may cover, within its box's range r; 0 when none. */
-static int row_nodes(const fs_soil_grid *g, const placed *p, const int r[4], int j, int *i0, int *i1)
+static inline int row_nodes(const fs_soil_grid *g, const placed *p, const int r[4], int j, int *i0, int *i1)
 {
     double lo, hi, pad = 1e-7 + 1e-9 * g->dx * g->nx;
     row_span(p, g->y0 + j * g->dx, &lo, &hi);
@@ -551,6 +600,129 @@ static int row_nodes(const fs_soil_grid *g, const placed *p, const int r[4], int
     *i0 = (int)fmax(r[0], ceil((lo - pad - g->x0) / g->dx));
     *i1 = (int)fmin(r[1], floor((hi + pad - g->x0) / g->dx));
     return *i0 <= *i1;
+}
+
+/* ---- coverage: a box's nodes carry its plan's exact area ------------------------------------- */
+
+/* Where a box's plan (its hull) meets the line y: [*lo, *hi] (lo > hi when it does not). */
+static void hull_span(const placed *p, double y, double *lo, double *hi)
+{
+    *lo = INFINITY, *hi = -INFINITY;
+    for (int k = 0; k < p->nh; k++) {
+        const double *a = p->hull[k], *b = p->hull[(k + 1) % p->nh];
+        if ((y - a[1]) * (y - b[1]) > 0 || a[1] == b[1])
+            continue;
+        double x = a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
+        *lo = lo2(*lo, x), *hi = hi2(*hi, x);
+    }
+}
+
+/* The area of a box's plan below the line y, m^2 (the hull cut by the half-plane, by the shoelace). */
+static double hull_below(const placed *p, double y)
+{
+    if (y <= p->ylo)
+        return 0;
+    if (y >= p->yhi)
+        return p->hull_m2;
+    double q[10][2], a2 = 0;
+    int m = 0;
+    for (int k = 0; k < p->nh; k++) {
+        const double *a = p->hull[k], *b = p->hull[(k + 1) % p->nh];
+        if (a[1] <= y)
+            q[m][0] = a[0], q[m][1] = a[1], m++;
+        if ((a[1] <= y) != (b[1] <= y))
+            q[m][0] = a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]), q[m][1] = y, m++;
+    }
+    for (int k = 1; k + 1 < m; k++)
+        a2 += cross3(q[0], q[k], q[k + 1]);
+    return 0.5 * a2;
+}
+
+/* Whether the node (i, j) lies in the shape's plan, asked as the step asks it (row_nodes, then a
+ * lowest point), so that the weights and the claims never disagree where an edge falls on a node. */
+static int in_plan(const fs_soil_grid *g, const placed *p, const int r[4], int i, int j)
+{
+    int i0, i1;
+    double n[3];
+    if (j < r[2] || j > r[3] || !row_nodes(g, p, r, j, &i0, &i1) || i < i0 || i > i1)
+        return 0;
+    return placed_lowest(p, g->x0 + i * g->dx, g->y0 + j * g->dx, n) < INFINITY;
+}
+
+/* Whether row j holds a node of stride st in the shape's plan. */
+static int row_in_plan(const fs_soil_grid *g, const placed *p, const int r[4], int j, int st)
+{
+    int i0, i1;
+    double n[3];
+    if (j < r[2] || j > r[3] || !row_nodes(g, p, r, j, &i0, &i1))
+        return 0;
+    for (int i = (i0 + st - 1) / st * st; i <= i1; i += st)
+        if (placed_lowest(p, g->x0 + i * g->dx, g->y0 + j * g->dx, n) < INFINITY)
+            return 1;
+    return 0;
+}
+
+/* A row of a box's nodes (stride st, row j at y): its plan's span there and the plan's area the row
+ * stands for, in cells of its stride. The rows partition the plan: a row stands for the strip of half
+ * a cell each side of it, the first row (none of the plan's nodes a cell below) for all of the plan
+ * below it, the last for all above; in a row, the nodes inside stand for their cells and the first
+ * and last for the span out to the edge (coverage()). So a box's nodes, all pressed, carry its plan's
+ * area wherever its edges fall on the grid (docs/soil.md, Grid spacing). */
+typedef struct cover_row {
+    double lo, hi, cells, span, inv_ds;
+    int st, j, exact;
+} cover_row;
+
+/* Whether the row a cell from row j (at y, where the plan is w wide), towards the plan's end e (ylo
+ * or yhi), holds plan nodes. The plan's width is concave in y, so there it is at least
+ * w |yn - e| / |y - e|: a cell or more holds a node, and nothing need be asked. */
+static int next_row_holds(const fs_soil_grid *g, const placed *p, const int r[4], int j, int dj, double e, double w,
+                          int st)
+{
+    double ds = st * g->dx, y = g->y0 + j * g->dx, yn = g->y0 + (j + dj) * g->dx;
+    if ((yn - e) * (y - e) < -1e-6 * ds * ds)
+        return 0;
+    if (w * fabs(yn - e) >= (1 + 1e-6) * ds * fabs(y - e))
+        return 1;
+    return row_in_plan(g, p, r, j + dj, st);
+}
+
+static void cover_row_at(const fs_soil_grid *g, const placed *p, const int r[4], int j, int st, cover_row *c)
+{
+    double ds = st * g->dx, y = g->y0 + j * g->dx;
+    hull_span(p, y, &c->lo, &c->hi);
+    c->inv_ds = 1 / ds;
+    c->span = (c->hi - c->lo) * c->inv_ds;
+    c->st = st, c->j = j;
+    int below = next_row_holds(g, p, r, j, -st, p->ylo, c->hi - c->lo, st);
+    int above = next_row_holds(g, p, r, j, st, p->yhi, c->hi - c->lo, st);
+    int corner = 0;
+    for (int k = 0; k < p->nh; k++)
+        corner |= fabs(p->hull[k][1] - y) < 0.5 * ds;
+    /* a strip with no corner between rows that hold nodes: its area is its span at y times its height */
+    c->exact = below && above && !corner;
+    if (c->exact) {
+        c->cells = c->span;
+        return;
+    }
+    double lo = below ? hull_below(p, y - 0.5 * ds) : 0, up = above ? hull_below(p, y + 0.5 * ds) : p->hull_m2;
+    c->cells = (up - lo) * c->inv_ds * c->inv_ds;
+}
+
+/* The share of its cell a box's node i in row c carries: 1 inside; at the row's ends (the next node
+ * out not in the plan), its cell's inner half and the span out to the edge; the row's nodes scaled to
+ * the strip's area (the span at y is the strip's mean width but where a corner lies in the strip, or
+ * at the first and last rows). */
+static double coverage(const fs_soil_grid *g, const placed *p, const int r[4], const cover_row *c, int i)
+{
+    double x = g->x0 + i * g->dx, el = (x - c->lo) * c->inv_ds, eh = (c->hi - x) * c->inv_ds, wx = 1;
+    if (el < 1 + 1e-6 && (el < 1 - 1e-6 || !in_plan(g, p, r, i - c->st, c->j)))
+        wx += hi2(el, 0) - 0.5;
+    if (eh < 1 + 1e-6 && (eh < 1 - 1e-6 || !in_plan(g, p, r, i + c->st, c->j)))
+        wx += hi2(eh, 0) - 0.5;
+    if (c->exact)
+        return wx;
+    return c->span > 1e-9 ? wx * c->cells / c->span : c->cells;
 }
 
 /* A row's stored nodes in one tile: base[(i - off) >> sh] for i = a, a + st, ... b (st = 2^sh). */
@@ -712,10 +884,13 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
             if (!row_nodes(g, p, r, j, &i0, &i1))
                 continue;
             const double y = g->y0 + j * g->dx;
+            cover_row cr = {0, 0, 0, 0, 0, 0, 0, 0};
             for (int ti = i0 / T; ti <= i1 / T; ti++) {
                 seg q;
                 if (!segment(g, j, i0, i1, ti, &q))
                     continue;
+                if (p->nh && q.st != cr.st)
+                    cover_row_at(g, p, r, j, q.st, &cr);
                 if (nc + (q.b - q.a) / q.st + 1 > g->cap_claims) {
                     fs_status st = grow_claims(g, nc + (q.b - q.a) / q.st + 1, err);
                     if (st != FS_OK)
@@ -730,7 +905,8 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
                     nd->shape = s;
                     nd->zb_m = z;
                     memcpy(nd->n, n, sizeof n);
-                    g->claim[nc++] = (fs_soil_claim){nd, i, j, q.st};
+                    double w = p->nh ? coverage(g, p, r, &cr, i) : 1;
+                    g->claim[nc++] = (fs_soil_claim){nd, i, j, q.st, w};
                 }
             }
         }
@@ -744,7 +920,8 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
         /* Bekker's b of the shape's loaded patch: twice its area over its perimeter (Chrono's convention),
          * in units of dx^2 and dx (a node of stride st covers st^2 and each of its open sides st); a
          * node claimed here and by a later shape is that shape's */
-        long cells = 0, area = 0, edges = 0;
+        long cells = 0, edges = 0;
+        double area = 0;
         for (long c = first[s]; c < first[s + 1]; c++) {
             const fs_soil_claim *cl = &g->claim[c];
             const fs_soil_node *nd = cl->node;
@@ -757,15 +934,15 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
                        !(lj + st < T ? OURS(nd + row) : mine(g, i, j + st, s)) +
                        !(lj >= st ? OURS(nd - row) : mine(g, i, j - st, s));
             cells++;
-            area += st * st;
+            area += st * st * cl->w;
             edges += st * open;
         }
         if (!cells)
             continue;
-        double b = hi2(g->d.b_min_m, 2.0 * (double)area * g->dx / (double)edges);
+        double b = hi2(g->d.b_min_m, 2.0 * area * g->dx / (double)edges);
         g->b_m[s] = b;
         g->nodes[s] = (int)cells;
-        g->area_m2[s] = (double)area * g->dx * g->dx;
+        g->area_m2[s] = area * g->dx * g->dx;
         const fs_soil_body *bd = &bodies[g->shape[s].body];
         const double kb = g->d.k_c_N_per_m_n1 / b + g->d.k_phi_N_per_m_n2; /* Bekker's modulus for this b */
         double shear[3] = {0, 0, 0}, shear_torque[3] = {0, 0, 0}, slope = 0, work_n = 0, work_s = 0;
@@ -774,7 +951,7 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
             fs_soil_node *nd = cl->node;
             if (!OURS(nd))
                 continue;
-            const double ds = cl->st * g->dx, A = ds * ds;
+            const double ds = cl->st * g->dx, A = ds * ds * cl->w;
             double qp[3] = {g->x0 + cl->i * g->dx, g->y0 + cl->j * g->dx, nd->zb_m};
             double rq[3] = {qp[0] - bd->p[0], qp[1] - bd->p[1], qp[2] - bd->p[2]};
             double v[3] = {bd->v[0] + bd->w[1] * rq[2] - bd->w[2] * rq[1], bd->v[1] + bd->w[2] * rq[0] - bd->w[0] * rq[2],

@@ -21,7 +21,8 @@ const fs_soil_grid *fs_sim_soil_grid(const fs_sim *sim);
 int fs_sim_soil_nodes(const fs_sim *sim, int foot);
 
 /* The area the soil carries foot on (-1: every foot) in the last (sub)step, m^2: its nodes, each
- * with its cell (a coarse node's too: fs_soil_shape.stride); 0 without a soil. */
+ * with its cell (a coarse node's too: fs_soil_shape.stride; a box's edge nodes with the share of
+ * its plan they stand for: fs_soil_grid.h, coverage); 0 without a soil. */
 double fs_sim_soil_area(const fs_sim *sim, int foot);
 /* How deep foot (-1: any) reaches below the soil's undisturbed surface now, m: the deepest of the
  * nodes its shapes carried in the last (sub)step (never past the bedrock); 0 without a soil or

@@ -20,7 +20,11 @@
  * Each step (and each substep) fs_soil_grid_step casts a vertical line through every node under a
  * shape's plan (its bounding box's rows, each cut to where the row meets the plan of the shape's part
  * that reaches below the soil's top), finds the shape's lowest surface there (capsules and boxes in
- * closed form), gives a node to the lowest shape over it, and computes per node (SCM's way, explicit):
+ * closed form), gives a node to the lowest shape over it, and computes per node (SCM's way, explicit).
+ * A box's nodes carry its plan's exact area (coverage): a node at the edge of the box's plan (the hull
+ * of its corners) stands for the part of the plan between it and the edge, so that where the edges fall
+ * on the grid moves neither the area nor the force (docs/soil.md, Grid spacing); a capsule's nodes
+ * carry their cells (its depth falls to 0 at its plan's edge):
  * - bekker: the elastic trial K_e (s - s_p); past the yield pressure, Bekker's (k_c / b + k_phi) s^n
  *   with b = 2 A / P of the shape's loaded patch (at least b_min_m), the yield raised and the plastic
  *   sinkage moved to s - sigma / K_e; damping - R v_z added, never tension; Janosi shear from the slip
@@ -81,6 +85,8 @@ typedef struct fs_soil_node {
 typedef struct fs_soil_claim {
     fs_soil_node *node;
     int i, j, st;           /* the node's grid indices and its tile's stride */
+    double w;               /* the share of its cell it carries: 1, or for a box's node at its plan's edge the
+                             * part of the plan it stands for (fs_soil_grid_step: coverage) */
 } fs_soil_claim;
 
 typedef struct fs_soil_grid {
@@ -107,7 +113,8 @@ typedef struct fs_soil_grid {
     /* the last step's results, per shape: force and torque about its body's origin (world), nodes */
     double force[FS_SOIL_MAX_SHAPES][3], torque[FS_SOIL_MAX_SHAPES][3];
     int nodes[FS_SOIL_MAX_SHAPES];
-    double area_m2[FS_SOIL_MAX_SHAPES]; /* ... and their area (nodes times their cells) */
+    double area_m2[FS_SOIL_MAX_SHAPES]; /* ... and their area (nodes times their cells, a box's edge nodes
+                                         * times the share of the plan they stand for) */
     double b_m[FS_SOIL_MAX_SHAPES];
     double tan_phi;         /* tan of the friction angle, once */
     double work_J;          /* work the soil's forces have taken out of the bodies (sum of -F.v h) */
