@@ -148,7 +148,7 @@ check_that "a median within tolerance: exit 0" [ $? -eq 0 ]
 check_that "not listed by default" sh -c "! grep -q median_end_time_s '$tmp/cmp.out' && grep -q 'not listed: --all' '$tmp/cmp.out'"
 "$fs" compare "$tmp/near.json" "$tmp/j1/summary.json" --all >"$tmp/cmp.out"
 check_that "listed as within by --all" grep -q '| bio | bumpy | drop_weight | median_end_time_s | .* | within |' "$tmp/cmp.out"
-check_that "--all lists every quantity: 16 a cell" [ "$(grep -c '^| bio | bumpy | drop_weight | ' "$tmp/cmp.out")" -eq 16 ]
+check_that "--all lists every quantity: 21 a cell (the rate, the undecided and hung counts, 18 medians)" [ "$(grep -c '^| bio | bumpy | drop_weight | ' "$tmp/cmp.out")" -eq 21 ]
 "$fs" compare "$tmp/force.json" "$tmp/j1/summary.json" --json >"$tmp/cmp.json"
 check_that "--json exits as the Markdown does (1)" [ $? -eq 1 ]
 check_that "--json: one JSON object, every quantity with its verdict, the counts and the exit status" "$py" -c '
@@ -159,7 +159,7 @@ f = q[("bio", "drop_weight", "median_peak_force_N")]
 steps = q[("bio", "drop_weight", "median_steps")]
 assert j["verdict"] == "changed" and j["exit_status"] == 1 and j["counts"]["outside"] == 1, j["counts"]
 assert f["verdict"] == "outside" and f["result"] == 1e12 and f["low"] <= f["baseline"] <= f["high"], f
-assert steps["verdict"] == "reported" and len(j["quantities"]) == 2 * 16 == j["counts"]["quantities"]
+assert steps["verdict"] == "reported" and len(j["quantities"]) == 2 * 21 == j["counts"]["quantities"]
 ' "$tmp/cmp.json"
 # inputs differ (exit 6), a changed input named by its path, in Markdown and JSON; --force compares
 edit "$tmp/j1/summary.json" "$tmp/input.json" '[i.update(hash="0123456789abcdef") for i in j["provenance"]["inputs"] if i["path"] == "trial.ini"]'

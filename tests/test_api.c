@@ -181,8 +181,8 @@ static void trial_is_the_library_s_and_named(void)
     CHECK(!strcmp(fs_trial_rule(r), fs_rule_name(direct.rule)) && fs_trial_seed(r) == 3);
     CHECK(!strcmp(fs_trial_failure(r), ""));
     int m = fs_trial_metric_find("touchdown_s"), steps = fs_trial_metric_find("steps");
-    REQUIRE(m >= 0 && steps >= 0 && fs_trial_metric_count() == 13);
-    CHECK(!strcmp(fs_trial_metric_name(m), "touchdown_s") && fs_trial_metric_name(13) == NULL);
+    REQUIRE(m >= 0 && steps >= 0 && fs_trial_metric_count() == 18);
+    CHECK(!strcmp(fs_trial_metric_name(m), "touchdown_s") && fs_trial_metric_name(18) == NULL);
     CHECK(fs_trial_metric_find("nothing") == -1 && isnan(fs_trial_metric(r, -1)));
     CHECK_NEAR(fs_trial_metric(r, m), sqrt(2 * 0.005 / 9.81), 0.003); /* the pose's tilt moves it a little */
     CHECK(fs_trial_metric(r, m) == direct.touchdown_s && fs_trial_metric(r, steps) == (double)direct.steps);

@@ -14,6 +14,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -58,6 +59,7 @@ static int record_of(int k, fs_trial_result *r)
     r->outcome = k % 4, r->rule = 1 + k;
     r->end_time_s = 0.15, r->touchdown_s = k == 2 ? NAN : 0.01 * k, r->peak_force_N = k == 4 ? INFINITY : 123.456;
     r->steps = 1500 + k;
+    r->soil_sinkage_m = NAN, r->print_volume_m3 = k == 3 ? NAN : 1e-6 * (k + 1), r->print_slip_m = 0.001 * k;
     snprintf(r->failure, sizeof r->failure, k == 1 ? "line\nbreak \\ and\r|bar" : "");
     return order[k];
 }
@@ -192,6 +194,10 @@ static void test_round_trip(void)
               !memcmp(&res[i].draw.roll_deg, &r.draw.roll_deg, sizeof(double)) &&
               !memcmp(&res[i].touchdown_s, &r.touchdown_s, sizeof(double)) &&
               !memcmp(&res[i].peak_force_N, &r.peak_force_N, sizeof(double)));
+        /* a soil's numbers, after the others: NAN (rigid ground) and a print's volume and slip */
+        CHECK(!memcmp(&res[i].soil_sinkage_m, &r.soil_sinkage_m, sizeof(double)) &&
+              !memcmp(&res[i].print_volume_m3, &r.print_volume_m3, sizeof(double)) &&
+              !memcmp(&res[i].print_slip_m, &r.print_slip_m, sizeof(double)));
     }
     CHECK(!done[4]);
     free(data);
@@ -390,7 +396,11 @@ static void test_format1(void)
     spit(path, format1, (long)strlen(format1));
     fs_journal_tail t;
     unsigned char done[NTRIALS] = {0};
-    CHECK(read_tail(path, &t, done, NULL) == 1 && t.format == 1 && done[1] && !t.torn);
+    fs_trial_result res1[NTRIALS];
+    CHECK(read_tail(path, &t, done, res1) == 1 && t.format == 1 && done[1] && !t.torn);
+    /* a record from before the soil's numbers: its 17 numbers read, the soil's NAN */
+    CHECK(res1[1].steps == 1500 && res1[1].slip_m == 0x1p-9 && isnan(res1[1].soil_sinkage_m) &&
+          isnan(res1[1].print_depth_m) && isnan(res1[1].print_slip_m));
     char buf[2048];
     snprintf(buf, sizeof buf, "%s3 1 3 7 15", format1);
     spit(path, buf, (long)strlen(buf));

@@ -16,6 +16,7 @@
 #include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
 #include <inttypes.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -94,6 +95,9 @@ static void landing_trial_hashes_to_its_committed_value(void)
     REQUIRE(fs_trial_run("scenarios/landing_trial.ini", NULL, 0, 1, &obs, &r, &err) == FS_OK);
     CHECK(r.steps > 1000);
     check_hash("tests/determinism_landing.txt", "landing trial", h);
+    /* rigid ground: no soil's measures (empty fields in a campaign's files) */
+    CHECK(isnan(r.soil_sinkage_m) && isnan(r.print_depth_m) && isnan(r.print_area_m2) && isnan(r.print_volume_m3) &&
+          isnan(r.print_slip_m));
 }
 
 /* The same on rough ground, for each foot (seed 4: the biomimetic foot under drop_weight lands,
@@ -168,6 +172,13 @@ static void soil_landing_hashes_to_its_committed_value(void)
     REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 3, 1, &obs, &r, &err) == FS_OK);
     CHECK(r.steps > 1000);
     check_hash("tests/determinism_landing_soil.txt", "soil landing", h);
+    /* the trial's soil measures (fs_trial_result): 0.2 s is past the impact (touchdown at 32 ms),
+     * the foot in the sand and its print made. Every node's plastic sinkage is at most the deepest,
+     * so the volume is at most the depth times the area; nothing goes past the 100 mm layer. */
+    CHECK(r.soil_sinkage_m > 0 && r.soil_sinkage_m <= 0.1 + 1e-12);
+    CHECK(r.print_depth_m > 0 && r.print_depth_m <= 0.1 + 1e-12 && r.print_area_m2 > 0);
+    CHECK(r.print_volume_m3 > 0 && r.print_volume_m3 <= r.print_depth_m * r.print_area_m2 * (1 + 1e-12));
+    CHECK(r.print_slip_m >= 0 && isfinite(r.print_slip_m));
 }
 
 /* The end of a quickstep run, which draws on ODE's random generator to order its constraints. */

@@ -70,12 +70,16 @@ static void machine_presses_until_the_soil_carries_it(void)
     CHECK(r.soil == 1 && r.nsteps == 2 && r.steps_completed == 2);
     for (int i = 0; i < r.nsteps; i++) {
         const fs_walk_step *w = &r.step[i];
-        printf("  step %d: sinkage %.2f mm, force %.0f N (W %.0f N), pressed %.2f mm more, the soil took %.3f J\n", i + 1,
-               w->sinkage_m * 1e3, w->load_N, W, w->extra_press_m * 1e3, w->soil_work_J);
+        printf("  step %d: sinkage %.2f mm, force %.0f N (W %.0f N), pressed %.2f mm more, the soil took %.3f J, slip on "
+               "the soil under the foot %.2f mm\n", i + 1, w->sinkage_m * 1e3, w->load_N, W, w->extra_press_m * 1e3,
+               w->soil_work_J, w->soil_slip_m * 1e3);
         CHECK(w->sinkage_m > 0 && w->sinkage_m < sc.terrain.def.soil.depth_m);
         CHECK(w->load_N >= 0.9 * W);
         CHECK(w->extra_press_m > 0);
         CHECK(w->soil_work_J > 0);
+        /* the slider holds the ankle in x and y, but the toes and links flex and turn as they load: the
+           soil under them is sheared, so the slip its nodes keep is there (and finite) */
+        CHECK(w->soil_slip_m > 0 && isfinite(w->soil_slip_m));
     }
     fs_scenario_free(&sc);
     const char *rigid[] = {"walk.steps=1", "scenario.terrain=../terrains/flat.ini"};

@@ -29,7 +29,7 @@
 /* ---- the flat sole on Bekker soils ----------------------------------------------------------- */
 
 typedef struct sole_run {
-    double W_N, A_m2, P_m, sink_m, sigma_Pa, rebound_m, print_m3, dent_m3, grid_print_m3, plastic_m;
+    double W_N, A_m2, P_m, sink_m, sigma_Pa, rebound_m, print_m3, dent_m3, grid_print_m3, plastic_m, print_area_m2;
     double b_m, spacing_m; /* the sole's nodes' spacing */
     long nodes;
 } sole_run;
@@ -104,6 +104,10 @@ static void sole_on(const char *soil, double load_kg, double grid_m, double coar
     CHECK(fs_sim_soil_nodes(&sim, -1) == 0);
     long marked;
     out->grid_print_m3 = fs_soil_grid_print(g, &out->plastic_m, &marked);
+    fs_soil_print pr;
+    fs_soil_grid_print_of(g, &pr);
+    CHECK(pr.volume_m3 == out->grid_print_m3 && pr.deepest_m == out->plastic_m && pr.nodes == marked);
+    out->print_area_m2 = pr.area_m2;
     double dent = 0;
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
@@ -173,6 +177,8 @@ static void sole_against_bekker(const char *soil, double load_kg, double grid_m,
     printf("    print %.4g m^3 (surface %.4g m^3), area x plastic sinkage %.4g m^3\n", r.grid_print_m3, r.dent_m3,
            r.A_m2 * sp);
     CHECK_NEAR(r.dent_m3, r.grid_print_m3, 1e-12);
+    /* the print's area is the sole's, but for the nodes within half a spacing of its edge */
+    CHECK_NEAR(r.print_area_m2, r.A_m2, r.A_m2 * area_bound(&r, grid));
     CHECK_NEAR(r.grid_print_m3, r.A_m2 * sp, r.A_m2 * sp * (area_bound(&r, grid) + tol / sp));
     fs_terrain_free(&t);
     if (out)

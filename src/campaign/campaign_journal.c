@@ -12,6 +12,7 @@
 #include <fcntl.h>
 #include <inttypes.h>
 #include <limits.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -19,7 +20,10 @@
 
 #define MAGIC "footsim campaign journal"
 
-enum { NDOUBLES = 17 };
+/* A record's numbers: NDOUBLES_OLD of them before footsim measured a soil's print, the soil's five
+ * after them since (a record with the first only, from an earlier footsim, leaves those NAN: the
+ * format is the same). */
+enum { NDOUBLES_OLD = 17, NDOUBLES = 22 };
 
 /* The numbers of a record, in the order they are written. */
 static double *double_field(fs_trial_result *r, int k)
@@ -28,7 +32,8 @@ static double *double_field(fs_trial_result *r, int k)
                                  &r->draw.roll_deg, &r->robot_mass_kg, &r->end_time_s, &r->touchdown_s,
                                  &r->peak_tilt_deg, &r->final_tilt_deg, &r->peak_force_N, &r->impact_impulse_Ns,
                                  &r->settle_time_s, &r->mean_contacts, &r->final_contacts, &r->ankle_drop_m,
-                                 &r->slip_m};
+                                 &r->slip_m, &r->soil_sinkage_m, &r->print_depth_m, &r->print_area_m2,
+                                 &r->print_volume_m3, &r->print_slip_m};
     return f[k];
 }
 
@@ -352,6 +357,11 @@ static int parse_record(const char *line, int format, int *index, fs_trial_resul
     *index = (int)v[0];
     r->draw.seed = (int)v[1], r->outcome = (int)v[2], r->rule = (int)v[3], r->steps = v[4];
     for (int k = 0; k < NDOUBLES; k++) {
+        if (k == NDOUBLES_OLD && !strncmp(p, " |", 2)) { /* an earlier footsim's record: all of it or none */
+            for (; k < NDOUBLES; k++)
+                *double_field(r, k) = NAN;
+            break;
+        }
         *double_field(r, k) = strtod(p, &end);
         if (end == p || *end != ' ')
             return 0;

@@ -19,6 +19,12 @@ const fs_metric fs_campaign_metrics[FS_CAMPAIGN_NMETRICS] = {
     {.name = "slip_m", .tolerance = "0.1, 0.001"},
     {.name = "steps", .tolerance = "0.1, 100", .reported = 1}, /* follows the step: reported, not judged */
     {.name = "rest_ankle_drop_m", .tolerance = "0.1, 0.001", .over_landed = 1},
+    /* a soil's (empty on rigid ground): the feet's sinkage at the end, their prints, the slip on them */
+    {.name = "soil_sinkage_m", .tolerance = "0.1, 0.001"},
+    {.name = "print_depth_m", .tolerance = "0.1, 0.001"},
+    {.name = "print_area_m2", .tolerance = "0.1, 0.0001"},
+    {.name = "print_volume_m3", .tolerance = "0.1, 1e-6"},
+    {.name = "print_slip_m", .tolerance = "0.1, 0.001"},
 };
 
 double fs_metric_value(const fs_trial_result *r, int m)
@@ -28,6 +34,8 @@ double fs_metric_value(const fs_trial_result *r, int m)
                                             r->settle_time_s,  r->mean_contacts,     r->final_contacts,
                                             r->ankle_drop_m,   r->slip_m,            (double)r->steps,
                                             /* the ankle's drop at rest: a trial that fell never rested */
-                                            r->outcome == FS_LANDED ? r->ankle_drop_m : NAN};
+                                            r->outcome == FS_LANDED ? r->ankle_drop_m : NAN,
+                                            r->soil_sinkage_m, r->print_depth_m, r->print_area_m2,
+                                            r->print_volume_m3, r->print_slip_m};
     return v[m];
 }

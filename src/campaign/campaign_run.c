@@ -149,6 +149,7 @@ static void record_death(int task, const fs_pool_death *d, void *user)
     r->end_time_s = r->touchdown_s = r->peak_tilt_deg = r->final_tilt_deg = r->peak_force_N = nan;
     r->impact_impulse_Ns = r->settle_time_s = r->mean_contacts = r->final_contacts = nan;
     r->ankle_drop_m = r->slip_m = nan;
+    r->soil_sinkage_m = r->print_depth_m = r->print_area_m2 = r->print_volume_m3 = r->print_slip_m = nan;
     /* only a numerical failure (ODE's error handler exits with status 3) is one; a hang or a kill
        from outside says nothing of the physics */
     int numerics = d->exited && d->status == FS_NUMERICAL;

@@ -136,6 +136,18 @@ static void observe_step(const fs_sim *sim, watch *w, fs_trial_result *out, doub
     }
 }
 
+/* The soil's measures at the end (fs_trial_result), NAN on rigid ground. */
+static void soil_end(const fs_sim *sim, fs_trial_result *out)
+{
+    const fs_soil_grid *g = fs_sim_soil_grid(sim);
+    fs_soil_print p = {.volume_m3 = NAN, .deepest_m = NAN, .area_m2 = NAN, .mean_slip_m = NAN};
+    if (g)
+        fs_soil_grid_print_of(g, &p);
+    out->soil_sinkage_m = g ? fs_sim_soil_sinkage(sim, -1) : NAN;
+    out->print_depth_m = p.deepest_m, out->print_area_m2 = p.area_m2;
+    out->print_volume_m3 = p.volume_m3, out->print_slip_m = p.mean_slip_m;
+}
+
 static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
 {
     double a[3];
@@ -149,6 +161,7 @@ static void finish(const fs_sim *sim, const watch *w, fs_trial_result *out)
         out->slip_m = hypot(a[0] - w->touch_ankle[0], a[1] - w->touch_ankle[1]);
         out->settle_time_s = (w->rest_since >= 0 ? w->rest_since : fs_sim_time(sim)) - out->touchdown_s;
     }
+    soil_end(sim, out);
     out->nfeet = fs_sim_geom(sim)->nfeet > 1 ? fs_sim_geom(sim)->nfeet : 1;
     if (out->nfeet == 1) {
         double f[3];

@@ -86,6 +86,7 @@ static void soil_stance(walk_run *w, fs_sim *sim)
         fs_sim_ground_force(sim, f);
         r->sinkage_m = fs_sim_soil_sinkage(sim, -1);
         r->slip_m = hypot(a[0] - w->stance_ankle[0], a[1] - w->stance_ankle[1]);
+        r->soil_slip_m = fs_sim_soil_slip(sim, -1);
         r->extra_press_m = w->extra_m;
         r->load_N = f[2];
         w->out->nsteps = w->step + 1;

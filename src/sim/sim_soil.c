@@ -21,18 +21,42 @@ double fs_sim_soil_area(const fs_sim *sim, int foot) { return sim->soil ? sim->s
 
 int fs_sim_support(const fs_sim *sim) { return sim->contacts_now + (sim->soil ? sim->soil->foot_nodes[0] : 0); }
 
+/* Over the nodes foot's shapes (-1: every foot's) carried in the last (sub)step: the deepest
+ * reach below the undisturbed surface (never past the bedrock), and the slip accumulated on them
+ * averaged by area (each node with its stride x stride cells). */
+static void under_foot(const fs_sim *sim, int foot, double *deepest_m, double *mean_slip_m)
+{
+    const fs_soil_grid *g = &sim->soil->g;
+    double deepest = 0, slip = 0, cells = 0;
+    for (int t = 0; t < g->ntiles; t++) {
+        const fs_soil_node *nd = g->pool + (size_t)t * FS_SOIL_TILE * FS_SOIL_TILE;
+        int st = g->stride[g->slot_tile[t]], m = (FS_SOIL_TILE / st) * (FS_SOIL_TILE / st);
+        for (int k = 0; k < m; k++) {
+            const fs_soil_node *n = &nd[k];
+            if (n->stamp != g->stamp || (foot >= 0 && g->shape[n->shape].foot != foot))
+                continue;
+            deepest = fmax(deepest, fmin(n->h0_m - n->zb_m, g->d.depth_m));
+            slip += n->slip_m * st * st, cells += st * st;
+        }
+    }
+    *deepest_m = deepest;
+    *mean_slip_m = cells > 0 ? slip / cells : 0;
+}
+
 double fs_sim_soil_sinkage(const fs_sim *sim, int foot)
 {
-    if (!sim->soil)
-        return 0;
-    const fs_soil_grid *g = &sim->soil->g;
-    double deepest = 0;
-    for (long k = 0; k < (long)g->ntiles * FS_SOIL_TILE * FS_SOIL_TILE; k++) {
-        const fs_soil_node *n = &g->pool[k];
-        if (n->stamp == g->stamp && (foot < 0 || g->shape[n->shape].foot == foot))
-            deepest = fmax(deepest, fmin(n->h0_m - n->zb_m, g->d.depth_m));
-    }
-    return deepest;
+    double deep = 0, slip;
+    if (sim->soil)
+        under_foot(sim, foot, &deep, &slip);
+    return deep;
+}
+
+double fs_sim_soil_slip(const fs_sim *sim, int foot)
+{
+    double deep, slip = 0;
+    if (sim->soil)
+        under_foot(sim, foot, &deep, &slip);
+    return slip;
 }
 
 double fs_sim_ground_surface(const fs_sim *sim, double x, double y)

@@ -448,9 +448,9 @@ void fs_soil_grid_free(fs_soil_grid *g)
     g->pool = NULL;
 }
 
-double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
+void fs_soil_grid_print_of(const fs_soil_grid *g, fs_soil_print *p)
 {
-    double v = 0, deep = 0;
+    double v = 0, deep = 0, slip = 0;
     long n = 0;
     for (int t = 0; t < g->ntiles; t++) {
         const fs_soil_node *nd = g->pool + (size_t)t * TT;
@@ -460,13 +460,22 @@ double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
             v += st > 1 ? sp * st * st : sp;
             deep = fmax(deep, sp);
             n += sp > 0 ? st * st : 0;
+            slip += sp > 0 ? nd[k].slip_m * st * st : 0;
         }
     }
+    *p = (fs_soil_print){.volume_m3 = v * g->dx * g->dx, .deepest_m = deep, .area_m2 = (double)n * g->dx * g->dx,
+                         .mean_slip_m = n ? slip / (double)n : 0, .nodes = n};
+}
+
+double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes)
+{
+    fs_soil_print p;
+    fs_soil_grid_print_of(g, &p);
     if (deepest_m)
-        *deepest_m = deep;
+        *deepest_m = p.deepest_m;
     if (nodes)
-        *nodes = n;
-    return v * g->dx * g->dx;
+        *nodes = p.nodes;
+    return p.volume_m3;
 }
 
 fs_status fs_soil_grid_surface_copy(const fs_soil_grid *g, fs_soil_surface *s, fs_error *err)

@@ -30,14 +30,15 @@ enum {
     FS_CAMPAIGN_MAX_TRIALS = 1000000, /* feet x terrains x robots x seeds (docs/keys.md) */
     FS_SUMMARY_MAX_BYTES = 64 * 1024 * 1024, /* a summary.json compare reads */
     FS_CAMPAIGN_MAX_SET = 256,
-    FS_CAMPAIGN_NMETRICS = 13,
+    FS_CAMPAIGN_NMETRICS = 18,
     FS_CAMPAIGN_MAX_BANDS = 8,   /* [band.NAME] sections in a file */
     FS_BAND_ENDS = 2,            /* a band's ends: low and high */
     FS_BAND_MAX_SETS = 16        /* overrides per end */
 };
 
 /* The metrics of a trial (the numeric fields of fs_trial_result but the draw; last, the ankle drop
- * at rest, which a trial that did not land lacks: NAN), named with units; summaries give their
+ * at rest, which a trial that did not land lacks: NAN; then a soil's sinkage, print and slip, which
+ * rigid ground lacks: NAN), named with units; summaries give their
  * medians, the comparison their tolerances. */
 typedef struct fs_metric {
     const char *name;      /* "peak_force_N" */

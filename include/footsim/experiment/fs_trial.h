@@ -41,6 +41,11 @@ typedef struct fs_trial_result {
     double ankle_drop_m;         /* ankle height at touchdown minus at the end */
     double slip_m;               /* horizontal travel of the ankle from touchdown to the end */
     long steps;
+    /* on a soil, at the end (NAN on rigid ground): how deep the feet reach below the soil's
+       undisturbed surface (fs_sim_soil_sinkage: the deepest node they press, the bedrock at most),
+       and the prints left (fs_soil_grid_print_of: their deepest plastic sinkage, area and volume,
+       and the slip accumulated on their nodes, the mean by area) */
+    double soil_sinkage_m, print_depth_m, print_area_m2, print_volume_m3, print_slip_m;
     /* the steps taken (fs_step_stats): with run.tolerance_m the error-controlled step's, else the
        fixed step's (none rejected, least = median = largest = step_s) */
     long rejected_steps, ode_steps;

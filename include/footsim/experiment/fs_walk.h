@@ -26,6 +26,8 @@ enum { FS_WALK_MAX_STEPS = 1000 }; /* [walk] steps' largest */
 typedef struct fs_walk_step {
     double sinkage_m;     /* at the stance's end: the foot's lowest point below the undisturbed soil */
     double slip_m;        /* the ankle's horizontal travel over the stance */
+    double soil_slip_m;   /* at the stance's end: the slip (shear displacement) accumulated on the soil's nodes
+                             under the foot, their mean by area (fs_sim_soil_slip; earlier steps' too) */
     double soil_work_J;   /* the energy the soil took over the step (fs_soil_grid.work_J's rise) */
     double extra_press_m; /* how far past press_m the drive pressed until the soil carried the load */
     double load_N;        /* the ground's vertical force at the stance's end */

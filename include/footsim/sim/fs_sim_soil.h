@@ -29,6 +29,10 @@ double fs_sim_soil_area(const fs_sim *sim, int foot);
  * when the soil does not carry it. It visits every stored node: for once a step of a gait, not
  * every step. */
 double fs_sim_soil_sinkage(const fs_sim *sim, int foot);
+/* The slip accumulated on those nodes (the shear displacement j each keeps, from every step that
+ * loaded it), m, their mean by area; 0 without a soil or when the soil does not carry foot. It too
+ * visits every stored node. */
+double fs_sim_soil_slip(const fs_sim *sim, int foot);
 
 /* What holds the feet now: contact points plus soil nodes (the outcome rules' support). */
 int fs_sim_support(const fs_sim *sim);

@@ -147,6 +147,15 @@ double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y);
  * plastic sinkage, m, and how many nodes carry a print (sp > 0). */
 double fs_soil_grid_print(const fs_soil_grid *g, double *deepest_m, long *nodes);
 
+/* The same with the prints' area and slip: every node with a print (sp > 0) counted with its cell
+ * (a coarse node's stride x stride cells), its slip (the shear displacement j accumulated on it)
+ * averaged over the print by area (0 without a print). */
+typedef struct fs_soil_print {
+    double volume_m3, deepest_m, area_m2, mean_slip_m;
+    long nodes;
+} fs_soil_print;
+void fs_soil_grid_print_of(const fs_soil_grid *g, fs_soil_print *p);
+
 /* The surface the soil keeps (its undisturbed height less its print, the elastic part given back as
  * a foot lifts) on the grid's nodes over the tiles the feet reached and one node around them (so
  * that its edge is undisturbed soil, where the region allows): nx x ny heights z_m[j nx + i]
