@@ -45,7 +45,10 @@ def test_trial_is_footsim_s():
     sc = footsim.Scenario("landing_trial.ini")
     r = sc.trial(seed=3)
     assert r.outcome in ("landed", "fell", "failed_numerics", "undecided") and r.rule and r.seed == 3
-    assert list(r.metrics) == footsim.metric_names() and len(r.metrics) == 13
+    assert list(r.metrics) == footsim.metric_names() and len(r.metrics) == 18
+    # the soil's five (sinkage, the print's depth, area, volume and slip) are empty on rigid ground
+    soil = ("soil_sinkage_m", "print_depth_m", "print_area_m2", "print_volume_m3", "print_slip_m")
+    assert all(math.isnan(r.metrics[k]) for k in soil)
     # the foot falls freely from its 5 mm drop before it touches: sqrt(2 drop / g)
     assert abs(r.metrics["touchdown_s"] - math.sqrt(2 * 0.005 / G)) < 3e-3
     assert r.metrics["end_time_s"] == pytest.approx(r.metrics["steps"] * 1e-4, abs=1e-9)
