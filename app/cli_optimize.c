@@ -356,6 +356,10 @@ static fs_status evaluate_at(fs_optimize *o, optimize_run *r, const double *x, f
     fs_status s = fs_optimize_apply(o, x, err);
     for (int q = FS_QUANTITY_FOOT_MASS_KG; s == FS_OK && q <= FS_QUANTITY_ANKLE_DROP_M; q++)
         quantity[q] = fs_optimize_quantity(o, q);
+    if (s == FS_OK && x && fs_optimize_recall(o, x, rows, NULL)) { /* the search ran it on these seeds */
+        r->round++;
+        return FS_OK;
+    }
     return s == FS_OK ? evaluate(o, r, results, rows, 0, err) : s;
 }
 
@@ -406,6 +410,7 @@ static fs_status search_into(fs_optimize *o, optimize_run *run, fs_trial_result 
     run->nlog = 0;
     run->round = 1;
     *gnuplot = 0;
+    int repeats = o->repeats;
     fs_status st = fs_optimize_run(o, run_trials, report, run, results, rows, pt->best, &value, err);
     /* the foot's own design, the start and the best again on the search's seeds (the reference's
        trials kept), then the best and the reference on fresh ones */
@@ -458,6 +463,9 @@ static fs_status search_into(fs_optimize *o, optimize_run *run, fs_trial_result 
         if (pt->violation > 0)
             printf("; its constraints BROKEN by %.3g (no candidate met them)", pt->violation);
         printf("\n");
+        if (o->repeats > repeats)
+            printf("%d evaluation%s met a candidate that had run on these seeds and reused its trials' results\n",
+                   o->repeats - repeats, o->repeats - repeats == 1 ? "" : "s");
     }
     free(front);
     return st;

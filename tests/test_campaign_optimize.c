@@ -345,6 +345,70 @@ static void sweep_of_a_bound(void)
     remove(path);
 }
 
+/* Counts the stand-in trials it runs (known_boundary's) and the evaluations reported. */
+typedef struct tally {
+    int calls, evaluations, feasible;
+} tally;
+
+static fs_status counted_boundary(void *user, const fs_campaign *c, fs_trial_result *results, fs_error *err)
+{
+    ((tally *)user)->calls++;
+    return known_boundary(NULL, c, results, err);
+}
+
+static void count_report(void *user, const fs_optimize *o, int evaluation, const double *x, double objective,
+                         double shortfall, double violation, const fs_campaign_row *rows)
+{
+    (void)o, (void)evaluation, (void)x, (void)objective, (void)shortfall;
+    tally *n = user;
+    n->evaluations++;
+    n->feasible += violation == 0 && rows != NULL;
+}
+
+/* A candidate met again runs no trial: with no reference foot, every feasible evaluation either ran
+ * its trials once or was answered from an earlier one (calls + repeats = feasible evaluations); a
+ * second search from the same start on the same seeds (as a sweep's next bound starts) answers its
+ * start from the first search's trials, and gives the same best to the bit; on other seeds, or for
+ * a candidate one bit apart, nothing is answered. Fails when the candidates are not kept (no
+ * repeats) or are kept wrongly (calls + repeats short of the evaluations, or a different best). */
+static void candidates_run_once(void)
+{
+    static fs_optimize o;
+    fs_error err;
+    const char *set[] = {small[0], "optimize.max_evaluations=12"};
+    REQUIRE(fs_optimize_load("scenarios/optimize_single_tall.ini", set, 2, &o, &err) == FS_OK);
+    fs_trial_result *results = calloc((size_t)fs_campaign_ntrials(&o.campaign), sizeof *results);
+    fs_campaign_row *rows = calloc((size_t)fs_campaign_ncells(&o.campaign), sizeof *rows);
+    fs_campaign_row *again = calloc((size_t)fs_campaign_ncells(&o.campaign), sizeof *again);
+    REQUIRE(results && rows && again);
+    double best[2][3], value[2];
+    tally n[2] = {{0, 0, 0}, {0, 0, 0}};
+    int repeats[2];
+    for (int i = 0; i < 2; i++) {
+        int before = o.repeats;
+        REQUIRE(fs_optimize_run(&o, counted_boundary, count_report, &n[i], results, rows, best[i], &value[i], &err) ==
+                FS_OK);
+        repeats[i] = o.repeats - before;
+        CHECK(n[i].calls + repeats[i] == n[i].feasible);
+    }
+    CHECK(n[0].evaluations == n[1].evaluations && n[1].calls < n[0].calls && repeats[1] >= 1);
+    CHECK(!memcmp(best[0], best[1], sizeof best[0]) && value[0] == value[1]);
+    /* the best, as the search ran it: recalled on these seeds only, and only bit for bit */
+    double x[3];
+    memcpy(x, best[0], sizeof x);
+    CHECK(fs_optimize_recall(&o, x, again, NULL) == 1);
+    x[1] = nextafter(x[1], HUGE_VAL);
+    CHECK(fs_optimize_recall(&o, x, again, NULL) == 0);
+    x[1] = best[0][1];
+    o.campaign.first_seed += o.campaign.seeds;
+    CHECK(fs_optimize_recall(&o, x, again, NULL) == 0);
+    free(results);
+    free(rows);
+    free(again);
+    fs_optimize_free(&o);
+    CHECK(o.nrun == 0 && o.run_x == NULL);
+}
+
 /* The Pareto front of made-up points (both minimised): the non-dominated set, an equal point kept once. */
 static void pareto_front(void)
 {
@@ -418,4 +482,4 @@ static void list_parameters(void)
 
 FS_TEST_MAIN(TEST(loads_and_applies), TEST(list_parameters), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary),
              TEST(relative_target_reads_the_reference), TEST(constraint_makes_infeasible), TEST(pareto_front), TEST(sweep_of_a_bound),
-             TEST(refuses_bad_targets))
+             TEST(refuses_bad_targets), TEST(candidates_run_once))

@@ -413,8 +413,64 @@ void fs_optimize_free(fs_optimize *o)
         fs_campaign_free(&o->campaign);
     free(o->file_x);
     free(o->view);
+    free(o->run_x);
+    free(o->run_first_seed);
+    free(o->run_seeds);
+    free(o->run_closeness);
+    free(o->run_rows);
     o->file_x = NULL;
     o->view = NULL;
+    o->run_x = NULL, o->run_first_seed = o->run_seeds = NULL, o->run_closeness = NULL, o->run_rows = NULL;
+    o->nrun = o->run_capacity = 0;
+}
+
+/* ---- the candidates that ran -------------------------------------------------------------- */
+
+int fs_optimize_recall(fs_optimize *o, const double *x, fs_campaign_row *rows, double *closeness)
+{
+    size_t n = (size_t)o->nparams, ncells = (size_t)fs_campaign_ncells(&o->campaign);
+    for (int i = 0; i < o->nrun; i++)
+        if (o->run_first_seed[i] == o->campaign.first_seed && o->run_seeds[i] == o->campaign.seeds &&
+            !memcmp(o->run_x + (size_t)i * n, x, n * sizeof x[0])) {
+            memcpy(rows, o->run_rows + (size_t)i * ncells, ncells * sizeof rows[0]);
+            if (closeness)
+                *closeness = o->run_closeness[i];
+            o->repeats++;
+            return 1;
+        }
+    return 0;
+}
+
+/* Grows a run_ array to capacity elements of size each. */
+static int grow(void **array, int capacity, size_t size)
+{
+    void *p = realloc(*array, (size_t)capacity * size);
+    if (p)
+        *array = p;
+    return p != NULL;
+}
+
+fs_status fs_optimize_remember(fs_optimize *o, const double *x, const fs_campaign_row *rows, double closeness,
+                               fs_error *err)
+{
+    size_t n = (size_t)o->nparams, ncells = (size_t)fs_campaign_ncells(&o->campaign);
+    if (o->nrun == o->run_capacity) {
+        int cap = o->run_capacity ? 2 * o->run_capacity : 64;
+        if (!grow((void **)&o->run_x, cap, n * sizeof o->run_x[0]) ||
+            !grow((void **)&o->run_first_seed, cap, sizeof o->run_first_seed[0]) ||
+            !grow((void **)&o->run_seeds, cap, sizeof o->run_seeds[0]) ||
+            !grow((void **)&o->run_closeness, cap, sizeof o->run_closeness[0]) ||
+            !grow((void **)&o->run_rows, cap, ncells * sizeof o->run_rows[0]))
+            return fs_fail(err, FS_NO_MEMORY, "%s: out of memory for the candidates that ran", o->path);
+        o->run_capacity = cap;
+    }
+    int i = o->nrun++;
+    memcpy(o->run_x + (size_t)i * n, x, n * sizeof x[0]);
+    o->run_first_seed[i] = o->campaign.first_seed;
+    o->run_seeds[i] = o->campaign.seeds;
+    o->run_closeness[i] = closeness;
+    memcpy(o->run_rows + (size_t)i * ncells, rows, ncells * sizeof rows[0]);
+    return FS_OK;
 }
 
 /* ---- a candidate -------------------------------------------------------------------------- */
@@ -619,16 +675,22 @@ static double penalised(unsigned n, const double *u, double *grad, void *data)
         if (s->report)
             s->report(s->user, o, s->evaluations, x, obj, NAN, violation, NULL);
     } else {
-        if (st == FS_OK)
+        double closeness = 0;
+        if (st == FS_OK && !fs_optimize_recall(o, x, s->rows, &closeness)) {
             st = fs_optimize_run_trials(o, s->trials, s->user, s->results, 0, &s->err);
+            if (st == FS_OK) {
+                fs_campaign_summarize(&o->campaign, s->results, s->rows);
+                closeness = fs_optimize_closeness(o, s->results);
+                st = fs_optimize_remember(o, x, s->rows, closeness, &s->err);
+            }
+        }
         if (st != FS_OK) {
             s->status = st;
             return HUGE_VAL;
         }
-        fs_campaign_summarize(&o->campaign, s->results, s->rows);
         double miss = fs_optimize_shortfall(o, s->rows);
         /* how soon the misses fell, worth less than one seed on any target */
-        double slope = fs_optimize_closeness(o, s->results) / (ntargets + 1) / o->campaign.seeds;
+        double slope = closeness / (ntargets + 1) / o->campaign.seeds;
         value = obj + s->weight * (miss + slope);
         s->evaluations++;
         if (s->report)

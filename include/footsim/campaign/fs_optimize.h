@@ -106,6 +106,14 @@ typedef struct fs_optimize {
                                       band: [(cell * nends + end) * nparams + p]
                                       (the foot's own design: Table I's for feet/biomimetic.ini) */
     fs_campaign *view;             /* one foot's cells of campaign, for running them alone */
+    /* the candidates whose trials ran (fs_optimize_recall): each one's parameters, seeds, rows and
+       closeness, so that a candidate met again runs no trial */
+    int nrun, run_capacity;
+    double *run_x;                 /* [i * nparams + p] */
+    int *run_first_seed, *run_seeds;
+    double *run_closeness;
+    fs_campaign_row *run_rows;     /* [i * ncells + cell] */
+    int repeats;                   /* candidates answered from those, not run again */
 } fs_optimize;
 
 /* Reads and checks path (file:line messages, FS_BAD_INPUT) and loads its campaign with sets (as
@@ -166,6 +174,18 @@ fs_status fs_optimize_run_trials(fs_optimize *o, fs_optimize_trials trials, void
  * the constraints; > 0: infeasible, no trial ran, rows NULL) and rows. */
 typedef void (*fs_optimize_report)(void *user, const fs_optimize *o, int evaluation, const double *x, double objective,
                                    double shortfall, double violation, const fs_campaign_row *rows);
+
+/* A candidate's trials depend on its parameters and the campaign's seeds alone (each trial on its
+ * cell's scenario and its seed), so a candidate met again need not run again: Subplex revisits
+ * points, the search's start and best are evaluated again after it, and a sweep starts every
+ * search at the same start. fs_optimize_recall fills rows (fs_campaign_ncells) and *closeness
+ * (NULL: not wanted) with those of the candidate x (nparams values, compared bit for bit) on the
+ * campaign's current seeds (first_seed and seeds) and returns 1, counting o->repeats; 0 when x has
+ * not run on them. fs_optimize_remember keeps what x gave (FS_NO_MEMORY when it cannot grow; the
+ * search then stops with it). fs_optimize_free releases them. */
+int fs_optimize_recall(fs_optimize *o, const double *x, fs_campaign_row *rows, double *closeness);
+fs_status fs_optimize_remember(fs_optimize *o, const double *x, const fs_campaign_row *rows, double closeness,
+                               fs_error *err);
 
 /* The Pareto front of n points (a[i], b[i]), both minimised: keep[i] = 1 when no other point is at
  * least as good in both and better in one (of equal points, the first kept); returns how many. */
