@@ -61,7 +61,7 @@ static void drive_carriage(void *user, fs_sim *sim)
         if (w->phase <= d->stance_fraction) {
             double f[3];
             fs_sim_ground_force(sim, f);
-            if (fs_sim_time(sim) > 0 && f[2] < w->weight_N)
+            if (fs_sim_time(sim) > 0 && f[2] < w->weight_N && fs_sim_soil_over(sim, -1)) /* off a section: rigid */
                 w->extra_m += w->press_speed_m_per_s * d->step_s;
             z -= w->extra_m;
         } else { /* back to the path over the swing, from where the stance just ended (in the swing's first

@@ -59,6 +59,20 @@ double fs_sim_soil_slip(const fs_sim *sim, int foot)
     return slip;
 }
 
+int fs_sim_soil_over(const fs_sim *sim, int foot)
+{
+    const fs_soil_grid *g = sim->soil ? &sim->soil->g : NULL;
+    for (int s = 0; g && s < g->nshapes; s++) {
+        double box[4], zmin;
+        if (foot >= 0 && g->shape[s].foot != foot)
+            continue;
+        fs_soil_shape_box(&g->shape[s], &sim->soil->body[g->shape[s].body], box, &zmin);
+        if (fs_soil_depth_over(&g->d, box[0], box[1]) > 0)
+            return 1;
+    }
+    return 0;
+}
+
 double fs_sim_ground_surface(const fs_sim *sim, double x, double y)
 {
     return sim->soil ? fs_soil_grid_surface(&sim->soil->g, x, y) : fs_terrain_height(&sim->sc->terrain, x, y);

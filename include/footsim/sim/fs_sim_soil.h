@@ -34,6 +34,11 @@ double fs_sim_soil_sinkage(const fs_sim *sim, int foot);
  * visits every stored node. */
 double fs_sim_soil_slip(const fs_sim *sim, int foot);
 
+/* Whether any of foot's (-1: every foot's) soil shapes lies over the soil's section now (its plan's extent
+ * along x, as the last (sub)step placed it, meets [soil] x_min_m..x_max_m: always, without a section); 0
+ * without a soil. */
+int fs_sim_soil_over(const fs_sim *sim, int foot);
+
 /* What holds the feet now: contact points plus soil nodes (the outcome rules' support). */
 int fs_sim_support(const fs_sim *sim);
 
