@@ -14,6 +14,7 @@
  * - a soil section ([soil] x_min_m, x_max_m): a foot landing beside it lands as on rigid ground, to the bit,
  *   and the walking machine over it never touches a node beyond it, its steps off it taking no soil;
  * - a soil landing's impact impulse is its fall's momentum;
+ * - the biomimetic foot's soil shapes are its design's [soil_shapes] radii;
  * - shapes stacked over the same nodes outgrow the step's claims, and the lowest one's force is the
  *   one it has alone, to the bit;
  * - validation: n <= 0, a negative modulus, phi of 90 degrees, depth 0, RFT without zeta or density,
@@ -628,6 +629,54 @@ static void soil_landing_impulse_is_the_falls_momentum(void)
     CHECK(r.impact_impulse_Ns <= 1.02 * M * (v + up));
 }
 
+/* ---- the links' shapes, from the design file ------------------------------------------------------ */
+
+/* The biomimetic foot's soil shapes are the design's [soil_shapes]: twelve capsules, the heel's, the
+ * talus's and each metatarsal's and phalanx's radius the key's (the chain's scale times it for the last
+ * two) or, at 0 (the shipped file's: it leaves them at their defaults, so that its input hash, which
+ * the CI baseline's provenance holds, stays), the contact sphere's (half link_width_m for the talus);
+ * each capsule's plan area 2 r L + pi r^2 over its segment's plan length L; a radius set with --set
+ * moves only its shapes. Broken, with the shapes taking the spheres' radii whatever the keys say, the
+ * phalanges keep 3 mm under the 5 mm set here. */
+static void the_links_soil_shapes_are_the_design_files(void)
+{
+    static fs_scenario sc;
+    static fs_soil_shape sh[FS_SOIL_MAX_SHAPES];
+    fs_error err;
+    const char *const sets[][2] = {{"soil_shapes.phalanx_radius_m=0.005", "soil_shapes.heel_radius_m=0.007"},
+                                   {"soil_shapes.talus_radius_m=0.006", "soil_shapes.metatarsal_radius_m=0.0045"},
+                                   {NULL, NULL}};
+    for (int run = 0; run < 3; run++) {
+        int nset = sets[run][0] ? 2 : 0;
+        REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", nset ? sets[run] : NULL, nset, &sc, &err) == FS_OK);
+        const fs_design_def *d = &sc.design;
+        int n = fs_soil_foot_shapes(&sc.geom, NULL, sh, FS_SOIL_MAX_SHAPES);
+        CHECK(n == 2 + 2 * FS_CHAINS);
+        for (int i = 0; i < n; i++) {
+            const fs_soil_shape *s = &sh[i];
+            int chain = 0;
+            sscanf(s->name + strcspn(s->name, "0123456789"), "%d", &chain);
+            double scale = chain > 0 ? fs_design_chain_scale(d, chain - 1) : 1, want = -1;
+            if (!strcmp(s->name, "heel"))
+                want = d->soil_heel_radius_m > 0 ? d->soil_heel_radius_m : d->heel_radius_m;
+            else if (!strcmp(s->name, "talus"))
+                want = d->soil_talus_radius_m > 0 ? d->soil_talus_radius_m : 0.5 * d->link_width_m;
+            else if (!strncmp(s->name, "metatarsal", 10))
+                want = scale * (d->soil_metatarsal_radius_m > 0 ? d->soil_metatarsal_radius_m : d->ball_radius_m);
+            else if (!strncmp(s->name, "phalanx", 7))
+                want = scale * (d->soil_phalanx_radius_m > 0 ? d->soil_phalanx_radius_m : d->toe_radius_m);
+            double L = hypot(s->b[0] - s->a[0], s->b[1] - s->a[1]);
+            double area = 2 * s->radius_m * L + M_PI * s->radius_m * s->radius_m;
+            if (fabs(s->radius_m - want) > 1e-15 || fabs(s->plan_area_m2 - area) > 1e-15)
+                printf("  run %d, %s: radius %.6g m, want %.6g; area %.6g m^2\n", run, s->name, s->radius_m, want,
+                       s->plan_area_m2);
+            CHECK(s->kind == FS_SOIL_CAPSULE && fabs(s->radius_m - want) <= 1e-15);
+            CHECK(fabs(s->plan_area_m2 - area) <= 1e-15);
+        }
+        fs_scenario_free(&sc);
+    }
+}
+
 /* ---- a soil section ----------------------------------------------------------------------------- */
 
 /* The flat foot on the rig set down (landing_trial, no drop range) on terrain, its touchdown taken in
@@ -899,4 +948,5 @@ FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_til
              TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little),
              TEST(the_sole_on_its_coarse_grid), TEST(stacked_shapes_outgrow_the_claims),
              TEST(halving_the_capsules_spacing_moves_sinkage_little), TEST(a_box_carries_its_plans_area),
-             TEST(a_foot_beside_a_section_lands_as_on_rigid_ground), TEST(a_walk_over_a_section_touches_only_it))
+             TEST(a_foot_beside_a_section_lands_as_on_rigid_ground), TEST(a_walk_over_a_section_touches_only_it),
+             TEST(the_links_soil_shapes_are_the_design_files))
