@@ -11,7 +11,10 @@
  *   at a depth and tilt against the formula, the inertial term against rho v^2; its forces never push
  *   along the motion;
  * - a foot through a thin layer stops on the bedrock;
+ * - a soil section ([soil] x_min_m, x_max_m): a foot landing beside it lands as on rigid ground, to the bit,
+ *   and the walking machine over it never touches a node beyond it, its steps off it taking no soil;
  * - a soil landing's impact impulse is its fall's momentum;
+ * - the biomimetic foot's soil shapes are its design's [soil_shapes] radii;
  * - shapes stacked over the same nodes outgrow the step's claims, and the lowest one's force is the
  *   one it has alone, to the bit;
  * - validation: n <= 0, a negative modulus, phi of 90 degrees, depth 0, RFT without zeta or density,
@@ -20,6 +23,8 @@
 
 #include "footsim/sim/fs_sim.h"
 #include "footsim/experiment/fs_trial.h"
+#include "footsim/experiment/fs_walk.h"
+#include "footsim/sim/fs_observer.h"
 #include "footsim/sim/fs_sim_soil.h"
 #include "sim/sim_internal.h" /* the sim's fields, which tests may read */
 
@@ -624,6 +629,182 @@ static void soil_landing_impulse_is_the_falls_momentum(void)
     CHECK(r.impact_impulse_Ns <= 1.02 * M * (v + up));
 }
 
+/* ---- the links' shapes, from the design file ------------------------------------------------------ */
+
+/* The biomimetic foot's soil shapes are the design's [soil_shapes]: twelve capsules, the heel's, the
+ * talus's and each metatarsal's and phalanx's radius the key's (the chain's scale times it for the last
+ * two) or, at 0 (the shipped file's: it leaves them at their defaults, so that its input hash, which
+ * the CI baseline's provenance holds, stays), the contact sphere's (half link_width_m for the talus);
+ * each capsule's plan area 2 r L + pi r^2 over its segment's plan length L; a radius set with --set
+ * moves only its shapes. Broken, with the shapes taking the spheres' radii whatever the keys say, the
+ * phalanges keep 3 mm under the 5 mm set here. */
+static void the_links_soil_shapes_are_the_design_files(void)
+{
+    static fs_scenario sc;
+    static fs_soil_shape sh[FS_SOIL_MAX_SHAPES];
+    fs_error err;
+    const char *const sets[][2] = {{"soil_shapes.phalanx_radius_m=0.005", "soil_shapes.heel_radius_m=0.007"},
+                                   {"soil_shapes.talus_radius_m=0.006", "soil_shapes.metatarsal_radius_m=0.0045"},
+                                   {NULL, NULL}};
+    for (int run = 0; run < 3; run++) {
+        int nset = sets[run][0] ? 2 : 0;
+        REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", nset ? sets[run] : NULL, nset, &sc, &err) == FS_OK);
+        const fs_design_def *d = &sc.design;
+        int n = fs_soil_foot_shapes(&sc.geom, NULL, sh, FS_SOIL_MAX_SHAPES);
+        CHECK(n == 2 + 2 * FS_CHAINS);
+        for (int i = 0; i < n; i++) {
+            const fs_soil_shape *s = &sh[i];
+            int chain = 0;
+            sscanf(s->name + strcspn(s->name, "0123456789"), "%d", &chain);
+            double scale = chain > 0 ? fs_design_chain_scale(d, chain - 1) : 1, want = -1;
+            if (!strcmp(s->name, "heel"))
+                want = d->soil_heel_radius_m > 0 ? d->soil_heel_radius_m : d->heel_radius_m;
+            else if (!strcmp(s->name, "talus"))
+                want = d->soil_talus_radius_m > 0 ? d->soil_talus_radius_m : 0.5 * d->link_width_m;
+            else if (!strncmp(s->name, "metatarsal", 10))
+                want = scale * (d->soil_metatarsal_radius_m > 0 ? d->soil_metatarsal_radius_m : d->ball_radius_m);
+            else if (!strncmp(s->name, "phalanx", 7))
+                want = scale * (d->soil_phalanx_radius_m > 0 ? d->soil_phalanx_radius_m : d->toe_radius_m);
+            double L = hypot(s->b[0] - s->a[0], s->b[1] - s->a[1]);
+            double area = 2 * s->radius_m * L + M_PI * s->radius_m * s->radius_m;
+            if (fabs(s->radius_m - want) > 1e-15 || fabs(s->plan_area_m2 - area) > 1e-15)
+                printf("  run %d, %s: radius %.6g m, want %.6g; area %.6g m^2\n", run, s->name, s->radius_m, want,
+                       s->plan_area_m2);
+            CHECK(s->kind == FS_SOIL_CAPSULE && fabs(s->radius_m - want) <= 1e-15);
+            CHECK(fabs(s->plan_area_m2 - area) <= 1e-15);
+        }
+        fs_scenario_free(&sc);
+    }
+}
+
+/* ---- a soil section ----------------------------------------------------------------------------- */
+
+/* The flat foot on the rig set down (landing_trial, no drop range) on terrain, its touchdown taken in
+ * substeps (so that the forecast that starts them is exercised), with the extra settings. */
+static void rig_on(const char *terrain, const char *const *extra, int nextra, fs_scenario *sc)
+{
+    fs_error err;
+    const char *set[10] = {"scenario.design=feet/flat.ini", "robot.design=robots/rig.ini", terrain,
+                           "landing.x_range_m=0", "landing.y_range_m=0", "landing.yaw_range_deg=0",
+                           "landing.tilt_range_deg=0", "run.impact_substeps=4"};
+    int n = 8;
+    for (int k = 0; k < nextra && n < 10; k++)
+        set[n++] = extra[k];
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, n, sc, &err) == FS_OK);
+}
+
+/* A foot beside a soil section lands on the bedrock, the rigid ground: with no soil node under any of
+ * its shapes the soil adds no force, and its start height (drop_m over the ground under it) and the
+ * touchdown forecast read the bedrock there, so every step is the rigid ground's arithmetic: its
+ * ankle and contacts the same, to the bit, as on terrains/flat.ini (whose material is the default, as
+ * the soil preset's bedrock's). The section lies in the grid's region (refused otherwise), beyond the
+ * foot's reach by at least [soil] margin_m less 5 mm. No tile of the grid is ever made. Broken, with
+ * the start lift taking the layer's depth everywhere the foot starts 100 mm higher; with the forecast
+ * doing so, the substeps start sooner. */
+static void a_foot_beside_a_section_lands_as_on_rigid_ground(void)
+{
+    static fs_scenario probe, soil_sc, rigid_sc;
+    rig_on("scenario.terrain=../terrains/soils/lete_sand.ini", NULL, 0, &probe);
+    char x_min[64], x_max[64];
+    snprintf(x_min, sizeof x_min, "soil.x_min_m=%.6f", probe.terrain.soil_region[1] - 0.005);
+    snprintf(x_max, sizeof x_max, "soil.x_max_m=%.6f", probe.terrain.soil_region[1] + 0.1);
+    const char *section[] = {x_min, x_max};
+    rig_on("scenario.terrain=../terrains/soils/lete_sand.ini", section, 2, &soil_sc);
+    rig_on("scenario.terrain=../terrains/flat.ini", NULL, 0, &rigid_sc);
+    fs_error err;
+    fs_sim *a, *b;
+    REQUIRE(fs_sim_new(&soil_sc, NULL, &a, &err) == FS_OK);
+    REQUIRE(fs_sim_new(&rigid_sc, NULL, &b, &err) == FS_OK);
+    REQUIRE(fs_sim_soil_grid(a) != NULL);
+    int same = 1, steps = 0, touched = 0;
+    double pa[3], pb[3];
+    fs_sim_ankle(a, pa);
+    fs_sim_ankle(b, pb);
+    same &= pa[2] == pb[2];
+    for (; steps < 3000 && same; steps++) { /* 0.3 s: the landing and its settling */
+        REQUIRE(fs_sim_step(a, &err) == FS_OK);
+        REQUIRE(fs_sim_step(b, &err) == FS_OK);
+        fs_sim_ankle(a, pa);
+        fs_sim_ankle(b, pb);
+        same &= pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2];
+        same &= fs_sim_contact_count(a) == fs_sim_contact_count(b);
+        touched |= fs_sim_soil_nodes(a, -1) > 0 || fs_sim_soil_grid(a)->ntiles > 0;
+    }
+    printf("  section from x = %.3f m: %d steps alike, ankle %.6f / %.6f m, %d contacts, %d tiles made\n",
+           soil_sc.terrain.def.soil.x_min_m, steps, pa[2], pb[2], fs_sim_contact_count(a), fs_sim_soil_grid(a)->ntiles);
+    CHECK(same && steps == 3000);
+    CHECK(!touched);
+    CHECK(fs_sim_contact_count(a) > 0); /* it stands on the bedrock's contacts */
+    fs_sim_free(a);
+    fs_sim_free(b);
+    fs_scenario_free(&probe);
+    fs_scenario_free(&soil_sc);
+    fs_scenario_free(&rigid_sc);
+}
+
+/* What the walk's observer found in the grid: nodes beyond the section touched (claimed, with a print,
+ * yield or slip), tiles made wholly beyond it, and nodes over it with a print. */
+typedef struct section_seen { long outside_touched, tiles_outside, inside_prints; } section_seen;
+
+static fs_status look_at_section(void *user, const fs_sim *sim, fs_error *err)
+{
+    (void)err;
+    section_seen *seen = user;
+    const fs_soil_grid *g = fs_sim_soil_grid(sim);
+    long prints = 0;
+    for (int t = 0; t < g->ntiles; t++) {
+        int k = g->slot_tile[t], ti = k % g->tx, tj = k / g->tx, st = g->stride[k];
+        seen->tiles_outside += (ti + 1) * FS_SOIL_TILE - 1 < g->i_lo || ti * FS_SOIL_TILE > g->i_hi;
+        const fs_soil_node *nd = g->pool + (size_t)t * FS_SOIL_TILE * FS_SOIL_TILE;
+        for (int lj = 0; lj < FS_SOIL_TILE; lj += st)
+            for (int li = 0; li < FS_SOIL_TILE; li += st, nd++) {
+                int i = ti * FS_SOIL_TILE + li;
+                (void)tj;
+                if (i >= g->i_lo && i <= g->i_hi)
+                    prints += nd->sp_m > 0;
+                else
+                    seen->outside_touched += nd->stamp != 0 || nd->sp_m != 0 || nd->yield_Pa != 0 || nd->slip_m != 0;
+            }
+    }
+    seen->inside_prints = prints;
+    return FS_OK;
+}
+
+/* The walking machine over terrains/sand_section.ini (LETE sand in a pit flush with the rigid ground,
+ * x 0.22 to 0.40 m), 2 mm grid, 8 steps: no node beyond the section is ever touched and no tile is made
+ * wholly beyond it (checked every 10 ms); the sand keeps prints; the steps whose stance and swing stay
+ * off the section (the first two: the foot, about 0.1 m long, reaches 0.155 m; and the eighth, from
+ * 0.41 m) take no energy from the soil and no press past press_m, as on rigid ground, while the steps
+ * on the sand sink, press and give the soil energy. Broken, without the section's columns cut out of a
+ * shape's nodes, the foot on the bedrock beyond the pit's far wall claims the nodes there. */
+static void a_walk_over_a_section_touches_only_it(void)
+{
+    const char *set[] = {"scenario.terrain=../terrains/sand_section.ini", "soil.grid_m=0.002", "walk.steps=8"};
+    static fs_scenario sc;
+    fs_error err;
+    REQUIRE(fs_scenario_load("scenarios/walking_sand.ini", set, 3, &sc, &err) == FS_OK);
+    section_seen seen = {0, 0, 0};
+    fs_run_observer obs = {.interval_s = 0.01, .fn = look_at_section, .user = &seen};
+    static fs_walk_result r;
+    REQUIRE(fs_walk_run(&sc, &obs, &r, &err) == FS_OK);
+    printf("  %d steps completed; nodes beyond the section touched %ld, tiles beyond it %ld, prints on it %ld\n",
+           r.steps_completed, seen.outside_touched, seen.tiles_outside, seen.inside_prints);
+    for (int k = 0; k < r.nsteps; k++)
+        printf("  step %d: sinkage %.2f mm, soil energy %.3f J, press %.2f mm, force %.0f N\n", k,
+               r.step[k].sinkage_m * 1e3, r.step[k].soil_work_J, r.step[k].extra_press_m * 1e3, r.step[k].load_N);
+    CHECK(r.steps_completed == 8 && r.nsteps == 8);
+    CHECK(seen.outside_touched == 0 && seen.tiles_outside == 0);
+    CHECK(seen.inside_prints > 0);
+    for (int k = 0; k < 8; k++) {
+        int off = k <= 1 || k == 7, on = k == 4 || k == 5;
+        if (off)
+            CHECK(r.step[k].soil_work_J == 0 && r.step[k].extra_press_m == 0 && r.step[k].sinkage_m == 0);
+        if (on)
+            CHECK(r.step[k].soil_work_J > 0 && r.step[k].extra_press_m > 0 && r.step[k].sinkage_m > 0);
+    }
+    fs_scenario_free(&sc);
+}
+
 /* ---- the bedrock, and refusals --------------------------------------------------------------- */
 
 static void thin_layer_stops_on_the_bedrock(void)
@@ -686,7 +867,20 @@ static void bad_soils_are_refused(void)
     fclose(f);
     CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
     fs_check_refusal(err.message, path, 5, "[0, 90)");
+    /* an empty soil section: x_max_m's file:line */
+    f = fopen(path, "w");
+    REQUIRE(f != NULL);
+    fprintf(f, "[soil]\nmodel = bekker\nx_min_m = 0.3\nx_max_m = 0.2\n\n[bekker]\nn = 1\n");
+    fclose(f);
+    CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 4, "section is empty");
     remove(path);
+    /* a section that misses the ground the run covers: where x_min_m came from */
+    static fs_scenario far;
+    const char *beyond[] = {"scenario.terrain=../terrains/soils/dry_sand.ini", "soil.x_min_m=5", "soil.x_max_m=6"};
+    CHECK(fs_scenario_load("scenarios/static_load.ini", beyond, 3, &far, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, "--set soil.x_min_m", 0, "outside the ground the run covers");
+    CHECK(strncmp(err.message, "--set soil.x_min_m", 18) == 0);
     rmdir(dir);
     /* a grid past the memory cap, refused when the scenario is read */
     static fs_scenario sc;
@@ -753,4 +947,6 @@ FS_TEST_MAIN(TEST(rft_alpha_has_its_symmetries), TEST(rft_plate_at_depth_and_til
              TEST(soil_landing_impulse_is_the_falls_momentum), TEST(plate_dragged_follows_janosi), TEST(bad_soils_are_refused),
              TEST(thin_layer_stops_on_the_bedrock), TEST(sole_sinks_as_bekker_says), TEST(halving_the_grid_moves_sinkage_little),
              TEST(the_sole_on_its_coarse_grid), TEST(stacked_shapes_outgrow_the_claims),
-             TEST(halving_the_capsules_spacing_moves_sinkage_little), TEST(a_box_carries_its_plans_area))
+             TEST(halving_the_capsules_spacing_moves_sinkage_little), TEST(a_box_carries_its_plans_area),
+             TEST(a_foot_beside_a_section_lands_as_on_rigid_ground), TEST(a_walk_over_a_section_touches_only_it),
+             TEST(the_links_soil_shapes_are_the_design_files))

@@ -1,14 +1,16 @@
 /* soil_figures.c: Fig. 11 on soft ground (docs/soil.md): 26 kg set down on the foot on every soil
  * preset, for both feet: the landing trial's scenario with the rig robot (26 kg on a vertical slide,
  * so the foot keeps its attitude as under the paper's test load; scenarios/robots/rig.ini), no
- * drop and no drawn pose, run until at rest or 1 s. (The static-load scenario's bare force at the
+ * drop and no drawn pose, run until at rest or LIMIT_S (5 s). (The static-load scenario's bare force at the
  * ankle turns a foot on soil over: nothing holds its pitch once the heel sinks.) Per run: the
  * ankle's drop, the deepest print under the foot, the foot's tilt (its ankle body's z axis from
  * vertical), the time to rest, the area the soil carries the foot on (fs_sim_soil_area: its nodes
- * times their cells, the sole's edge nodes times the share of its plan they stand for), and the soil's share of the ground force (the rest on the bedrock).
+ * times their cells, the sole's edge nodes times the share of its plan they stand for), the soil's share of the
+ * ground force (the rest on the bedrock), and for a run that never came to rest what its ankle did over its
+ * last second: a creep (its mean height still falling) or a bounce (a swing about a steady mean).
  * Built with footsim (`cmake --build build` makes build/soil-figures); run from the source folder:
- * `build/soil-figures > results/soil/static_load.md` (`build/soil-figures FOOT`: only that foot's rows).
- * A Markdown table on stdout. */
+ * `build/soil-figures > results/soil/static_load.md` (`build/soil-figures FOOT`: only that foot's rows;
+ * `build/soil-figures FOOT SOIL`: one row). A Markdown table on stdout. */
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_sim_soil.h"
 
@@ -17,6 +19,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* How long a row may run, s; for a row that never came to rest, the ankle's height is sampled every
+ * SAMPLE_S and its last two windows of CREEP_S compared: the mean's fall between them over CREEP_S (a creep,
+ * mm/s) and the last window's swing (highest less lowest: a foot that bounces without settling, mm). */
+#define LIMIT_S 5.0
+#define CREEP_S 0.5
+#define SAMPLE_S 0.001 /* NSAMPLES below holds LIMIT_S of them and one each end */
+enum { NSAMPLES = 5002 };
+
 static const char *SOILS[] = {"dry_sand", "lete_sand", "sandy_loam", "lean_clay", "snow", "mud", "granular_loose",
                               "granular_close"};
 
@@ -24,10 +34,11 @@ static int run(const char *foot, const char *soil)
 {
     static fs_scenario sc;
     fs_error err;
-    char design[128], terrain[128];
+    char design[128], terrain[128], duration[64];
     snprintf(design, sizeof design, "scenario.design=feet/%s.ini", foot);
+    snprintf(duration, sizeof duration, "run.duration_s=%g", LIMIT_S);
     snprintf(terrain, sizeof terrain, "scenario.terrain=../terrains/soils/%s.ini", soil);
-    const char *set[] = {design, terrain, "robot.design=robots/rig.ini", "start.drop_m=0", "run.duration_s=1",
+    const char *set[] = {design, terrain, "robot.design=robots/rig.ini", "start.drop_m=0", duration,
                          "landing.x_range_m=0", "landing.y_range_m=0", "landing.yaw_range_deg=0",
                          "landing.tilt_range_deg=0"};
     if (fs_scenario_load("scenarios/landing_trial.ini", set, 9, &sc, &err) != FS_OK) {
@@ -42,6 +53,8 @@ static int run(const char *foot, const char *soil)
     double a0[3], a[3];
     fs_sim_ankle(sim, a0);
     double rest_since = -1, wall = fs_clock_s();
+    static double z_at[NSAMPLES]; /* the ankle's height every SAMPLE_S */
+    int nz = 0;
     long steps = 0;
     const char *end = "window";
     while (fs_sim_time(sim) < sc.def.duration_s - 1e-9) {
@@ -50,6 +63,11 @@ static int run(const char *foot, const char *soil)
             break;
         }
         steps++;
+        if (fs_sim_time(sim) >= nz * SAMPLE_S - 1e-9 && nz < NSAMPLES) {
+            double p[3];
+            fs_sim_ankle(sim, p);
+            z_at[nz++] = p[2];
+        }
         int slow = fs_sim_max_speed(sim) < 1e-3;
         if (slow && rest_since < 0)
             rest_since = fs_sim_time(sim);
@@ -68,11 +86,24 @@ static int run(const char *foot, const char *soil)
     fs_sim_ground_force(sim, f);
     fs_sim_soil_force(sim, -1, held);
     fs_soil_grid_print(g, &deepest, NULL);
+    int back = (int)lround(CREEP_S / SAMPLE_S); /* the last two windows of CREEP_S */
+    char creep[48] = "-";
+    if (end[0] != 'r' && nz > 2 * back) {
+        double m1 = 0, m2 = 0, lo = INFINITY, hi = -INFINITY;
+        for (int k = nz - 2 * back; k < nz - back; k++)
+            m1 += z_at[k] / back;
+        for (int k = nz - back; k < nz; k++) {
+            m2 += z_at[k] / back;
+            lo = fmin(lo, z_at[k]), hi = fmax(hi, z_at[k]);
+        }
+        snprintf(creep, sizeof creep, "%.3f mm/s, swing %.2f mm", (m1 - m2) / CREEP_S * 1e3, (hi - lo) * 1e3);
+    }
     double tilt = acos(fmin(1, fmax(-1, R[8]))) * 180 / M_PI;
     double area = fs_sim_soil_area(sim, -1);
-    printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %.1f | %.0f %% | %.2f |\n", foot, soil, (a0[2] - a[2]) * 1e3,
-           deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : fs_sim_time(sim),
-           area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
+    printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %s | %.1f | %.0f %% | %.2f |\n", foot, soil,
+           (a0[2] - a[2]) * 1e3, deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ",
+           end[0] == 'r' ? rest_since : fs_sim_time(sim), creep, area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0,
+           steps ? 1e3 * wall / steps : 0);
     fflush(stdout);
     fs_sim_free(sim);
     fs_scenario_free(&sc);
@@ -82,13 +113,14 @@ static int run(const char *foot, const char *soil)
 int main(int argc, char **argv)
 {
     fs_ode_init();
-    const char *only = argc > 1 ? argv[1] : NULL; /* a foot's name: only its rows */
-    printf("| foot | soil | ankle drop (mm) | deepest print (mm) | tilt (deg) | at rest (s) | carried on (cm^2) | "
-           "soil's share | ms a step |\n|---|---|--:|--:|--:|--:|--:|--:|--:|\n");
+    const char *only = argc > 1 ? argv[1] : NULL;      /* a foot's name: only its rows */
+    const char *only_soil = argc > 2 ? argv[2] : NULL; /* and a soil's: only that row */
+    printf("| foot | soil | ankle drop (mm) | deepest print (mm) | tilt (deg) | at rest (s) | not at rest: mean sinking, swing "
+           "(last 0.5 s) | carried on (cm^2) | soil's share | ms a step |\n|---|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
     int bad = 0;
     for (size_t s = 0; s < sizeof SOILS / sizeof SOILS[0]; s++)
         for (int f = 0; f < 2; f++)
-            if (!only || !strcmp(only, f ? "flat" : "biomimetic"))
+            if ((!only || !strcmp(only, f ? "flat" : "biomimetic")) && (!only_soil || !strcmp(only_soil, SOILS[s])))
                 bad |= run(f ? "flat" : "biomimetic", SOILS[s]);
     return bad;
 }

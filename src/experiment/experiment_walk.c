@@ -61,12 +61,14 @@ static void drive_carriage(void *user, fs_sim *sim)
         if (w->phase <= d->stance_fraction) {
             double f[3];
             fs_sim_ground_force(sim, f);
-            if (fs_sim_time(sim) > 0 && f[2] < w->weight_N)
+            if (fs_sim_time(sim) > 0 && f[2] < w->weight_N && fs_sim_soil_over(sim, -1)) /* off a section: rigid */
                 w->extra_m += w->press_speed_m_per_s * d->step_s;
             z -= w->extra_m;
-        } else { /* back to the path over the swing */
+        } else { /* back to the path over the swing, from where the stance just ended (in the swing's first
+                    step soil_stance has not yet moved the stance's press into extra_end_m: without this the drive
+                    jumped for one step to the last stance's press, up to 153 mm, and the ground force with it) */
             double swing = (w->phase - d->stance_fraction) / (1 - d->stance_fraction);
-            z -= w->extra_end_m * (1 - swing);
+            z -= (w->in_stance ? w->extra_m : w->extra_end_m) * (1 - swing);
         }
     }
     fs_carriage_drive(w->carriage, x, z); /* the step's checks count the carriage's work (fs_carriage.h) */

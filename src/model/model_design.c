@@ -79,6 +79,15 @@ const fs_key fs_design_keys[] = {
     NUM("contact", "heel_width_m", heel_width_m, 0, 1, 0, "m", "0.024", "lateral distance between the two heel spheres (0: one sphere)"),
     NUM("contact", "ball_radius_m", ball_radius_m, 0, 1, POS, "m", "0.004", "metatarsal head contact sphere (times scale)"),
     NUM("contact", "toe_radius_m", toe_radius_m, 0, 1, POS, "m", "0.003", "toe tip contact sphere (times scale)"),
+    NUM("soil_shapes", "heel_radius_m", soil_heel_radius_m, 0, 0.05, 0, "m", "0",
+        "on a soil the heel is a capsule of this radius across its two spheres (0: contact.heel_radius_m; docs/soil.md, "
+        "The feet's shapes)"),
+    NUM("soil_shapes", "talus_radius_m", soil_talus_radius_m, 0, 0.05, 0, "m", "0",
+        "the talus's capsule, between its joints (0: half of mass.link_width_m)"),
+    NUM("soil_shapes", "metatarsal_radius_m", soil_metatarsal_radius_m, 0, 0.05, 0, "m", "0",
+        "each metatarsal's capsule, midfoot joint to ball sphere, times the chain's scale (0: the ball sphere's)"),
+    NUM("soil_shapes", "phalanx_radius_m", soil_phalanx_radius_m, 0, 0.05, 0, "m", "0",
+        "each phalanx's capsule, MTP joint to toe sphere, times the chain's scale (0: the toe sphere's)"),
     NUM("sole", "mu", sole_mu, 0, 10, 0, "", "1.0", "friction coefficient of the sole material"),
     NUM("sole", "stiffness_N_per_m", sole_stiffness_N_per_m, 0, 1e12, POS, "N/m", "1e7", "contact stiffness of the sole material"),
     NUM("sole", "damping_Ns_per_m", sole_damping_Ns_per_m, 0, 1e9, 0, "N s/m", "2e4", "contact damping of the sole material"),
@@ -290,6 +299,8 @@ static fs_status chain_geometry(const fs_design_def *d, const fs_config *cfg, in
     fs_design_link_body(&g->body[meta], name, s * d->metatarsal_kg, M, B, d->link_width_m, d->link_width_m);
     snprintf(name, sizeof name, "phalanx%d", i + 1);
     fs_design_link_body(&g->body[phal], name, s * d->phalanx_kg, B, T, d->link_width_m, d->link_width_m);
+    g->body[meta].soil_radius_m = d->soil_metatarsal_radius_m > 0 ? s * d->soil_metatarsal_radius_m : rb;
+    g->body[phal].soil_radius_m = d->soil_phalanx_radius_m > 0 ? s * d->soil_phalanx_radius_m : rt;
     g->chain[i].metatarsal = meta;
     g->chain[i].phalanx = phal;
     g->chain[i].midfoot = M;
@@ -403,6 +414,8 @@ fs_status fs_design_geometry(const fs_design_def *d, const fs_config *cfg, fs_fo
     fs_vec3 Mc = fs_add(A, fs_v3(d->l2_m * cos(a2), 0.5 * (ymin + ymax), d->l2_m * sin(a2)));
     fs_vec3 Ac = fs_v3(A.x, Mc.y, A.z);
     fs_design_link_body(&g.body[FS_BODY_TALUS], "talus", d->talus_kg, Ac, Mc, ymax - ymin + d->link_width_m, d->link_width_m);
+    g.body[FS_BODY_HEEL].soil_radius_m = d->soil_heel_radius_m > 0 ? d->soil_heel_radius_m : d->heel_radius_m;
+    g.body[FS_BODY_TALUS].soil_radius_m = d->soil_talus_radius_m > 0 ? d->soil_talus_radius_m : 0.5 * d->link_width_m;
     if (d->l2_m == 0) /* the 4-bar: a talus of no length still has its width and thickness */
         g.body[FS_BODY_TALUS].com = Ac;
     g.hinge[0] = (fs_hinge_geom){.body1 = FS_BODY_HEEL, .body2 = FS_BODY_TALUS, .anchor = A, .axis = fs_v3(0, -1, 0)};

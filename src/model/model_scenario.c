@@ -173,6 +173,10 @@ static fs_status crop_terrain(fs_scenario *sc, int warn, fs_error *err)
         s = fs_soil_region(&sc->terrain.def.soil, box,
                            sc->terrain.soil_grid_at[0] ? sc->terrain.soil_grid_at : sc->terrain.path,
                            sc->terrain.soil_region, NULL, err);
+    if (s == FS_OK && sc->terrain.def.soil.model != FS_SOIL_NONE) /* a section the feet never reach: refused */
+        s = fs_soil_section_check(&sc->terrain.def.soil, sc->terrain.soil_region,
+                                  t->def.kind == FS_TERRAIN_HEIGHTMAP ? e : NULL,
+                                  sc->terrain.soil_section_at[0] ? sc->terrain.soil_section_at : sc->terrain.path, err);
     return s;
 }
 

@@ -31,6 +31,10 @@ fs_status fs_soil_check(const fs_soil_def *d, const fs_config *cfg, const char *
                        "keys' defaults are no measured soil: start from a preset in terrains/soils/ (dry_sand, "
                        "lete_sand, sandy_loam, lean_clay, snow, mud)",
                        fs_config_where(cfg, "soil", "model", where, sizeof where));
+    if (!(d->x_max_m > d->x_min_m))
+        return fs_fail(err, FS_BAD_INPUT, "%s: the soil's section is empty: x_max_m = %g m is not above x_min_m = %g m; "
+                       "make x_max_m the end of the soil along x, past x_min_m (leave both out for a soil everywhere)",
+                       fs_config_where(cfg, "soil", "x_max_m", where, sizeof where), d->x_max_m, d->x_min_m);
     int absent = 0;
     if (d->model == FS_SOIL_RFT && !(d->zeta_N_per_m3 > 0)) {
         where_rft_key(cfg, "zeta_N_per_m3", where, sizeof where, &absent);
@@ -63,6 +67,26 @@ fs_status fs_soil_region(const fs_soil_def *d, const double box[4], const char *
                        "or raise max_nodes", path, d->grid_m, region[1] - region[0], region[3] - region[2], n,
                        d->max_nodes);
     return FS_OK;
+}
+
+fs_status fs_soil_section_check(const fs_soil_def *d, const double region[4], const double *extent, const char *where,
+                                fs_error *err)
+{
+    if (d->x_max_m < region[0] || d->x_min_m > region[1])
+        return fs_fail(err, FS_BAD_INPUT, "%s: the soil's section, x %g..%g m, lies outside the ground the run covers (x "
+                       "%.4g..%.4g m: the region the feet can reach, with [soil] margin_m): no foot would meet the "
+                       "soil; put x_min_m and x_max_m across the feet's path", where, d->x_min_m, d->x_max_m,
+                       region[0], region[1]);
+    if (extent && (d->x_max_m < extent[0] || d->x_min_m > extent[1]))
+        return fs_fail(err, FS_BAD_INPUT, "%s: the soil's section, x %g..%g m, lies outside the heightmap (x %.4g..%.4g "
+                       "m): its bedrock would be the image's edge drawn out; put the section over the image", where,
+                       d->x_min_m, d->x_max_m, extent[0], extent[1]);
+    return FS_OK;
+}
+
+double fs_soil_depth_over(const fs_soil_def *d, double x0_m, double x1_m)
+{
+    return x1_m >= d->x_min_m && x0_m <= d->x_max_m ? d->depth_m : 0;
 }
 
 double fs_bekker_pressure(const fs_soil_def *d, double b_m, double z_m)

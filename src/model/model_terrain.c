@@ -26,8 +26,9 @@ const fs_key fs_terrain_keys[] = {
     NUM("stepped", "run_m", step_run_m, 0, 10, POS, "m", "0.05", "length of each step along x"),
     NUM("stepped", "start_x_m", step_start_x_m, -10, 10, 0, "m", "0.03", "where the first step's edge is"),
     INT("stepped", "count", step_count, 1, 1000, "3", "number of steps (each way for up_down)"),
-    {"stepped", "pattern", FS_KEY_CHOICE, F(step_pattern), 0, 0, 0, 0, "up|down|up_down", "", "up",
-     "steps rising along +x, falling, or rising then falling"},
+    {"stepped", "pattern", FS_KEY_CHOICE, F(step_pattern), 0, 0, 0, 0, "up|down|up_down|down_up", "", "up",
+     "steps rising along +x, falling, rising then falling, or falling then rising (a pit: with [soil] over it, "
+     "a soil section flush with the ground around it)"},
     NUM("rough", "rms_m", rms_m, 0, 1, 0, "m", "0.003", "RMS height of the Gaussian-correlated roughness"),
     NUM("rough", "correlation_m", correlation_m, 0, 10, POS, "m", "0.015", "distance at which the height correlation falls to 1/e"),
     NUM("rough", "resolution_m", resolution_m, 1e-4, 1, 0, "m", "0.001", "lattice spacing of the heightfield"),
@@ -72,6 +73,10 @@ const fs_key fs_terrain_keys[] = {
         "each shape is met on the widest power-of-two multiple of grid_m (up to coarse_grid_m) that leaves at least "
         "this many nodes across its narrowest side (docs/soil.md, Grid spacing)"),
     NUM("soil", "margin_m", soil.margin_m, 0, 1, 0, "m", "0.03", "the grid covers the region the feet can reach plus this"),
+    NUM("soil", "x_min_m", soil.x_min_m, -1e3, 1e3, 0, "m", "-1000",
+        "the layer starts here along x (a soil section of the path: beyond x_min_m..x_max_m the ground is the bedrock, "
+        "rigid; docs/soil.md, A soil section)"),
+    NUM("soil", "x_max_m", soil.x_max_m, -1e3, 1e3, 0, "m", "1000", "and ends here"),
     NUM("soil", "b_min_m", soil.b_min_m, 0, 1, POS, "m", "0.002",
         "Bekker's b (twice a patch's area over its perimeter) is taken at least this (a patch as it first forms)"),
     NUM("soil", "slip_speed_m_per_s", soil.slip_speed_m_per_s, 0, 10, POS, "m/s", "1e-3",
@@ -219,11 +224,11 @@ static double step_level(const fs_terrain_def *d, double x)
     double n = floor((x - d->step_start_x_m) / d->step_run_m) + 1;
     if (n < 0)
         n = 0;
-    if (d->step_pattern == FS_STEPS_UP_DOWN)
+    if (d->step_pattern == FS_STEPS_UP_DOWN || d->step_pattern == FS_STEPS_DOWN_UP)
         n = n <= d->step_count ? n : fmax(0, 2.0 * d->step_count - n);
     else if (n > d->step_count)
         n = d->step_count;
-    return (d->step_pattern == FS_STEPS_DOWN ? -1 : 1) * d->step_rise_m * n;
+    return (d->step_pattern == FS_STEPS_DOWN || d->step_pattern == FS_STEPS_DOWN_UP ? -1 : 1) * d->step_rise_m * n;
 }
 
 static double image_height(const fs_terrain *t, double x, double y)
@@ -454,8 +459,11 @@ fs_status fs_terrain_load(const char *path, const char *const *overrides, int no
                  fs_config_where(&cfg, "heightmap", "x0_m", where, sizeof where),
                  fs_config_where(&cfg, "heightmap", "y0_m", where_y, sizeof where_y));
     }
-    if (s == FS_OK && t->def.soil.model != FS_SOIL_NONE)
+    if (s == FS_OK && t->def.soil.model != FS_SOIL_NONE) {
         fs_config_where(&cfg, "soil", "grid_m", t->soil_grid_at, sizeof t->soil_grid_at);
+        fs_config_where(&cfg, "soil", fs_config_has(&cfg, "soil", "x_max_m") && !fs_config_has(&cfg, "soil", "x_min_m")
+                                          ? "x_max_m" : "x_min_m", t->soil_section_at, sizeof t->soil_section_at);
+    }
     fs_config_free(&cfg);
     if (s == FS_OK)
         draw_rocks(t);

@@ -41,8 +41,9 @@ static fs_status steps(fs_model *m, const fs_terrain *t, fs_error *err)
 {
     const fs_terrain_def *d = &t->def;
     const double far = 100.0; /* m: the steps' ends and sides reach beyond any trial */
-    int k = d->step_pattern == FS_STEPS_UP_DOWN ? 2 * d->step_count : d->step_count;
-    double base = d->step_pattern == FS_STEPS_DOWN ? -d->step_rise_m * d->step_count : 0;
+    int two_ways = d->step_pattern == FS_STEPS_UP_DOWN || d->step_pattern == FS_STEPS_DOWN_UP;
+    int k = two_ways ? 2 * d->step_count : d->step_count;
+    double base = d->step_pattern == FS_STEPS_DOWN || d->step_pattern == FS_STEPS_DOWN_UP ? -d->step_rise_m * d->step_count : 0;
     plane(m, 0, 0, 1, base);
     m->block = malloc((size_t)(k + 2) * sizeof *m->block);
     if (!m->block)
@@ -120,11 +121,12 @@ static double start_lift(const fs_model *m)
 {
     const fs_foot_geom *g = m->geom;
     const fs_terrain *t = &m->sc->terrain;
-    double lift = -INFINITY;
+    double lift = -INFINITY, xlo = INFINITY, xhi = -INFINITY; /* and the foot's extent along x */
     for (int i = 0; i < g->nspheres; i++) {
         fs_vec3 c = place(m, g->sphere[i].centre);
         double r = g->sphere[i].radius_m;
         lift = fmax(lift, terrain_top(t, c.x, c.y, r) - (c.z - r));
+        xlo = fmin(xlo, c.x - r), xhi = fmax(xhi, c.x + r);
     }
     for (int b = 0; b < g->nboxes; b++) {
         /* the plate's corners, and the terrain under it finer than its lattice (the highest point of
@@ -135,7 +137,9 @@ static double start_lift(const fs_model *m)
             fs_vec3 corner = fs_v3(bc.x + ((k & 1) ? 0.5 : -0.5) * g->box_size.x,
                                    bc.y + ((k & 2) ? 0.5 : -0.5) * g->box_size.y,
                                    bc.z + ((k & 4) ? 0.5 : -0.5) * g->box_size.z);
-            lowest = fmin(lowest, place(m, corner).z);
+            fs_vec3 pc = place(m, corner);
+            lowest = fmin(lowest, pc.z);
+            xlo = fmin(xlo, pc.x), xhi = fmax(xhi, pc.x);
         }
         double spacing = fs_terrain_is_heightfield(t) && t->dx > 0 ? 0.5 * t->dx : 0.002;
         int nx = (int)ceil(g->box_size.x / spacing) + 1, ny = (int)ceil(g->box_size.y / spacing) + 1;
@@ -148,8 +152,8 @@ static double start_lift(const fs_model *m)
             }
         lift = fmax(lift, top - lowest);
     }
-    if (m->sc->terrain.def.soil.model != FS_SOIL_NONE) /* drop_m above the soil's surface */
-        lift += m->sc->terrain.def.soil.depth_m;
+    if (m->sc->terrain.def.soil.model != FS_SOIL_NONE) /* drop_m above the soil's surface, where its section lies */
+        lift += fs_soil_depth_over(&m->sc->terrain.def.soil, xlo, xhi);
     return lift + m->sc->def.drop_m;
 }
 

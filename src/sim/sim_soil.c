@@ -1,10 +1,11 @@
 /* sim_soil.c: the feet's shapes for the soil, and the soil's forces put on the ODE bodies.
  *
- * Soil shapes (docs/soil.md gives their sizes and areas): the flat sole is its plate (a box); on the
- * biomimetic foot every link is a capsule of its contact spheres' radius: the heel a capsule between
- * its two heel spheres, each metatarsal from its midfoot joint to its ball sphere, each phalanx from
- * its MTP joint to its toe sphere, the talus between its two joints at half the links' width. The
- * contact spheres stay the shapes the rigid bedrock meets. */
+ * Soil shapes (fs_soil_foot_shapes; docs/soil.md gives their sizes and areas): the flat sole is its
+ * plate (a box); on the biomimetic foot every link is a capsule of the radius the design gives it
+ * ([soil_shapes], by default its contact spheres' radius, the talus half the links' width;
+ * fs_body_geom.soil_radius_m): the heel a capsule between its two heel spheres, each metatarsal from
+ * its midfoot joint to its ball sphere, each phalanx from its MTP joint to its toe sphere, the talus
+ * between its two joints. The contact spheres stay the shapes the rigid bedrock meets. */
 #include "sim_soil.h"
 
 #include "sim_internal.h"
@@ -59,6 +60,20 @@ double fs_sim_soil_slip(const fs_sim *sim, int foot)
     return slip;
 }
 
+int fs_sim_soil_over(const fs_sim *sim, int foot)
+{
+    const fs_soil_grid *g = sim->soil ? &sim->soil->g : NULL;
+    for (int s = 0; g && s < g->nshapes; s++) {
+        double box[4], zmin;
+        if (foot >= 0 && g->shape[s].foot != foot)
+            continue;
+        fs_soil_shape_box(&g->shape[s], &sim->soil->body[g->shape[s].body], box, &zmin);
+        if (fs_soil_depth_over(&g->d, box[0], box[1]) > 0)
+            return 1;
+    }
+    return 0;
+}
+
 double fs_sim_ground_surface(const fs_sim *sim, double x, double y)
 {
     return sim->soil ? fs_soil_grid_surface(&sim->soil->g, x, y) : fs_terrain_height(&sim->sc->terrain, x, y);
@@ -72,20 +87,31 @@ static int foot_of(const fs_foot_geom *g, int body)
     return g->nfeet > 1 ? -1 : 0;
 }
 
-/* A capsule from design point p to q (radius r) on body i, in its frame (origin at its centre). */
-static void add_capsule(fs_sim *sim, int body, fs_vec3 p, fs_vec3 q, double r, const char *name)
+/* The shapes being made: where they go, how many fit, and the bodies' centres (NULL: the design's origin). */
+typedef struct shape_list { fs_soil_shape *s; int n, max; const fs_vec3 *com; } shape_list;
+
+static fs_soil_shape *new_shape(shape_list *l, int kind, int body, int foot, const char *name, fs_vec3 at)
 {
-    fs_soil_grid *g = &sim->soil->g;
-    if (g->nshapes == FS_SOIL_MAX_SHAPES)
-        return;
-    fs_soil_shape *s = &g->shape[g->nshapes++];
+    if (l->n == l->max)
+        return NULL;
+    fs_soil_shape *s = &l->s[l->n++];
     memset(s, 0, sizeof *s);
-    const fs_vec3 c = sim->com[body];
-    s->kind = FS_SOIL_CAPSULE;
+    const fs_vec3 c = l->com ? l->com[body] : fs_v3(0, 0, 0);
+    s->kind = kind;
     s->body = body;
-    s->foot = foot_of(sim->geom, body);
+    s->foot = foot;
     snprintf(s->name, sizeof s->name, "%s", name);
-    s->a[0] = p.x - c.x, s->a[1] = p.y - c.y, s->a[2] = p.z - c.z;
+    s->a[0] = at.x - c.x, s->a[1] = at.y - c.y, s->a[2] = at.z - c.z;
+    return s;
+}
+
+/* A capsule from design point p to q (radius r) on body i, in its frame (origin at its centre). */
+static void add_capsule(shape_list *l, const fs_foot_geom *g, int body, fs_vec3 p, fs_vec3 q, double r, const char *name)
+{
+    fs_soil_shape *s = new_shape(l, FS_SOIL_CAPSULE, body, foot_of(g, body), name, p);
+    if (!s)
+        return;
+    const fs_vec3 c = l->com ? l->com[body] : fs_v3(0, 0, 0);
     s->b[0] = q.x - c.x, s->b[1] = q.y - c.y, s->b[2] = q.z - c.z;
     s->radius_m = r;
     s->plan_area_m2 = 2 * r * hypot(q.x - p.x, q.y - p.y) + M_PI * r * r;
@@ -104,20 +130,13 @@ static int anchors(const fs_foot_geom *g, int body, fs_vec3 out[2], int as_dista
     return n;
 }
 
-static void make_shapes(fs_sim *sim)
+int fs_soil_foot_shapes(const fs_foot_geom *g, const fs_vec3 *com, fs_soil_shape *out, int max)
 {
-    const fs_foot_geom *g = sim->geom;
-    fs_soil_grid *sg = &sim->soil->g;
+    shape_list l = {out, 0, max, com};
     for (int b = 0; b < g->nboxes; b++) {
-        fs_soil_shape *s = &sg->shape[sg->nshapes++];
-        memset(s, 0, sizeof *s);
-        const int body = g->box[b].body;
-        const fs_vec3 c = sim->com[body], bc = g->box[b].centre;
-        s->kind = FS_SOIL_BOX;
-        s->body = body;
-        s->foot = foot_of(g, body);
-        snprintf(s->name, sizeof s->name, "sole");
-        s->a[0] = bc.x - c.x, s->a[1] = bc.y - c.y, s->a[2] = bc.z - c.z;
+        fs_soil_shape *s = new_shape(&l, FS_SOIL_BOX, g->box[b].body, foot_of(g, g->box[b].body), "sole", g->box[b].centre);
+        if (!s)
+            break;
         s->half[0] = 0.5 * g->box_size.x, s->half[1] = 0.5 * g->box_size.y, s->half[2] = 0.5 * g->box_size.z;
         s->R[0] = s->R[4] = s->R[8] = 1;
         s->plan_area_m2 = g->box_size.x * g->box_size.y;
@@ -137,20 +156,26 @@ static void make_shapes(fs_sim *sim)
             }
         if (has_box)
             continue;
+        const double r = g->body[body].soil_radius_m; /* [soil_shapes], or the sphere's (fs_body_geom) */
         fs_vec3 a[2];
         if (ns >= 2) { /* the heel: across its spheres */
-            add_capsule(sim, body, g->sphere[first].centre, g->sphere[last].centre,
-                        fmax(g->sphere[first].radius_m, g->sphere[last].radius_m), g->body[body].name);
+            add_capsule(&l, g, body, g->sphere[first].centre, g->sphere[last].centre, r, g->body[body].name);
         } else if (ns == 1) { /* a metatarsal or phalanx: from its proximal joint to its sphere */
             if (anchors(g, body, a, 1) >= 1)
-                add_capsule(sim, body, a[0], g->sphere[first].centre, g->sphere[first].radius_m, g->body[body].name);
+                add_capsule(&l, g, body, a[0], g->sphere[first].centre, r, g->body[body].name);
             else
-                add_capsule(sim, body, g->sphere[first].centre, g->sphere[first].centre, g->sphere[first].radius_m,
-                            g->body[body].name);
+                add_capsule(&l, g, body, g->sphere[first].centre, g->sphere[first].centre, r, g->body[body].name);
         } else if (anchors(g, body, a, 0) == 2) { /* the talus: between its joints */
-            add_capsule(sim, body, a[0], a[1], 0.5 * sim->sc->design.link_width_m, g->body[body].name);
+            add_capsule(&l, g, body, a[0], a[1], r, g->body[body].name);
         }
     }
+    return l.n;
+}
+
+static void make_shapes(fs_sim *sim)
+{
+    fs_soil_grid *sg = &sim->soil->g;
+    sg->nshapes = fs_soil_foot_shapes(sim->geom, sim->com, sg->shape, FS_SOIL_MAX_SHAPES);
 }
 
 static void read_bodies(fs_sim *sim)

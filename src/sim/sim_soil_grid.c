@@ -198,8 +198,7 @@ static void clip_below(placed *p, double z_top)
     }
 }
 
-/* A shape's plan extent now and its lowest point, from its bounding box. */
-static void shape_bounds(const fs_soil_shape *s, const fs_soil_body *b, double box[4], double *zmin)
+void fs_soil_shape_box(const fs_soil_shape *s, const fs_soil_body *b, double box[4], double *zmin)
 {
     double A[3];
     to_world(b, s->a, A);
@@ -225,8 +224,11 @@ static void shape_bounds(const fs_soil_shape *s, const fs_soil_body *b, double b
 
 double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y)
 {
-    return fs_terrain_height(g->terrain, x, y) + g->d.depth_m;
+    return fs_terrain_height(g->terrain, x, y) + fs_soil_depth_over(&g->d, x, x);
 }
+
+/* Whether column i lies over the soil's section. */
+static inline int in_section(const fs_soil_grid *g, int i) { return i >= g->i_lo && i <= g->i_hi; }
 
 static fs_status grow(fs_soil_grid *g, fs_error *err)
 {
@@ -305,7 +307,7 @@ static void fill_tile(const fs_soil_grid *g, int ti, int tj, int st, const fs_so
             fs_soil_node *n = &nd[packed(i, j, st)];
             int gi = ti * T + i, gj = tj * T + j;
             n->h0_m = fs_soil_grid_undisturbed(g, g->x0 + gi * g->dx, g->y0 + gj * g->dx);
-            const fs_soil_node *o = from ? node_at(from, gi, gj) : NULL;
+            const fs_soil_node *o = from && in_section(g, gi) ? node_at(from, gi, gj) : NULL;
             if (o) {
                 n->sp_m = o->sp_m;
                 n->yield_Pa = o->yield_Pa;
@@ -342,12 +344,15 @@ static fs_status need_tile(fs_soil_grid *g, int ti, int tj, int st, fs_error *er
     return FS_OK;
 }
 
-const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j) { return node_at(g, i, j); }
+const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j)
+{
+    return in_section(g, i) ? node_at(g, i, j) : NULL;
+}
 
 double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y)
 {
     int i = (int)lround((x - g->x0) / g->dx), j = (int)lround((y - g->y0) / g->dx);
-    const fs_soil_node *n = node_at(g, i, j);
+    const fs_soil_node *n = fs_soil_grid_node(g, i, j);
     if (!n)
         return fs_soil_grid_undisturbed(g, x, y);
     double s = n->h0_m - n->sp_m;
@@ -357,8 +362,8 @@ double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y)
 /* The node range [i0, i1] x [j0, j1] over a plan box, clipped to the region; 0 when empty. */
 static int node_range(const fs_soil_grid *g, const double box[4], int r[4])
 {
-    r[0] = (int)fmax(0, ceil((box[0] - g->x0) / g->dx));
-    r[1] = (int)fmin(g->nx - 1, floor((box[1] - g->x0) / g->dx));
+    r[0] = (int)fmax(g->i_lo, ceil((box[0] - g->x0) / g->dx));
+    r[1] = (int)fmin(g->i_hi, floor((box[1] - g->x0) / g->dx));
     r[2] = (int)fmax(0, ceil((box[2] - g->y0) / g->dx));
     r[3] = (int)fmin(g->ny - 1, floor((box[3] - g->y0) / g->dx));
     return r[0] <= r[1] && r[2] <= r[3];
@@ -399,6 +404,13 @@ fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (
     if ((double)g->nx * g->ny > g->d.max_nodes)
         return fs_fail(err, FS_BAD_INPUT, "%s: the soil's grid has %d x %d nodes, over [soil] max_nodes %d", t->path,
                        g->nx, g->ny, g->d.max_nodes);
+    /* the section's columns: those whose x the section holds, tested as fs_soil_depth_over tests it (the
+       undisturbed surface's depth) on the x fill_tile samples the node at */
+    g->i_lo = 0, g->i_hi = g->nx - 1;
+    while (g->i_lo < g->nx && g->x0 + g->i_lo * g->dx < g->d.x_min_m)
+        g->i_lo++;
+    while (g->i_hi >= 0 && g->x0 + g->i_hi * g->dx > g->d.x_max_m)
+        g->i_hi--;
     g->tx = (g->nx + T - 1) / T;
     g->ty = (g->ny + T - 1) / T;
     g->max_tiles = g->tx * g->ty;
@@ -507,7 +519,7 @@ fs_status fs_soil_grid_surface_copy(const fs_soil_grid *g, fs_soil_surface *s, f
     s->x0 = g->x0 + i0 * g->dx, s->y0 = g->y0 + j0 * g->dx;
     for (int j = j0; j < j1; j++)
         for (int i = i0; i < i1; i++) {
-            const fs_soil_node *nd = node_at(g, i, j);
+            const fs_soil_node *nd = fs_soil_grid_node(g, i, j);
             size_t k = (size_t)(j - j0) * (size_t)s->nx + (size_t)(i - i0);
             s->sink_m[k] = nd ? nd->sp_m : 0;
             s->z_m[k] = nd ? nd->h0_m - nd->sp_m : fs_soil_grid_undisturbed(g, g->x0 + i * g->dx, g->y0 + j * g->dx);
@@ -856,7 +868,7 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
     for (int s = 0; s < g->nshapes; s++) {
         const fs_soil_shape *sh = &g->shape[s];
         double box[4], zmin;
-        shape_bounds(sh, &bodies[sh->body], box, &zmin);
+        fs_soil_shape_box(sh, &bodies[sh->body], box, &zmin);
         memset(g->force[s], 0, sizeof g->force[s]);
         memset(g->torque[s], 0, sizeof g->torque[s]);
         g->nodes[s] = 0;

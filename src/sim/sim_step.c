@@ -31,8 +31,8 @@ static int could_land(const fs_sim *sim, int i, double h, double ahead)
     for (int k = 0; k < 4; k++)
         top = fmax(top, fs_terrain_height(t, p[0] + (k == 0 ? reach : k == 1 ? -reach : 0),
                                           p[1] + (k == 2 ? reach : k == 3 ? -reach : 0)));
-    if (sim->soil) /* the soil's undisturbed surface (a print only lowers it) */
-        top += t->def.soil.depth_m;
+    if (sim->soil) /* the soil's undisturbed surface (a print only lowers it), where its section lies */
+        top += fs_soil_depth_over(&t->def.soil, p[0] - reach, p[0] + reach);
     dVector3 v;
     dBodyGetPointVel(dGeomGetBody(g), p[0], p[1], p[2], v);
     double spin = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);

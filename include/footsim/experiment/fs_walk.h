@@ -20,7 +20,9 @@
  * load; it holds where that is reached and comes back up to its path over the swing. It goes down
  * at twice the layer's depth over the stance's time, fast enough to reach the bedrock by
  * mid-stance, where the step is judged. Each step then records what the soil did
- * (fs_walk_step). Without a soil nothing changes. */
+ * (fs_walk_step). It presses past press_m only while the foot lies over the soil (fs_sim_soil_over: a
+ * soil laid over a section of the path, [soil] x_min_m..x_max_m, leaves the steps beyond it the rigid
+ * ground's), and records every step. Without a soil nothing changes. */
 enum { FS_WALK_MAX_STEPS = 1000 }; /* [walk] steps' largest */
 
 typedef struct fs_walk_step {

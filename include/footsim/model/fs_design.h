@@ -62,6 +62,10 @@ typedef struct fs_design_def {
     double link_width_m;               /* square cross-section of the links, for their inertia */
     double heel_radius_m, ball_radius_m, toe_radius_m; /* contact spheres */
     double heel_width_m;               /* between the two heel spheres; 0 for one */
+    /* [soil_shapes]: each link's capsule for a soil (docs/soil.md, The feet's shapes), m; 0: the contact
+       sphere's radius (heel, metatarsals, phalanges; the last two times the chain's scale, as given ones
+       are), half link_width_m (talus) */
+    double soil_heel_radius_m, soil_talus_radius_m, soil_metatarsal_radius_m, soil_phalanx_radius_m;
     double sole_mu;                    /* friction coefficient of the sole material */
     double sole_stiffness_N_per_m;     /* contact stiffness of the sole material, per contact */
     double sole_damping_Ns_per_m;
@@ -72,6 +76,7 @@ typedef struct fs_body_geom {
     char name[32];
     double mass_kg;
     fs_vec3 com;         /* the body's origin, at its centre of mass */
+    double soil_radius_m; /* its capsule's radius for a soil ([soil_shapes]); 0: none given (the sole's box) */
     double inertia[9];   /* about the COM, world axes, kg m^2 (row-major) */
 } fs_body_geom;
 

@@ -31,6 +31,8 @@ typedef struct fs_soil_def {
     double coarse_grid_m;        /* the widest spacing a shape may be met on (the flat sole's); 0: grid_m */
     int nodes_across;            /* a shape's spacing leaves at least this many nodes across its narrowest side */
     double margin_m;             /* the grid covers the region the feet can reach plus this */
+    double x_min_m, x_max_m;     /* the layer lies over x_min_m <= x <= x_max_m only (a section of the path; by
+                                  * default +-1000 m, everywhere): beyond it the ground is the bedrock, rigid */
     double b_min_m;              /* Bekker's b is never taken below this (a patch as it first forms) */
     double slip_speed_m_per_s;   /* shear and drag reach full strength above this slip speed */
     int max_nodes;               /* the grid may hold at most this many nodes (memory cap) */
@@ -53,6 +55,7 @@ typedef struct fs_soil_def {
 
 /* Refuses (FS_BAD_INPUT, "where: what is wrong, and what would be right") what no single key can
  * judge: a [bekker] or [rft] section in a file without a [soil] section (it would be ignored), a
+ * section whose x_max_m is not above its x_min_m (an empty soil), a
  * bekker soil without a [bekker] section (the keys' defaults are no soil), an RFT soil without
  * zeta_N_per_m3 or density_kg_per_m3 (pointing at the [rft] header or at [soil] model when the key
  * is absent). cfg (may be NULL: "set in code"; the checks on sections are then skipped) locates the
@@ -65,6 +68,17 @@ fs_status fs_soil_check(const fs_soil_def *d, const fs_config *cfg, const char *
  * the file. */
 fs_status fs_soil_region(const fs_soil_def *d, const double box[4], const char *path, double region[4], double *nodes,
                          fs_error *err);
+
+/* The section and the run's ground: FS_BAD_INPUT, the message starting with where (where [soil] x_min_m
+ * came from), when the section [x_min_m, x_max_m] misses the rectangle the soil's grid covers (region,
+ * fs_soil_region: no foot would meet the soil) or, extent not NULL (a heightmap's image, x0, x1, y0, y1),
+ * the terrain's data. */
+fs_status fs_soil_section_check(const fs_soil_def *d, const double region[4], const double *extent, const char *where,
+                                fs_error *err);
+
+/* The layer's depth under the plan interval [x0_m, x1_m]: depth_m when it meets the section
+ * [x_min_m, x_max_m] (everywhere by default), else 0 (the bedrock is the surface there). */
+double fs_soil_depth_over(const fs_soil_def *d, double x0_m, double x1_m);
 
 /* ---- the laws ---------------------------------------------------------------------------------- */
 

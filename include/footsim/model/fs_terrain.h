@@ -20,7 +20,7 @@ typedef enum fs_terrain_kind {
     FS_TERRAIN_SIMPLY_UNEVEN, FS_TERRAIN_COMPLEX_UNEVEN, FS_TERRAIN_HEIGHTMAP
 } fs_terrain_kind;
 
-typedef enum fs_step_pattern { FS_STEPS_UP = 0, FS_STEPS_DOWN = 1, FS_STEPS_UP_DOWN = 2 } fs_step_pattern;
+typedef enum fs_step_pattern { FS_STEPS_UP = 0, FS_STEPS_DOWN = 1, FS_STEPS_UP_DOWN = 2, FS_STEPS_DOWN_UP = 3 } fs_step_pattern;
 
 enum { FS_MAX_ROCKS = 256 };
 
@@ -69,6 +69,7 @@ typedef struct fs_terrain {
     double soil_region[4];
     char soil_grid_at[FS_PATH_MAX + 80]; /* with a soil: where [soil] grid_m came from, for the grid's
                                             memory cap ("FILE:LINE", "--set soil.grid_m", ...) */
+    char soil_section_at[FS_PATH_MAX + 80]; /* with a soil: where its section ([soil] x_min_m, else x_max_m) came from */
 } fs_terrain;
 
 enum { FS_TERRAIN_BLOCK = 8 };

@@ -14,6 +14,13 @@
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_soil_grid.h"
 
+/* The feet's shapes for a soil, made from a foot's geometry (sim_soil.c says which: the flat sole's
+ * box, a capsule per link of the radius the design file's [soil_shapes] gives): at most max of them
+ * into out, each in its body's frame with the body's origin at com[body] (NULL: at the design's
+ * origin, the shapes then in design coordinates), with its plan area at rest; how many. What a sim on
+ * a soil meets the soil with, and what `footsim model` prints. */
+int fs_soil_foot_shapes(const fs_foot_geom *g, const fs_vec3 *com, fs_soil_shape *out, int max);
+
 /* The soil's grid, or NULL without a soil. */
 const fs_soil_grid *fs_sim_soil_grid(const fs_sim *sim);
 
@@ -33,6 +40,11 @@ double fs_sim_soil_sinkage(const fs_sim *sim, int foot);
  * loaded it), m, their mean by area; 0 without a soil or when the soil does not carry foot. It too
  * visits every stored node. */
 double fs_sim_soil_slip(const fs_sim *sim, int foot);
+
+/* Whether any of foot's (-1: every foot's) soil shapes lies over the soil's section now (its plan's extent
+ * along x, as the last (sub)step placed it, meets [soil] x_min_m..x_max_m: always, without a section); 0
+ * without a soil. */
+int fs_sim_soil_over(const fs_sim *sim, int foot);
 
 /* What holds the feet now: contact points plus soil nodes (the outcome rules' support). */
 int fs_sim_support(const fs_sim *sim);

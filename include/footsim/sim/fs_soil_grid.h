@@ -94,6 +94,9 @@ typedef struct fs_soil_grid {
     fs_soil_def d;
     double x0, y0, dx;      /* node (i, j) at (x0 + i dx, y0 + j dx) */
     int nx, ny;             /* nodes over the region */
+    int i_lo, i_hi;         /* the columns the soil lies over ([soil] x_min_m <= x0 + i dx <= x_max_m; 0 and
+                             * nx - 1 without a section): no node beyond them is ever claimed, and no tile
+                             * wholly beyond them is made */
     int tx, ty;             /* tiles over it */
     int *tile;              /* tx * ty: the pool slot of each tile, or -1 */
     unsigned char *stride;  /* tx * ty: the spacing of a made tile's nodes, in grid nodes (1: every node; s: only
@@ -140,7 +143,8 @@ int fs_soil_stride(const fs_soil_def *d, double width_m);
  * of stride s every node reads the stored node nearest it (each stands for s x s nodes). */
 const fs_soil_node *fs_soil_grid_node(const fs_soil_grid *g, int i, int j);
 double fs_soil_grid_surface(const fs_soil_grid *g, double x, double y);
-/* The undisturbed surface at (x, y): the terrain plus the layer's depth. */
+/* The undisturbed surface at (x, y): the terrain plus the layer's depth (the terrain alone beyond the
+ * soil's section, fs_soil_depth_over). */
 double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y);
 
 /* Over every stored node: the prints' volume (sum of plastic sinkage times dx^2), m^3, the deepest
@@ -170,6 +174,10 @@ typedef struct fs_soil_surface {
 } fs_soil_surface;
 fs_status fs_soil_grid_surface_copy(const fs_soil_grid *g, fs_soil_surface *s, fs_error *err);
 void fs_soil_surface_free(fs_soil_surface *s);
+
+/* A shape's plan extent where body places it, [xmin, xmax, ymin, ymax] (its bounding box's), and its lowest
+ * point, m. */
+void fs_soil_shape_box(const fs_soil_shape *s, const fs_soil_body *body, double box[4], double *zmin);
 
 /* A vertical line at (x, y) against a shape placed by body: its lowest point below z_top on the
  * shape (returned, or +INFINITY when it misses) and the outward normal there. */
