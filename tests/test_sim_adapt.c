@@ -288,9 +288,9 @@ static void settings_and_refusals(void)
         CHECK(strstr(err.message, "tolerance_m") != NULL);
         fs_scenario_free(&a);
     }
-    const char *walk[] = {"run.tolerance_m=1e-5"};
+    const char *walk[] = {"run.tolerance_m=1e-5"}; /* the walking machine takes it (test_engine_walk) */
     fs_error err;
-    CHECK(fs_scenario_load("scenarios/walking.ini", walk, 1, &a, &err) == FS_BAD_INPUT);
+    CHECK(fs_scenario_load("scenarios/walking.ini", walk, 1, &a, &err) == FS_OK);
     fs_scenario_free(&a);
 }
 
