@@ -217,7 +217,7 @@ static void walk_under_a_tolerance(void)
  * with a detour at every observation (the state saved, moved by ODE steps of four sizes, which drive
  * the carriage, load the contacts and count the checks' work, and put back), gives the same result to
  * the bit, and every body's state at every observation (before its detour) is the same. Fails when
- * the carriage is not put back (tried: without fs_carriage_exchange the bodies part in the swing,
+ * the carriage is not put back (tried: without it the bodies part in the swing,
  * where the carriage moves). */
 typedef struct detour_seen {
     int detours, take;
@@ -288,6 +288,12 @@ static void no_trace_on(const char *terrain, int soil)
     fs_scenario_free(&sc);
 }
 
-static void rejected_steps_leave_no_trace(void) { no_trace_on(NULL, 0); }
+static void rejected_steps_leave_no_trace(void)
+{
+    no_trace_on(NULL, 0);
+    /* on a soil (LETE sand, 2 mm grid), with the press (fs_walk.h): the soil's nodes, tiles, stamp and
+       work, and the press's state, besides the carriage */
+    no_trace_on("scenario.terrain=../terrains/soils/lete_sand.ini", 1);
+}
 
 FS_TEST_MAIN(TEST(walk_under_a_tolerance), TEST(rejected_steps_leave_no_trace), TEST(machine_takes_its_steps), TEST(machine_presses_until_the_soil_carries_it), TEST(biomimetic_foot_stands_on_heel_and_toes), TEST(only_walk_scenarios_walk), TEST(carriage_work_closes_the_energy_balance))

@@ -13,6 +13,7 @@
  * and counters; and the walking machine's carriage (a kinematic body, set to its path at each ODE
  * step: fs_carriage.h). Nothing is allocated while stepping: the saved state is taken at build. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -196,6 +197,7 @@ void fs_sim_save_state(fs_sim *sim)
     read_bodies(sim, sim->saved->body);
     if (sim->driven.exchange)
         sim->driven.exchange(sim->driven.user, sim->saved->carriage, 1);
+    fs_sim_soil_save(sim);
     exchange(sim, 1);
 }
 
@@ -204,6 +206,7 @@ void fs_sim_restore_state(fs_sim *sim)
     write_bodies(sim, sim->saved->body);
     if (sim->driven.exchange)
         sim->driven.exchange(sim->driven.user, sim->saved->carriage, 0);
+    fs_sim_soil_restore(sim);
     exchange(sim, 0);
 }
 
