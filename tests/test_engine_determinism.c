@@ -2,7 +2,8 @@
  * tests/determinism_static_load.txt, and a landing trial's state after every step to
  * tests/determinism_landing.txt (on a plane: ODE's contacts) and, on rough ground (footsim's own
  * heightfield contacts, both feet), to tests/determinism_landing_rough.txt, and the landing with an
- * error-controlled step to tests/determinism_landing_tolerance.txt. A change of the physics, the solver settings, the compiler's
+ * error-controlled step to tests/determinism_landing_tolerance.txt, and with it on a soil and the
+ * walking machine with it to tests/determinism_variable_soil_walk.txt. A change of the physics, the solver settings, the compiler's
  * floating-point contraction or the ODE build shows up here; if the change is meant, rewrite the
  * files with FS_HASH_UPDATE=1 build/tests/test_engine_determinism (from the source folder) and say
  * why in the commit. (That the same inputs give the same bits in one build is tested directly in
@@ -11,6 +12,7 @@
 
 #include "footsim/experiment/fs_run.h"
 #include "footsim/experiment/fs_trial.h"
+#include "footsim/experiment/fs_walk.h"
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_sim_soil.h"
 #include "sim/sim_internal.h" /* the sim's fields, which tests may read */
@@ -181,6 +183,33 @@ static void soil_landing_hashes_to_its_committed_value(void)
     CHECK(r.print_slip_m >= 0 && isfinite(r.print_slip_m));
 }
 
+/* Variable steps on a soil and in the walking machine (issue 30: the same inputs give the same bits
+ * whatever ran before): the soil landing above at 1e-5 m under the embedded estimate (its rejected
+ * steps put the soil back: fs_soil_grid_undo), then one step of the walking machine on LETE sand (2 mm
+ * grid) at 1e-5 m by step doubling (the carriage driven at each ODE step, the press), their states
+ * after every accepted step, the soil's with them, hashed one after the other into
+ * tests/determinism_variable_soil_walk.txt. */
+static void variable_steps_on_soil_and_walking_hash_to_their_committed_value(void)
+{
+    uint64_t h = 1469598103934665603ULL;
+    fs_run_observer obs = {.interval_s = 1e-12, .fn = hash_soil, .user = &h};
+    const char *set[] = {"scenario.terrain=../terrains/soils/dry_sand.ini", "robot.design=robots/drop_weight.ini",
+                         "run.duration_s=0.2", "run.tolerance_m=1e-5", "run.error_estimate=embedded"};
+    fs_trial_result r;
+    fs_error err;
+    REQUIRE(fs_trial_run("scenarios/landing_trial.ini", set, 5, 1, &obs, &r, &err) == FS_OK);
+    CHECK(r.rejected_steps > 0 && r.steps > 50);
+    static fs_scenario sc;
+    const char *walk[] = {"walk.steps=1", "scenario.terrain=../terrains/soils/lete_sand.ini", "soil.grid_m=0.002",
+                          "run.tolerance_m=1e-5"};
+    REQUIRE(fs_scenario_load("scenarios/walking.ini", walk, 4, &sc, &err) == FS_OK);
+    static fs_walk_result w;
+    REQUIRE(fs_walk_run(&sc, &obs, &w, &err) == FS_OK);
+    CHECK(w.steps_completed == 1 && w.nsteps == 1);
+    fs_scenario_free(&sc);
+    check_hash("tests/determinism_variable_soil_walk.txt", "variable steps on soil and walking", h);
+}
+
 /* The end of a quickstep run, which draws on ODE's random generator to order its constraints. */
 static double quickstep_end(const char *duration)
 {
@@ -294,5 +323,6 @@ static void interleaved_sims_give_the_bits_of_each_alone(void)
 FS_TEST_MAIN(TEST(static_load_hashes_to_its_committed_value), TEST(landing_trial_hashes_to_its_committed_value),
              TEST(rough_landings_hash_to_their_committed_value), TEST(variable_step_trial_hashes_to_its_committed_value),
              TEST(soil_landing_hashes_to_its_committed_value),
+             TEST(variable_steps_on_soil_and_walking_hash_to_their_committed_value),
              TEST(quickstep_does_not_depend_on_earlier_runs),
              TEST(interleaved_sims_give_the_bits_of_each_alone))

@@ -115,7 +115,7 @@ typedef struct scene {
     double ref_check_m;         /* chain: how much halving the reference's tolerance moves the ankle */
     double ref_wall_s;
     int has_springs;            /* 0: the spring implementation makes no difference (the flat foot) */
-    int soil;                   /* on a soil: no error-controlled step (refused: docs/soil.md) */
+    int soil;                   /* on a soil: no error-controlled step rows (not yet: docs/bench.md) */
     double goal_rtf;            /* the real-time factor wanted within GOAL_ERR_M (0: none, the chain) */
     double goal_fine_rtf;       /* ... and within GOAL_FINE_ERR_M (0: none) */
 } scene;

@@ -39,7 +39,7 @@ typedef struct walk_run {
     const fs_terrain_def *td;
     fs_walk_result *out;
     fs_carriage *carriage;
-    int step;                   /* the step of the gait the coming (then last) sim step belongs to */
+    int step;                   /* the step of the gait the last sim step ended in */
     double phase;               /* and where in it, 0..1 */
     double rough_sum, flat_sum, tilt_max;
     int flat_steps, last_step, judged;
@@ -48,30 +48,44 @@ typedef struct walk_run {
     const fs_soil_grid *soil;
     double weight_N, press_speed_m_per_s, extra_m, extra_end_m, work_at_start_J, stance_ankle[3];
     int in_stance;
+    /* the sim step being taken: its start, and whether the press goes on down over it (the ground
+       carried less than the load at its start); nothing a rejected ODE step changes (fs_carriage.h) */
+    double step_start_s;
+    int pressing;
 } walk_run;
 
-/* Before each step: the actuator sets the carriage's velocity to take it to the path. */
-static void drive_carriage(void *user, fs_sim *sim)
+/* The carriage's path elapsed_s into the sim step being taken (fs_carriage_path_fn): the gait's, and
+ * on a soil the press (fs_walk.h) at the rate it had at the step's start. */
+static void walk_path(void *user, double elapsed_s, double *x, double *z)
 {
     walk_run *w = user;
     const fs_scenario_def *d = w->d;
-    double x, z, t = fs_sim_time(sim) + d->step_s;
-    carriage_path(d, t, &x, &z, &w->step, &w->phase);
-    if (w->soil) { /* press until the soil carries the load (fs_walk.h) */
-        if (w->phase <= d->stance_fraction) {
-            double f[3];
-            fs_sim_ground_force(sim, f);
-            if (fs_sim_time(sim) > 0 && f[2] < w->weight_N && fs_sim_soil_over(sim, -1)) /* off a section: rigid */
-                w->extra_m += w->press_speed_m_per_s * d->step_s;
-            z -= w->extra_m;
-        } else { /* back to the path over the swing, from where the stance just ended (in the swing's first
-                    step soil_stance has not yet moved the stance's press into extra_end_m: without this the drive
-                    jumped for one step to the last stance's press, up to 153 mm, and the ground force with it) */
-            double swing = (w->phase - d->stance_fraction) / (1 - d->stance_fraction);
-            z -= (w->in_stance ? w->extra_m : w->extra_end_m) * (1 - swing);
-        }
+    int step;
+    double phase;
+    carriage_path(d, w->step_start_s + elapsed_s, x, z, &step, &phase);
+    if (!w->soil)
+        return;
+    if (phase <= d->stance_fraction) { /* press until the soil carries the load (fs_walk.h) */
+        *z -= w->pressing ? w->extra_m + w->press_speed_m_per_s * elapsed_s : w->extra_m;
+    } else { /* back to the path over the swing, from where the stance just ended (in the swing's first
+                step soil_stance has not yet moved the stance's press into extra_end_m: without this the drive
+                jumped for one step to the last stance's press, up to 153 mm, and the ground force with it) */
+        double swing = (phase - d->stance_fraction) / (1 - d->stance_fraction);
+        *z -= (w->in_stance ? w->extra_m : w->extra_end_m) * (1 - swing);
     }
-    fs_carriage_drive(w->carriage, x, z); /* the step's checks count the carriage's work (fs_carriage.h) */
+}
+
+/* Before each step: the actuator takes the carriage along the path over it (fs_carriage.h). */
+static void drive_carriage(void *user, fs_sim *sim)
+{
+    walk_run *w = user;
+    w->step_start_s = fs_sim_time(sim);
+    if (w->soil) {
+        double f[3];
+        fs_sim_ground_force(sim, f);
+        w->pressing = fs_sim_time(sim) > 0 && f[2] < w->weight_N && fs_sim_soil_over(sim, -1); /* off a section: rigid */
+    }
+    fs_carriage_drive(w->carriage); /* the step's checks count the carriage's work (fs_carriage.h) */
 }
 
 /* On a soil: a stance's start and end, and what the soil did in it. */
@@ -104,6 +118,10 @@ static int judge_step(void *user, fs_sim *sim)
     walk_run *w = user;
     const fs_scenario_def *d = w->d;
     fs_walk_result *out = w->out;
+    double x, z;
+    carriage_path(d, fs_sim_time(sim), &x, &z, &w->step, &w->phase); /* where in the gait the step ended */
+    if (w->soil && w->pressing && w->phase <= d->stance_fraction) /* the press went on down over the step */
+        w->extra_m += w->press_speed_m_per_s * fs_sim_step_taken(sim);
     double f[3];
     fs_sim_ground_force(sim, f);
     out->peak_force_N = fmax(out->peak_force_N, f[2]);
@@ -158,6 +176,7 @@ fs_status fs_walk_run(const fs_scenario *sc, const fs_run_observer *obs, fs_walk
     }
     walk_run w = {.d = d, .td = &sc->terrain.def, .out = out, .carriage = carriage, .last_step = -1,
                   .soil = fs_sim_soil_grid(sim)};
+    fs_carriage_set_path(carriage, walk_path, &w);
     if (w.soil) { /* the load the soil is to carry: the robot's weight and its foot's */
         w.weight_N = (d->robot.mass_kg + fs_sim_geom(sim)->total_mass_kg) * d->gravity_m_per_s2;
         w.press_speed_m_per_s = 2 * sc->terrain.def.soil.depth_m / (d->walk_period_s * d->stance_fraction);

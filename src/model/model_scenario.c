@@ -196,10 +196,8 @@ static fs_status check_relations(fs_scenario *sc, const fs_config *cfg, fs_error
                        "least one step", fs_config_where(cfg, "run", "log_interval_s", where, sizeof where),
                        d->log_interval_s, d->step_s, fs_config_where(cfg, "run", "step_s", where_step, sizeof where_step));
     if (d->tolerance_m > 0) {
-        const char *why = d->kind == FS_SCENARIO_WALK ? "the walking machine drives its carriage by the step"
-                          : d->impact_substeps > 1 ? "impact_substeps is the fixed step's way to resolve a touchdown"
+        const char *why = d->impact_substeps > 1 ? "impact_substeps is the fixed step's way to resolve a touchdown"
                           : d->auto_disable_s > 0 ? "ODE's auto-disable keeps a state a rejected step cannot restore"
-                          : sc->terrain.def.soil.model != FS_SOIL_NONE ? "a soil's nodes (prints, slip) are not put back by a rejected step"
                           : d->step_min_s * 2 > d->step_max_s ? "step_min_s must be at most half step_max_s"
                                                                : NULL;
         if (why)

@@ -10,8 +10,10 @@
  * contacts are new joints each step, the hinges, stops and springs keep none), and footsim's own
  * history: the contacts of the last step with their forces (the next step's friction bounds), the
  * touches, the substep window, the state checks' reference and work, ODE's random state, the time
- * and counters. Nothing is allocated while stepping: the saved state is taken at build. */
+ * and counters; and the walking machine's carriage (a kinematic body, set to its path at each ODE
+ * step: fs_carriage.h). Nothing is allocated while stepping: the saved state is taken at build. */
 #include "sim_internal.h"
+#include "sim_soil.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -33,6 +35,7 @@ struct fs_sim_saved {
     long contacts_total, collision_tests;
     fs_check check;
     unsigned long rand_seed;
+    double carriage[6]; /* the walking machine's carriage (fs_carriage.h): position, velocity */
     /* the last step's contacts (contacts_now of them): what the next step's friction bounds read */
     dJointFeedback feedback[FS_MAX_STEP_CONTACTS];
     double contact_pos[FS_MAX_STEP_CONTACTS][3], contact_depth_m[FS_MAX_STEP_CONTACTS];
@@ -192,12 +195,18 @@ static void exchange(fs_sim *sim, int saving)
 void fs_sim_save_state(fs_sim *sim)
 {
     read_bodies(sim, sim->saved->body);
+    if (sim->driven.exchange)
+        sim->driven.exchange(sim->driven.user, sim->saved->carriage, 1);
+    fs_sim_soil_save(sim);
     exchange(sim, 1);
 }
 
 void fs_sim_restore_state(fs_sim *sim)
 {
     write_bodies(sim, sim->saved->body);
+    if (sim->driven.exchange)
+        sim->driven.exchange(sim->driven.user, sim->saved->carriage, 0);
+    fs_sim_soil_restore(sim);
     exchange(sim, 0);
 }
 

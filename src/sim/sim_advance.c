@@ -41,6 +41,8 @@ fs_status fs_sim_step_by(fs_sim *sim, double h, fs_error *err)
 {
     const fs_scenario_def *s = &sim->sc->def;
     fs_sim_set_step(sim, h);
+    if (sim->driven.follow) /* the carriage: under a tolerance, to its path at this ODE step's end (fs_carriage.h) */
+        sim->driven.follow(sim->driven.user, h);
     /* external loads */
     apply_load(sim);
     fs_sim_lap(sim, FS_STAGE_LOADS);

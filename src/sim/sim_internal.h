@@ -38,6 +38,14 @@ typedef struct fs_sim {
                                    the ankle body's and a merged robot's together */
     fs_spring achilles;    /* with robot.joint = achilles */
     fs_spring *suspension; /* a carriage's (fs_carriage.h), prepared first at each step and substep, or NULL */
+    /* a body driven from outside the foot (the walking machine's carriage, fs_carriage.h), or all NULL:
+       follow sets it for the ODE step of h about to be taken (at the start of each), exchange saves
+       its state into `state` or puts it back (with the rest of the state: fs_sim_save_state) */
+    struct {
+        void (*follow)(void *user, double h);
+        void (*exchange)(void *user, double state[6], int saving);
+        void *user;
+    } driven;
     int has_achilles;
     double reach[FS_MAX_BODIES]; /* farthest point of each body (joint, anchor, shape) from its COM, m */
     dVector3 ankle_local;  /* the load's point on the ankle body */
@@ -194,7 +202,7 @@ fs_status fs_sim_adaptive_step(fs_sim *sim, fs_error *err);
 void fs_sim_count_step(fs_sim *sim, double h, int level);
 
 /* The state a step changes, saved (into sim->saved) and put back bit for bit: every body's position,
- * quaternion and velocities, and footsim's history (the last step's contacts and their forces,
+ * quaternion and velocities (a driven body's too: fs_sim.driven), and footsim's history (the last step's contacts and their forces,
  * touches, the substep window, the checks' reference, ODE's random state, the time, the counters)
  * (sim_adapt.c; only with sim->saved). */
 void fs_sim_save_state(fs_sim *sim);

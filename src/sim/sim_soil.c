@@ -228,7 +228,40 @@ fs_status fs_sim_soil_build(fs_sim *sim, fs_error *err)
         boxes[s][0] = fmin(A[0], B[0]) - reach, boxes[s][1] = fmax(A[0], B[0]) + reach;
         boxes[s][2] = fmin(A[1], B[1]) - reach, boxes[s][3] = fmax(A[1], B[1]) + reach;
     }
-    return fs_soil_grid_init(g, &sim->sc->terrain, (const double(*)[4])boxes, g->nshapes, err);
+    fs_status st = fs_soil_grid_init(g, &sim->sc->terrain, (const double(*)[4])boxes, g->nshapes, err);
+    if (st == FS_OK && sim->saved) /* an error-controlled step puts back what a rejected step did */
+        st = fs_soil_grid_keep(g, err);
+    return st;
+}
+
+/* The last step's per-foot results, into the save or back from it. */
+static void exchange_feet(fs_sim_soil *so, int saving)
+{
+    if (saving) {
+        memcpy(so->saved_force, so->foot_force, sizeof so->foot_force);
+        memcpy(so->saved_nodes, so->foot_nodes, sizeof so->foot_nodes);
+        memcpy(so->saved_area_m2, so->foot_area_m2, sizeof so->foot_area_m2);
+    } else {
+        memcpy(so->foot_force, so->saved_force, sizeof so->foot_force);
+        memcpy(so->foot_nodes, so->saved_nodes, sizeof so->foot_nodes);
+        memcpy(so->foot_area_m2, so->saved_area_m2, sizeof so->foot_area_m2);
+    }
+}
+
+void fs_sim_soil_save(fs_sim *sim)
+{
+    if (!sim->soil)
+        return;
+    fs_soil_grid_mark(&sim->soil->g);
+    exchange_feet(sim->soil, 1);
+}
+
+void fs_sim_soil_restore(fs_sim *sim)
+{
+    if (!sim->soil)
+        return;
+    fs_soil_grid_undo(&sim->soil->g);
+    exchange_feet(sim->soil, 0);
 }
 
 void fs_sim_soil_destroy(fs_sim *sim)

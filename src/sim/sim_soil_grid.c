@@ -230,6 +230,9 @@ double fs_soil_grid_undisturbed(const fs_soil_grid *g, double x, double y)
 /* Whether column i lies over the soil's section. */
 static inline int in_section(const fs_soil_grid *g, int i) { return i >= g->i_lo && i <= g->i_hi; }
 
+static fs_status undo_room(fs_soil_grid *g, long want, fs_error *err);
+enum { UNDO_STEPS = 4 }; /* the steps between a mark and an undo the undo log holds without growing */
+
 static fs_status grow(fs_soil_grid *g, fs_error *err)
 {
     int cap = g->cap_tiles ? 2 * g->cap_tiles : 16;
@@ -245,7 +248,7 @@ static fs_status grow(fs_soil_grid *g, fs_error *err)
     if (g->cap_tiles)
         g->grows++;
     g->cap_tiles = cap;
-    return FS_OK;
+    return g->undo ? undo_room(g, (long)UNDO_STEPS * cap * TT, err) : FS_OK;
 }
 
 /* Room for at least want claims (fs_soil_claim): the buffer doubled, as the pool is. */
@@ -262,6 +265,121 @@ static fs_status grow_claims(fs_soil_grid *g, long want, fs_error *err)
         g->claim_grows++;
     g->cap_claims = cap;
     return FS_OK;
+}
+
+/* ---- the undo log (fs_soil_grid_keep) ------------------------------------------------------- */
+
+/* One change the steps since the mark made: a node as it was (at >= 0: its place in the pool), or a
+ * tile's stride as it was (at < 0: tile, stride). */
+typedef struct undo_entry {
+    long at;
+    int tile, stride;
+    fs_soil_node node;
+} undo_entry;
+
+typedef struct fs_soil_undo {
+    undo_entry *e;
+    long n, cap;
+    /* the grid at the mark */
+    long stamp;
+    int ntiles;
+    double work_J;
+    double force[FS_SOIL_MAX_SHAPES][3], torque[FS_SOIL_MAX_SHAPES][3];
+    int nodes[FS_SOIL_MAX_SHAPES];
+    double area_m2[FS_SOIL_MAX_SHAPES], b_m[FS_SOIL_MAX_SHAPES];
+} fs_soil_undo;
+
+/* Room in the log for at least want entries. */
+static fs_status undo_room(fs_soil_grid *g, long want, fs_error *err)
+{
+    fs_soil_undo *u = g->undo;
+    if (want <= u->cap)
+        return FS_OK;
+    long cap = u->cap > 0 ? u->cap : TT;
+    while (cap < want)
+        cap *= 2;
+    undo_entry *e = realloc(u->e, (size_t)cap * sizeof *e);
+    if (!e)
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's undo log (%ld changes)", want);
+    u->e = e;
+    u->cap = cap;
+    return FS_OK;
+}
+
+/* Logs node nd as it is, before this step's first change to it (not one of a tile made since the
+ * mark: undo drops those whole). */
+static fs_status undo_node(fs_soil_grid *g, const fs_soil_node *nd, fs_error *err)
+{
+    fs_soil_undo *u = g->undo;
+    long at = (long)(nd - g->pool);
+    if (at >= (long)u->ntiles * TT)
+        return FS_OK;
+    fs_status s = undo_room(g, u->n + 1, err);
+    if (s == FS_OK)
+        u->e[u->n++] = (undo_entry){at, 0, 0, *nd};
+    return s;
+}
+
+/* Logs tile k (in pool slot `slot`) whole, before it is made finer. */
+static fs_status undo_tile(fs_soil_grid *g, int k, int slot, fs_error *err)
+{
+    fs_soil_undo *u = g->undo;
+    if (slot >= u->ntiles)
+        return FS_OK;
+    fs_status s = undo_room(g, u->n + TT + 1, err);
+    if (s != FS_OK)
+        return s;
+    for (int i = 0; i < TT; i++)
+        u->e[u->n++] = (undo_entry){(long)slot * TT + i, 0, 0, g->pool[(size_t)slot * TT + i]};
+    u->e[u->n++] = (undo_entry){.at = -1, .tile = k, .stride = g->stride[k]};
+    return FS_OK;
+}
+
+fs_status fs_soil_grid_keep(fs_soil_grid *g, fs_error *err)
+{
+    if (!g->undo && !(g->undo = calloc(1, sizeof *g->undo)))
+        return fs_fail(err, FS_NO_MEMORY, "out of memory for the soil's undo log");
+    fs_status s = undo_room(g, (long)UNDO_STEPS * g->cap_tiles * TT, err);
+    if (s == FS_OK)
+        fs_soil_grid_mark(g);
+    return s;
+}
+
+/* The grid's scalars and its shapes' last results, into the mark (saving) or back from it. */
+static void exchange(fs_soil_grid *g, fs_soil_undo *u, int saving)
+{
+    size_t n = (size_t)g->nshapes;
+    struct { void *field, *copy; size_t size; } part[] = {
+        {&g->stamp, &u->stamp, sizeof g->stamp},          {&g->ntiles, &u->ntiles, sizeof g->ntiles},
+        {&g->work_J, &u->work_J, sizeof g->work_J},        {g->force, u->force, n * sizeof g->force[0]},
+        {g->torque, u->torque, n * sizeof g->torque[0]},   {g->nodes, u->nodes, n * sizeof g->nodes[0]},
+        {g->area_m2, u->area_m2, n * sizeof g->area_m2[0]}, {g->b_m, u->b_m, n * sizeof g->b_m[0]}};
+    for (size_t k = 0; k < sizeof part / sizeof part[0]; k++)
+        memcpy(saving ? part[k].copy : part[k].field, saving ? part[k].field : part[k].copy, part[k].size);
+}
+
+void fs_soil_grid_mark(fs_soil_grid *g)
+{
+    g->undo->n = 0;
+    exchange(g, g->undo, 1);
+}
+
+void fs_soil_grid_undo(fs_soil_grid *g)
+{
+    fs_soil_undo *u = g->undo;
+    for (long k = u->n - 1; k >= 0; k--) { /* backwards: each node ends as the mark had it */
+        const undo_entry *e = &u->e[k];
+        if (e->at >= 0)
+            g->pool[e->at] = e->node;
+        else
+            g->stride[e->tile] = (unsigned char)e->stride;
+    }
+    for (int slot = g->ntiles - 1; slot >= u->ntiles; slot--) { /* the tiles made since: not made */
+        g->tile[g->slot_tile[slot]] = -1;
+        g->stride[g->slot_tile[slot]] = 0;
+    }
+    u->n = 0;
+    exchange(g, u, 0);
 }
 
 /* Where a tile of stride st keeps its node (li, lj) (both multiples of st): its nodes packed row by
@@ -325,6 +443,11 @@ static fs_status need_tile(fs_soil_grid *g, int ti, int tj, int st, fs_error *er
     unsigned char *ts = &g->stride[tj * g->tx + ti];
     if (*slot >= 0) {
         if (st < *ts) {
+            if (g->undo) {
+                fs_status s = undo_tile(g, tj * g->tx + ti, *slot, err);
+                if (s != FS_OK)
+                    return s;
+            }
             fs_soil_node keep[TT];
             fill_tile(g, ti, tj, st, g, keep);
             memcpy(g->pool + (size_t)*slot * TT, keep, sizeof keep);
@@ -393,6 +516,7 @@ fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (
 {
     g->claim = NULL;
     g->cap_claims = 0;
+    g->undo = NULL;
     g->terrain = t;
     g->d = t->def.soil;
     g->dx = g->d.grid_m;
@@ -453,6 +577,10 @@ void fs_soil_grid_free(fs_soil_grid *g)
     free(g->pool);
     free(g->claim);
     g->claim = NULL;
+    if (g->undo)
+        free(g->undo->e);
+    free(g->undo);
+    g->undo = NULL;
     g->cap_claims = 0;
     g->tile = NULL;
     g->stride = NULL;
@@ -922,6 +1050,11 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
                     double n[3], z = placed_lowest(p, g->x0 + i * g->dx, y, n);
                     if (!(z < nd->h0_m - nd->sp_m) || (nd->stamp == g->stamp && nd->zb_m <= z))
                         continue;
+                    if (g->undo && nd->stamp != g->stamp) { /* its first change in this step */
+                        fs_status st = undo_node(g, nd, err);
+                        if (st != FS_OK)
+                            return st;
+                    }
                     nd->stamp = g->stamp;
                     nd->shape = s;
                     nd->zb_m = z;

@@ -121,6 +121,8 @@ typedef struct fs_soil_grid {
     double b_m[FS_SOIL_MAX_SHAPES];
     double tan_phi;         /* tan of the friction angle, once */
     double work_J;          /* work the soil's forces have taken out of the bodies (sum of -F.v h) */
+    struct fs_soil_undo *undo; /* under an error-controlled step, the log of what the steps since the
+                                * mark changed (fs_soil_grid_keep); NULL otherwise */
 } fs_soil_grid;
 
 /* Sets the grid over t's soil region (t->soil_region) and allocates its index and a pool for the
@@ -132,6 +134,23 @@ void fs_soil_grid_free(fs_soil_grid *g);
 /* One step of h: forces on every shape from the bodies' states (indexed by shape.body). FS_NO_MEMORY
  * when the pool cannot grow (then no force is given). */
 fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double h, fs_error *err);
+
+/* Undoing steps, for an error-controlled step that rejects one (run.tolerance_m; sim_adapt.c).
+ * fs_soil_grid_keep (once, after init) makes every later fs_soil_grid_step log, before it changes
+ * them, each node it is the first since the mark to change (a node's first claim in a step: its stamp
+ * is not yet the step's) and each tile it makes finer (its nodes and stride whole); fs_soil_grid_mark
+ * starts the log afresh at the state now; fs_soil_grid_undo replays it backwards and drops the tiles
+ * made since the mark, which puts back every node (print, yield, slip, and the step's own zb, normal,
+ * stress, stamp), the tiles, the stamp, the work and the per-shape forces, nodes and areas bit for
+ * bit, and leaves the mark in place (undo again to come back to it again). Not put back: the
+ * pool's and the claims' capacity and their growth counters (memory, not state). The log is sized
+ * at keep and whenever the pool grows for four steps' changes of every node of the pool (a step
+ * changes a node once, or twice when a tile it stands in is made finer in it), and doubles should a
+ * caller take more steps between a mark and an undo (the error-controlled step takes at most two):
+ * FS_NO_MEMORY then if it cannot. */
+fs_status fs_soil_grid_keep(fs_soil_grid *g, fs_error *err);
+void fs_soil_grid_mark(fs_soil_grid *g);
+void fs_soil_grid_undo(fs_soil_grid *g);
 
 /* The stride for a shape width_m wide on the narrowest side of its plan: the largest power of two
  * s <= FS_SOIL_TILE with s grid_m <= coarse_grid_m and at least nodes_across of its nodes across the
