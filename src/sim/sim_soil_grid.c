@@ -6,7 +6,9 @@
 #include <string.h>
 
 enum { T = FS_SOIL_TILE, TT = FS_SOIL_TILE * FS_SOIL_TILE };
-_Static_assert(FS_SOIL_TILE == 16, "mine() indexes tiles by shifts of 4");
+_Static_assert(FS_SOIL_TILE == 16, "log2_of covers the strides up to 16");
+/* The shift of each stride (a power of two up to a tile's width). */
+static const unsigned char log2_of[T + 1] = {0, 0, 1, 0, 2, 0, 0, 0, 3, 0, 0, 0, 0, 0, 0, 0, 4};
 
 /* ---- geometry: a vertical line against a shape ---------------------------------------------- */
 
@@ -32,6 +34,9 @@ typedef struct placed {
     double hull[8][2];      /* box: its plan, the hull of its corners' plans, counter-clockwise (coverage) */
     int nh;
     double hull_m2, ylo, yhi; /* ... its area and its extent in y */
+    double corner[8][2];      /* box: its corners in plan (box_corners) */
+    double band[4][2];        /* capsule: the band between its clipped ends' disks, in plan (plan_band) */
+    int has_band;             /* ... when those ends differ in plan */
 } placed;
 
 /* The lowest point of the capsule (segment A-B, radius r) on the vertical line through (x, y): the
@@ -59,7 +64,8 @@ static inline double capsule_lowest(const placed *p, double x, double y, double 
     if (rho2 >= r2)
         return INFINITY;
     double z = qz - sqrt(r2 - rho2);
-    n[0] = (x - qx) / r, n[1] = (y - qy) / r, n[2] = (z - qz) / r;
+    if (n)
+        n[0] = (x - qx) / r, n[1] = (y - qy) / r, n[2] = (z - qz) / r;
     return z;
 }
 
@@ -90,7 +96,7 @@ static inline double box_lowest(const placed *p, double x, double y, double n[3]
     if (t0 > t1 || face < 0)
         return INFINITY;
     double s = R[6 + face] > 0 ? -1 : 1; /* the face entered looks against the line */
-    for (int r = 0; r < 3; r++)
+    for (int r = 0; n && r < 3; r++)
         n[r] = s * R[3 * r + face];
     return p->A[2] + t0;
 }
@@ -116,7 +122,7 @@ static double cross3(const double *o, const double *a, const double *b)
 static void box_hull(placed *p)
 {
     double pt[8][2], h[16][2];
-    box_corners(p, pt);
+    memcpy(pt, p->corner, sizeof pt);
     for (int a = 1; a < 8; a++) /* by x, then y */
         for (int b = a; b > 0 && (pt[b][0] < pt[b - 1][0] || (pt[b][0] == pt[b - 1][0] && pt[b][1] < pt[b - 1][1])); b--) {
             double t0 = pt[b][0], t1 = pt[b][1];
@@ -163,10 +169,14 @@ static void place(const fs_soil_shape *s, const fs_soil_body *body, placed *p)
     p->aD = p->a + p->D[2] * p->D[2];
     p->r2 = p->r * p->r;
     p->nh = 0;
-    if (p->kind == FS_SOIL_BOX)
+    p->has_band = 0;
+    if (p->kind == FS_SOIL_BOX) {
+        box_corners(p, p->corner);
         box_hull(p);
+    }
 }
 
+/* n NULL: the point alone (only RFT's law reads a node's normal). */
 static inline double placed_lowest(const placed *p, double x, double y, double n[3])
 {
     return p->kind == FS_SOIL_CAPSULE ? capsule_lowest(p, x, y, n) : box_lowest(p, x, y, n);
@@ -196,6 +206,20 @@ static void clip_below(placed *p, double z_top)
         p->cA[k] = p->A[k] + t0 * d;
         p->cB[k] = p->A[k] + t1 * d;
     }
+}
+
+/* A capsule's band in plan: the quadrilateral between its clipped ends' disks (cA, cB), once a step
+ * for row_span's rows. */
+static void plan_band(placed *p)
+{
+    double Dx = p->cB[0] - p->cA[0], Dy = p->cB[1] - p->cA[1], L = p->kind == FS_SOIL_CAPSULE ? hypot(Dx, Dy) : 0;
+    p->has_band = L > 0;
+    if (!p->has_band)
+        return;
+    double nx = -Dy / L * p->r, ny = Dx / L * p->r;
+    const double pt[4][2] = {{p->cA[0] + nx, p->cA[1] + ny}, {p->cB[0] + nx, p->cB[1] + ny},
+                             {p->cB[0] - nx, p->cB[1] - ny}, {p->cA[0] - nx, p->cA[1] - ny}};
+    memcpy(p->band, pt, sizeof pt);
 }
 
 void fs_soil_shape_box(const fs_soil_shape *s, const fs_soil_body *b, double box[4], double *zmin)
@@ -496,6 +520,9 @@ static fs_status need_tiles(fs_soil_grid *g, const int r[4], int st, fs_error *e
 {
     for (int tj = r[2] / T; tj <= r[3] / T; tj++)
         for (int ti = r[0] / T; ti <= r[1] / T; ti++) {
+            const int k = tj * g->tx + ti;
+            if (g->tile[k] >= 0 && g->stride[k] <= st) /* made, and as fine: need_tile would change nothing */
+                continue;
             fs_status s = need_tile(g, ti, tj, st, err);
             if (s != FS_OK)
                 return s;
@@ -673,22 +700,25 @@ static void add_force(double f[3], double t[3], const double r[3], const double 
     t[2] += r[0] * F[1] - r[1] * F[0];
 }
 
-/* Whether stored node (i, j) is one of shape s's this step. */
-static int mine(const fs_soil_grid *g, int i, int j, int s)
+/* A node's place in the order of the claims: row by row, a row W = nx + FS_SOIL_TILE long, so that a
+ * neighbour up to a tile's width past either end of a row (i < 0 or i >= nx) has a key no claim has. */
+static inline long claim_key(const fs_soil_grid *g, int i, int j) { return (long)j * (g->nx + T) + i; }
+
+/* Whether shape s holds the stored node (i, j) this step, found among its claims [lo, hi) (kept in the
+ * order of their rows and, in a row, of i: the claim pass visits them so, and a shape claims a node at
+ * most once), by its key (claim_key). *at is a cursor left at the first claim not before (i, j): the perimeter asks for each
+ * claim's neighbours in nearly the order of the claims, so a cursor moves a step or two a question.
+ * The same answer as looking the node up in its tile (a node is a shape's this step only through its
+ * claim), without the tile lookup for each neighbour. */
+static inline int claimed(const fs_soil_claim *cl, long lo, long hi, long *at, long key, int s, long now)
 {
-    /* stored_at's lookup with shifts for T = 16 and the strides 1 to 16 (the perimeter's hot path) */
-    static const unsigned char sh_of[T + 1] = {0, 0, 1, 0, 2, 0, 0, 0, 3, 0, 0, 0, 0, 0, 0, 0, 4};
-    if (i < 0 || j < 0 || i >= g->nx || j >= g->ny)
-        return 0;
-    const unsigned ui = (unsigned)i, uj = (unsigned)j, k = (uj >> 4) * (unsigned)g->tx + (ui >> 4);
-    const int slot = g->tile[k];
-    if (slot < 0)
-        return 0;
-    const unsigned st = g->stride[k], sh = sh_of[st], li = ui & (T - 1), lj = uj & (T - 1);
-    if ((li | lj) & (st - 1))
-        return 0;
-    const fs_soil_node *n = g->pool + (size_t)slot * TT + (((lj >> sh) << (4 - sh)) + (li >> sh));
-    return n->stamp == g->stamp && n->shape == s;
+    long c = *at;
+    while (c < hi && cl[c].key < key)
+        c++;
+    while (c > lo && cl[c - 1].key >= key)
+        c--;
+    *at = c;
+    return c < hi && cl[c].key == key && cl[c].node->stamp == now && cl[c].node->shape == s;
 }
 
 /* The x extent of a convex plan polygon's row y, widened into [*lo, *hi]: the row against its edges
@@ -701,8 +731,8 @@ static void row_edges(const double (*pt)[2], const int *e, int ne, double y, dou
             continue;
         double x = a[1] == b[1] ? a[0] : a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
         double x2 = a[1] == b[1] ? b[0] : x;
-        *lo = fmin(*lo, fmin(x, x2));
-        *hi = fmax(*hi, fmax(x, x2));
+        *lo = lo2(*lo, lo2(x, x2));
+        *hi = hi2(*hi, hi2(x, x2));
     }
 }
 
@@ -720,23 +750,17 @@ static void row_span(const placed *p, double y, double *lo, double *hi)
             double dy = y - ends[k][1];
             if (fabs(dy) < p->r) {
                 double w = sqrt(p->r * p->r - dy * dy);
-                *lo = fmin(*lo, ends[k][0] - w), *hi = fmax(*hi, ends[k][0] + w);
+                *lo = lo2(*lo, ends[k][0] - w), *hi = hi2(*hi, ends[k][0] + w);
             }
         }
-        double Dx = p->cB[0] - p->cA[0], Dy = p->cB[1] - p->cA[1], L = hypot(Dx, Dy);
-        if (L > 0) {
-            double nx = -Dy / L * p->r, ny = Dx / L * p->r;
-            const double pt[4][2] = {{p->cA[0] + nx, p->cA[1] + ny}, {p->cB[0] + nx, p->cB[1] + ny},
-                                     {p->cB[0] - nx, p->cB[1] - ny}, {p->cA[0] - nx, p->cA[1] - ny}};
+        if (p->has_band) { /* plan_band, once a step */
             static const int e[8] = {0, 1, 1, 2, 2, 3, 3, 0};
-            row_edges(pt, e, 4, y, lo, hi);
+            row_edges((const double(*)[2])p->band, e, 4, y, lo, hi);
         }
         return;
     }
-    double pt[8][2];
-    box_corners(p, pt);
     static const int e[24] = {0, 1, 2, 3, 4, 5, 6, 7, 0, 2, 1, 3, 4, 6, 5, 7, 0, 4, 1, 5, 2, 6, 3, 7};
-    row_edges((const double(*)[2])pt, e, 12, y, lo, hi);
+    row_edges((const double(*)[2])p->corner, e, 12, y, lo, hi);
 }
 
 /* The nodes [*i0, *i1] of row j that a shape's plan may cover, within its box's range r; 0 when none. */
@@ -787,26 +811,14 @@ static double hull_below(const placed *p, double y)
     return 0.5 * a2;
 }
 
-/* Whether the node (i, j) lies in the shape's plan, asked as the step asks it (row_nodes, then a
- * lowest point), so that the weights and the claims never disagree where an edge falls on a node. */
-static int in_plan(const fs_soil_grid *g, const placed *p, const int r[4], int i, int j)
-{
-    int i0, i1;
-    double n[3];
-    if (j < r[2] || j > r[3] || !row_nodes(g, p, r, j, &i0, &i1) || i < i0 || i > i1)
-        return 0;
-    return placed_lowest(p, g->x0 + i * g->dx, g->y0 + j * g->dx, n) < INFINITY;
-}
-
 /* Whether row j holds a node of stride st in the shape's plan. */
 static int row_in_plan(const fs_soil_grid *g, const placed *p, const int r[4], int j, int st)
 {
     int i0, i1;
-    double n[3];
     if (j < r[2] || j > r[3] || !row_nodes(g, p, r, j, &i0, &i1))
         return 0;
     for (int i = (i0 + st - 1) / st * st; i <= i1; i += st)
-        if (placed_lowest(p, g->x0 + i * g->dx, g->y0 + j * g->dx, n) < INFINITY)
+        if (placed_lowest(p, g->x0 + i * g->dx, g->y0 + j * g->dx, NULL) < INFINITY)
             return 1;
     return 0;
 }
@@ -820,6 +832,7 @@ static int row_in_plan(const fs_soil_grid *g, const placed *p, const int r[4], i
 typedef struct cover_row {
     double lo, hi, cells, span, inv_ds;
     int st, j, exact;
+    int i0, i1; /* the row's nodes that the plan may cover (row_nodes) */
 } cover_row;
 
 /* Whether the row a cell from row j (at y, where the plan is w wide), towards the plan's end e (ylo
@@ -858,16 +871,24 @@ static void cover_row_at(const fs_soil_grid *g, const placed *p, const int r[4],
     c->cells = (up - lo) * c->inv_ds * c->inv_ds;
 }
 
+/* Whether the node i of row c lies in the shape's plan, asked as the step asks it (the row's nodes from
+ * row_nodes, kept in c, then a lowest point), so that the weights and the claims never disagree where
+ * an edge falls on a node. */
+static int in_row(const fs_soil_grid *g, const placed *p, const cover_row *c, int i)
+{
+    return i >= c->i0 && i <= c->i1 && placed_lowest(p, g->x0 + i * g->dx, g->y0 + c->j * g->dx, NULL) < INFINITY;
+}
+
 /* The share of its cell a box's node i in row c carries: 1 inside; at the row's ends (the next node
  * out not in the plan), its cell's inner half and the span out to the edge; the row's nodes scaled to
  * the strip's area (the span at y is the strip's mean width but where a corner lies in the strip, or
  * at the first and last rows). */
-static double coverage(const fs_soil_grid *g, const placed *p, const int r[4], const cover_row *c, int i)
+static double coverage(const fs_soil_grid *g, const placed *p, const cover_row *c, int i)
 {
     double x = g->x0 + i * g->dx, el = (x - c->lo) * c->inv_ds, eh = (c->hi - x) * c->inv_ds, wx = 1;
-    if (el < 1 + 1e-6 && (el < 1 - 1e-6 || !in_plan(g, p, r, i - c->st, c->j)))
+    if (el < 1 + 1e-6 && (el < 1 - 1e-6 || !in_row(g, p, c, i - c->st)))
         wx += hi2(el, 0) - 0.5;
-    if (eh < 1 + 1e-6 && (eh < 1 - 1e-6 || !in_plan(g, p, r, i + c->st, c->j)))
+    if (eh < 1 + 1e-6 && (eh < 1 - 1e-6 || !in_row(g, p, c, i + c->st)))
         wx += hi2(eh, 0) - 0.5;
     if (c->exact)
         return wx;
@@ -891,8 +912,7 @@ static int segment(const fs_soil_grid *g, int j, int i0, int i1, int ti, seg *q)
     q->b = i1 < q->off + T - 1 ? i1 : q->off + T - 1;
     q->a = (q->a + st - 1) / st * st;
     q->st = st;
-    for (q->sh = 0; (1 << q->sh) < st; q->sh++)
-        ;
+    q->sh = log2_of[st];
     q->base = g->pool + (size_t)slot * TT + packed(0, j % T, st);
     return q->a <= q->b;
 }
@@ -1020,6 +1040,7 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
     /* each node to the lowest shape over it that reaches below its print; each claim kept, in the
      * order of the shape's rows, for the two passes below */
     long first[FS_SOIL_MAX_SHAPES + 1], nc = 0;
+    const int rft = g->d.model == FS_SOIL_RFT; /* only RFT's law reads a node's normal */
     for (int s = 0; s < g->nshapes; s++) {
         first[s] = nc;
         if (!near[s])
@@ -1027,13 +1048,14 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
         placed *p = &pl[s];
         place(&g->shape[s], &bodies[g->shape[s].body], p);
         clip_below(p, g->top_m);
+        plan_band(p);
         const int *r = range[s];
         for (int j = (r[2] + rows[s] - 1) / rows[s] * rows[s]; j <= r[3]; j += rows[s]) {
             int i0, i1;
             if (!row_nodes(g, p, r, j, &i0, &i1))
                 continue;
             const double y = g->y0 + j * g->dx;
-            cover_row cr = {0, 0, 0, 0, 0, 0, 0, 0};
+            cover_row cr = {0, 0, 0, 0, 0, 0, 0, 0, i0, i1};
             for (int ti = i0 / T; ti <= i1 / T; ti++) {
                 seg q;
                 if (!segment(g, j, i0, i1, ti, &q))
@@ -1047,7 +1069,7 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
                 }
                 for (int i = q.a; i <= q.b; i += q.st) {
                     fs_soil_node *nd = q.base + ((i - q.off) >> q.sh);
-                    double n[3], z = placed_lowest(p, g->x0 + i * g->dx, y, n);
+                    double n[3], z = placed_lowest(p, g->x0 + i * g->dx, y, rft ? n : NULL);
                     if (!(z < nd->h0_m - nd->sp_m) || (nd->stamp == g->stamp && nd->zb_m <= z))
                         continue;
                     if (g->undo && nd->stamp != g->stamp) { /* its first change in this step */
@@ -1058,9 +1080,10 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
                     nd->stamp = g->stamp;
                     nd->shape = s;
                     nd->zb_m = z;
-                    memcpy(nd->n, n, sizeof n);
-                    double w = p->nh ? coverage(g, p, r, &cr, i) : 1;
-                    g->claim[nc++] = (fs_soil_claim){nd, i, j, q.st, w};
+                    if (rft)
+                        memcpy(nd->n, n, sizeof n);
+                    double w = p->nh ? coverage(g, p, &cr, i) : 1;
+                    g->claim[nc++] = (fs_soil_claim){nd, i, j, q.st, w, claim_key(g, i, j)};
                 }
             }
         }
@@ -1074,31 +1097,57 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
         /* Bekker's b of the shape's loaded patch: twice its area over its perimeter (Chrono's convention),
          * in units of dx^2 and dx (a node of stride st covers st^2 and each of its open sides st); a
          * node claimed here and by a later shape is that shape's */
-        long cells = 0, edges = 0;
+        long cells = 0, edges = 0, pairs = 0, lo = first[s], hi = first[s + 1], up = lo, down = lo;
         double area = 0;
-        for (long c = first[s]; c < first[s + 1]; c++) {
+        for (long c = lo; c < hi; c++) {
             const fs_soil_claim *cl = &g->claim[c];
             const fs_soil_node *nd = cl->node;
             if (!OURS(nd))
                 continue;
-            /* its neighbours st away: in the same tile (the same stride) read directly */
-            const int i = cl->i, j = cl->j, st = cl->st, li = i % T, lj = j % T, row = T / st;
-            int open = !(li + st < T ? OURS(nd + 1) : mine(g, i + st, j, s)) +
-                       !(li >= st ? OURS(nd - 1) : mine(g, i - st, j, s)) +
-                       !(lj + st < T ? OURS(nd + row) : mine(g, i, j + st, s)) +
-                       !(lj >= st ? OURS(nd - row) : mine(g, i, j - st, s));
+            /* its neighbours st away: in the same tile (the same stride) read directly, the one above and
+             * the one to the right only, each pair found closing both its sides (the node below or to the
+             * left, if it is ours, found this one); in another tile, among the shape's claims (along the
+             * row next to this claim, across it by a cursor each way) */
+            const int st = cl->st, li = cl->i & (T - 1), lj = cl->j & (T - 1), row = T >> log2_of[st];
+            const long key = cl->key, across = (long)st * (g->nx + T);
+            int open = 4;
+            if (li + st < T) {
+                if (OURS(nd + 1))
+                    open--, pairs += st;
+            } else {
+                long right = c + 1;
+                open -= claimed(g->claim, lo, hi, &right, key + st, s, now);
+            }
+            if (li < st) {
+                long left = c - 1 > lo ? c - 1 : lo;
+                open -= claimed(g->claim, lo, hi, &left, key - st, s, now);
+            }
+            if (lj + st < T) {
+                if (OURS(nd + row))
+                    open--, pairs += st;
+            } else {
+                open -= claimed(g->claim, lo, hi, &up, key + across, s, now);
+            }
+            if (lj < st)
+                open -= claimed(g->claim, lo, hi, &down, key - across, s, now);
             cells++;
             area += st * st * cl->w;
             edges += st * open;
         }
         if (!cells)
             continue;
+        edges -= pairs; /* the sides each pair in a tile closes on its other node */
         double b = hi2(g->d.b_min_m, 2.0 * area * g->dx / (double)edges);
         g->b_m[s] = b;
         g->nodes[s] = (int)cells;
         g->area_m2[s] = area * g->dx * g->dx;
         const fs_soil_body *bd = &bodies[g->shape[s].body];
         const double kb = g->d.k_c_N_per_m_n1 / b + g->d.k_phi_N_per_m_n2; /* Bekker's modulus for this b */
+        /* Bekker's node forces have zeros where add_force multiplies and adds: every sum here starts at
+         * +0 and, rounding to nearest, a sum of doubles is -0 only when both terms are, so these sums
+         * never hold -0; a product by +0 is a zero, and adding a zero to a sum that is not -0 leaves it
+         * as it was. Leaving those terms out gives the same sums to the bit. */
+        const int bekker = g->d.model == FS_SOIL_BEKKER;
         double shear[3] = {0, 0, 0}, shear_torque[3] = {0, 0, 0}, slope = 0, work_n = 0, work_s = 0;
         for (long c = first[s]; c < first[s + 1]; c++) {
             const fs_soil_claim *cl = &g->claim[c];
@@ -1112,6 +1161,19 @@ fs_status fs_soil_grid_step(fs_soil_grid *g, const fs_soil_body *bodies, double 
                            bd->v[2] + bd->w[0] * rq[1] - bd->w[1] * rq[0]};
             double F[3], S[3];
             node_force(g, nd, kb, A, v, h, F, S, &slope);
+            if (bekker) { /* F = (0, 0, F_z), S = (S_x, S_y, 0): add_force's terms without its zeros (below) */
+                double *f = g->force[s], *t = g->torque[s];
+                work_n -= F[2] * v[2] * h;
+                work_s -= (S[0] * v[0] + S[1] * v[1]) * h;
+                f[2] += F[2];
+                t[0] += rq[1] * F[2];
+                t[1] -= rq[0] * F[2];
+                shear[0] += S[0], shear[1] += S[1];
+                shear_torque[0] -= rq[2] * S[1];
+                shear_torque[1] += rq[2] * S[0];
+                shear_torque[2] += rq[0] * S[1] - rq[1] * S[0];
+                continue;
+            }
             work_n -= (F[0] * v[0] + F[1] * v[1] + F[2] * v[2]) * h;
             work_s -= (S[0] * v[0] + S[1] * v[1] + S[2] * v[2]) * h;
             add_force(g->force[s], g->torque[s], rq, F);

@@ -74,7 +74,7 @@ typedef struct fs_soil_node {
     double yield_Pa;        /* the pressure it yielded at */
     double slip_m;          /* shear displacement accumulated on it */
     double zb_m;            /* this step: the lowest shape surface over it */
-    double n[3];            /* ... that surface's outward normal */
+    double n[3];            /* ... that surface's outward normal (set for an RFT soil only, whose law reads it) */
     double sigma_Pa;        /* this step: its normal stress */
     long stamp;             /* the step that set zb (0: never) */
     int shape;              /* ... and whose shape it is */
@@ -87,6 +87,8 @@ typedef struct fs_soil_claim {
     int i, j, st;           /* the node's grid indices and its tile's stride */
     double w;               /* the share of its cell it carries: 1, or for a box's node at its plan's edge the
                              * part of the plan it stands for (fs_soil_grid_step: coverage) */
+    long key;               /* its place in the claims' order, j (nx + FS_SOIL_TILE) + i: the perimeter finds a
+                             * node's neighbours among its shape's claims by it */
 } fs_soil_claim;
 
 typedef struct fs_soil_grid {
