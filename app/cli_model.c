@@ -2,13 +2,13 @@
  * summarised or, with --json, every number. */
 #include "cli.h"
 
+#include "footsim/base/fs_vec.h"
 #include "footsim/io/fs_output.h"
 #include "footsim/export/fs_export.h"
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_sim_soil.h"
 
 #include <cjson/cJSON.h>
-#include <math.h>
 #include <stdio.h>
 
 static int model_of(const cli_args *a, const fs_scenario *sc)
@@ -42,7 +42,7 @@ static int model_of(const cli_args *a, const fs_scenario *sc)
             else
                 printf("  soil shape %-12s capsule radius %.2f mm, %.1f mm long, %.2f cm^2 from below\n", s->name,
                        s->radius_m * 1e3,
-                       1e3 * sqrt(pow(s->b[0] - s->a[0], 2) + pow(s->b[1] - s->a[1], 2) + pow(s->b[2] - s->a[2], 2)),
+                       1e3 * fs_norm(fs_v3(s->b[0] - s->a[0], s->b[1] - s->a[1], s->b[2] - s->a[2])),
                        s->plan_area_m2 * 1e4);
         }
         printf("  soil shapes: %d, %.1f cm^2 from below at rest\n", n, total * 1e4);

@@ -1,6 +1,7 @@
 /* Tests of experiment_walk.c: the walking machine steps as its trajectory says. */
 #include "fs_test.h"
 
+#include "footsim/base/fs_hash.h"
 #include "footsim/experiment/fs_walk.h"
 #include "footsim/sim/fs_sim_soil.h"
 #include "sim/sim_internal.h"
@@ -225,21 +226,18 @@ typedef struct detour_seen {
     unsigned long long hash; /* of every body's position and velocity at every observation */
 } detour_seen;
 
-/* Folds every body's position, quaternion and velocities and the time into d->hash (FNV-1a). */
+/* Folds every body's position, quaternion and velocities, then the time, into d->hash (fs_hash_bytes). */
 static void fold(detour_seen *d, const fs_sim *sim)
 {
-    unsigned long long h = d->hash ? d->hash : 1469598103934665603ULL;
-    for (int i = 0; i <= fs_sim_nbodies(sim); i++) {
-        dBodyID b = i < fs_sim_nbodies(sim) ? fs_sim_body_id(sim, i) : NULL;
-        const dReal *v[4] = {b ? dBodyGetPosition(b) : &sim->time_s, b ? dBodyGetQuaternion(b) : &sim->time_s,
-                             b ? dBodyGetLinearVel(b) : &sim->time_s, b ? dBodyGetAngularVel(b) : &sim->time_s};
-        for (int k = 0; k < 4; k++) {
-            const unsigned char *p = (const unsigned char *)v[k];
-            for (size_t j = 0; j < (b ? 3 + (k == 1) : 1) * sizeof(dReal); j++)
-                h = (h ^ p[j]) * 1099511628211ULL;
-        }
+    unsigned long long h = d->hash ? d->hash : FS_HASH_START;
+    for (int i = 0; i < fs_sim_nbodies(sim); i++) {
+        dBodyID b = fs_sim_body_id(sim, i);
+        h = fs_hash_bytes(h, dBodyGetPosition(b), 3 * sizeof(dReal));
+        h = fs_hash_bytes(h, dBodyGetQuaternion(b), 4 * sizeof(dReal));
+        h = fs_hash_bytes(h, dBodyGetLinearVel(b), 3 * sizeof(dReal));
+        h = fs_hash_bytes(h, dBodyGetAngularVel(b), 3 * sizeof(dReal));
     }
-    d->hash = h;
+    d->hash = fs_hash_bytes(h, &sim->time_s, sizeof sim->time_s);
 }
 
 static fs_status detour(void *user, const fs_sim *csim, fs_error *err)

@@ -5,6 +5,7 @@
  * reference; its settings line and refusals. */
 #include "fs_test.h"
 
+#include "footsim/base/fs_hash.h"
 #include "footsim/experiment/fs_track.h"
 #include "footsim/experiment/fs_trial.h"
 #include "footsim/sim/fs_sim.h"
@@ -262,15 +263,7 @@ static void the_chain_stays_within_the_tolerance(void)
 
 /* ---- on a soil ---------------------------------------------------------------------------------- */
 
-static unsigned long long fnv(unsigned long long h, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ b[i]) * 1099511628211ULL;
-    return h;
-}
-
-/* The soil's whole state folded into a number (FNV-1a over each field, not over padding): every
+/* The soil's whole state folded into a number (fs_hash_bytes over each field, not over padding): every
  * stored node (its print, yield, slip and this step's surface, normal, stress, stamp and shape), the
  * tiles' index and strides and which tile each pool slot holds, the stamp, the work, each shape's
  * last force, torque, nodes, area and b, and each foot's. */
@@ -278,29 +271,29 @@ static unsigned long long soil_state(const fs_sim *sim)
 {
     const fs_sim_soil *so = sim->soil;
     const fs_soil_grid *g = &so->g;
-    unsigned long long h = 1469598103934665603ULL;
-    h = fnv(h, &g->stamp, sizeof g->stamp);
-    h = fnv(h, &g->ntiles, sizeof g->ntiles);
-    h = fnv(h, &g->work_J, sizeof g->work_J);
-    h = fnv(h, g->tile, (size_t)g->max_tiles * sizeof g->tile[0]);
-    h = fnv(h, g->stride, (size_t)g->max_tiles);
-    h = fnv(h, g->slot_tile, (size_t)g->ntiles * sizeof g->slot_tile[0]);
+    unsigned long long h = FS_HASH_START;
+    h = fs_hash_bytes(h, &g->stamp, sizeof g->stamp);
+    h = fs_hash_bytes(h, &g->ntiles, sizeof g->ntiles);
+    h = fs_hash_bytes(h, &g->work_J, sizeof g->work_J);
+    h = fs_hash_bytes(h, g->tile, (size_t)g->max_tiles * sizeof g->tile[0]);
+    h = fs_hash_bytes(h, g->stride, (size_t)g->max_tiles);
+    h = fs_hash_bytes(h, g->slot_tile, (size_t)g->ntiles * sizeof g->slot_tile[0]);
     for (long k = 0; k < (long)g->ntiles * FS_SOIL_TILE * FS_SOIL_TILE; k++) {
         const fs_soil_node *n = &g->pool[k];
         const double f[] = {n->h0_m, n->sp_m, n->yield_Pa, n->slip_m, n->zb_m, n->n[0], n->n[1], n->n[2], n->sigma_Pa};
-        h = fnv(h, f, sizeof f);
-        h = fnv(h, &n->stamp, sizeof n->stamp);
-        h = fnv(h, &n->shape, sizeof n->shape);
+        h = fs_hash_bytes(h, f, sizeof f);
+        h = fs_hash_bytes(h, &n->stamp, sizeof n->stamp);
+        h = fs_hash_bytes(h, &n->shape, sizeof n->shape);
     }
     size_t s = (size_t)g->nshapes;
-    h = fnv(h, g->force, s * sizeof g->force[0]);
-    h = fnv(h, g->torque, s * sizeof g->torque[0]);
-    h = fnv(h, g->nodes, s * sizeof g->nodes[0]);
-    h = fnv(h, g->area_m2, s * sizeof g->area_m2[0]);
-    h = fnv(h, g->b_m, s * sizeof g->b_m[0]);
-    h = fnv(h, so->foot_force, sizeof so->foot_force);
-    h = fnv(h, so->foot_nodes, sizeof so->foot_nodes);
-    return fnv(h, so->foot_area_m2, sizeof so->foot_area_m2);
+    h = fs_hash_bytes(h, g->force, s * sizeof g->force[0]);
+    h = fs_hash_bytes(h, g->torque, s * sizeof g->torque[0]);
+    h = fs_hash_bytes(h, g->nodes, s * sizeof g->nodes[0]);
+    h = fs_hash_bytes(h, g->area_m2, s * sizeof g->area_m2[0]);
+    h = fs_hash_bytes(h, g->b_m, s * sizeof g->b_m[0]);
+    h = fs_hash_bytes(h, so->foot_force, sizeof so->foot_force);
+    h = fs_hash_bytes(h, so->foot_nodes, sizeof so->foot_nodes);
+    return fs_hash_bytes(h, so->foot_area_m2, sizeof so->foot_area_m2);
 }
 
 /* As `restored` above, on a soil (dry sand, its 0.5 mm grid): the biomimetic foot under drop_weight

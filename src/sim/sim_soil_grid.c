@@ -555,12 +555,12 @@ fs_status fs_soil_grid_init(fs_soil_grid *g, const fs_terrain *t, const double (
     if ((double)g->nx * g->ny > g->d.max_nodes)
         return fs_fail(err, FS_BAD_INPUT, "%s: the soil's grid has %d x %d nodes, over [soil] max_nodes %d", t->path,
                        g->nx, g->ny, g->d.max_nodes);
-    /* the section's columns: those whose x the section holds, tested as fs_soil_depth_over tests it (the
-       undisturbed surface's depth) on the x fill_tile samples the node at */
+    /* the section's columns: those over which the undisturbed surface has the layer's depth
+       (fs_soil_depth_over, as fs_soil_grid_undisturbed asks it at the x fill_tile samples a node at) */
     g->i_lo = 0, g->i_hi = g->nx - 1;
-    while (g->i_lo < g->nx && g->x0 + g->i_lo * g->dx < g->d.x_min_m)
+    while (g->i_lo < g->nx && !(fs_soil_depth_over(&g->d, g->x0 + g->i_lo * g->dx, g->x0 + g->i_lo * g->dx) > 0))
         g->i_lo++;
-    while (g->i_hi >= 0 && g->x0 + g->i_hi * g->dx > g->d.x_max_m)
+    while (g->i_hi >= 0 && !(fs_soil_depth_over(&g->d, g->x0 + g->i_hi * g->dx, g->x0 + g->i_hi * g->dx) > 0))
         g->i_hi--;
     g->tx = (g->nx + T - 1) / T;
     g->ty = (g->ny + T - 1) / T;
