@@ -187,6 +187,16 @@ static int fill_pareto(FILE *f, const void *user)
     return 1;
 }
 
+/* Whether some parameter's weight in least_stiff's sum is not 1 (then the reports name the weights;
+ * with every weight 1 they read as before weights existed). */
+static int weighted(const fs_optimize *o)
+{
+    for (int p = 0; p < o->nparams; p++)
+        if (o->param[p].weight != 1)
+            return 1;
+    return 0;
+}
+
 static int fill_pareto_gp(FILE *f, const void *user)
 {
     const optimize_out *x = user;
@@ -197,7 +207,8 @@ static int fill_pareto_gp(FILE *f, const void *user)
     fs_gp_string(f, o->name);
     fputs("\nobjective = ", f);
     fs_gp_string(f, o->objective == FS_OBJECTIVE_LIGHTEST ? "objective: the foot's mass, kg"
-                                                           : "objective: the parameters' sum, each over its min");
+                    : weighted(o) ? "objective: the parameters' weighted sum, each over its min"
+                                  : "objective: the parameters' sum, each over its min");
     fprintf(f, "\ncol = %d\n", o->nparams + 2);
     fputs("set terminal pngcairo size 720,480 noenhanced font 'sans,10'\nset output out\n"
           "set datafile separator ','\nset title 'Design search ' . search . ': the candidates that ran and their Pareto front'\n"
@@ -252,7 +263,9 @@ static int fill_result(FILE *f, const void *user)
                "of NLopt's Subplex; objective: %s; the targets as a penalty (fs_optimize.h): ",
             o->name, c->name, c->seeds, x->run->nlog,
             o->objective == FS_OBJECTIVE_LIGHTEST ? "the foot's mass (the lightest design)"
-                                                  : "the sum of the parameters each over its min (the least stiff design)");
+            : weighted(o) ? "the sum of the parameters each over its min times its weight (the table's; the least "
+                            "stiff design)"
+                          : "the sum of the parameters each over its min (the least stiff design)");
     if (c->nexpect)
         fprintf(f, "%d expectations of the campaign", c->nexpect);
     if (o->reference >= 0)
@@ -276,6 +289,12 @@ static int fill_result(FILE *f, const void *user)
         double file = o->file_x[cell0 * fs_campaign_nends(c) * o->nparams + p]; /* a band's first end */
         fprintf(f, "| %s | `%s` | %.4g | %.4g | %.4g | %.3g |\n", o->param[p].name, o->param[p].key, file, x->start[p],
                 x->best[p], x->best[p] / file);
+    }
+    if (o->objective == FS_OBJECTIVE_LEAST_STIFF && weighted(o)) {
+        fputs("\nWeights in the objective (each parameter over its min, times its weight; 0: left out):", f);
+        for (int p = 0; p < o->nparams; p++)
+            fprintf(f, "%s %s %g", p ? "," : "", o->param[p].name, o->param[p].weight);
+        fputs(".\n", f);
     }
     fprintf(f, "\nFoot mass: %.4g kg as its file gives it, %.4g kg the best; the arch's static ankle drop under its "
                "design load: %.3g mm, %.3g mm%s.\n",
@@ -527,7 +546,8 @@ static int fill_front_gp(FILE *f, const void *user)
     fs_gp_string(f, o->name);
     fputs("\nobjective = ", f);
     fs_gp_string(f, o->objective == FS_OBJECTIVE_LIGHTEST ? "objective: the foot's mass, kg"
-                                                           : "objective: the parameters' sum, each over its min");
+                    : weighted(o) ? "objective: the parameters' weighted sum, each over its min"
+                                  : "objective: the parameters' sum, each over its min");
     fputs("\nquantity = ", f);
     fs_gp_string(f, quantity_name(swept(o)->of));
     fprintf(f, "\nobj = %d\n", o->nparams + 3);
@@ -561,8 +581,9 @@ static int fill_sweep_result(FILE *f, const void *user)
                "it meets every target on the search's seeds within its bound and no other such best is at least as good in "
                "both.\n\n",
             o->name, k->name, bound, k->name, bound, quantity_name(q), o->max_evaluations, c->name, c->seeds,
-            c->first_seed, last, o->objective == FS_OBJECTIVE_LIGHTEST ? "the foot's mass" : "the parameters' sum "
-            "each over its min", quantity_name(q));
+            c->first_seed, last, o->objective == FS_OBJECTIVE_LIGHTEST ? "the foot's mass"
+            : weighted(o) ? "the parameters' sum each over its min times its weight" : "the parameters' sum each over its min",
+            quantity_name(q));
     fprintf(f, "| design | %s | folder |", bound);
     for (int p = 0; p < o->nparams; p++)
         fprintf(f, " %s |", o->param[p].name);

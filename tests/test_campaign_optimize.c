@@ -439,6 +439,14 @@ static void refuses_bad_targets(void)
     write_search(path, "search_single_tall.ini", "", "[constraint.light]\nmax = 1\n");
     CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "names no quantity") != NULL);
+    /* least_stiff divides by each weighed parameter's min: min = 0 needs weight = 0 */
+    write_search(path, "search_single_tall.ini", "", "[param.splay]\nkey = chains.splay_factor\nmin = 0\nmax = 2\n"
+                 "start = 1\n");
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 12, "needs min > 0; give min > 0, or weight = 0 to leave splay out");
+    write_search(path, "search_single_tall.ini", "", "weight = 0\n"); /* k_d1's, the one parameter */
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "every parameter has weight = 0") != NULL);
     remove(path);
 }
 
@@ -452,7 +460,7 @@ static void list_parameters(void)
     char path[] = "/tmp/fs_optimize_XXXXXX";
     REQUIRE(temp_file(path));
     write_search(path, "search_single_tall.ini", "",
-                 "[param.splay1]\nkey = chains.splay_deg[1]\nmin = 0\nmax = 20\nstart = 8\n"
+                 "[param.splay1]\nkey = chains.splay_deg[1]\nmin = 0\nmax = 20\nstart = 8\nweight = 0\n"
                  "[param.toes]\nkey = chains.scale_factor\nmin = 0.8\nmax = 1.2\nstart = 1\n");
     REQUIRE(fs_optimize_load(path, small, 1, &o, &err) == FS_OK);
     CHECK(o.nparams == 3 && !strcmp(o.param[1].key, "chains.splay_deg[1]") && !strcmp(o.param[2].key, "chains.scale_factor"));
@@ -460,6 +468,8 @@ static void list_parameters(void)
     REQUIRE(fs_optimize_apply(&o, x, &err) == FS_OK);
     const fs_scenario *sc = fs_campaign_pair(&o.campaign, 0);
     CHECK(sc->design.splay_deg[0] == 15 && sc->design.splay_deg[1] == 4 && sc->design.scale_factor == 1.1);
+    /* least_stiff: each weighed parameter over its min; the splay (weight 0) left out */
+    CHECK(fs_optimize_objective(&o, x) == x[0] / o.param[0].min + x[2] / 0.8);
     /* compiled: chain 1's toe along its plane, turned 15 deg */
     double dx = sc->geom.chain[0].toe.x - sc->geom.chain[0].mtp.x, dy = sc->geom.chain[0].toe.y - sc->geom.chain[0].mtp.y;
     CHECK_NEAR(atan2(dy, dx) * 180 / M_PI, 15, 1e-9);
@@ -474,7 +484,7 @@ static void list_parameters(void)
     write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = links.l3_m[1]\nmin = 0.01\nmax = 0.05\nstart = 0.04\n");
     CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
     fs_check_refusal(err.message, path, 11, "names no element of a list");
-    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[2]\nmin = 0\nmax = 60\nstart = 1\n");
+    write_search(path, "search_single_tall.ini", "", "[param.s]\nkey = chains.splay_deg[2]\nmin = 0\nmax = 60\nstart = 1\nweight = 0\n");
     CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "leave chains.splay_deg[2]'s range [-45, 45]") != NULL);
     remove(path);

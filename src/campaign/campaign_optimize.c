@@ -153,7 +153,7 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
                 "the best design is rerun on as many fresh seeds, from this one");
     k->max = 1e9;
     k = add_key(b, "optimize", "objective", FS_KEY_CHOICE, T(o.objective), "none",
-                "what the search minimises: least_stiff (the parameters' sum, each over its min) or lightest "
+                "what the search minimises: least_stiff (the parameters' sum, each over its min times its weight) or lightest "
                 "(the foot's mass)");
     k->choices = "none|least_stiff|lightest";
     take_relative_to(cfg, b);
@@ -209,6 +209,10 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
         k->min = -1e12, k->max = 1e12;
         k = add_key(b, sec, "log", FS_KEY_CHOICE, T(log[p]), "no", "yes: searched in log space (min > 0)");
         k->choices = "no|yes";
+        k = add_key(b, sec, "weight", FS_KEY_NUMBER, T(o.param[p].weight), "1",
+                    "its weight in objective = least_stiff's sum (each parameter over its min); 0 leaves it out, "
+                    "e.g. a splay or a length searched beside the springs");
+        k->min = 0, k->max = 1e6;
     }
     return fs_config_bind(cfg, b->keys, b->nkeys, t, err);
 }
@@ -257,6 +261,7 @@ void fs_optimize_sweep_to(fs_optimize *o, int i)
 static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize *o, fs_error *err)
 {
     char where[FS_PATH_MAX + 80], sec[FS_NAME_MAX + 8];
+    int weighed = 0; /* parameters in least_stiff's sum */
     if (!o->campaign_path[0])
         return fs_fail(err, FS_BAD_INPUT, "%s: [optimize] campaign is missing; name the campaign whose trials and "
                                           "expectations the search uses", cfg->path);
@@ -281,7 +286,15 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
         if (q->log && !(q->min > 0))
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] log = yes needs min > 0 (it is %g)",
                            fs_config_where(cfg, sec, "log", where, sizeof where), sec, q->min);
+        if (o->objective == FS_OBJECTIVE_LEAST_STIFF && q->weight > 0 && !(q->min > 0))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] min = %g: objective = least_stiff sums each parameter over its "
+                           "min, which needs min > 0; give min > 0, or weight = 0 to leave %s out of the sum",
+                           fs_config_where(cfg, sec, "min", where, sizeof where), sec, q->min, q->name);
+        weighed += q->weight > 0;
     }
+    if (o->objective == FS_OBJECTIVE_LEAST_STIFF && o->nparams && !weighed)
+        return fs_fail(err, FS_BAD_INPUT, "%s: objective = least_stiff, but every parameter has weight = 0: the sum "
+                       "is always 0; give the stiffnesses weight = 1 (the default)", cfg->path);
     for (int n = 0; n < o->nconstraints; n++) {
         char csec[FS_NAME_MAX + 16];
         snprintf(csec, sizeof csec, "constraint.%s", o->constraint[n].name);
@@ -496,8 +509,9 @@ double fs_optimize_objective(const fs_optimize *o, const double *x)
     if (o->objective == FS_OBJECTIVE_LIGHTEST)
         return fs_optimize_quantity(o, FS_QUANTITY_FOOT_MASS_KG);
     double sum = 0;
-    for (int p = 0; p < o->nparams; p++)
-        sum += x[p] / o->param[p].min;
+    for (int p = 0; p < o->nparams; p++) /* a weight of 1 gives x / min to the bit */
+        if (o->param[p].weight > 0)
+            sum += x[p] / o->param[p].min * o->param[p].weight;
     return sum;
 }
 

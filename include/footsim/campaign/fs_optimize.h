@@ -65,10 +65,12 @@ typedef struct fs_opt_param {
     char key[FS_VALUE_MAX];        /* "section.key" */
     double min, max, start;
     int log;                       /* searched in log space */
+    double weight;                 /* its term in least_stiff's sum: weight x / min (0: left out) */
 } fs_opt_param;
 
 /* What a search minimises ([optimize] objective): the least stiff design (the sum of the parameters,
- * each over its lower bound: for spring stiffnesses, how many times the softest allowed), or the
+ * each over its lower bound times its weight, 1 unless [param.NAME] weight says otherwise: for spring
+ * stiffnesses, how many times the softest allowed; a splay or a length given weight 0 is left out), or the
  * lightest (the foot's total mass, kg, as the candidate's design compiles it). */
 typedef enum fs_objective { FS_OBJECTIVE_NONE, FS_OBJECTIVE_LEAST_STIFF, FS_OBJECTIVE_LIGHTEST } fs_objective;
 
