@@ -118,6 +118,10 @@ int cli_bench_precision(const cli_args *a, const char *dir);
  * output folder is touched. */
 int cli_bench_precision_scenes(const cli_args *a);
 int cli_bench_stability(const cli_args *a, const char *dir);
+/* bench stability's --scene: which slices run (chosen, one flag per slice, at most
+ * CLI_STABILITY_MAX_SLICES); FS_BAD_INPUT, said, for an unknown name. */
+enum { CLI_STABILITY_MAX_SLICES = 16 };
+int cli_bench_stability_slices(const cli_args *a, int *chosen);
 int cli_bench_speed(const cli_args *a, const char *dir);
 int cli_bench_equivalence(const cli_args *a);
 
@@ -192,6 +196,11 @@ int cli_csv_beside(const char *dir, const char *csv, const fs_provenance *p, con
  * to the shipped scenarios/ folder, with their hashes; settings as text (which columns vary); no
  * overrides (benches take none) and no seeds (set them when the runs draw from one). An fs_status;
  * fs_provenance_free releases p, also after a failure. */
+/* --scene's comma-separated names (list, NULL for none) among names[0..n-1]: sets chosen[k] for each
+ * one given (the caller sets the rest); an unknown or empty name is said on stderr with the names
+ * there are ("footsim bench BENCH: ... no NOUN is called ..."), FS_BAD_INPUT returned. */
+int cli_bench_choose(const char *bench, const char *noun, const char *list, const char *const *names, int n,
+                     int *chosen);
 int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings,
                          struct fs_error *err);
 

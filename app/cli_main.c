@@ -77,8 +77,8 @@ static const cli_option options[] = {
     {"--quick", ARG_FLAG, NULL, CMD_BENCH, 0, 0, FIELD(quick), 0, "a smaller sweep: minutes instead of tens of minutes"},
     {"--scene", ARG_VALUE, "NAME[,NAME...]", CMD_BENCH, 0, 0, FIELD(scene), 0,
      "bench precision: run only the named scenes (chain, landing_flat, landing_biomimetic, landing_biomimetic_rough, "
-     "flat_rig_TERRAIN: docs/bench.md), with --quick too, and skip the campaign-equivalence stage; an unknown name is "
-     "refused, exit 2"},
+     "flat_rig_TERRAIN: docs/bench.md), with --quick too, and skip the campaign-equivalence stage; bench stability: "
+     "run only the named slices (stiffness, load, mass, drop, soil, law); an unknown name is refused, exit 2"},
     {"--force", ARG_FLAG, NULL, CMD_COMPARE | CMD_MERGE, 0, 0, FIELD(force), 0,
      "compare results made of other seeds, overrides or input files (reported, not refused); merge shards "
      "run by another footsim version"},
@@ -230,7 +230,9 @@ static const command commands[] = {
      "             last, campaign equivalence of scenarios/equivalence_flat.ini (DIR/precision_equivalence/);\n"
      "             --scene NAME[,NAME...] runs only those scenes (their rows, fronts and goals; a\n"
      "             flat_rig_* scene with --quick too) and skips the equivalence stage;\n"
-     "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height;\n"
+     "  stability  where the numerics break: step size x stiffness x load x mass ratio x drop height x\n"
+     "             soil x spring law; --scene SLICE[,SLICE...] runs only those slices (stiffness, load,\n"
+     "             mass, drop, soil, law) and writes their tables, charts and safe envelope alone;\n"
      "  speed      steps per second of each shipped scenario, where the time goes, what each skip saves;\n"
      "  equivalence  a campaign (default scenarios/equivalence_flat.ini) at the --reference step (1e-5)\n"
      "             and at each of --steps (1e-4,2e-4,5e-4,1e-3,2e-3,5e-3,1e-2), with the same seeds and\n"

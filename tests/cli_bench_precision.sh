@@ -88,6 +88,22 @@ done
 "$fs" bench speed --scene chain --out "$tmp/bad" >/dev/null 2>&1
 status=$?
 check '[ "$status" -eq 2 ]'
+# bench stability --scene: only the named slice runs (1 K_e x 5 steps x 4 stepper-springs with
+# --quick), and only its table and chart are written; an unknown slice refused before anything runs
+"$fs" bench stability --quick --scene soil -j 1 --out "$tmp/soil" >/dev/null 2>&1
+status=$?
+check '[ "$status" -eq 0 ]'
+check '[ "$(tail -n +2 "$tmp/soil/stability.csv" | wc -l)" -eq 20 ]'
+check '[ "$(tail -n +2 "$tmp/soil/stability.csv" | cut -d, -f1 | sort -u)" = soil ]'
+check 'grep -q "^# Numerical stability (.footsim bench stability --quick --scene soil.)" "$tmp/soil/stability.md"'
+check 'grep -q "^### soil: " "$tmp/soil/stability.md"'
+check '! grep -q "^### stiffness" "$tmp/soil/stability.md"'
+check '[ "$(cd "$tmp/soil" && ls stability_*.gp)" = stability_soil.gp ]'
+"$fs" bench stability --scene soil,sand --out "$tmp/bad" >/dev/null 2>"$tmp/err.txt"
+status=$?
+check '[ "$status" -eq 2 ]'
+check 'grep -q "no slice is called .sand.; give one or more of stiffness, load, mass, drop, soil, law" "$tmp/err.txt"'
+check '[ ! -e "$tmp/bad" ]'
 "$fs" bench nonsense 2>/dev/null
 status=$?
 check '[ "$status" -eq 2 ]'

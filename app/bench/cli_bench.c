@@ -12,8 +12,8 @@
 
 int cli_bench(const cli_args *a)
 {
-    if (a->scene && strcmp(a->input, "precision")) {
-        fprintf(stderr, "footsim bench %s: --scene is for bench precision only\n", a->input);
+    if (a->scene && strcmp(a->input, "precision") && strcmp(a->input, "stability")) {
+        fprintf(stderr, "footsim bench %s: --scene is for bench precision and bench stability only\n", a->input);
         return FS_BAD_INPUT;
     }
     if (!strcmp(a->input, "equivalence"))
@@ -31,10 +31,13 @@ int cli_bench(const cli_args *a)
     if (a->input2 || only) {
         fprintf(stderr, "footsim bench %s: %s%s%s is for bench equivalence only; bench %s takes -j, --quick, --out, "
                 "--replace and --data%s\n", a->input, a->input2 ? "a campaign ('" : "", a->input2 ? a->input2 : only,
-                a->input2 ? "')" : "", a->input, !strcmp(a->input, "precision") ? " (and --scene)" : "");
+                a->input2 ? "')" : "", a->input, strcmp(a->input, "speed") ? " (and --scene)" : "");
         return FS_BAD_INPUT;
     }
     if (!strcmp(a->input, "precision") && cli_bench_precision_scenes(a)) /* said */
+        return FS_BAD_INPUT;
+    int slices[CLI_STABILITY_MAX_SLICES]; /* bench stability's; checked here too, before the folder is touched */
+    if (!strcmp(a->input, "stability") && cli_bench_stability_slices(a, slices)) /* said */
         return FS_BAD_INPUT;
     fs_error err;
     /* the folder must be one footsim writes into (marked, or only bench files), before measuring */

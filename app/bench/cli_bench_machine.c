@@ -45,6 +45,31 @@ double cli_load_average(void)
     return l;
 }
 
+int cli_bench_choose(const char *bench, const char *noun, const char *list, const char *const *names, int n,
+                     int *chosen)
+{
+    for (const char *p = list; p; p++) { /* each name, p then past its comma */
+        size_t len = strcspn(p, ",");
+        int k = 0;
+        while (k < n && (strlen(names[k]) != len || strncmp(names[k], p, len)))
+            k++;
+        if (k == n) {
+            fprintf(stderr, "footsim bench %s: --scene %s: %s%s%s%.*s%s; give one or more of", bench, list,
+                    len ? "no " : "an empty name", len ? noun : "", len ? " is called '" : "", (int)len, p,
+                    len ? "'" : "");
+            for (int j = 0; j < n; j++)
+                fprintf(stderr, "%s %s", j ? "," : "", names[j]);
+            fprintf(stderr, ", separated by commas\n");
+            return FS_BAD_INPUT;
+        }
+        chosen[k] = 1;
+        p += len;
+        if (*p == 0)
+            break;
+    }
+    return 0;
+}
+
 int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings, fs_error *err)
 {
     fs_status s = fs_provenance_init(p, cli_data_path("scenarios/static_load.ini"), err);

@@ -651,27 +651,12 @@ static int fill_chart(FILE *f, const void *user)
  * --quick). */
 static int choose_scenes(const cli_args *a, int chosen[NSCENES])
 {
-    for (int k = 0; k < NSCENES; k++)
+    const char *names[NSCENES];
+    for (int k = 0; k < NSCENES; k++) {
         chosen[k] = !a->scene && !(a->quick && SCENES[k].full_only);
-    for (const char *p = a->scene; p; p++) { /* each name, p then past its comma */
-        size_t len = strcspn(p, ",");
-        int k = 0;
-        while (k < NSCENES && (strlen(SCENES[k].name) != len || strncmp(SCENES[k].name, p, len)))
-            k++;
-        if (k == NSCENES) {
-            fprintf(stderr, "footsim bench precision: --scene %s: %s%.*s%s; give one or more of", a->scene,
-                    len ? "no scene is called '" : "an empty name", (int)len, p, len ? "'" : "");
-            for (int j = 0; j < NSCENES; j++)
-                fprintf(stderr, "%s %s", j ? "," : "", SCENES[j].name);
-            fprintf(stderr, ", separated by commas\n");
-            return FS_BAD_INPUT;
-        }
-        chosen[k] = 1;
-        p += len;
-        if (*p == 0)
-            break;
+        names[k] = SCENES[k].name;
     }
-    return 0;
+    return cli_bench_choose("precision", "scene", a->scene, names, NSCENES, chosen);
 }
 
 int cli_bench_precision_scenes(const cli_args *a)

@@ -29,6 +29,8 @@
 
 enum { NSLICES = 6, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, MAX_SET = 4, LAW_SLICE = 5 };
 
+_Static_assert((int)NSLICES <= (int)CLI_STABILITY_MAX_SLICES, "cli_bench.c's flags for --scene hold every slice");
+
 /* A swept quantity and its values (full sweep, then --quick). */
 typedef struct slice {
     const char *name, *scenario, *label, *unit;
@@ -260,14 +262,14 @@ static fs_status run_all(const config *cfg, outcome *out, int n, int jobs, fs_sc
 
 /* ---- the grid --------------------------------------------------------------------------------- */
 
-static int grid(int quick, config *cfg)
+static int grid(int quick, const int *chosen, config *cfg)
 {
     const double *steps = quick ? STEPS_QUICK : STEPS_FULL;
     int nsteps = quick ? (int)(sizeof STEPS_QUICK / sizeof *STEPS_QUICK) : (int)(sizeof STEPS_FULL / sizeof *STEPS_FULL);
     int n = 0;
     for (int s = 0; s < NSLICES; s++) {
         const slice *sl = &SLICES[s];
-        for (int combo = 0; combo < NCOMBOS; combo++)
+        for (int combo = 0; combo < NCOMBOS && chosen[s]; combo++)
             for (int v = 0; v < (quick ? sl->nquick : sl->nfull); v++)
                 for (int h = 0; h < nsteps; h++)
                     cfg[n++] = (config){s, combo / 2, combo % 2, steps[h], quick ? sl->quick[v] : sl->full[v]};
@@ -284,6 +286,8 @@ typedef struct report {
     int n, quick, jobs;
     double wall_s;
     const fs_provenance *prov;
+    const int *chosen;          /* the slices run (--scene), NSLICES flags */
+    const char *command;        /* as the results name it: "footsim bench stability --quick --scene soil" */
 } report;
 
 static int fill_csv(FILE *f, const void *user)
@@ -463,7 +467,7 @@ static int fill_summary(FILE *f, const void *user)
     cli_machine(machine, sizeof machine);
     int counts[3];
     count_classes(out, n, counts);
-    fprintf(f, "# Numerical stability (`footsim bench stability%s`)\n\n", quick ? " --quick" : "");
+    fprintf(f, "# Numerical stability (`%s`)\n\n", x->command);
     fprintf(f, "%d runs of %.2f s simulated each: %d stable, %d drifting, %d blown up; %.0f s with -j %d on %s.\n",
             n, quick ? DURATION_QUICK_S : DURATION_FULL_S, counts[0], counts[1], counts[2], wall_s, jobs, machine);
     fprintf(f, "\nClasses (the run-time checks of `include/footsim/sim/fs_check.h`, default bounds): **stable**; "
@@ -475,10 +479,13 @@ static int fill_summary(FILE *f, const void *user)
                "lightest body as a mass on its springs and dampers, `fs_check_explicit_step_limit`: "
                "k h² + 2 c h < 4 m); the paper's default foot gives 4.0e-5 s (phalanx, 8 g, two dampers of "
                "200 N·s/m), or 8e-5 s with one damper (2 m / c).\n");
-    fprintf(f, "\n## Safe envelope\n\nThe largest step at which every swept case (every slice and value) was "
+    int all = 1;
+    for (int s = 0; s < NSLICES; s++)
+        all &= x->chosen[s];
+    fprintf(f, "\n## Safe envelope\n\nThe largest step at which every swept case (every %s) was "
                "stable, then the smallest that drifted and that blew up; and the same with the design's link "
                "masses (the mass slice's other scales left out):\n\n| springs, stepper | every case | design's "
-               "link masses |\n|---|---|---|\n");
+               "link masses |\n|---|---|---|\n", all ? "slice and value" : "value of the slices run here");
     for (int combo = 0; combo < NCOMBOS; combo++) {
         char text[2][160];
         for (int k = 0; k < 2; k++) {
@@ -489,7 +496,8 @@ static int fill_summary(FILE *f, const void *user)
         fprintf(f, "| %s, %s | %s | %s |\n", SPRINGS[combo % 2], STEPPERS[combo / 2], text[0], text[1]);
     }
     for (int s = 0; s < NSLICES; s++)
-        slice_table(f, cfg, out, n, s, quick);
+        if (x->chosen[s])
+            slice_table(f, cfg, out, n, s, quick);
     fprintf(f, "\n`stability.csv` has every run (class, the check that failed, where and when, the worst loop "
                "error, energy excess and speed); `stability_<slice>.gp` draws each chart.\n");
     fputs("\nProvenance: ", f);
@@ -500,21 +508,40 @@ static int fill_summary(FILE *f, const void *user)
 
 /* ---- the command ------------------------------------------------------------------------------ */
 
+int cli_bench_stability_slices(const cli_args *a, int *chosen)
+{
+    const char *names[NSLICES];
+    for (int k = 0; k < NSLICES; k++) {
+        chosen[k] = !a->scene;
+        names[k] = SLICES[k].name;
+    }
+    return cli_bench_choose("stability", "slice", a->scene, names, NSLICES, chosen);
+}
+
 int cli_bench_stability(const cli_args *a, const char *dir)
 {
-    int jobs;
+    int jobs, chosen[NSLICES];
     int st = cli_parse_jobs(a, &jobs);
+    if (!st)
+        st = cli_bench_stability_slices(a, chosen);
     if (st)
         return st;
+    char command[512];
+    snprintf(command, sizeof command, "footsim bench stability%s%s%.400s", a->quick ? " --quick" : "",
+             a->scene ? " --scene " : "", a->scene ? a->scene : "");
     jobs = jobs < MAX_WORKERS ? jobs : MAX_WORKERS;
     fs_error err;
     /* each slice's scenario read once (the workers copy it), before anything runs */
     fs_scenario *loaded[NSLICES] = {NULL};
     fs_provenance prov = {.ninputs = 0};
     fs_status s = FS_OK;
+    const fs_scenario *inputs[NSLICES]; /* the slices run, for the provenance */
+    int ninputs = 0;
     for (int i = 0; i < NSLICES && s == FS_OK; i++) {
+        if (!chosen[i])
+            continue; /* a slice not run is not read */
         for (int j = 0; j < i && !loaded[i] && !SLICES[i].set[0]; j++)
-            if (!strcmp(SLICES[j].scenario, SLICES[i].scenario) && !SLICES[j].set[0])
+            if (loaded[j] && !strcmp(SLICES[j].scenario, SLICES[i].scenario) && !SLICES[j].set[0])
                 loaded[i] = loaded[j];
         if (loaded[i])
             continue;
@@ -528,7 +555,11 @@ int cli_bench_stability(const cli_args *a, const char *dir)
         }
     }
     if (s == FS_OK)
-        s = cli_bench_provenance(&prov, (const fs_scenario *const *)loaded, NSLICES, "each row's stepper, springs "
+        for (int i = 0; i < NSLICES; i++)
+            if (chosen[i])
+                inputs[ninputs++] = loaded[i];
+    if (s == FS_OK)
+        s = cli_bench_provenance(&prov, inputs, ninputs, "each row's stepper, springs "
                                  "and step_s, and its slice's quantity; the rest as the inputs give them", &err);
     if (s == FS_OK)
         s = fs_make_dirs(dir, &err);
@@ -536,7 +567,7 @@ int cli_bench_stability(const cli_args *a, const char *dir)
     config *cfg = calloc(NSLICES * NCOMBOS * MAX_VALUES * 16, sizeof *cfg);
     if (s == FS_OK && !cfg)
         s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
-    int n = cfg ? grid(a->quick, cfg) : 0;
+    int n = cfg ? grid(a->quick, chosen, cfg) : 0;
     outcome *out = s == FS_OK ? calloc((size_t)n, sizeof *out) : NULL;
     if (s == FS_OK && !out)
         s = fs_fail(&err, FS_NO_MEMORY, "out of memory");
@@ -545,7 +576,7 @@ int cli_bench_stability(const cli_args *a, const char *dir)
         fprintf(stderr, "footsim bench stability: %d runs of %g s simulated, -j %d\n", n, duration, jobs);
         s = run_all(cfg, out, n, jobs, loaded, duration, &err);
     }
-    report x = {cfg, out, n, a->quick, jobs, 0, &prov};
+    report x = {cfg, out, n, a->quick, jobs, 0, &prov, chosen, command};
     if (s == FS_OK)
         s = fs_write_in(dir, "stability.csv", fill_csv, &x, &err);
     if (s == FS_OK) {
@@ -553,10 +584,12 @@ int cli_bench_stability(const cli_args *a, const char *dir)
         time_t now = time(NULL);
         strftime(date, sizeof date, "%Y-%m-%d %H:%M", gmtime(&now));
         cli_machine(machine, sizeof machine);
-        s = (fs_status)cli_csv_beside(dir, "stability.csv", &prov, a->quick ? "footsim bench stability --quick"
-                                      : "footsim bench stability", date, machine, NAN, cli_load_average(), &err);
+        s = (fs_status)cli_csv_beside(dir, "stability.csv", &prov, command, date, machine, NAN, cli_load_average(),
+                                      &err);
     }
     for (int i = 0; s == FS_OK && i < NSLICES; i++) {
+        if (!chosen[i])
+            continue;
         char gp[64], png[64];
         snprintf(gp, sizeof gp, "stability_%s.gp", SLICES[i].name);
         snprintf(png, sizeof png, "stability_%s.png", SLICES[i].name);
