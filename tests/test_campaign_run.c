@@ -431,7 +431,13 @@ static void test_a_band_reaches_the_optimizer(void)
     r[0].outcome = FS_LANDED;
     r[1].outcome = FS_FELL;
     r[0].end_time_s = 1, r[1].end_time_s = 0.25;
-    CHECK(fabs(fs_optimize_closeness(o, r) - 0.75) < 1e-12);
+    fs_campaign_row rows[1];
+    fs_campaign_summarize(c, r, rows);
+    CHECK(rows[0].success_rate == 0); /* the worse end's */
+    CHECK(fabs(fs_optimize_closeness(o, r, rows) - 0.75) < 1e-12);
+    /* a target met counts nothing, however many of its trials fell */
+    o->campaign.expect[0].min_success = 0;
+    CHECK(fs_optimize_closeness(o, r, rows) == 0);
     fs_optimize_free(o);
     free(o);
 }

@@ -562,18 +562,31 @@ int fs_optimize_reference_cell(const fs_optimize *o, int cell)
     return o->reference * per_foot + cell % per_foot;
 }
 
+/* Expectation i's cell and how far its success rate lies outside [min_success, max_success]. */
+static double expectation_miss(const fs_campaign *c, int i, const fs_campaign_row *rows, int *cell)
+{
+    const fs_expectation *e = &c->expect[i];
+    *cell = (e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot;
+    double rate = rows[*cell].success_rate;
+    return fmax(0, e->min_success - rate) + fmax(0, rate - e->max_success);
+}
+
+/* How far a searched foot's cell lands less often than the reference foot's in its terrain and robot. */
+static double relative_miss(const fs_optimize *o, int cell, const fs_campaign_row *rows)
+{
+    return fmax(0, rows[fs_optimize_reference_cell(o, cell)].success_rate - rows[cell].success_rate);
+}
+
 double fs_optimize_shortfall(const fs_optimize *o, const fs_campaign_row *rows)
 {
     const fs_campaign *c = &o->campaign;
     double miss = 0;
-    for (int i = 0; i < c->nexpect; i++) {
-        const fs_expectation *e = &c->expect[i];
-        double rate = rows[(e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot].success_rate;
-        miss += fmax(0, e->min_success - rate) + fmax(0, rate - e->max_success);
-    }
-    for (int cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
+    int cell;
+    for (int i = 0; i < c->nexpect; i++)
+        miss += expectation_miss(c, i, rows, &cell);
+    for (cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
         if (foot_of(c, cell) != o->reference)
-            miss += fmax(0, rows[fs_optimize_reference_cell(o, cell)].success_rate - rows[cell].success_rate);
+            miss += relative_miss(o, cell, rows);
     return miss;
 }
 
@@ -612,16 +625,16 @@ static double cell_closeness(const fs_campaign *c, int cell, const fs_trial_resu
     return n ? miss / n : 0;
 }
 
-double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results)
+double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results, const fs_campaign_row *rows)
 {
     const fs_campaign *c = &o->campaign;
     double sum = 0;
-    for (int i = 0; i < c->nexpect; i++) {
-        const fs_expectation *e = &c->expect[i];
-        sum += cell_closeness(c, (e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot, results);
-    }
-    for (int cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
-        if (foot_of(c, cell) != o->reference)
+    int cell;
+    for (int i = 0; i < c->nexpect; i++)
+        if (expectation_miss(c, i, rows, &cell) > 0) /* a target met has nothing to climb */
+            sum += cell_closeness(c, cell, results);
+    for (cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
+        if (foot_of(c, cell) != o->reference && relative_miss(o, cell, rows) > 0)
             sum += cell_closeness(c, cell, results);
     return sum;
 }
@@ -694,7 +707,7 @@ static double penalised(unsigned n, const double *u, double *grad, void *data)
             st = fs_optimize_run_trials(o, s->trials, s->user, s->results, 0, &s->err);
             if (st == FS_OK) {
                 fs_campaign_summarize(&o->campaign, s->results, s->rows);
-                closeness = fs_optimize_closeness(o, s->results);
+                closeness = fs_optimize_closeness(o, s->results, s->rows);
                 st = fs_optimize_remember(o, x, s->rows, closeness, &s->err);
             }
         }

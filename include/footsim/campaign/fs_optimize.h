@@ -20,7 +20,7 @@
  * they are stiffnesses). The targets enter as a penalty: every expectation's shortfall (how far the
  * success rate lies outside [min_success, max_success]) times a weight large enough that one seed
  * short of a target costs more than the objective's whole range, so no stiffness saved buys a
- * target missed; plus, worth less than one seed, how soon the trials that missed fell
+ * target missed; plus, worth less than one seed, how soon the trials of the targets missed fell
  * (fs_optimize_closeness), so that the search has a slope to follow where no rate changes yet. Noise: every candidate runs the same seeds (common random numbers), so a
  * candidate's success rates are a deterministic, stepwise function of it; NLopt's Subplex
  * (derivative-free, bound-constrained, tolerant of steps) searches it. The best candidate is then
@@ -156,10 +156,13 @@ double fs_optimize_shortfall(const fs_optimize *o, const fs_campaign_row *rows);
 int fs_optimize_reference_cell(const fs_optimize *o, int cell);
 
 /* How close the trials that missed came, a continuous measure for the search where the success
- * rates are flat (every candidate near the start may miss every target alike): for each
- * expectation's cell, the mean over its trials that did not land of 1 - (the time they stayed up /
- * the window): 0 when all landed, near 1 when all fell at once. */
-double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results);
+ * rates are flat (every candidate near the start may miss every target alike): for each target
+ * that rows (the summary of results) miss, an expectation's cell or a cell landing less often than
+ * the reference foot's, the mean over its trials that did not land of 1 - (the time they stayed
+ * up / the window): 0 when all landed, near 1 when all fell at once. A target met counts 0 however
+ * many of its trials fell, so that among designs meeting every target the least stiff ranks
+ * first, not the one whose few falls came latest. */
+double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results, const fs_campaign_row *rows);
 
 /* Runs every trial of c (a campaign, or one foot's cells of it: o->view) into results, by c's trial
  * index; the caller's (the command runs them in its worker pool). */
