@@ -192,15 +192,16 @@ void cli_surface_free(cli_surface *c);
  * 0 or NAN: null). An fs_status. */
 int cli_csv_beside(const char *dir, const char *csv, const fs_provenance *p, const char *command, const char *date_utc,
                    const char *machine, double load_start, double load_end, struct fs_error *err);
+/* --scene's comma-separated names (list, NULL for none) among names[0..n-1]: sets chosen[k] for each
+ * one given (the caller sets the rest) and returns 0; an unknown or empty name is said on stderr
+ * with the names there are ("footsim bench BENCH: ... no NOUN is called ...") and FS_BAD_INPUT
+ * returned. */
+int cli_bench_choose(const char *bench, const char *noun, const char *list, const char *const *names, int n,
+                     int *chosen);
 /* What made a bench's results (fs_provenance.h): the files of the n scenarios it loaded, relative
  * to the shipped scenarios/ folder, with their hashes; settings as text (which columns vary); no
  * overrides (benches take none) and no seeds (set them when the runs draw from one). An fs_status;
  * fs_provenance_free releases p, also after a failure. */
-/* --scene's comma-separated names (list, NULL for none) among names[0..n-1]: sets chosen[k] for each
- * one given (the caller sets the rest); an unknown or empty name is said on stderr with the names
- * there are ("footsim bench BENCH: ... no NOUN is called ..."), FS_BAD_INPUT returned. */
-int cli_bench_choose(const char *bench, const char *noun, const char *list, const char *const *names, int n,
-                     int *chosen);
 int cli_bench_provenance(fs_provenance *p, const fs_scenario *const *sc, int n, const char *settings,
                          struct fs_error *err);
 

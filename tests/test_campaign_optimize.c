@@ -486,7 +486,21 @@ static void refuses_bad_targets(void)
     fs_check_refusal(err.message, path, 12, "needs min > 0; give min > 0, or weight = 0 to leave splay out");
     write_search(path, "search_single_tall.ini", "", "weight = 0\n"); /* k_d1's, the one parameter */
     CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
-    CHECK(strstr(err.message, "every parameter has weight = 0") != NULL);
+    fs_check_refusal(err.message, path, 3, "every parameter has weight = 0");
+    /* lightest weighs no parameter: a weight there is refused at its line */
+    write_search(path, "search_single_tall.ini", "", "weight = 2\n");
+    FILE *f = fopen(path, "r+");
+    char text[1024];
+    size_t len = fread(text, 1, sizeof text - 1, f);
+    text[len] = 0;
+    char *obj = strstr(text, "least_stiff");
+    REQUIRE(obj != NULL);
+    memcpy(obj, "lightest   ", 11); /* same length: the lines keep their numbers */
+    rewind(f);
+    fwrite(text, 1, len, f);
+    fclose(f);
+    CHECK(fs_optimize_load(path, small, 1, &o, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, 10, "weight is a term of objective = least_stiff's sum");
     remove(path);
 }
 
@@ -510,6 +524,8 @@ static void list_parameters(void)
     CHECK(sc->design.splay_deg[0] == 15 && sc->design.splay_deg[1] == 4 && sc->design.scale_factor == 1.1);
     /* least_stiff: each weighed parameter over its min; the splay (weight 0) left out */
     CHECK(fs_optimize_objective(&o, x) == x[0] / o.param[0].min + x[2] / 0.8);
+    o.param[2].weight = 2.5; /* a weight multiplies its term */
+    CHECK(fs_optimize_objective(&o, x) == x[0] / o.param[0].min + x[2] / 0.8 * 2.5);
     /* compiled: chain 1's toe along its plane, turned 15 deg */
     double dx = sc->geom.chain[0].toe.x - sc->geom.chain[0].mtp.x, dy = sc->geom.chain[0].toe.y - sc->geom.chain[0].mtp.y;
     CHECK_NEAR(atan2(dy, dx) * 180 / M_PI, 15, 1e-9);

@@ -290,11 +290,16 @@ static fs_status check_params(const fs_config *cfg, const target *t, fs_optimize
             return fs_fail(err, FS_BAD_INPUT, "%s: [%s] min = %g: objective = least_stiff sums each parameter over its "
                            "min, which needs min > 0; give min > 0, or weight = 0 to leave %s out of the sum",
                            fs_config_where(cfg, sec, "min", where, sizeof where), sec, q->min, q->name);
+        if (o->objective != FS_OBJECTIVE_LEAST_STIFF && fs_config_has(cfg, sec, "weight"))
+            return fs_fail(err, FS_BAD_INPUT, "%s: [%s] weight is a term of objective = least_stiff's sum; objective = "
+                           "lightest minimises the foot's mass and weighs no parameter: remove it",
+                           fs_config_where(cfg, sec, "weight", where, sizeof where), sec);
         weighed += q->weight > 0;
     }
     if (o->objective == FS_OBJECTIVE_LEAST_STIFF && o->nparams && !weighed)
         return fs_fail(err, FS_BAD_INPUT, "%s: objective = least_stiff, but every parameter has weight = 0: the sum "
-                       "is always 0; give the stiffnesses weight = 1 (the default)", cfg->path);
+                       "is always 0; give the stiffnesses weight = 1 (the default)",
+                       fs_config_where(cfg, "optimize", "objective", where, sizeof where));
     for (int n = 0; n < o->nconstraints; n++) {
         char csec[FS_NAME_MAX + 16];
         snprintf(csec, sizeof csec, "constraint.%s", o->constraint[n].name);
@@ -562,13 +567,15 @@ int fs_optimize_reference_cell(const fs_optimize *o, int cell)
     return o->reference * per_foot + cell % per_foot;
 }
 
-/* Expectation i's cell and how far its success rate lies outside [min_success, max_success]. */
-static double expectation_miss(const fs_campaign *c, int i, const fs_campaign_row *rows, int *cell)
+/* Expectation i's cell and how far its success rate lies below min_success (*low) and above
+ * max_success (the returned sum's other term). */
+static double expectation_miss(const fs_campaign *c, int i, const fs_campaign_row *rows, int *cell, double *low)
 {
     const fs_expectation *e = &c->expect[i];
     *cell = (e->foot * c->nterrains + e->terrain) * c->nrobots + e->robot;
     double rate = rows[*cell].success_rate;
-    return fmax(0, e->min_success - rate) + fmax(0, rate - e->max_success);
+    *low = fmax(0, e->min_success - rate);
+    return *low + fmax(0, rate - e->max_success);
 }
 
 /* How far a searched foot's cell lands less often than the reference foot's in its terrain and robot. */
@@ -582,8 +589,9 @@ double fs_optimize_shortfall(const fs_optimize *o, const fs_campaign_row *rows)
     const fs_campaign *c = &o->campaign;
     double miss = 0;
     int cell;
+    double low;
     for (int i = 0; i < c->nexpect; i++)
-        miss += expectation_miss(c, i, rows, &cell);
+        miss += expectation_miss(c, i, rows, &cell, &low);
     for (cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
         if (foot_of(c, cell) != o->reference)
             miss += relative_miss(o, cell, rows);
@@ -630,9 +638,12 @@ double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *result
     const fs_campaign *c = &o->campaign;
     double sum = 0;
     int cell;
-    for (int i = 0; i < c->nexpect; i++)
-        if (expectation_miss(c, i, rows, &cell) > 0) /* a target met has nothing to climb */
+    double low;
+    for (int i = 0; i < c->nexpect; i++) { /* a target met has nothing to climb; one landing too often, */
+        expectation_miss(c, i, rows, &cell, &low); /* later falls would lead away from */
+        if (low > 0)
             sum += cell_closeness(c, cell, results);
+    }
     for (cell = 0; o->reference >= 0 && cell < fs_campaign_ncells(c); cell++)
         if (foot_of(c, cell) != o->reference && relative_miss(o, cell, rows) > 0)
             sum += cell_closeness(c, cell, results);

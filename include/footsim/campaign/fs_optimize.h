@@ -15,9 +15,10 @@
  *   max = 1.2e6
  *   start = 120000
  *   log = yes                           ; searched in log space (for values spanning decades)
+ *   weight = 1                          ; its term in least_stiff's sum (0: left out, e.g. a splay)
  *
- * One objective: the sum of the parameters, each divided by its min (the least stiff design when
- * they are stiffnesses). The targets enter as a penalty: every expectation's shortfall (how far the
+ * One objective: the sum of the parameters, each divided by its min times its weight (the least
+ * stiff design when they are stiffnesses), or the foot's mass (lightest, where no weight applies). The targets enter as a penalty: every expectation's shortfall (how far the
  * success rate lies outside [min_success, max_success]) times a weight large enough that one seed
  * short of a target costs more than the objective's whole range, so no stiffness saved buys a
  * target missed; plus, worth less than one seed, how soon the trials of the targets missed fell
@@ -143,8 +144,8 @@ double fs_optimize_violation(const fs_optimize *o);
 /* The targets: the campaign's expectations, then (with relative_to) every cell of every other foot. */
 int fs_optimize_ntargets(const fs_optimize *o);
 
-/* The objective of x, after fs_optimize_apply(o, x): the sum of x_i / min_i (least_stiff), or the
- * foot's total mass in kg (lightest). */
+/* The objective of x, after fs_optimize_apply(o, x): the sum of x_i / min_i * weight_i over the
+ * parameters of weight above 0 (least_stiff), or the foot's total mass in kg (lightest). */
 double fs_optimize_objective(const fs_optimize *o, const double *x);
 
 /* How far the rows miss the targets: the sum over expectations of the distance of the success rate
@@ -157,9 +158,10 @@ int fs_optimize_reference_cell(const fs_optimize *o, int cell);
 
 /* How close the trials that missed came, a continuous measure for the search where the success
  * rates are flat (every candidate near the start may miss every target alike): for each target
- * that rows (the summary of results) miss, an expectation's cell or a cell landing less often than
- * the reference foot's, the mean over its trials that did not land of 1 - (the time they stayed
- * up / the window): 0 when all landed, near 1 when all fell at once. A target met counts 0 however
+ * that rows (the summary of results) land too rarely, an expectation's cell below its min_success
+ * or a cell landing less often than the reference foot's, the mean over its trials that did not
+ * land of 1 - (the time they stayed up / the window): 0 when all landed, near 1 when all fell at
+ * once. A cell above its max_success counts 0 here (later falls would lead away from it). A target met counts 0 however
  * many of its trials fell, so that among designs meeting every target the least stiff ranks
  * first, not the one whose few falls came latest. */
 double fs_optimize_closeness(const fs_optimize *o, const fs_trial_result *results, const fs_campaign_row *rows);
