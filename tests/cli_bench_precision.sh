@@ -107,4 +107,9 @@ check '[ ! -e "$tmp/bad" ]'
 "$fs" bench nonsense 2>/dev/null
 status=$?
 check '[ "$status" -eq 2 ]'
+# an unknown benchmark is named as such, whatever else is given
+"$fs" bench nonsense --scene chain 2>"$tmp/err.txt"
+status=$?
+check '[ "$status" -eq 2 ]'
+check 'grep -q "unknown benchmark .nonsense." "$tmp/err.txt"'
 finish

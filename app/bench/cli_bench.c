@@ -12,6 +12,13 @@
 
 int cli_bench(const cli_args *a)
 {
+    int known = !strcmp(a->input, "precision") || !strcmp(a->input, "stability") || !strcmp(a->input, "speed") ||
+                !strcmp(a->input, "equivalence");
+    if (!known) {
+        fprintf(stderr, "footsim bench: unknown benchmark '%s'; give precision, stability, speed or equivalence\n",
+                a->input);
+        return FS_BAD_INPUT;
+    }
     if (a->scene && strcmp(a->input, "precision") && strcmp(a->input, "stability")) {
         fprintf(stderr, "footsim bench %s: --scene is for bench precision and bench stability only\n", a->input);
         return FS_BAD_INPUT;
@@ -20,12 +27,6 @@ int cli_bench(const cli_args *a)
         return cli_bench_equivalence(a);
     /* build/bench by default: the committed results/bench/ changes only on purpose (--out results/bench) */
     const char *dir = a->out ? a->out : "build/bench";
-    int known = !strcmp(a->input, "precision") || !strcmp(a->input, "stability") || !strcmp(a->input, "speed");
-    if (!known) {
-        fprintf(stderr, "footsim bench: unknown benchmark '%s'; give precision, stability, speed or equivalence\n",
-                a->input);
-        return FS_BAD_INPUT;
-    }
     /* what only bench equivalence takes */
     const char *only = a->nset ? "--set" : a->reference ? "--reference" : a->steps ? "--steps" : NULL;
     if (a->input2 || only) {
