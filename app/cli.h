@@ -118,10 +118,9 @@ int cli_bench_precision(const cli_args *a, const char *dir);
  * output folder is touched. */
 int cli_bench_precision_scenes(const cli_args *a);
 int cli_bench_stability(const cli_args *a, const char *dir);
-/* bench stability's --scene: which slices run (chosen, one flag per slice, at most
- * CLI_STABILITY_MAX_SLICES); FS_BAD_INPUT, said, for an unknown name. */
-enum { CLI_STABILITY_MAX_SLICES = 16 };
-int cli_bench_stability_slices(const cli_args *a, int *chosen);
+/* bench stability's --scene checked alone, before the output folder is touched (as
+ * cli_bench_precision_scenes): FS_BAD_INPUT, said, for an unknown slice. */
+int cli_bench_stability_slices(const cli_args *a);
 int cli_bench_speed(const cli_args *a, const char *dir);
 int cli_bench_equivalence(const cli_args *a);
 

@@ -37,8 +37,7 @@ int cli_bench(const cli_args *a)
     }
     if (!strcmp(a->input, "precision") && cli_bench_precision_scenes(a)) /* said */
         return FS_BAD_INPUT;
-    int slices[CLI_STABILITY_MAX_SLICES]; /* bench stability's; checked here too, before the folder is touched */
-    if (!strcmp(a->input, "stability") && cli_bench_stability_slices(a, slices)) /* said */
+    if (!strcmp(a->input, "stability") && cli_bench_stability_slices(a)) /* said */
         return FS_BAD_INPUT;
     fs_error err;
     /* the folder must be one footsim writes into (marked, or only bench files), before measuring */

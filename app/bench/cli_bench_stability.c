@@ -29,8 +29,6 @@
 
 enum { NSLICES = 6, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, MAX_SET = 4, LAW_SLICE = 5 };
 
-_Static_assert((int)NSLICES <= (int)CLI_STABILITY_MAX_SLICES, "cli_bench.c's flags for --scene hold every slice");
-
 /* A swept quantity and its values (full sweep, then --quick). */
 typedef struct slice {
     const char *name, *scenario, *label, *unit;
@@ -269,7 +267,9 @@ static int grid(int quick, const int *chosen, config *cfg)
     int n = 0;
     for (int s = 0; s < NSLICES; s++) {
         const slice *sl = &SLICES[s];
-        for (int combo = 0; combo < NCOMBOS && chosen[s]; combo++)
+        if (!chosen[s])
+            continue;
+        for (int combo = 0; combo < NCOMBOS; combo++)
             for (int v = 0; v < (quick ? sl->nquick : sl->nfull); v++)
                 for (int h = 0; h < nsteps; h++)
                     cfg[n++] = (config){s, combo / 2, combo % 2, steps[h], quick ? sl->quick[v] : sl->full[v]};
@@ -508,7 +508,8 @@ static int fill_summary(FILE *f, const void *user)
 
 /* ---- the command ------------------------------------------------------------------------------ */
 
-int cli_bench_stability_slices(const cli_args *a, int *chosen)
+/* Which slices run: every one, or those --scene names. */
+static int choose_slices(const cli_args *a, int chosen[NSLICES])
 {
     const char *names[NSLICES];
     for (int k = 0; k < NSLICES; k++) {
@@ -518,12 +519,18 @@ int cli_bench_stability_slices(const cli_args *a, int *chosen)
     return cli_bench_choose("stability", "slice", a->scene, names, NSLICES, chosen);
 }
 
+int cli_bench_stability_slices(const cli_args *a)
+{
+    int chosen[NSLICES];
+    return choose_slices(a, chosen);
+}
+
 int cli_bench_stability(const cli_args *a, const char *dir)
 {
     int jobs, chosen[NSLICES];
     int st = cli_parse_jobs(a, &jobs);
     if (!st)
-        st = cli_bench_stability_slices(a, chosen);
+        st = choose_slices(a, chosen);
     if (st)
         return st;
     char command[512];
