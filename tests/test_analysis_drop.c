@@ -225,6 +225,81 @@ static void support_on_level_ground(void)
     fs_scenario_free(&sc);
 }
 
+/* A biped's two feet settle as one rigid support. On level ground every heel and toe sphere of both
+ * feet bears (14, ten toes) and none of the midfoot's; the feet stand side by side, so the polygon's
+ * front is the line through the two feet's foremost toes and its back the line through their heels,
+ * worked out here from the design's spheres (a foot's big and little toe alone, as one foot's edge is
+ * found, would give another edge: the check fails on one foot's polygon), and the line from the
+ * ankles' midpoint through the centre of mass meets the front there. */
+static void support_of_a_biped(void)
+{
+    static fs_scenario sc;
+    fs_error err;
+    const char *set[] = {"robot.design=robots/biped.ini"};
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 1, &sc, &err) == FS_OK);
+    const fs_foot_geom *g = &sc.geom; /* one foot; the biped's are it and its mirror image */
+    double front = -INFINITY, back = INFINITY;
+    for (int i = 0; i < g->nspheres; i++) {
+        int toe = 0;
+        for (int c = 0; c < FS_CHAINS; c++)
+            toe |= g->sphere[i].body == g->chain[c].phalanx;
+        if (toe)
+            front = fmax(front, g->sphere[i].centre.x);
+        if (g->sphere[i].body == FS_BODY_HEEL)
+            back = fmin(back, g->sphere[i].centre.x);
+    }
+    double com = g->ankle.x + sc.def.robot.com_forward_m;
+    fs_trial_support s;
+    REQUIRE(fs_trial_support_of(&sc, 1, 1e-3, &s, &err) == FS_OK);
+    CHECK(s.bearing == 14 && s.toes_bearing == 10 && s.toes == 10 && s.heel_bearing && s.over);
+    CHECK_NEAR(s.edge_m, front - g->ankle.x, 1e-12);
+    CHECK_NEAR(s.side_m, fmin(front - com, com - back), 1e-12);
+    CHECK_NEAR(s.ankle_height_m, g->ankle.z, 1e-12);
+    CHECK_NEAR(s.settle_m, 0, 1e-12);
+    CHECK_NEAR(s.tilt_forward_rad, 0, 1e-12);
+    CHECK_NEAR(s.tilt_side_rad, 0, 1e-12);
+    fs_scenario_free(&sc);
+}
+
+/* A biped's moments about its centre of mass (fs_robot_whole_inertia), worked out here for straight
+ * legs (no knee bend): the pelvis (its own moments, its centre com_forward_m's share ahead) and four
+ * square bars, thigh over shank, hip_width_m / 2 to each side. The legs' sideways reach is in the roll
+ * moment and not in the pitch moment (the check fails if the two are swapped or the legs left out). */
+static void biped_whole_inertia(void)
+{
+    fs_robot_def r;
+    memset(&r, 0, sizeof r);
+    r.kind = FS_ROBOT_BIPED;
+    r.hip_width_m = 0.2, r.thigh_length_m = 0.2, r.shank_length_m = 0.25, r.knee_bend_deg = 0, r.leg_width_m = 0.06;
+    r.pelvis_mass_kg = 36.76, r.thigh_mass_kg = 5.2, r.shank_mass_kg = 2.42, r.pelvis_com_height_m = 0.15;
+    r.pelvis_inertia_kgm2[0] = 0.47, r.pelvis_inertia_kgm2[1] = 0.35, r.pelvis_inertia_kgm2[2] = 0.26;
+    r.com_forward_m = 0.03;
+    double mp = r.pelvis_mass_kg, mt = r.thigh_mass_kg, ms = r.shank_mass_kg, M = mp + 2 * (mt + ms);
+    double Ls = r.shank_length_m, Lt = r.thigh_length_m, w = r.leg_width_m, y = 0.5 * r.hip_width_m;
+    /* centres: the pelvis ahead by M x / mp (the legs stand straight over the ankles), up by
+       Ls + Lt + its own height; each thigh at Ls + Lt / 2, each shank at Ls / 2 */
+    double xp = M * r.com_forward_m / mp, zp = Ls + Lt + r.pelvis_com_height_m, zt = Ls + 0.5 * Lt, zs = 0.5 * Ls;
+    double xG = mp * xp / M, zG = (mp * zp + 2 * mt * zt + 2 * ms * zs) / M;
+    double bar_t = mt * (Lt * Lt + w * w) / 12, bar_s = ms * (Ls * Ls + w * w) / 12, sq_t = mt * w * w / 6, sq_s = ms * w * w / 6;
+    double dzp = zp - zG, dxp = xp - xG, dzt = zt - zG, dzs = zs - zG;
+    double legs_z = 2 * (mt * (dzt * dzt + xG * xG) + ms * (dzs * dzs + xG * xG));
+    double want_pitch = 0.35 + mp * (dxp * dxp + dzp * dzp) + 2 * (bar_t + bar_s) + legs_z;
+    double want_roll = 0.47 + mp * dzp * dzp + 2 * (bar_t + bar_s) + 2 * (mt * dzt * dzt + ms * dzs * dzs) +
+                       2 * (mt + ms) * y * y;
+    double want_yaw = 0.26 + mp * dxp * dxp + 2 * (sq_t + sq_s) + 2 * (mt + ms) * (xG * xG + y * y);
+    double I[3];
+    fs_robot_whole_inertia(&r, I);
+    CHECK_NEAR(I[0], want_roll, 1e-12);
+    CHECK_NEAR(I[1], want_pitch, 1e-12);
+    CHECK_NEAR(I[2], want_yaw, 1e-12);
+    /* a single body's are fs_robot_inertia's */
+    fs_robot_def one = robot(26, 0.3, 0.03, 2.5);
+    double J[3], K[3];
+    fs_robot_whole_inertia(&one, J);
+    fs_robot_inertia(&one, K);
+    CHECK(J[0] == K[0] && J[1] == K[1] && J[2] == K[2]);
+}
+
 /* A flat sole on level ground bears over its whole bottom face (11 x 7 points), untilted, its edge
  * the sole's front; on simply uneven ground the 8 mm bump under its forefoot (at x = 6 cm) lifts it:
  * resting on the bump and its heel it tilts by about atan(8 / 60), 7.6 degrees; the four corners
@@ -363,7 +438,7 @@ static void contact_closed_forms(void)
     CHECK(fs_pitch_contact_series(K, 0.0086, 2e7, 9.0909e6) == K); /* a stiffer contact than the reference */
 }
 
-FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(contact_closed_forms), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
+FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(support_of_a_biped), TEST(biped_whole_inertia), TEST(contact_closed_forms), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
              TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share),
              TEST(toes_engage_as_the_foot_pitches))

@@ -13,8 +13,8 @@ void fs_drop_law_apply(const fs_pitch_law *statics, const fs_robot_def *r, doubl
     memset(out, 0, sizeof *out);
     double m = r->mass_kg, W = m * gravity_m_per_s2, h = r->com_height_m, x = fabs(r->com_forward_m);
     double I[3];
-    fs_robot_inertia(r, I);
-    double I_pitch = r->kind == FS_ROBOT_BIPED ? r->pelvis_inertia_kgm2[1] : I[1];
+    fs_robot_whole_inertia(r, I);
+    double I_pitch = I[1];
     out->speed_m_per_s = drop_m > 0 ? sqrt(2 * gravity_m_per_s2 * drop_m) : 0;
     out->inertia_kgm2 = I_pitch + m * (h * h + x * x);
     double L = m * x * out->speed_m_per_s;

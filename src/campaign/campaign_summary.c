@@ -128,12 +128,12 @@ static law_contact contact_of(const fs_scenario *sc, double k_ref)
 static double engaged_share(const fs_trial_support *sup, double K, double W, double x, double h)
 {
     int n = sup->toes;
-    if (n <= 0 || n > FS_CHAINS || !(K > 0))
+    if (n <= 0 || n > FS_MAX_FEET * FS_CHAINS || !(K > 0))
         return 1;
     double share = (double)sup->toes_bearing / n;
     if (x < 0)
         return share;
-    double at[FS_CHAINS];
+    double at[FS_MAX_FEET * FS_CHAINS];
     for (int i = 0; i < n; i++)
         at[i] = sup->toe_gap_m[i] <= 0 ? 0 : sup->toe_ahead_m[i] > 0 ? sup->toe_gap_m[i] / sup->toe_ahead_m[i] : INFINITY;
     double engaged = fs_pitch_engaged_share(at, n, K, W, x, h);
@@ -142,7 +142,10 @@ static double engaged_share(const fs_trial_support *sup, double K, double W, dou
 
 /* The drop law on one seed's support for robot r (its centre of mass at height h): the foot's K and
  * fold counted for the chains that bear at the static lean (engaged_share); the foot's tilt at rest leans the robot (its centre of
- * mass moves h tan(tilt) along the foot) and uses up that much of the lean bound, its roll too. */
+ * mass moves h tan(tilt) along the foot) and uses up that much of the lean bound, its roll too. A
+ * biped's K_foot and fold are each foot's under half the weight: its chains are both feet's (the
+ * share over ten), its fold both feet's, and its pitch law puts each foot's share in series with its
+ * ankle (fs_pitch_law_apply). */
 static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, double K_foot, const foot_fold *ff,
                        const fs_trial_support *sup, const law_contact *lc, fs_drop_law *dl)
 {
@@ -154,15 +157,16 @@ static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, 
     r.com_height_m = h;
     r.com_forward_m = r0->com_forward_m + h * tan(sup->tilt_forward_rad);
     double g = sc->def.gravity_m_per_s2, bound = sc->def.landed_tilt_deg * M_PI / 180;
-    double frac = engaged_share(sup, K_foot, r.mass_kg * g, r.com_forward_m, h);
+    int feet = r.kind == FS_ROBOT_BIPED ? 2 : 1;
+    double frac = engaged_share(sup, feet * K_foot, r.mass_kg * g, r.com_forward_m, h);
     double side = bound * bound - sup->tilt_side_rad * sup->tilt_side_rad;
     double lean_bound = sqrt(fmax(0, side)) - (r.com_forward_m >= 0 ? 1 : -1) * sup->tilt_forward_rad;
     fs_pitch_law pl;
     double K_eff = K_foot * frac;
-    if (lc->on) /* the end's contact in series with the bearing chains */
-        K_eff = fs_pitch_contact_series(K_eff, sup->spread_m2, lc->k_N_per_m, lc->k_ref_N_per_m);
+    if (lc->on) /* the end's contact in series with the bearing chains (each foot's points its own) */
+        K_eff = fs_pitch_contact_series(K_eff, sup->spread_m2 / feet, lc->k_N_per_m, lc->k_ref_N_per_m);
     fs_pitch_law_apply(K_eff, &r, g, lean_bound, &pl);
-    fs_drop_support ds = {sup->edge_m, sup->ankle_height_m, ff->fold_N_m * frac};
+    fs_drop_support ds = {sup->edge_m, sup->ankle_height_m, feet * ff->fold_N_m * frac};
     fs_drop_law_apply(&pl, &r, g, sc->def.drop_m, lean_bound, &ds, dl);
     if (lc->on && lc->gain != 1) { /* a lively contact's rebounds (fs_contact_rebound_gain) */
         dl->energy_J *= lc->gain;
@@ -173,7 +177,7 @@ static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, 
        turns on (fs_rocking_kept_J): about no side may that carry the centre of mass over it (a rigid
        tip about it), and the most kept adds to the drop's energy against the pitch's work */
     double W = r.mass_kg * g, settle = W * sup->settle_m, c = h + sup->ankle_height_m, I[3], kept = 0;
-    fs_robot_inertia(&r, I);
+    fs_robot_whole_inertia(&r, I);
     fs_vec3 G = fs_v3(0, 0, c), pivot = fs_v3(sup->first_x_m, sup->first_y_m, 0);
     fs_vec3 axis = fs_v3(sup->rock_axis_x, sup->rock_axis_y, 0);
     int tips = 0;
@@ -212,9 +216,10 @@ static double drop_critical(const fs_scenario *sc, double K_foot, const fs_trial
     return lo > 0 ? lo : NAN;
 }
 
-/* The law for a cell's foot and robot: the foot's pitch stiffness under the robot's weight (a flat
- * sole's from its contacts, fs_pitch_stiffness_foot); an arch that folds under the weight has none
- * left. The drop law's too, seed by seed on what each seed's terrain offers (fs_trial_support_of). */
+/* The law for a cell's foot and robot: the foot's pitch stiffness under the weight it carries (all
+ * of it; a biped's feet half each) (a flat sole's from its contacts, fs_pitch_stiffness_foot); an
+ * arch that folds under the weight has none left. The drop law's too, seed by seed on what each
+ * seed's terrain offers (fs_trial_support_of: a biped's on both feet). */
 static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contact *lc, fs_campaign_row *row,
                    foot_fold *cache, int *ncache)
 {
@@ -226,14 +231,15 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contac
     fs_error err;
     if (r->mass_kg <= 0)
         return;
+    double load = r->mass_kg * g / (r->kind == FS_ROBOT_BIPED ? 2 : 1); /* on each foot */
     /* a band's ends (and a sweep's cells) share the arch and its load: its K worked out once (the fold
        cache's; a flat sole's K is its contacts', worked out each time) */
     fs_status s = FS_NUMERICAL;
     for (int i = 0; i < *ncache && s != FS_OK && sc->geom.kind == FS_FOOT_BIOMIMETIC; i++)
-        if (cache[i].load_N == r->mass_kg * g && cache[i].K > 0 && same_arch(cache[i].sc, sc))
+        if (cache[i].load_N == load && cache[i].K > 0 && same_arch(cache[i].sc, sc))
             K = cache[i].K, s = FS_OK;
     if (s != FS_OK)
-        s = fs_pitch_stiffness_foot(sc, r->mass_kg * g, &K, &err);
+        s = fs_pitch_stiffness_foot(sc, load, &K, &err);
     fs_pitch_law law;
     fs_pitch_law_apply(s == FS_OK ? K : 0, r, g, max_lean, &law);
     row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
@@ -244,13 +250,11 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contac
         row->drop_seeds = row->drop_stands = c->seeds;
         return;
     }
-    if (r->kind == FS_ROBOT_BIPED) /* a biped's two feet are not judged (docs/landing.md) */
-        return;
     fs_trial_support *sup = malloc((size_t)c->seeds * sizeof *sup);
     double *E = malloc((size_t)c->seeds * sizeof *E), *B = malloc((size_t)c->seeds * sizeof *B);
     double *M = malloc((size_t)c->seeds * sizeof *M);
     foot_fold ff;
-    fold_of(sc, s == FS_OK ? K : 0, r->mass_kg * g, cache, ncache, &ff);
+    fold_of(sc, s == FS_OK ? K : 0, load, cache, ncache, &ff);
     int n = 0, nv = 0, ok = sup && E && B && M;
     for (int k = 0; ok && k < c->seeds; k++) {
         ok = fs_trial_support_of(sc, c->first_seed + k, ff.travel_m, &sup[n], &err) == FS_OK;
@@ -265,7 +269,8 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contac
     if (ok && n > 0 && lc->on && s == FS_OK) {
         /* the static law on the end's contact: the foot's K in series with the contacts of the first
            seed's support (on level ground every seed's) */
-        fs_pitch_law_apply(fs_pitch_contact_series(K, sup[0].spread_m2, lc->k_N_per_m, lc->k_ref_N_per_m), r, g,
+        double spread = sup[0].spread_m2 / (r->kind == FS_ROBOT_BIPED ? 2 : 1); /* each foot's points */
+        fs_pitch_law_apply(fs_pitch_contact_series(K, spread, lc->k_N_per_m, lc->k_ref_N_per_m), r, g,
                            max_lean, &law);
         row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;
         row->law_K = law.K;

@@ -11,8 +11,8 @@
    the highest of SUB x SUB points over its share of the face: where the terrain rises under it (a
    bump under the middle of the sole) it bears there, not at a corner */
 enum { SOLE_NX = 11, SOLE_NY = 7, SUB = 5, MAX_POINTS = FS_MAX_SPHERES + SOLE_NX * SOLE_NY * FS_MAX_BOXES };
-/* one foot's shapes (a biped is refused): its hull's corners fit fs_trial_support's */
-_Static_assert(FS_FOOT_SPHERES + SOLE_NX * SOLE_NY <= FS_SUPPORT_MAX_CORNERS, "the support's corners fit");
+/* every foot's shapes (a biped's two): their hull's corners fit fs_trial_support's */
+_Static_assert((int)MAX_POINTS <= (int)FS_SUPPORT_MAX_CORNERS, "the support's corners fit");
 
 typedef struct point { double x, y; } point;
 
@@ -45,13 +45,12 @@ static int hull(point *p, int n, point *h)
 fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m, fs_trial_support *out, fs_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (base->def.robot.kind == FS_ROBOT_BIPED || base->geom.nfeet > 1)
-        return fs_fail(err, FS_BAD_INPUT, "%s: the support under the footprint is for one foot, not a biped's two",
-                       base->path);
     fs_scenario *sc;
     fs_status s = fs_trial_placed(base, seed, NULL, &sc, err);
     if (s == FS_OK) {
-        const fs_foot_geom *g = &sc->geom;
+        fs_foot_geom two; /* a biped's feet; its ankles' midpoint stands for the ankle */
+        const fs_foot_geom *g = fs_scenario_geometry(sc, &two);
+        fs_vec3 ankle = g->nfeet > 1 ? fs_scale(fs_add(g->foot[0].ankle, g->foot[1].ankle), 0.5) : g->ankle;
         double yaw = sc->def.yaw_deg * M_PI / 180, c = cos(yaw), sn = sin(yaw);
         double x0 = sc->def.start_x_m, y0 = sc->def.start_y_m;
         /* each shape's contact point on the ground (x, y), its lowest point's height in the design
@@ -68,10 +67,13 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
             const double dx[4] = {r, -r, 0, 0}, dy[4] = {0, 0, r, -r};
             for (int k = 0; k < 4; k++)
                 under[n] = fmax(under[n], fs_terrain_height(&sc->terrain, at[n].x + dx[k], at[n].y + dy[k]));
-            heel[n] = g->sphere[i].body == FS_BODY_HEEL;
+            /* the body in its own foot's numbering (a biped's left foot's from foot[1].first_body on) */
+            int body = g->sphere[i].body;
+            body -= g->nfeet > 1 && body >= g->foot[1].first_body ? g->foot[1].first_body : 0;
+            heel[n] = body == FS_BODY_HEEL;
             toe[n] = 0;
             for (int ch = 0; g->kind == FS_FOOT_BIOMIMETIC && ch < FS_CHAINS; ch++)
-                toe[n] |= g->sphere[i].body == g->chain[ch].phalanx;
+                toe[n] |= body == g->chain[ch].phalanx;
             out->toes += toe[n];
         }
         for (int b = 0; b < g->nboxes; b++)
@@ -103,7 +105,7 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
         double q[MAX_POINTS], xf = sc->def.robot.com_forward_m, hc = sc->def.robot.com_height_m;
         for (int i = 0; i < n; i++)
             q[i] = under[i] - low[i];
-        point a = {x0 + c * g->ankle.x - sn * g->ankle.y, y0 + sn * g->ankle.x + c * g->ankle.y};
+        point a = {x0 + c * ankle.x - sn * ankle.y, y0 + sn * ankle.x + c * ankle.y};
         point fwd = {c, sn}, com = {a.x + xf * fwd.x, a.y + xf * fwd.y};
         double plane[3] = {NAN, 0, 0}; /* value at (x0, y0), slope along x and y */
         for (int pass = 0; pass < 3; pass++) {
@@ -156,7 +158,7 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
             out->spread_m2 += d * d;
         }
         for (int i = 0, t = 0; out->over && i < n; i++)
-            if (toe[i] && t < FS_CHAINS) {
+            if (toe[i] && t < FS_MAX_FEET * FS_CHAINS) {
                 double gap = plane[0] + plane[1] * (at[i].x - x0) + plane[2] * (at[i].y - y0) - q[i] - travel_m;
                 out->toe_gap_m[t] = fmax(0, gap);
                 out->toe_ahead_m[t++] = c * (at[i].x - a.x) + sn * (at[i].y - a.y);
@@ -204,7 +206,7 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
         }
         out->settle_m = out->over ? first - (plane[0] + plane[1] * (com.x - x0) + plane[2] * (com.y - y0)) : NAN;
         double ex = a.x + out->edge_m * f.x, ey = a.y + out->edge_m * f.y;
-        out->ankle_height_m = out->over ? g->ankle.z + plane[1] * (a.x - ex) + plane[2] * (a.y - ey) : NAN;
+        out->ankle_height_m = out->over ? ankle.z + plane[1] * (a.x - ex) + plane[2] * (a.y - ey) : NAN;
     }
     fs_trial_placed_free(sc);
     return s;

@@ -81,8 +81,9 @@ void fs_trial_placed_free(fs_scenario *sc);
  * edge is where the line from the ankle through the centre of mass leaves it, the side the nearest of
  * its sides. The centre of mass is
  * not over the support (over 0) when it stands beyond every facet (the foot tips off) or the bearing
- * points span no area. A single foot only (FS_BAD_INPUT for a biped). */
-enum { FS_SUPPORT_MAX_CORNERS = 96 }; /* a sole's 11 x 7 points and a foot's spheres fit */
+ * points span no area. A biped's two feet settle as one rigid support (both feet's shapes, the
+ * ankle the midpoint of its two ankles), its toes and heels counted over both. */
+enum { FS_SUPPORT_MAX_CORNERS = 192 }; /* two feet's soles' 11 x 7 points each and all their spheres fit */
 typedef struct fs_trial_support {
     int bearing;               /* contact points that bear (a sole's grid points count one each) */
     int toes_bearing, toes;    /* of the toes' spheres (a biomimetic foot's phalanges): bearing, all */
@@ -107,7 +108,7 @@ typedef struct fs_trial_support {
     double corner_x_m[FS_SUPPORT_MAX_CORNERS], corner_y_m[FS_SUPPORT_MAX_CORNERS];
     /* each toe (of `toes`): how far below the rest plane its ground lies past the travel (0: it
        bears), and how far ahead of the ankle along the foot it stands, m */
-    double toe_gap_m[FS_CHAINS], toe_ahead_m[FS_CHAINS];
+    double toe_gap_m[FS_MAX_FEET * FS_CHAINS], toe_ahead_m[FS_MAX_FEET * FS_CHAINS];
 } fs_trial_support;
 fs_status fs_trial_support_of(const fs_scenario *sc, int seed, double travel_m, fs_trial_support *out, fs_error *err);
 

@@ -63,6 +63,12 @@ void fs_robot_biped_geometry(const fs_robot_def *r, const fs_foot_geom *foot, fs
  * moments stay a body's at every height (as given at f = 1, bit for bit). */
 void fs_robot_inertia(const fs_robot_def *r, double I[3]);
 
+/* The moments about the centre of mass of everything r describes (the foot not counted), along
+ * the frame's axes (x forward, y left, z up; the products left out): a single body's
+ * fs_robot_inertia; a biped's pelvis and both legs together, as fs_robot_biped_geometry builds them,
+ * each body's own moment and its mass's distance from the whole's centre (parallel axes). */
+void fs_robot_whole_inertia(const fs_robot_def *r, double I[3]);
+
 /* 0 when the principal moments I can be a rigid body's: each positive, each at most the sum of the
  * other two (A + B >= C, within a relative 1e-9 of round-off: a thin plate is on the boundary);
  * else 1 + the first axis (0 x, 1 y, 2 z) that breaks it. fs_robot_load refuses a robot's. */
