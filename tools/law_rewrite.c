@@ -5,7 +5,8 @@
  * them and writes OUT_DIR's trials.csv, summary.csv, summary.md, schema.sql, summary.json and the
  * chart's data, as `footsim campaign` would have (the provenance this version's, as `footsim merge
  * --force` writes it). OUT_DIR/trials.csv must come out byte for byte as RESULTS_DIR's (cmp them):
- * that checks the reading. A campaign with a contact band reads each trial's band_end too. Exit 2 on bad input, 4 when it cannot write. */
+ * that checks the reading; a trials.csv from before footsim measured a soil's print gains those five
+ * columns, empty, as footsim writes them on rigid ground. A campaign with a contact band reads each trial's band_end too. Exit 2 on bad input, 4 when it cannot write. */
 #include "footsim/campaign/fs_campaign.h"
 #include "footsim/experiment/fs_outcome.h"
 
@@ -109,6 +110,13 @@ int main(int argc, char **argv)
             fprintf(stderr, "law-rewrite: %s: no column %s\n", path, names[i]);
             return 2;
         }
+    /* a soil's print: columns since footsim measured one (absent from an older trials.csv, and empty on
+       rigid ground, as footsim writes them) */
+    const char *soil_names[] = {"soil_sinkage_m", "print_depth_m", "print_area_m2", "print_volume_m3", "print_slip_m"};
+    enum { NSOIL = sizeof soil_names / sizeof *soil_names };
+    int soil_col[NSOIL];
+    for (int i = 0; i < NSOIL; i++)
+        soil_col[i] = column(head, nhead, soil_names[i]);
     int band_col = c.band[0] ? column(head, nhead, "band_end") : -1, nends = fs_campaign_nends(&c);
     if (c.band[0] && band_col < 0) {
         fprintf(stderr, "law-rewrite: %s: no column band_end, and the campaign has a band\n", path);
@@ -150,6 +158,10 @@ int main(int argc, char **argv)
                        &r->ankle_drop_m, &r->slip_m};
         for (int i = 0; i < 11; i++)
             *m[i] = field[col[11 + i]][0] ? strtod(field[col[11 + i]], NULL) : NAN;
+        double *soil[NSOIL] = {&r->soil_sinkage_m, &r->print_depth_m, &r->print_area_m2, &r->print_volume_m3,
+                               &r->print_slip_m};
+        for (int i = 0; i < NSOIL; i++)
+            *soil[i] = soil_col[i] >= 0 && field[soil_col[i]][0] ? strtod(field[soil_col[i]], NULL) : NAN;
         r->steps = atol(field[col[22]]);
         snprintf(r->failure, sizeof r->failure, "%s", field[col[23]]);
         if (r->outcome < 0 || r->rule < 0) {
