@@ -211,7 +211,7 @@ static void support_on_level_ground(void)
         }
     for (int seed = 1; seed <= 3; seed++) {
         fs_trial_support s;
-        REQUIRE(fs_trial_support_of(&sc, seed, 1e-3, &s, &err) == FS_OK);
+        REQUIRE(fs_trial_support_of(&sc, seed, 1e-3, 0, &s, &err) == FS_OK);
         CHECK(s.bearing == 7 && s.toes_bearing == 5 && s.toes == 5 && s.heel_bearing && s.over);
         CHECK_NEAR(s.spread_m2, spread, 1e-12);
         CHECK_NEAR(s.edge_m, xe - g->ankle.x, 1e-12);
@@ -250,7 +250,7 @@ static void support_of_a_biped(void)
     }
     double com = g->ankle.x + sc.def.robot.com_forward_m;
     fs_trial_support s;
-    REQUIRE(fs_trial_support_of(&sc, 1, 1e-3, &s, &err) == FS_OK);
+    REQUIRE(fs_trial_support_of(&sc, 1, 1e-3, 0, &s, &err) == FS_OK);
     CHECK(s.bearing == 14 && s.toes_bearing == 10 && s.toes == 10 && s.heel_bearing && s.over);
     CHECK_NEAR(s.edge_m, front - g->ankle.x, 1e-12);
     CHECK_NEAR(s.side_m, fmin(front - com, com - back), 1e-12);
@@ -313,15 +313,54 @@ static void support_of_a_flat_sole(void)
     REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 1, &sc, &err) == FS_OK);
     REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set2, 2, &bump, &err) == FS_OK);
     fs_trial_support s;
-    REQUIRE(fs_trial_support_of(&sc, 1, 1e-3, &s, &err) == FS_OK);
+    REQUIRE(fs_trial_support_of(&sc, 1, 1e-3, 0, &s, &err) == FS_OK);
     const fs_foot_geom *g = &sc.geom;
     CHECK(s.bearing == 77 && s.over);
     CHECK_NEAR(s.edge_m, g->box[0].centre.x + 0.5 * g->box_size.x - g->ankle.x, 1e-12);
     CHECK_NEAR(s.tilt_forward_rad, 0, 1e-12);
-    REQUIRE(fs_trial_support_of(&bump, 1, 1e-3, &s, &err) == FS_OK);
+    REQUIRE(fs_trial_support_of(&bump, 1, 1e-3, 0, &s, &err) == FS_OK);
     printf("flat sole on the bump, seed 1: tilt %.2f deg, %d points bear\n", s.tilt_forward_rad * 180 / M_PI, s.bearing);
     CHECK(fabs(s.tilt_forward_rad) > 2 * M_PI / 180 && fabs(s.tilt_forward_rad) < 15 * M_PI / 180);
     fs_scenario_free(&sc);
+    fs_scenario_free(&bump);
+}
+
+/* A chain folds over what it meets. The drop weight's foot (Table I) on the simply uneven ground's
+ * bump, seed 6: the bump lifts the ground under the outer chains, and settled on it as a rigid body
+ * the foot tilts 5 degrees nose-up with one toe bearing. A chain of the foot's stiffness (its share
+ * of the pitch stiffness, K / 5 about the ankle: about 700 N/m at a shape 6 cm ahead) holds a few
+ * newtons over that rise, less than its share of the weight, so it folds: the foot rests level on
+ * its heels and toes, every toe bearing. Chains a thousand times stiffer hold their share and the
+ * foot rests as the rigid body does (the check fails if the rule ignores the stiffness); on level
+ * ground, where every shape lies within the travel of the rest, nothing folds, to the bit. The
+ * travel is the campaign's for this foot (the contact layer and the arch's drop, 0.529 mm). */
+static void chains_fold_over_a_bump(void)
+{
+    static fs_scenario flat, bump;
+    fs_error err;
+    const char *set[] = {"robot.design=robots/drop_weight.ini", "scenario.terrain=../terrains/simply_uneven.ini"};
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 1, &flat, &err) == FS_OK);
+    REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 2, &bump, &err) == FS_OK);
+    double K, W = (bump.def.robot.mass_kg) * G, travel = 0.529e-3;
+    REQUIRE(fs_pitch_stiffness_model(&bump.geom, W, G, &K, &err) == FS_OK);
+    double chain_k = K / FS_CHAINS;
+    fs_trial_support rigid, folded, stiff, level, level_rigid;
+    REQUIRE(fs_trial_support_of(&bump, 6, travel, 0, &rigid, &err) == FS_OK);
+    REQUIRE(fs_trial_support_of(&bump, 6, travel, chain_k, &folded, &err) == FS_OK);
+    REQUIRE(fs_trial_support_of(&bump, 6, travel, 1000 * chain_k, &stiff, &err) == FS_OK);
+    printf("bump, seed 6: rigid tilt %.3f deg, %d of 5 toes bear; chains of %.3g N m/rad: tilt %.3f deg, %d toes; "
+           "a thousand times stiffer: tilt %.3f deg, %d toes\n",
+           rigid.tilt_forward_rad * 180 / M_PI, rigid.toes_bearing, chain_k, folded.tilt_forward_rad * 180 / M_PI,
+           folded.toes_bearing, stiff.tilt_forward_rad * 180 / M_PI, stiff.toes_bearing);
+    CHECK(rigid.over && folded.over && stiff.over);
+    CHECK(rigid.toes_bearing <= 1 && fabs(rigid.tilt_forward_rad) > 2 * M_PI / 180);
+    CHECK(folded.toes_bearing == 5 && fabs(folded.tilt_forward_rad) < 0.05 * M_PI / 180);
+    CHECK(stiff.toes_bearing == rigid.toes_bearing && stiff.tilt_forward_rad == rigid.tilt_forward_rad);
+    /* level ground: within the travel every shape bears with the others, none folds */
+    REQUIRE(fs_trial_support_of(&flat, 6, travel, 0, &level_rigid, &err) == FS_OK);
+    REQUIRE(fs_trial_support_of(&flat, 6, travel, chain_k, &level, &err) == FS_OK);
+    CHECK(!memcmp(&level, &level_rigid, sizeof level));
+    fs_scenario_free(&flat);
     fs_scenario_free(&bump);
 }
 
@@ -438,7 +477,7 @@ static void contact_closed_forms(void)
     CHECK(fs_pitch_contact_series(K, 0.0086, 2e7, 9.0909e6) == K); /* a stiffer contact than the reference */
 }
 
-FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(support_of_a_biped), TEST(biped_whole_inertia), TEST(contact_closed_forms), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
+FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(chains_fold_over_a_bump), TEST(support_of_a_biped), TEST(biped_whole_inertia), TEST(contact_closed_forms), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
              TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share),
              TEST(toes_engage_as_the_foot_pitches))

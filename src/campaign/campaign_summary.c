@@ -256,8 +256,10 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contac
     foot_fold ff;
     fold_of(sc, s == FS_OK ? K : 0, load, cache, ncache, &ff);
     int n = 0, nv = 0, ok = sup && E && B && M;
+    /* a chain's share of the foot's pitch stiffness, with which a chain folds over what it meets */
+    double chain_k = sc->geom.kind == FS_FOOT_BIOMIMETIC && s == FS_OK ? K / FS_CHAINS : 0;
     for (int k = 0; ok && k < c->seeds; k++) {
-        ok = fs_trial_support_of(sc, c->first_seed + k, ff.travel_m, &sup[n], &err) == FS_OK;
+        ok = fs_trial_support_of(sc, c->first_seed + k, ff.travel_m, chain_k, &sup[n], &err) == FS_OK;
         if (!ok)
             break;
         fs_drop_law dl;

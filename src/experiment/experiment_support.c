@@ -42,7 +42,69 @@ static int hull(point *p, int n, point *h)
     return n > 1 ? k - 1 : n;
 }
 
-fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m, fs_trial_support *out, fs_error *err)
+/* The rest over the points not folded away (skip): the plane z = D + b . ((x, y) - (x0, y0)) on or
+ * above every such point's q and lowest under the centre of mass (the upper hull's facet over it,
+ * found among the triples of points), the centre of mass's ground point moved with the tilt by its
+ * height hc times the slope, so twice more; the facet's corners and their shares of the weight (the
+ * centre of mass's barycentric coordinates). 0 when no facet holds the centre of mass. */
+typedef struct rest {
+    double plane[3]; /* D, b_x, b_y */
+    int facet[3];
+    double share[3];
+    point com;
+} rest;
+
+static int rest_on(const point *at, const double *q, const int *skip, int n, point a, point fwd, double xf, double hc,
+                   point origin, rest *r)
+{
+    r->plane[0] = NAN, r->plane[1] = r->plane[2] = 0;
+    r->com = (point){a.x + xf * fwd.x, a.y + xf * fwd.y};
+    for (int pass = 0; pass < 3; pass++) {
+        double best = INFINITY;
+        int found = 0;
+        for (int i = 0; i < n; i++)
+            for (int j = i + 1; j < n && !skip[i]; j++)
+                for (int k = j + 1; k < n && !skip[j]; k++) {
+                    if (skip[k])
+                        continue;
+                    double ux = at[j].x - at[i].x, uy = at[j].y - at[i].y, vx = at[k].x - at[i].x,
+                           vy = at[k].y - at[i].y, det = ux * vy - uy * vx;
+                    if (fabs(det) < 1e-10)
+                        continue;
+                    /* the centre of mass inside the triangle (barycentric coordinates) */
+                    double wx = r->com.x - at[i].x, wy = r->com.y - at[i].y;
+                    double l1 = (wx * vy - wy * vx) / det, l2 = (ux * wy - uy * wx) / det;
+                    if (l1 < 0 || l2 < 0 || l1 + l2 > 1)
+                        continue;
+                    double du = q[j] - q[i], dv = q[k] - q[i];
+                    double bx = (du * vy - dv * uy) / det, by = (ux * dv - vx * du) / det;
+                    double z0 = q[i] - bx * (at[i].x - origin.x) - by * (at[i].y - origin.y);
+                    int above = 1;
+                    for (int m = 0; m < n && above; m++)
+                        above = skip[m] || z0 + bx * (at[m].x - origin.x) + by * (at[m].y - origin.y) >= q[m] - 1e-12;
+                    double under_com = z0 + bx * (r->com.x - origin.x) + by * (r->com.y - origin.y);
+                    if (above && under_com < best) {
+                        best = under_com, found = 1;
+                        r->plane[0] = z0, r->plane[1] = bx, r->plane[2] = by;
+                        r->facet[0] = i, r->facet[1] = j, r->facet[2] = k;
+                        r->share[0] = 1 - l1 - l2, r->share[1] = l1, r->share[2] = l2;
+                    }
+                }
+        if (!found && pass == 0)
+            return 0; /* a later pass that finds none keeps the last facet */
+        r->com.x = a.x + xf * fwd.x - hc * r->plane[1];
+        r->com.y = a.y + xf * fwd.y - hc * r->plane[2];
+    }
+    return 1;
+}
+
+static double height_on(const rest *r, point origin, point p)
+{
+    return r->plane[0] + r->plane[1] * (p.x - origin.x) + r->plane[2] * (p.y - origin.y);
+}
+
+fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m, double chain_k_N_m_per_rad,
+                              fs_trial_support *out, fs_error *err)
 {
     memset(out, 0, sizeof *out);
     fs_scenario *sc;
@@ -57,7 +119,7 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
            frame, the terrain's highest under it, and whether it is a toe or the heel */
         point at[MAX_POINTS];
         double low[MAX_POINTS], under[MAX_POINTS];
-        int toe[MAX_POINTS], heel[MAX_POINTS], n = 0;
+        int toe[MAX_POINTS], heel[MAX_POINTS], chained[MAX_POINTS], n = 0;
         for (int i = 0; i < g->nspheres; i++, n++) {
             double r = g->sphere[i].radius_m, lx = g->sphere[i].centre.x, ly = g->sphere[i].centre.y;
             at[n].x = x0 + c * lx - sn * ly;
@@ -71,9 +133,11 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
             int body = g->sphere[i].body;
             body -= g->nfeet > 1 && body >= g->foot[1].first_body ? g->foot[1].first_body : 0;
             heel[n] = body == FS_BODY_HEEL;
-            toe[n] = 0;
-            for (int ch = 0; g->kind == FS_FOOT_BIOMIMETIC && ch < FS_CHAINS; ch++)
+            toe[n] = chained[n] = 0;
+            for (int ch = 0; g->kind == FS_FOOT_BIOMIMETIC && ch < FS_CHAINS; ch++) {
                 toe[n] |= body == g->chain[ch].phalanx;
+                chained[n] |= body == g->chain[ch].phalanx || body == g->chain[ch].metatarsal;
+            }
             out->toes += toe[n];
         }
         for (int b = 0; b < g->nboxes; b++)
@@ -96,47 +160,51 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
                             under[n] = z, at[n] = w;
                     }
                 low[n] = g->box[b].centre.z - 0.5 * g->box_size.z;
-                toe[n] = heel[n] = 0;
+                toe[n] = heel[n] = chained[n] = 0;
             }
-        /* the rest: the foot settles (small tilts) on the plane z = D + b (x, y) - (x0, y0) that lies
-           on or above every shape's point (its terrain over its lowest point) and is lowest under the
-           centre of mass: the upper hull's facet over it, found among the triples of points; the
-           centre of mass's ground point moves with the tilt by h times the slope, so twice more */
+        /* the rest: the foot settles (small tilts) on the plane over the shapes' points lowest under
+           the centre of mass (rest_on). A chain's shape at a corner of that rest (a toe, or a midfoot
+           sphere on a metatarsal) folds away when its chain cannot hold its share of the weight over
+           its rise above the rest the others make: its chain's pitch stiffness chain_k about the
+           ankle, a ahead of it, is k = chain_k / a^2 there, and it folds when the rise is more than
+           the travel (within it the shape bears with the others) and k times the rise is below the
+           share (the foot then rests on the others, the folded shape still bearing);
+           one shape at a time, the most loaded first, while the others still hold the centre of mass */
         double q[MAX_POINTS], xf = sc->def.robot.com_forward_m, hc = sc->def.robot.com_height_m;
         for (int i = 0; i < n; i++)
             q[i] = under[i] - low[i];
         point a = {x0 + c * ankle.x - sn * ankle.y, y0 + sn * ankle.x + c * ankle.y};
-        point fwd = {c, sn}, com = {a.x + xf * fwd.x, a.y + xf * fwd.y};
-        double plane[3] = {NAN, 0, 0}; /* value at (x0, y0), slope along x and y */
-        for (int pass = 0; pass < 3; pass++) {
-            double best = INFINITY;
-            for (int i = 0; i < n; i++)
-                for (int j = i + 1; j < n; j++)
-                    for (int k = j + 1; k < n; k++) {
-                        double ux = at[j].x - at[i].x, uy = at[j].y - at[i].y, vx = at[k].x - at[i].x,
-                               vy = at[k].y - at[i].y, det = ux * vy - uy * vx;
-                        if (fabs(det) < 1e-10)
-                            continue;
-                        /* the centre of mass inside the triangle (barycentric coordinates) */
-                        double wx = com.x - at[i].x, wy = com.y - at[i].y;
-                        double l1 = (wx * vy - wy * vx) / det, l2 = (ux * wy - uy * wx) / det;
-                        if (l1 < 0 || l2 < 0 || l1 + l2 > 1)
-                            continue;
-                        double du = q[j] - q[i], dv = q[k] - q[i];
-                        double bx = (du * vy - dv * uy) / det, by = (ux * dv - vx * du) / det;
-                        double z0 = q[i] - bx * (at[i].x - x0) - by * (at[i].y - y0);
-                        int above = 1;
-                        for (int m = 0; m < n && above; m++)
-                            above = z0 + bx * (at[m].x - x0) + by * (at[m].y - y0) >= q[m] - 1e-12;
-                        double under_com = z0 + bx * (com.x - x0) + by * (com.y - y0);
-                        if (above && under_com < best)
-                            best = under_com, plane[0] = z0, plane[1] = bx, plane[2] = by;
-                    }
-            if (isnan(plane[0]))
+        point fwd = {c, sn}, origin = {x0, y0};
+        /* everything the ground carries (a biped's geometry counts its body already) */
+        double W = (g->nfeet > 1 ? g->total_mass_kg : sc->def.robot.mass_kg + g->total_mass_kg) * sc->def.gravity_m_per_s2;
+        int skip[MAX_POINTS] = {0};
+        rest rs, without;
+        int held = rest_on(at, q, skip, n, a, fwd, xf, hc, origin, &rs);
+        for (int round = 0; held && chain_k_N_m_per_rad > 0 && round < n; round++) {
+            int fold = -1;
+            double most = 0;
+            for (int v = 0; v < 3; v++) {
+                int p = rs.facet[v];
+                double ahead = c * (at[p].x - a.x) + sn * (at[p].y - a.y), R = W * rs.share[v];
+                if (!chained[p] || ahead <= 0 || R <= most)
+                    continue;
+                skip[p] = 1;
+                if (rest_on(at, q, skip, n, a, fwd, xf, hc, origin, &without)) {
+                    double rise = q[p] - height_on(&without, origin, at[p]);
+                    if (rise > travel_m && chain_k_N_m_per_rad / (ahead * ahead) * rise < R)
+                        fold = p, most = R;
+                }
+                skip[p] = 0;
+            }
+            if (fold < 0)
                 break;
-            com.x = a.x + xf * fwd.x - hc * plane[1];
-            com.y = a.y + xf * fwd.y - hc * plane[2];
+            skip[fold] = 1;
+            held = rest_on(at, q, skip, n, a, fwd, xf, hc, origin, &rs);
         }
+        double plane[3] = {NAN, 0, 0}; /* value at (x0, y0), slope along x and y */
+        point com = rs.com;
+        if (held)
+            plane[0] = rs.plane[0], plane[1] = rs.plane[1], plane[2] = rs.plane[2];
         out->over = !isnan(plane[0]);
         /* the foot's tilt: its lean towards the centre of mass's side, and sideways */
         out->tilt_forward_rad = -atan(plane[1] * fwd.x + plane[2] * fwd.y);
@@ -189,8 +257,8 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
         out->over = out->over && out->side_m > 0; /* moved by the tilt past the bearing points: it tips off */
         double first = -INFINITY;
         int ifirst = 0;
-        for (int i = 0; i < n; i++)
-            if (q[i] > first)
+        for (int i = 0; i < n; i++) /* a shape whose chain folded away touches first, and folds: no rock about it */
+            if (!skip[i] && q[i] > first)
                 first = q[i], ifirst = i;
         /* the rocking's geometry in the foot's frame, from the centre of mass's ground point */
         out->first_x_m = c * (at[ifirst].x - com.x) + sn * (at[ifirst].y - com.y);

@@ -82,7 +82,12 @@ void fs_trial_placed_free(fs_scenario *sc);
  * its sides. The centre of mass is
  * not over the support (over 0) when it stands beyond every facet (the foot tips off) or the bearing
  * points span no area. A biped's two feet settle as one rigid support (both feet's shapes, the
- * ankle the midpoint of its two ankles), its toes and heels counted over both. */
+ * ankle the midpoint of its two ankles), its toes and heels counted over both.
+ * A biomimetic foot's chains give: a toe or midfoot sphere at a corner of the rest whose rise above
+ * the rest the others make is more than travel_m folds away when its chain, of pitch stiffness
+ * chain_k_N_m_per_rad about the ankle (k = chain_k / a^2 at a shape a ahead of it), holds less than
+ * the share of the weight (robot and foot) that corner carries over that rise; the foot then rests on
+ * the others, the folded shape bearing. 0: rigid chains (a flat sole has none). */
 enum { FS_SUPPORT_MAX_CORNERS = 192 }; /* two feet's soles' 11 x 7 points each and all their spheres fit */
 typedef struct fs_trial_support {
     int bearing;               /* contact points that bear (a sole's grid points count one each) */
@@ -110,7 +115,8 @@ typedef struct fs_trial_support {
        bears), and how far ahead of the ankle along the foot it stands, m */
     double toe_gap_m[FS_MAX_FEET * FS_CHAINS], toe_ahead_m[FS_MAX_FEET * FS_CHAINS];
 } fs_trial_support;
-fs_status fs_trial_support_of(const fs_scenario *sc, int seed, double travel_m, fs_trial_support *out, fs_error *err);
+fs_status fs_trial_support_of(const fs_scenario *sc, int seed, double travel_m, double chain_k_N_m_per_rad,
+                              fs_trial_support *out, fs_error *err);
 
 /* Places a loaded trial scenario for seed: draws the pose (draw may be NULL), puts it and the seed
  * into sc's definitions (the start pose; the terrain's seed, so every trial lands on new ground)
