@@ -29,10 +29,15 @@ CREATE TABLE trials (
   "slip_m" REAL,
   "steps" INTEGER,
   "rest_ankle_drop_m" REAL,
+  "soil_sinkage_m" REAL,
+  "print_depth_m" REAL,
+  "print_area_m2" REAL,
+  "print_volume_m3" REAL,
+  "print_slip_m" REAL,
   "failure" TEXT
 );
 .import --csv --skip 1 trials.csv trials
-UPDATE trials SET "foot" = NULLIF("foot", ''), "terrain" = NULLIF("terrain", ''), "robot" = NULLIF("robot", ''), "rough.rms_m" = NULLIF("rough.rms_m", ''), "seed" = NULLIF("seed", ''), "x_m" = NULLIF("x_m", ''), "y_m" = NULLIF("y_m", ''), "yaw_deg" = NULLIF("yaw_deg", ''), "pitch_deg" = NULLIF("pitch_deg", ''), "roll_deg" = NULLIF("roll_deg", ''), "outcome" = NULLIF("outcome", ''), "rule" = NULLIF("rule", ''), "end_time_s" = NULLIF("end_time_s", ''), "touchdown_s" = NULLIF("touchdown_s", ''), "peak_tilt_deg" = NULLIF("peak_tilt_deg", ''), "final_tilt_deg" = NULLIF("final_tilt_deg", ''), "peak_force_N" = NULLIF("peak_force_N", ''), "impact_impulse_Ns" = NULLIF("impact_impulse_Ns", ''), "settle_time_s" = NULLIF("settle_time_s", ''), "mean_contacts" = NULLIF("mean_contacts", ''), "final_contacts" = NULLIF("final_contacts", ''), "ankle_drop_m" = NULLIF("ankle_drop_m", ''), "slip_m" = NULLIF("slip_m", ''), "steps" = NULLIF("steps", ''), "rest_ankle_drop_m" = NULLIF("rest_ankle_drop_m", ''), "failure" = NULLIF("failure", '');
+UPDATE trials SET "foot" = NULLIF("foot", ''), "terrain" = NULLIF("terrain", ''), "robot" = NULLIF("robot", ''), "rough.rms_m" = NULLIF("rough.rms_m", ''), "seed" = NULLIF("seed", ''), "x_m" = NULLIF("x_m", ''), "y_m" = NULLIF("y_m", ''), "yaw_deg" = NULLIF("yaw_deg", ''), "pitch_deg" = NULLIF("pitch_deg", ''), "roll_deg" = NULLIF("roll_deg", ''), "outcome" = NULLIF("outcome", ''), "rule" = NULLIF("rule", ''), "end_time_s" = NULLIF("end_time_s", ''), "touchdown_s" = NULLIF("touchdown_s", ''), "peak_tilt_deg" = NULLIF("peak_tilt_deg", ''), "final_tilt_deg" = NULLIF("final_tilt_deg", ''), "peak_force_N" = NULLIF("peak_force_N", ''), "impact_impulse_Ns" = NULLIF("impact_impulse_Ns", ''), "settle_time_s" = NULLIF("settle_time_s", ''), "mean_contacts" = NULLIF("mean_contacts", ''), "final_contacts" = NULLIF("final_contacts", ''), "ankle_drop_m" = NULLIF("ankle_drop_m", ''), "slip_m" = NULLIF("slip_m", ''), "steps" = NULLIF("steps", ''), "rest_ankle_drop_m" = NULLIF("rest_ankle_drop_m", ''), "soil_sinkage_m" = NULLIF("soil_sinkage_m", ''), "print_depth_m" = NULLIF("print_depth_m", ''), "print_area_m2" = NULLIF("print_area_m2", ''), "print_volume_m3" = NULLIF("print_volume_m3", ''), "print_slip_m" = NULLIF("print_slip_m", ''), "failure" = NULLIF("failure", '');
 DROP TABLE IF EXISTS summary;
 CREATE TABLE summary (
   "foot" TEXT NOT NULL,
@@ -61,6 +66,11 @@ CREATE TABLE summary (
   "median_slip_m" REAL,
   "median_steps" REAL,
   "median_rest_ankle_drop_m" REAL,
+  "median_soil_sinkage_m" REAL,
+  "median_print_depth_m" REAL,
+  "median_print_area_m2" REAL,
+  "median_print_volume_m3" REAL,
+  "median_print_slip_m" REAL,
   "law_prediction" TEXT,
   "law_K_N_m_per_rad" REAL,
   "law_critical_com_height_m" REAL,
@@ -73,10 +83,10 @@ CREATE TABLE summary (
   "drop_law_critical_com_height_m" REAL
 );
 .import --csv --skip 1 summary.csv summary
-UPDATE summary SET "foot" = NULLIF("foot", ''), "terrain" = NULLIF("terrain", ''), "robot" = NULLIF("robot", ''), "rough.rms_m" = NULLIF("rough.rms_m", ''), "trials" = NULLIF("trials", ''), "landed" = NULLIF("landed", ''), "fell" = NULLIF("fell", ''), "undecided" = NULLIF("undecided", ''), "failed_numerics" = NULLIF("failed_numerics", ''), "hung" = NULLIF("hung", ''), "success_rate" = NULLIF("success_rate", ''), "ci_low" = NULLIF("ci_low", ''), "ci_high" = NULLIF("ci_high", ''), "median_end_time_s" = NULLIF("median_end_time_s", ''), "median_touchdown_s" = NULLIF("median_touchdown_s", ''), "median_peak_tilt_deg" = NULLIF("median_peak_tilt_deg", ''), "median_final_tilt_deg" = NULLIF("median_final_tilt_deg", ''), "median_peak_force_N" = NULLIF("median_peak_force_N", ''), "median_impact_impulse_Ns" = NULLIF("median_impact_impulse_Ns", ''), "median_settle_time_s" = NULLIF("median_settle_time_s", ''), "median_mean_contacts" = NULLIF("median_mean_contacts", ''), "median_final_contacts" = NULLIF("median_final_contacts", ''), "median_ankle_drop_m" = NULLIF("median_ankle_drop_m", ''), "median_slip_m" = NULLIF("median_slip_m", ''), "median_steps" = NULLIF("median_steps", ''), "median_rest_ankle_drop_m" = NULLIF("median_rest_ankle_drop_m", ''), "law_prediction" = NULLIF("law_prediction", ''), "law_K_N_m_per_rad" = NULLIF("law_K_N_m_per_rad", ''), "law_critical_com_height_m" = NULLIF("law_critical_com_height_m", ''), "drop_law_prediction" = NULLIF("drop_law_prediction", ''), "drop_law_seeds" = NULLIF("drop_law_seeds", ''), "drop_law_stands" = NULLIF("drop_law_stands", ''), "drop_law_energy_J" = NULLIF("drop_law_energy_J", ''), "drop_law_barrier_J" = NULLIF("drop_law_barrier_J", ''), "drop_law_saturation_N_m" = NULLIF("drop_law_saturation_N_m", ''), "drop_law_critical_com_height_m" = NULLIF("drop_law_critical_com_height_m", '');
+UPDATE summary SET "foot" = NULLIF("foot", ''), "terrain" = NULLIF("terrain", ''), "robot" = NULLIF("robot", ''), "rough.rms_m" = NULLIF("rough.rms_m", ''), "trials" = NULLIF("trials", ''), "landed" = NULLIF("landed", ''), "fell" = NULLIF("fell", ''), "undecided" = NULLIF("undecided", ''), "failed_numerics" = NULLIF("failed_numerics", ''), "hung" = NULLIF("hung", ''), "success_rate" = NULLIF("success_rate", ''), "ci_low" = NULLIF("ci_low", ''), "ci_high" = NULLIF("ci_high", ''), "median_end_time_s" = NULLIF("median_end_time_s", ''), "median_touchdown_s" = NULLIF("median_touchdown_s", ''), "median_peak_tilt_deg" = NULLIF("median_peak_tilt_deg", ''), "median_final_tilt_deg" = NULLIF("median_final_tilt_deg", ''), "median_peak_force_N" = NULLIF("median_peak_force_N", ''), "median_impact_impulse_Ns" = NULLIF("median_impact_impulse_Ns", ''), "median_settle_time_s" = NULLIF("median_settle_time_s", ''), "median_mean_contacts" = NULLIF("median_mean_contacts", ''), "median_final_contacts" = NULLIF("median_final_contacts", ''), "median_ankle_drop_m" = NULLIF("median_ankle_drop_m", ''), "median_slip_m" = NULLIF("median_slip_m", ''), "median_steps" = NULLIF("median_steps", ''), "median_rest_ankle_drop_m" = NULLIF("median_rest_ankle_drop_m", ''), "median_soil_sinkage_m" = NULLIF("median_soil_sinkage_m", ''), "median_print_depth_m" = NULLIF("median_print_depth_m", ''), "median_print_area_m2" = NULLIF("median_print_area_m2", ''), "median_print_volume_m3" = NULLIF("median_print_volume_m3", ''), "median_print_slip_m" = NULLIF("median_print_slip_m", ''), "law_prediction" = NULLIF("law_prediction", ''), "law_K_N_m_per_rad" = NULLIF("law_K_N_m_per_rad", ''), "law_critical_com_height_m" = NULLIF("law_critical_com_height_m", ''), "drop_law_prediction" = NULLIF("drop_law_prediction", ''), "drop_law_seeds" = NULLIF("drop_law_seeds", ''), "drop_law_stands" = NULLIF("drop_law_stands", ''), "drop_law_energy_J" = NULLIF("drop_law_energy_J", ''), "drop_law_barrier_J" = NULLIF("drop_law_barrier_J", ''), "drop_law_saturation_N_m" = NULLIF("drop_law_saturation_N_m", ''), "drop_law_critical_com_height_m" = NULLIF("drop_law_critical_com_height_m", '');
 DROP TABLE IF EXISTS provenance;
 CREATE TABLE provenance (footsim TEXT NOT NULL, seeds INTEGER NOT NULL, first_seed INTEGER NOT NULL, settings TEXT NOT NULL);
-INSERT INTO provenance VALUES ('1.0.0 (git 356da12)', 5, 1, 'step_s 0.0001, stepper step, iterations 50, springs implicit, contact_layer_m 0.0005, window 3 s');
+INSERT INTO provenance VALUES ('1.0.0 (git d282914)', 5, 1, 'step_s 0.0001, stepper step, iterations 50, springs implicit, contact_layer_m 0.0005, window 3 s');
 DROP TABLE IF EXISTS provenance_inputs;
 CREATE TABLE provenance_inputs (path TEXT NOT NULL, hash TEXT NOT NULL);
 INSERT INTO provenance_inputs VALUES ('roughness.ini', 'd349e90c43fb34b5');
