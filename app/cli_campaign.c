@@ -85,6 +85,8 @@ static void print_rows(const fs_campaign *c, const fs_campaign_row *rows)
         printf("  %-12s on %-18s under %-14s landed %3d of %3d (%.2f, 95 %% CI [%.2f, %.2f])", c->foot[r->foot].name,
                c->terrain[r->terrain].name, c->robot[r->robot].name, r->landed, r->trials, r->success_rate, r->ci_low, r->ci_high);
         printf(", fell %3d, undecided %d; law: %s", r->fell, r->undecided, fs_law_name(r->law));
+        if (r->drop_law != FS_LAW_NONE)
+            printf(", drop law: %s (stands in %d of %d seeds)", fs_law_name(r->drop_law), r->drop_stands, r->drop_seeds);
         if (r->failed_numerics)
             printf(", failed_numerics %d", r->failed_numerics);
         if (r->hung - r->killed)

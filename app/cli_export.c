@@ -85,7 +85,9 @@ static int export_mjcf(const cli_args *a, export_work *w)
         return cli_report(err.status, err.message);
     }
     s = fs_mjcf_write(sc, a->scenario != NULL, out, &err);
-    int hfield = a->scenario && fs_terrain_is_heightfield(&sc->terrain);
+    int hfield = a->scenario && fs_terrain_is_heightfield(&sc->terrain), cables = 0;
+    for (int k = 0; k < 3; k++)
+        cables += sc->design.tension_only[k];
     fs_scenario_free(sc);
     if (s != FS_OK)
         return cli_report(err.status, err.message);
@@ -93,6 +95,11 @@ static int export_mjcf(const cli_args *a, export_work *w)
     fs_mjcf_hfield_path(out, hpath, sizeof hpath);
     printf("wrote %s%s%s (MuJoCo MJCF; docs/export.md says what maps one to one)\n", out, hfield ? " and " : "",
            hfield ? hpath : "");
+    if (cables) /* a cable maps in kind, not in stiffness (docs/export.md, Spring laws) */
+        printf("note: %d spring kind%s a cable: exported as a one-sided tendon limit at the rest length, whose "
+               "stiffness MuJoCo scales by the mass its constraint moves, not k (2.9 times k x in "
+               "test_export_mujoco); the linear springs map exactly\n",
+               cables, cables > 1 ? "s are" : " is");
     return 0;
 }
 

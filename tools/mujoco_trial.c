@@ -166,11 +166,12 @@ static void adjust(mjModel *m, const options *o)
         m->opt.noslip_iterations = o->noslip;
 }
 
-/* The placed scenario's export, loaded by MuJoCo (NULL when it cannot be). */
-static mjModel *load(const fs_scenario *sc, const char *keep)
+/* The placed scenario's export, loaded by MuJoCo (NULL when it cannot be; status the export's). */
+static mjModel *load(const fs_scenario *sc, const char *keep, fs_status *status)
 {
     char dir[] = "/tmp/mujoco_trial_XXXXXX", path[64], hpath[96], msg[1000] = "";
     const char *file = keep;
+    *status = FS_IO;
     if (!keep) {
         if (!mkdtemp(dir)) {
             perror("mujoco-trial: a temporary folder");
@@ -181,7 +182,8 @@ static mjModel *load(const fs_scenario *sc, const char *keep)
     }
     fs_error err;
     mjModel *m = NULL;
-    if (fs_mjcf_write(sc, 1, file, &err) == FS_OK)
+    *status = fs_mjcf_write(sc, 1, file, &err);
+    if (*status == FS_OK)
         m = mj_loadXML(file, NULL, msg, sizeof msg);
     else
         fprintf(stderr, "mujoco-trial: export: %s\n", err.message);
@@ -278,11 +280,12 @@ static int run(const options *o, const fs_scenario *base, int seed, int *counts)
     }
     fs_outcome_rules rules;
     fs_trial_rules(&sc, sim, &rules);
-    mjModel *m = load(&sc, o->xml);
-    if (!m) {
+    fs_status exported;
+    mjModel *m = load(&sc, o->xml, &exported);
+    if (!m) { /* a design the export refuses is bad input, as footsim export says */
         fs_sim_free(sim);
         fs_scenario_free(&sc);
-        return 3;
+        return exported == FS_BAD_INPUT ? 2 : 3;
     }
     adjust(m, o);
     mjData *d = mj_makeData(m);

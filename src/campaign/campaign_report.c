@@ -278,6 +278,17 @@ static void md_band(FILE *f, const out_ctx *x, int intro)
         md_law_agreement(f, x, e);
 }
 
+/* The drop law's verdict: "drop: stands, stands in N of S seeds (E ... J, B ... J)", the energies the
+ * medians over the seeds whose support holds the centre of mass (none: said so, no NaN printed). */
+static void md_drop(FILE *f, int law, int stands, int seeds, double E, double B)
+{
+    fprintf(f, "drop: %s, stands in %d of %d seeds", fs_law_name(law), stands, seeds);
+    if (isnan(E) || isnan(B))
+        fputs(" (the centre of mass over no seed's support)", f);
+    else
+        fprintf(f, " (E %.3g J, B %.3g J)", E, B);
+}
+
 /* With a band: the laws at each end (each with its contact: fs_pitch_contact_series, the rebound
  * gain of its restitution e), after the cell's, which is the law's worse end's. */
 static void md_law_ends(FILE *f, const fs_campaign *c, const fs_campaign_row *r)
@@ -289,9 +300,11 @@ static void md_law_ends(FILE *f, const fs_campaign *c, const fs_campaign_row *r)
         fprintf(f, "%s %s %s", e ? "," : "", c->end[e].name, fs_law_name(r->end_law[e]));
         if (isfinite(r->end_law_K[e]))
             fprintf(f, " (K %.3g, e %.2f)", r->end_law_K[e], r->end_restitution[e]);
-        if (r->end_drop_law[e] != FS_LAW_NONE)
-            fprintf(f, ", drop %s (stands in %d of %d seeds; E %.3g J, B %.3g J)", fs_law_name(r->end_drop_law[e]),
-                    r->end_drop_stands[e], r->drop_seeds, r->end_drop_energy_J[e], r->end_drop_barrier_J[e]);
+        if (r->end_drop_law[e] != FS_LAW_NONE) {
+            fputs(", ", f);
+            md_drop(f, r->end_drop_law[e], r->end_drop_stands[e], r->drop_seeds, r->end_drop_energy_J[e],
+                    r->end_drop_barrier_J[e]);
+        }
     }
 }
 
@@ -330,13 +343,14 @@ static int fill_summary_md(FILE *f, const out_ctx *x)
         for (int e = 0; c->band[0] && e < fs_campaign_nends(c); e++)
             fprintf(f, "%s%s %d/%d%s", e ? ", " : " ", c->end[e].name, r->end_landed[e], r->end_trials[e],
                     e + 1 == fs_campaign_nends(c) ? " |" : "");
-        if (isfinite(r->law_K) && r->drop_law != FS_LAW_NONE)
-            fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m); drop: %s in %d of %d seeds (E %.3g J, B %.3g J)",
-                    fs_law_name(r->law), r->law_K, r->law_critical_m, fs_law_name(r->drop_law), r->drop_stands,
-                    r->drop_seeds, r->drop_energy_J, r->drop_barrier_J);
-        else if (isfinite(r->law_K))
+        if (isfinite(r->law_K)) {
             fprintf(f, " %s (K %.3g N m/rad, critical height %.3f m)", fs_law_name(r->law), r->law_K,
                     r->law_critical_m);
+            if (r->drop_law != FS_LAW_NONE) {
+                fputs("; ", f);
+                md_drop(f, r->drop_law, r->drop_stands, r->drop_seeds, r->drop_energy_J, r->drop_barrier_J);
+            }
+        }
         else
             fprintf(f, " %s", r->law == FS_LAW_STANDS ? "stands (pitch held)" : r->law == FS_LAW_NONE ? "–" : fs_law_name(r->law));
         md_law_ends(f, c, r);
