@@ -96,9 +96,9 @@ static int export_mjcf(const cli_args *a, export_work *w)
     printf("wrote %s%s%s (MuJoCo MJCF; docs/export.md says what maps one to one)\n", out, hfield ? " and " : "",
            hfield ? hpath : "");
     if (cables) /* a cable maps in kind, not in stiffness (docs/export.md, Spring laws) */
-        printf("note: %d spring kind%s a cable: exported as a one-sided tendon limit at the rest length, whose "
-               "stiffness MuJoCo scales by the mass its constraint moves, not k (2.9 times k x in "
-               "test_export_mujoco); the linear springs map exactly\n",
+        printf("note: %d spring kind%s a cable, exported as a one-sided tendon limit at its rest length; MuJoCo "
+               "sets a limit's stiffness per unit of the mass its constraint moves, so its force is not k x (2.9 "
+               "times k x in test_export_mujoco); the linear springs map exactly\n",
                cables, cables > 1 ? "s are" : " is");
     return 0;
 }

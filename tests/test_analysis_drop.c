@@ -333,7 +333,7 @@ static void support_of_a_flat_sole(void)
  * its heels and toes, every toe bearing. Chains a thousand times stiffer hold their share and the
  * foot rests as the rigid body does (the check fails if the rule ignores the stiffness); on level
  * ground, where every shape lies within the travel of the rest, nothing folds, to the bit. The
- * travel is the campaign's for this foot (the contact layer and the arch's drop, 0.529 mm). */
+ * travel is the campaign's for this foot (the contact layer and the arch's drop, about 0.53 mm). */
 static void chains_fold_over_a_bump(void)
 {
     static fs_scenario flat, bump;
@@ -341,8 +341,13 @@ static void chains_fold_over_a_bump(void)
     const char *set[] = {"robot.design=robots/drop_weight.ini", "scenario.terrain=../terrains/simply_uneven.ini"};
     REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 1, &flat, &err) == FS_OK);
     REQUIRE(fs_scenario_load("scenarios/landing_trial.ini", set, 2, &bump, &err) == FS_OK);
-    double K, W = (bump.def.robot.mass_kg) * G, travel = 0.529e-3;
+    double K, W = (bump.def.robot.mass_kg) * G;
     REQUIRE(fs_pitch_stiffness_model(&bump.geom, W, G, &K, &err) == FS_OK);
+    /* the travel as a campaign takes it: the contact layer and the arch's ankle drop under the weight */
+    fs_planar_load pl = {.load_N = W, .gravity_m_per_s2 = G};
+    fs_planar_result res;
+    REQUIRE(fs_planar_equilibrium(&bump.design, &bump.geom, 0, &pl, &res, &err) == FS_OK && res.converged);
+    double travel = bump.def.contact_layer_m + fmax(0, res.ankle_drop_m);
     double chain_k = K / FS_CHAINS;
     fs_trial_support rigid, folded, stiff, level, level_rigid;
     REQUIRE(fs_trial_support_of(&bump, 6, travel, 0, &rigid, &err) == FS_OK);
@@ -362,6 +367,24 @@ static void chains_fold_over_a_bump(void)
     CHECK(!memcmp(&level, &level_rigid, sizeof level));
     fs_scenario_free(&flat);
     fs_scenario_free(&bump);
+}
+
+/* A biped's two feet are ten chains under its whole weight: with each foot's chains K / 5 (the foot's
+ * K, each foot under half the weight), the left foot's the right's again, the moment balance
+ * sum (K / 5) (theta - a_i) = W (x + h theta) over ten chains is twice the one over five under W / 2,
+ * so the lean and the share are one foot's under half the weight (the check fails if the ten are
+ * cut to five, or taken as K / 10 each). */
+static void two_feet_engage_as_one_under_half(void)
+{
+    const double K = 300, W = 255, x = 0.03, h = 0.02;
+    const double one[5] = {0, 0.004, 0.011, 0.03, INFINITY};
+    double ten[10];
+    for (int i = 0; i < 10; i++)
+        ten[i] = one[i % 5];
+    double a = fs_pitch_engaged_share(one, 5, K, W / 2, x, h), b = fs_pitch_engaged_share(ten, 10, 2 * K, W, x, h);
+    printf("engaged, two feet: %.6f, one under half: %.6f\n", b, a);
+    CHECK(isfinite(a) && a > 0.2 && a < 1);
+    CHECK_NEAR(b, a, 1e-12);
 }
 
 /* The rocking's plastic impact (fs_rocking_kept_J) against Housner's rectangular block, worked out
@@ -477,7 +500,7 @@ static void contact_closed_forms(void)
     CHECK(fs_pitch_contact_series(K, 0.0086, 2e7, 9.0909e6) == K); /* a stiffer contact than the reference */
 }
 
-FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(chains_fold_over_a_bump), TEST(support_of_a_biped), TEST(biped_whole_inertia), TEST(contact_closed_forms), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
+FS_TEST_MAIN(TEST(support_of_a_flat_sole), TEST(two_feet_engage_as_one_under_half), TEST(chains_fold_over_a_bump), TEST(support_of_a_biped), TEST(biped_whole_inertia), TEST(contact_closed_forms), TEST(no_saturation_is_the_static_law), TEST(rigid_block_is_the_energy_criterion),
              TEST(barrier_is_the_work_to_the_largest_lean), TEST(fold_moment_of_the_arch),
              TEST(support_on_level_ground), TEST(rocking_block_keeps_housners_share),
              TEST(toes_engage_as_the_foot_pitches))

@@ -25,7 +25,8 @@
  * (last seed's) export at FILE.
  *
  * Prints one line per seed (key=value: outcome, rule, end time, peak and final lean, the lean and
- * contacts at 0.5 and 1 s, touchdown) and a count. Exit 2 on bad input, 3 when MuJoCo refuses. */
+ * contacts at 0.5 and 1 s, touchdown) and a count. Exit 2 on bad input (a design the export
+ * refuses too), 3 when MuJoCo refuses, 4 when the export cannot be written. */
 #include "footsim/experiment/fs_outcome.h"
 #include "footsim/experiment/fs_trial.h"
 #include "footsim/export/fs_export.h"
@@ -262,7 +263,7 @@ static void trace_contacts(const mjModel *m, const mjData *d)
     }
 }
 
-/* One seed's trial: 0, or 2 / 3 when it cannot be run. */
+/* One seed's trial: 0, or 2 / 3 / 4 when it cannot be run. */
 static int run(const options *o, const fs_scenario *base, int seed, int *counts)
 {
     static fs_scenario sc;
@@ -285,7 +286,7 @@ static int run(const options *o, const fs_scenario *base, int seed, int *counts)
     if (!m) { /* a design the export refuses is bad input, as footsim export says */
         fs_sim_free(sim);
         fs_scenario_free(&sc);
-        return exported == FS_BAD_INPUT ? 2 : 3;
+        return exported == FS_OK ? 3 : (int)exported; /* 2 bad input, 4 cannot write; MuJoCo's refusal 3 */
     }
     adjust(m, o);
     mjData *d = mj_makeData(m);

@@ -90,9 +90,9 @@ double fs_rocking_kept_J(double mass_kg, const double I_G[3], fs_vec3 G, fs_vec3
 
 double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double W, double x, double h)
 {
-    if (n <= 0 || n > FS_CHAINS)
+    if (n <= 0 || n > FS_MAX_FEET * FS_CHAINS)
         return NAN;
-    double at[FS_CHAINS];
+    double at[FS_MAX_FEET * FS_CHAINS];
     for (int i = 0; i < n; i++)
         at[i] = engage_rad[i];
     for (int i = 1; i < n; i++) /* in the order they engage */

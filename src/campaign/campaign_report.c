@@ -279,12 +279,13 @@ static void md_band(FILE *f, const out_ctx *x, int intro)
 }
 
 /* The drop law's verdict: "drop: stands, stands in N of S seeds (E ... J, B ... J)", the energies the
- * medians over the seeds whose support holds the centre of mass (none: said so, no NaN printed). */
+ * medians over the seeds whose support holds the centre of mass (none: said so, no NaN printed; a
+ * robot on a slide stands without them: pitch held). */
 static void md_drop(FILE *f, int law, int stands, int seeds, double E, double B)
 {
     fprintf(f, "drop: %s, stands in %d of %d seeds", fs_law_name(law), stands, seeds);
-    if (isnan(E) || isnan(B))
-        fputs(" (the centre of mass over no seed's support)", f);
+    if (isnan(E) || isnan(B)) /* a verdict that stands without energies: a robot on a slide */
+        fputs(law == FS_LAW_STANDS ? " (pitch held)" : " (the centre of mass over no seed's support)", f);
     else
         fprintf(f, " (E %.3g J, B %.3g J)", E, B);
 }

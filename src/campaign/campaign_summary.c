@@ -114,7 +114,10 @@ static law_contact contact_of(const fs_scenario *sc, double k_ref)
     lc.on = 1;
     lc.k_N_per_m = sc->geom.kind == FS_FOOT_BIOMIMETIC ? contact_k(sc) : k_ref;
     lc.k_ref_N_per_m = k_ref;
-    double m = sc->geom.nspheres > 0 ? (sc->def.robot.mass_kg + sc->geom.total_mass_kg) / sc->geom.nspheres : 0;
+    fs_foot_geom two; /* a biped's two feet, its body counted in its total already */
+    const fs_foot_geom *g = fs_scenario_geometry(sc, &two);
+    double carried = g->nfeet > 1 ? g->total_mass_kg : sc->def.robot.mass_kg + g->total_mass_kg;
+    double m = g->nspheres > 0 ? carried / g->nspheres : 0;
     double c = in_series(sc->design.sole_damping_Ns_per_m, sc->terrain.def.damping_Ns_per_m);
     lc.restitution = fs_contact_restitution(fs_contact_damping_ratio(contact_k(sc), c, m));
     lc.gain = fs_contact_rebound_gain(lc.restitution);

@@ -185,32 +185,22 @@ void fs_robot_whole_inertia(const fs_robot_def *r, double I[3])
         fs_robot_inertia(r, I);
         return;
     }
-    /* the pelvis, then per leg (right at y = -w/2, left at +w/2) a thigh and a shank, as
-       fs_robot_biped_geometry builds them about the ankles' midpoint */
-    fs_body_geom b[1 + 2 * FS_MAX_FEET];
-    memset(b, 0, sizeof b);
-    b[0].mass_kg = r->pelvis_mass_kg;
-    b[0].com = pelvis_offset(r);
-    for (int k = 0; k < 3; k++)
-        b[0].inertia[4 * k] = r->pelvis_inertia_kgm2[k];
-    for (int f = 0; f < 2; f++) {
-        fs_vec3 a = fs_v3(0, (f ? 0.5 : -0.5) * r->hip_width_m, 0), knee, hip;
-        leg_points(r, a, &knee, &hip);
-        fs_design_link_body(&b[1 + 2 * f], "thigh", r->thigh_mass_kg, hip, knee, r->leg_width_m, r->leg_width_m);
-        fs_design_link_body(&b[2 + 2 * f], "shank", r->shank_mass_kg, knee, a, r->leg_width_m, r->leg_width_m);
-    }
+    /* the pelvis and the legs as fs_robot_biped_geometry builds them, on feet of no body */
+    fs_foot_geom none, g;
+    memset(&none, 0, sizeof none);
+    fs_robot_biped_geometry(r, &none, &g);
     double m = 0;
     fs_vec3 G = fs_v3(0, 0, 0);
-    for (int i = 0; i < 5; i++)
-        m += b[i].mass_kg, G = fs_add(G, fs_scale(b[i].com, b[i].mass_kg));
+    for (int i = g.pelvis_body; i < g.nbodies; i++)
+        m += g.body[i].mass_kg, G = fs_add(G, fs_scale(g.body[i].com, g.body[i].mass_kg));
     G = fs_scale(G, 1 / m);
     /* each body's own moment and its mass's about G (parallel axes), the diagonal */
     for (int k = 0; k < 3; k++) {
         I[k] = 0;
-        for (int i = 0; i < 5; i++) {
-            fs_vec3 d = fs_sub(b[i].com, G);
+        for (int i = g.pelvis_body; i < g.nbodies; i++) {
+            fs_vec3 d = fs_sub(g.body[i].com, G);
             double dk = k == 0 ? d.x : k == 1 ? d.y : d.z;
-            I[k] += b[i].inertia[4 * k] + b[i].mass_kg * (fs_dot(d, d) - dk * dk);
+            I[k] += g.body[i].inertia[4 * k] + g.body[i].mass_kg * (fs_dot(d, d) - dk * dk);
         }
     }
 }

@@ -167,7 +167,8 @@ void fs_drop_law_apply(const fs_pitch_law *statics, const fs_robot_def *robot, d
  * there (docs/landing.md, The drop law: toes that come to bear). The lean theta is where that
  * piecewise-linear moment meets the weight's, W (x + h theta), found segment by segment in the order
  * the chains engage; the share is the secant M(theta) / (K theta) there (m / n for an upright rest
- * on m chains). NAN when no segment holds an equilibrium (or n is outside 1..FS_CHAINS). */
+ * on m chains). NAN when no segment holds an equilibrium (or n is outside 1..FS_MAX_FEET * FS_CHAINS:
+ * a biped's two feet are ten chains of 2 K / 10 each under its whole weight). */
 double fs_pitch_engaged_share(const double *engage_rad, int n, double K, double W, double x, double h);
 
 /* The rocking onto the rest on uneven ground (docs/landing.md, The drop law): a rigid body of mass m,

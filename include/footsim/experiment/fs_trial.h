@@ -83,11 +83,14 @@ void fs_trial_placed_free(fs_scenario *sc);
  * not over the support (over 0) when it stands beyond every facet (the foot tips off) or the bearing
  * points span no area. A biped's two feet settle as one rigid support (both feet's shapes, the
  * ankle the midpoint of its two ankles), its toes and heels counted over both.
- * A biomimetic foot's chains give: a toe or midfoot sphere at a corner of the rest whose rise above
- * the rest the others make is more than travel_m folds away when its chain, of pitch stiffness
- * chain_k_N_m_per_rad about the ankle (k = chain_k / a^2 at a shape a ahead of it), holds less than
- * the share of the weight (robot and foot) that corner carries over that rise; the foot then rests on
- * the others, the folded shape bearing. 0: rigid chains (a flat sole has none). */
+ * A biomimetic foot's chains give: a toe or midfoot sphere ahead of the ankle at a corner of the
+ * rest, whose rise above the rest the others make is more than travel_m, folds away when its chain,
+ * of pitch stiffness chain_k_N_m_per_rad about the ankle (k = chain_k / a^2 at a shape a ahead of
+ * it), holds less than the share of the weight (everything the ground carries: robot and feet) that
+ * corner carries over that rise; the foot then rests on the others, the folded shape bearing. One
+ * shape at a time, the most loaded corner first, as long as the others still hold the centre of
+ * mass. A folded shape is not the first contact the rocking (settle_m, first_x_m, first_y_m) is
+ * taken from. 0: rigid chains (a flat sole has none). */
 enum { FS_SUPPORT_MAX_CORNERS = 192 }; /* two feet's soles' 11 x 7 points each and all their spheres fit */
 typedef struct fs_trial_support {
     int bearing;               /* contact points that bear (a sole's grid points count one each) */
