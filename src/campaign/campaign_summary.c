@@ -124,6 +124,9 @@ static law_contact contact_of(const fs_scenario *sc, double k_ref)
     return lc;
 }
 
+/* The feet robot r stands on, which share its weight: a biped's two, else one. */
+static int feet_of(const fs_robot_def *r) { return r->kind == FS_ROBOT_BIPED ? 2 : 1; }
+
 /* The share of the foot's pitch stiffness its chains give at the robot's static lean
  * (fs_pitch_engaged_share): a toe whose ground lies g below the rest plane and a ahead of the ankle
  * comes to bear once the foot has pitched forward by g / a. The share bearing at rest when the robot
@@ -160,7 +163,7 @@ static int seed_stands(const fs_scenario *sc, const fs_robot_def *r0, double h, 
     r.com_height_m = h;
     r.com_forward_m = r0->com_forward_m + h * tan(sup->tilt_forward_rad);
     double g = sc->def.gravity_m_per_s2, bound = sc->def.landed_tilt_deg * M_PI / 180;
-    int feet = r.kind == FS_ROBOT_BIPED ? 2 : 1;
+    int feet = feet_of(&r);
     double frac = engaged_share(sup, feet * K_foot, r.mass_kg * g, r.com_forward_m, h);
     double side = bound * bound - sup->tilt_side_rad * sup->tilt_side_rad;
     double lean_bound = sqrt(fmax(0, side)) - (r.com_forward_m >= 0 ? 1 : -1) * sup->tilt_forward_rad;
@@ -234,7 +237,7 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contac
     fs_error err;
     if (r->mass_kg <= 0)
         return;
-    double load = r->mass_kg * g / (r->kind == FS_ROBOT_BIPED ? 2 : 1); /* on each foot */
+    double load = r->mass_kg * g / feet_of(r); /* on each foot */
     /* a band's ends (and a sweep's cells) share the arch and its load: its K worked out once (the fold
        cache's; a flat sole's K is its contacts', worked out each time) */
     fs_status s = FS_NUMERICAL;
@@ -274,7 +277,7 @@ static void law_of(const fs_campaign *c, const fs_scenario *sc, const law_contac
     if (ok && n > 0 && lc->on && s == FS_OK) {
         /* the static law on the end's contact: the foot's K in series with the contacts of the first
            seed's support (on level ground every seed's) */
-        double spread = sup[0].spread_m2 / (r->kind == FS_ROBOT_BIPED ? 2 : 1); /* each foot's points */
+        double spread = sup[0].spread_m2 / feet_of(r); /* each foot's points */
         fs_pitch_law_apply(fs_pitch_contact_series(K, spread, lc->k_N_per_m, lc->k_ref_N_per_m), r, g,
                            max_lean, &law);
         row->law = law.stands ? FS_LAW_STANDS : FS_LAW_TOPPLES;

@@ -201,10 +201,9 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
             skip[fold] = 1;
             held = rest_on(at, q, skip, n, a, fwd, xf, hc, origin, &rs);
         }
-        double plane[3] = {NAN, 0, 0}; /* value at (x0, y0), slope along x and y */
+        /* the rest (rs.plane: its value at (x0, y0), slope along x and y; NAN, 0, 0 when none holds) */
+        const double *plane = rs.plane;
         point com = rs.com;
-        if (held)
-            plane[0] = rs.plane[0], plane[1] = rs.plane[1], plane[2] = rs.plane[2];
         out->over = !isnan(plane[0]);
         /* the foot's tilt: its lean towards the centre of mass's side, and sideways */
         out->tilt_forward_rad = -atan(plane[1] * fwd.x + plane[2] * fwd.y);
@@ -212,7 +211,7 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
         point p[MAX_POINTS], h[2 * MAX_POINTS];
         int np = 0;
         for (int i = 0; out->over && i < n; i++)
-            if (plane[0] + plane[1] * (at[i].x - x0) + plane[2] * (at[i].y - y0) - q[i] <= travel_m) {
+            if (height_on(&rs, origin, at[i]) - q[i] <= travel_m) {
                 p[np++] = at[i];
                 out->toes_bearing += toe[i];
                 out->heel_bearing |= heel[i];
@@ -227,7 +226,7 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
         }
         for (int i = 0, t = 0; out->over && i < n; i++)
             if (toe[i] && t < FS_MAX_FEET * FS_CHAINS) {
-                double gap = plane[0] + plane[1] * (at[i].x - x0) + plane[2] * (at[i].y - y0) - q[i] - travel_m;
+                double gap = height_on(&rs, origin, at[i]) - q[i] - travel_m;
                 out->toe_gap_m[t] = fmax(0, gap);
                 out->toe_ahead_m[t++] = c * (at[i].x - a.x) + sn * (at[i].y - a.y);
             }
@@ -272,7 +271,7 @@ fs_status fs_trial_support_of(const fs_scenario *base, int seed, double travel_m
                 out->corner_y_m[out->ncorners] = -sn * (h[i].x - com.x) + c * (h[i].y - com.y);
             }
         }
-        out->settle_m = out->over ? first - (plane[0] + plane[1] * (com.x - x0) + plane[2] * (com.y - y0)) : NAN;
+        out->settle_m = out->over ? first - height_on(&rs, origin, com) : NAN;
         double ex = a.x + out->edge_m * f.x, ey = a.y + out->edge_m * f.y;
         out->ankle_height_m = out->over ? ankle.z + plane[1] * (a.x - ex) + plane[2] * (a.y - ey) : NAN;
     }
