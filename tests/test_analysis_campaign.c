@@ -375,6 +375,31 @@ static void test_load(void)
     stepped[2] = "robot.low.step_s=1e-9"; /* below run.step_s's least; 0 would be the trial's step */
     CHECK(fs_campaign_load("scenarios/landing_ci.ini", stepped, 6, &c, &err) == FS_BAD_INPUT);
     CHECK(strstr(err.message, "step_s = 1e-09 is below") && strstr(err.message, "give 0 for the trial's own step"));
+    /* a robot's own error-controlled step: its cells only, said in the settings; a --set still wins */
+    const char *tolerant[] = {"robot.tall.file=robots/single_tall.ini", "robot.low.file=robots/drop_weight.ini",
+                              "robot.low.tolerance_m=1e-6", "robot.low.error_estimate=embedded",
+                              "expect.e.foot=flat", "expect.e.terrain=flat", "expect.e.robot=low",
+                              "run.tolerance_m=3e-6"};
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", tolerant, 7, &c, &err) == FS_OK);
+    const fs_scenario_def *low = &fs_campaign_pair(&c, 15)->def, *tall = &fs_campaign_pair(&c, 14)->def;
+    CHECK(low->tolerance_m == 1e-6 && low->error_estimate == FS_ESTIMATE_EMBEDDED);
+    CHECK(tall->tolerance_m == 0 && tall->error_estimate == FS_ESTIMATE_DOUBLING);
+    CHECK(fs_campaign_overrides(&c, 15, buf, ov) == 5 && !strcmp(ov[3], "run.tolerance_m=9.9999999999999995e-07") &&
+          !strcmp(ov[4], "run.error_estimate=embedded"));
+    CHECK(fs_campaign_overrides(&c, 14, buf, ov) == 3);
+    CHECK(strstr(c.provenance.settings, "; robot low: tolerance_m 1e-06, error_estimate embedded") != NULL &&
+          strstr(c.provenance.settings, "robot tall") == NULL);
+    fs_campaign_free(&c);
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", tolerant, 8, &c, &err) == FS_OK);
+    CHECK(fs_campaign_pair(&c, 15)->def.tolerance_m == 3e-6 && fs_campaign_pair(&c, 14)->def.tolerance_m == 3e-6);
+    CHECK(fs_campaign_pair(&c, 15)->def.error_estimate == FS_ESTIMATE_EMBEDDED); /* the --set named no estimate */
+    fs_campaign_free(&c);
+    tolerant[2] = "robot.low.tolerance_m=0"; /* an estimate for no error-controlled step */
+    CHECK(fs_campaign_load("scenarios/landing_ci.ini", tolerant, 7, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "error_estimate") && strstr(err.message, "give tolerance_m too"));
+    tolerant[2] = "robot.low.tolerance_m=2"; /* past run.tolerance_m's range */
+    CHECK(fs_campaign_load("scenarios/landing_ci.ini", tolerant, 7, &c, &err) == FS_BAD_INPUT);
+    CHECK(strstr(err.message, "tolerance_m") != NULL);
     /* with several robots an expectation must name its robot */
     const char *unnamed[] = {"robot.tall.file=robots/single_tall.ini", "robot.low.file=robots/drop_weight.ini",
                              "expect.e.foot=flat", "expect.e.terrain=flat"};

@@ -418,6 +418,16 @@ static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_
         k->unit = "s";
         k->fallback = "0";
         k->help = "the step of this robot's trials (0: the trial's run.step_s); a --set run.step_s overrides it";
+        k = add_key(b, sec, "tolerance_m", FS_KEY_NUMBER, C(robot[i].tolerance_m));
+        k->max = 1; /* run.tolerance_m's range */
+        k->unit = "m";
+        k->fallback = "0";
+        k->help = "this robot's trials take the error-controlled step to this tolerance (0: the trial's "
+                  "run.tolerance_m); a --set run.tolerance_m overrides it";
+        k = add_key(b, sec, "error_estimate", FS_KEY_CHOICE, C(robot[i].error_estimate));
+        k->choices = "trial|doubling|embedded";
+        k->fallback = "trial";
+        k->help = "with tolerance_m: the step's error estimate (trial: the trial's run.error_estimate)";
     }
     for (int i = 0; i < c->nexpect; i++) {
         const char *sec = b->sections[group_first(GROUP_EXPECT) + i];
@@ -588,6 +598,10 @@ static fs_status check_relations(const fs_config *cfg, const fs_campaign *c, fs_
                            "trial's own step, or a step of at least %g s",
                            fs_config_where(cfg, sec, "step_s", where, sizeof where), c->robot[i].step_s,
                            FS_STEP_MIN_S, FS_STEP_MIN_S);
+        if (c->robot[i].error_estimate && !(c->robot[i].tolerance_m > 0))
+            return fs_fail(err, FS_BAD_INPUT, "%s: error_estimate is the error-controlled step's and this robot has "
+                           "no tolerance_m; give tolerance_m too (e.g. 1e-6), or leave error_estimate out",
+                           fs_config_where(cfg, sec, "error_estimate", where, sizeof where));
     }
     for (int i = 0; i < c->nexpect; i++) {
         char sec[FS_NAME_MAX + 8];
@@ -798,9 +812,14 @@ static fs_status provenance(fs_campaign *c, const char *const *sets, int nsets, 
     fs_scenario_settings(&c->pair[0], p->settings, sizeof p->settings);
     for (int r = 1; r < c->nrobots; r++) { /* a robot whose trials take another step (cell r: the first foot and terrain) */
         size_t used = strlen(p->settings);
-        if (fs_campaign_pair(c, r)->def.step_s != c->pair[0].def.step_s)
+        const fs_scenario_def *d = &fs_campaign_pair(c, r)->def, *d0 = &c->pair[0].def;
+        if (d->step_s != d0->step_s)
             snprintf(p->settings + used, sizeof p->settings - used, "; robot %s: step_s %.6g", c->robot[r].name,
-                     fs_campaign_pair(c, r)->def.step_s);
+                     d->step_s);
+        used = strlen(p->settings);
+        if (d->tolerance_m != d0->tolerance_m || d->error_estimate != d0->error_estimate)
+            snprintf(p->settings + used, sizeof p->settings - used, "; robot %s: tolerance_m %.6g%s", c->robot[r].name,
+                     d->tolerance_m, d->error_estimate == FS_ESTIMATE_EMBEDDED ? ", error_estimate embedded" : "");
     }
     if (c->band[0]) { /* said in the settings too: the campaign file's hash alone does not name it */
         size_t used = strlen(p->settings);
@@ -875,13 +894,22 @@ int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[FS_CAMPAIGN_C
         snprintf(buf[3], sizeof buf[3], "run.step_s=%.17g", c->robot[robot].step_s);
         out[n++] = buf[3];
     }
+    if (c->robot[robot].tolerance_m > 0) {
+        snprintf(buf[4], sizeof buf[4], "run.tolerance_m=%.17g", c->robot[robot].tolerance_m);
+        out[n++] = buf[4];
+    }
+    if (c->robot[robot].error_estimate) {
+        snprintf(buf[5], sizeof buf[5], "run.error_estimate=%s",
+                 c->robot[robot].error_estimate == 2 ? "embedded" : "doubling");
+        out[n++] = buf[5];
+    }
     for (int w = 0; w < c->nsweep; w++) { /* the swept values, exactly (17 digits read back the same double) */
         double v = c->terrain[terrain].sweep_value[w];
         if (fs_campaign_sweepable(c->sweep_choice[w])->type == FS_KEY_INTEGER)
-            snprintf(buf[4 + w], sizeof buf[4 + w], "%s=%d", c->sweep[w], (int)v);
+            snprintf(buf[6 + w], sizeof buf[6 + w], "%s=%d", c->sweep[w], (int)v);
         else
-            snprintf(buf[4 + w], sizeof buf[4 + w], "%s=%.17g", c->sweep[w], v);
-        out[n++] = buf[4 + w];
+            snprintf(buf[6 + w], sizeof buf[6 + w], "%s=%.17g", c->sweep[w], v);
+        out[n++] = buf[6 + w];
     }
     for (int i = 0; i < c->nset; i++)
         out[n++] = c->set[i];

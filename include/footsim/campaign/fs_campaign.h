@@ -59,6 +59,8 @@ typedef struct fs_campaign_item {
     int base;                /* a sweep's point: the index of the terrain it is a point of ... */
     int point[2];            /* ... and of its value of each key */
     double step_s;           /* [robot.NAME] step_s: the step its trials take; 0: the trial's run.step_s */
+    double tolerance_m;      /* [robot.NAME] tolerance_m: its trials' error-controlled step; 0: the trial's */
+    int error_estimate;      /* [robot.NAME] error_estimate: 0 the trial's, 1 doubling, 2 embedded */
 } fs_campaign_item;
 
 /* [expect.NAME]: the success rate of foot on terrain under robot must lie in [min_success, max_success]. */
@@ -140,12 +142,12 @@ const fs_scenario *fs_campaign_pair(const fs_campaign *c, int cell);
 const fs_scenario *fs_campaign_pair_of(const fs_campaign *c, int cell, int end);
 
 /* The overrides a cell's trial scenario reads its files with: scenario.design, scenario.terrain,
- * robot.design (when the campaign names robots), run.step_s (when the robot's section gives one:
- * its own step, see docs/campaign.md), the sweep's values at the cell's point (to 17
+ * robot.design (when the campaign names robots), run.step_s, run.tolerance_m and run.error_estimate
+ * (each when the robot's section gives it: its own step, see docs/campaign.md), the sweep's values at the cell's point (to 17
  * digits: the same double read back), then c->set. fs_campaign_load reads the first point of each
  * (foot, terrain, robot) so and makes the later points by typed edits of it. buf holds their text;
  * out gets up to FS_CAMPAIGN_MAX_SET + FS_CAMPAIGN_CELL_SETS pointers; returns the count. */
-enum { FS_CAMPAIGN_CELL_SETS = 6 };
+enum { FS_CAMPAIGN_CELL_SETS = 8 };
 int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[FS_CAMPAIGN_CELL_SETS][FS_PATH_MAX + 32],
                           const char **out);
 
