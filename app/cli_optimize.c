@@ -542,7 +542,8 @@ static int fill_front_gp(FILE *f, const void *user)
     const sweep_out *x = user;
     const fs_optimize *o = x->o;
     fputs("# A sweep of a constraint's bound: 'gnuplot front.gp' in this folder draws front.png from front.csv\n"
-          "# (each search's best, and the foot's file design).\nif (!exists(\"out\")) out = 'front.png'\nsearch = ", f);
+          "# (each search's best, and the foot's file design; the bounds' labels above and below in turn, so\n"
+          "# that two bests at one point stay apart).\nif (!exists(\"out\")) out = 'front.png'\nsearch = ", f);
     fs_gp_string(f, o->name);
     fputs("\nobjective = ", f);
     fs_gp_string(f, o->objective == FS_OBJECTIVE_LIGHTEST ? "objective: the foot's mass, kg"
@@ -559,8 +560,10 @@ static int fill_front_gp(FILE *f, const void *user)
           "with points pt 6 ps 1.5 lc rgb '#999999' title 'best, missing a target', \\\n"
           "     'front.csv' skip 1 using (column(obj + 4) == 1 ? column(obj + 1) : 1/0):obj with linespoints pt 7 lw 2 "
           "lc rgb '#b2182b' title 'front (targets met)', \\\n"
-          "     'front.csv' skip 1 using (strcol(1) eq 'best' ? column(obj + 1) : 1/0):obj:(sprintf('%g', column(2))) "
-          "with labels offset 0,1 notitle, \\\n"
+          "     'front.csv' skip 1 using (strcol(1) eq 'best' && int(column(0)) % 2 ? column(obj + 1) : 1/0):obj:"
+          "(sprintf('%g', column(2))) with labels offset 0,1 notitle, \\\n"
+          "     'front.csv' skip 1 using (strcol(1) eq 'best' && !(int(column(0)) % 2) ? column(obj + 1) : 1/0):obj:"
+          "(sprintf('%g', column(2))) with labels offset 0,-1 notitle, \\\n"
           "     'front.csv' skip 1 using (strcol(1) eq 'file' ? column(obj + 1) : 1/0):obj with points pt 5 ps 1.5 "
           "lc rgb '#2166ac' title 'the foot''s file design'\n", f);
     return 1;
