@@ -15,8 +15,11 @@
 
 /* ---- the campaign file ---------------------------------------------------------------------- */
 
+/* the static keys (add_static_keys: [campaign]'s, band, two sweeps, [tolerance]'s), then per section:
+   a foot's file, a terrain's file, a robot's file, step_s, tolerance_m and error_estimate, an
+   expectation's five */
 enum { MAX_KEYS = 8 + FS_CAMPAIGN_NMETRICS + 2 * FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_FEET +
-                  FS_CAMPAIGN_MAX_ROBOTS + 5 * FS_CAMPAIGN_MAX_EXPECT };
+                  4 * FS_CAMPAIGN_MAX_ROBOTS + 5 * FS_CAMPAIGN_MAX_EXPECT };
 enum { NSECTIONS = FS_CAMPAIGN_MAX_FEET + FS_CAMPAIGN_MAX_TERRAINS + FS_CAMPAIGN_MAX_ROBOTS + FS_CAMPAIGN_MAX_EXPECT };
 
 /* The schema of one file, built from the sections it has, and the text its keys point to. */
