@@ -82,6 +82,12 @@ expect 2 "$tmp/noterrain.ini:6: terrain = 'rocks' is not one of the choices; all
 expect 2 "$tmp/minmax.ini:7: min_success = 0.8 is above max_success = 0.5" -- campaign "$tmp/minmax.ini" --out "$tmp/c6"
 expect 2 "$tmp/sweep.ini:5: sweep_values: 'abc' is not a finite number" -- campaign "$tmp/sweep.ini" --out "$tmp/c7"
 expect 2 "$tmp/nosweep.ini:4: sweep_values without sweep" -- campaign "$tmp/nosweep.ini" --out "$tmp/c8"
+# a robot's own error-controlled step: an estimate without a tolerance is refused at its line; a
+# tolerance the trial cannot take names the robot's section that gave it
+camp estimate "seeds = 3\n[robot.r]\nfile = $PWD/scenarios/robots/drop_weight.ini\nerror_estimate = embedded"
+camp tolerant "seeds = 3\n[robot.r]\nfile = $PWD/scenarios/robots/drop_weight.ini\ntolerance_m = 1e-6"
+expect 2 "$tmp/estimate.ini:6: error_estimate is the error-controlled step's and this robot has no tolerance_m; give tolerance_m too" -- campaign "$tmp/estimate.ini" --out "$tmp/c8e"
+expect 2 "tolerance_m = 1e-06 cannot be used here: ODE's auto-disable.*under robot r; \[robot.r\] gives its trials its step_s, tolerance_m or error_estimate as --set run" -- campaign "$tmp/tolerant.ini" --set run.auto_disable_s=0.1 --out "$tmp/c8t"
 # a value given twice (equal as numbers) would make two points of one name; an empty value (two
 # commas, a comma first or last) is a slip, refused in every list (a sweep's, a list key's)
 camp twice 'seeds = 3\nsweep = rough.rms_m\nsweep_values = 0, 0.001, 0.001'

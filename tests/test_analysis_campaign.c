@@ -387,8 +387,18 @@ static void test_load(void)
     CHECK(fs_campaign_overrides(&c, 15, buf, ov) == 5 && !strcmp(ov[3], "run.tolerance_m=9.9999999999999995e-07") &&
           !strcmp(ov[4], "run.error_estimate=embedded"));
     CHECK(fs_campaign_overrides(&c, 14, buf, ov) == 3);
-    CHECK(strstr(c.provenance.settings, "; robot low: tolerance_m 1e-06, error_estimate embedded") != NULL &&
-          strstr(c.provenance.settings, "robot tall") == NULL);
+    CHECK(!strcmp(strstr(c.provenance.settings, "; robot"), "; robot low: tolerance_m 1e-06, error_estimate embedded"));
+    fs_campaign_free(&c);
+    /* its own step and tolerance, doubling: one part of the settings line */
+    const char *both[] = {"robot.tall.file=robots/single_tall.ini", "robot.low.file=robots/drop_weight.ini",
+                          "robot.low.tolerance_m=1e-6", "robot.low.error_estimate=doubling", "robot.low.step_s=5e-4",
+                          "expect.e.foot=flat", "expect.e.terrain=flat", "expect.e.robot=low"};
+    REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", both, 8, &c, &err) == FS_OK);
+    CHECK(fs_campaign_pair(&c, 15)->def.error_estimate == FS_ESTIMATE_DOUBLING &&
+          fs_campaign_pair(&c, 15)->def.tolerance_m == 1e-6 && fs_campaign_pair(&c, 15)->def.step_s == 5e-4);
+    CHECK(fs_campaign_overrides(&c, 15, buf, ov) == 6 && !strcmp(ov[5], "run.error_estimate=doubling"));
+    CHECK(!strcmp(strstr(c.provenance.settings, "; robot"),
+                  "; robot low: step_s 0.0005, tolerance_m 1e-06, error_estimate doubling"));
     fs_campaign_free(&c);
     REQUIRE(fs_campaign_load("scenarios/landing_ci.ini", tolerant, 8, &c, &err) == FS_OK);
     CHECK(fs_campaign_pair(&c, 15)->def.tolerance_m == 3e-6 && fs_campaign_pair(&c, 14)->def.tolerance_m == 3e-6);

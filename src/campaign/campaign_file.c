@@ -57,6 +57,12 @@ static const fs_key campaign_keys[] = {
      "seeds are first_seed, first_seed + 1, ..."},
 };
 
+/* A robot's error_estimate: its choice index, 0 for the trial's own, else the scenario's
+   fs_error_estimate + 1, and the word run.error_estimate takes. */
+#define ESTIMATE_CHOICES "trial|doubling|embedded"
+static const char *const estimate_choice[] = {"trial", "doubling", "embedded"};
+_Static_assert(FS_ESTIMATE_DOUBLING == 0 && FS_ESTIMATE_EMBEDDED == 1, "estimate_choice[e + 1] names fs_error_estimate e");
+
 /* A band's ends, in the order their trials and columns take. */
 static const char *const band_end_names[FS_BAND_ENDS] = {"low", "high"};
 enum { NCAMPAIGN_KEYS = sizeof campaign_keys / sizeof campaign_keys[0] };
@@ -428,7 +434,7 @@ static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_
         k->help = "this robot's trials take the error-controlled step to this tolerance (0: the trial's "
                   "run.tolerance_m); a --set run.tolerance_m overrides it";
         k = add_key(b, sec, "error_estimate", FS_KEY_CHOICE, C(robot[i].error_estimate));
-        k->choices = "trial|doubling|embedded";
+        k->choices = ESTIMATE_CHOICES;
         k->fallback = "trial";
         k->help = "with tolerance_m: the step's error estimate (trial: the trial's run.error_estimate)";
     }
@@ -713,9 +719,14 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
         }
         for (int end = 0; end < nends && s == FS_OK; end++)
             s = fs_scenario_require(&sc[end], "trial", &e);
+        const fs_campaign_item *rb = &c->robot[r];
+        char gives[FS_NAME_MAX + 96] = ""; /* a --set the message names may be the robot section's */
+        if (rb->step_s > 0 || rb->tolerance_m > 0 || rb->error_estimate)
+            snprintf(gives, sizeof gives, "; [robot.%s] gives its trials its step_s, tolerance_m or error_estimate as "
+                     "--set run.*", rb->name);
         if (s != FS_OK)
-            fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s%s%s)", e.message, c->path,
-                    c->foot[f].name, c->terrain[t].name, c->robot[r].name, c->band[0] ? ", band " : "", c->band);
+            fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s%s%s%s)", e.message, c->path,
+                    c->foot[f].name, c->terrain[t].name, rb->name, c->band[0] ? ", band " : "", c->band, gives);
     }
     if (s == FS_OK && !c->robot[0].path[0]) /* the trial's own robot: named after its file */
         fs_path_stem(c->pair[0].def.robot_path[0] ? c->pair[0].def.robot_path : "none", c->robot[0].name,
@@ -814,15 +825,21 @@ static fs_status provenance(fs_campaign *c, const char *const *sets, int nsets, 
         s = fs_scenario_inputs(fs_campaign_pair(c, i), p, err);
     fs_scenario_settings(&c->pair[0], p->settings, sizeof p->settings);
     for (int r = 1; r < c->nrobots; r++) { /* a robot whose trials take another step (cell r: the first foot and terrain) */
-        size_t used = strlen(p->settings);
         const fs_scenario_def *d = &fs_campaign_pair(c, r)->def, *d0 = &c->pair[0].def;
-        if (d->step_s != d0->step_s)
-            snprintf(p->settings + used, sizeof p->settings - used, "; robot %s: step_s %.6g", c->robot[r].name,
-                     d->step_s);
+        int step = d->step_s != d0->step_s; /* an estimate matters only under a tolerance */
+        int tol = d->tolerance_m != d0->tolerance_m || (d->tolerance_m > 0 && d->error_estimate != d0->error_estimate);
+        if (!step && !tol)
+            continue;
+        size_t used = strlen(p->settings);
+        snprintf(p->settings + used, sizeof p->settings - used, "; robot %s:", c->robot[r].name);
         used = strlen(p->settings);
-        if (d->tolerance_m != d0->tolerance_m || d->error_estimate != d0->error_estimate)
-            snprintf(p->settings + used, sizeof p->settings - used, "; robot %s: tolerance_m %.6g%s", c->robot[r].name,
-                     d->tolerance_m, d->error_estimate == FS_ESTIMATE_EMBEDDED ? ", error_estimate embedded" : "");
+        if (step)
+            snprintf(p->settings + used, sizeof p->settings - used, " step_s %.6g%s", d->step_s, tol ? "," : "");
+        used = strlen(p->settings);
+        if (tol)
+            snprintf(p->settings + used, sizeof p->settings - used, " tolerance_m %.6g%s%s", d->tolerance_m,
+                     d->tolerance_m > 0 ? ", error_estimate " : "",
+                     d->tolerance_m > 0 ? estimate_choice[d->error_estimate + 1] : "");
     }
     if (c->band[0]) { /* said in the settings too: the campaign file's hash alone does not name it */
         size_t used = strlen(p->settings);
@@ -902,8 +919,7 @@ int fs_campaign_overrides(const fs_campaign *c, int cell, char buf[FS_CAMPAIGN_C
         out[n++] = buf[4];
     }
     if (c->robot[robot].error_estimate) {
-        snprintf(buf[5], sizeof buf[5], "run.error_estimate=%s",
-                 c->robot[robot].error_estimate == 2 ? "embedded" : "doubling");
+        snprintf(buf[5], sizeof buf[5], "run.error_estimate=%s", estimate_choice[c->robot[robot].error_estimate]);
         out[n++] = buf[5];
     }
     for (int w = 0; w < c->nsweep; w++) { /* the swept values, exactly (17 digits read back the same double) */

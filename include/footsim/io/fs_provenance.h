@@ -21,7 +21,7 @@
 
 #include <stdio.h>
 
-enum { FS_PROVENANCE_SETTINGS_MAX = 1024 }; /* a campaign's: the first cell's and up to 7 robots' own steps */
+enum { FS_PROVENANCE_SETTINGS_MAX = 2048 }; /* a campaign's: the first cell's, up to 7 robots' own steps and tolerances, its band */
 
 typedef struct fs_provenance_input {
     char *path;              /* relative to the record's folder */
