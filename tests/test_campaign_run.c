@@ -467,6 +467,13 @@ static void test_a_wrong_band_is_refused(void)
     refused("low = start.drop_m=0.01, start.drop_m=0.02\nhigh =", NULL, 0, "bad.ini:10: [band.tall] low sets start.drop_m twice");
     static const char *const clash[] = {"robot.com_height_m=0.1"};
     refused("low = robot.com_height_m=0.3\nhigh =", clash, 1, "--set robot.com_height_m=0.1: robot.com_height_m is set by band tall's low end");
+    static char robot_file[FS_PATH_MAX];
+    snprintf(robot_file, sizeof robot_file, "robot.r.file=%s/scenarios/robots/drop_weight.ini", FS_SOURCE_DIR);
+    const char *own[] = {robot_file, "robot.r.tolerance_m=1e-6"}; /* a robot's own tolerance, which a band would overwrite */
+    refused("low = run.tolerance_m=3e-6\nhigh =", own, 2,
+            "robot.r.tolerance_m: band tall's low end sets run.tolerance_m, which robot r gives its own");
+    own[1] = "robot.r.step_s=5e-4";
+    refused("low =\nhigh = run.step_s=2e-4", own, 2, "band tall's high end sets run.step_s, which robot r gives its own");
     static const char *const other[] = {"campaign.band=wide"};
     refused("low = robot.com_height_m=0.3\nhigh =", other, 1, "band = 'wide' is not one of the choices; allowed: none|tall");
 }

@@ -284,7 +284,8 @@ static fs_status parse_band_end(const binder *b, int band, int e, fs_band_end *e
 }
 
 /* Every band of the file read (so a wrong one is refused whichever is chosen), and the chosen one
- * kept in c: its ends' keys must be neither swept nor given by --set, which it would overwrite. */
+ * kept in c: its ends' keys must be neither swept, nor given by --set, nor a robot's own step_s or
+ * tolerance_m, which it would overwrite. */
 static fs_status bind_bands(const fs_config *cfg, const binder *b, fs_campaign *c, fs_error *err)
 {
     c->nends = 1;
@@ -310,6 +311,18 @@ static fs_status bind_bands(const fs_config *cfg, const binder *b, fs_campaign *
                                        "overwrite it; change the band ([band.%s] %s), or choose none with --set "
                                        "campaign.band=none", c->set[j], end.key[i], b->band_name[band], end.name,
                                        where, b->band_name[band], end.name);
+                for (int r = 0; r < c->nrobots; r++) { /* a robot's own step or tolerance: the band would win */
+                    const char *own = !strcmp(end.key[i], "run.step_s") && c->robot[r].step_s > 0 ? "step_s"
+                                      : !strcmp(end.key[i], "run.tolerance_m") && c->robot[r].tolerance_m > 0
+                                          ? "tolerance_m" : NULL;
+                    char sec[FS_NAME_MAX + 8], rwhere[FS_PATH_MAX + 80];
+                    snprintf(sec, sizeof sec, "robot.%s", c->robot[r].name);
+                    if (own)
+                        return fs_fail(err, FS_BAD_INPUT, "%s: band %s's %s end sets %s, which robot %s gives its own "
+                                       "(%s); give it in the band or in the robot's section, not both",
+                                       fs_config_where(cfg, sec, own, rwhere, sizeof rwhere), b->band_name[band],
+                                       end.name, end.key[i], c->robot[r].name, where);
+                }
             }
             c->end[e] = end;
             c->nends = FS_BAND_ENDS;
