@@ -1,8 +1,9 @@
-/* cli_keys.c: `footsim keys`: every key of design, scenario, terrain and robot files (Markdown, the
- * source of docs/keys.md), and the limits footsim refuses past. */
+/* cli_keys.c: `footsim keys`: every key of design, scenario, terrain, robot, campaign and design
+ * search files (Markdown, the source of docs/keys.md), and the limits footsim refuses past. */
 #include "cli.h"
 
 #include "footsim/campaign/fs_campaign.h"
+#include "footsim/campaign/fs_optimize.h"
 #include "footsim/experiment/fs_run.h"
 #include "footsim/io/fs_config.h"
 #include "footsim/model/fs_design.h"
@@ -19,6 +20,11 @@ int cli_keys(const cli_args *a)
     fs_config_print_keys(fs_scenario_keys, fs_scenario_nkeys, "Scenario files (scenarios/*.ini)", stdout);
     fs_config_print_keys(fs_terrain_keys, fs_terrain_nkeys, "Terrain files (terrains/*.ini)", stdout);
     fs_config_print_keys(fs_robot_keys, fs_robot_nkeys, "Robot files (scenarios/robots/*.ini)", stdout);
+    fs_campaign_print_keys(stdout);
+    printf("A campaign's `sweep_values` and `sweep2_values` (the swept keys' values, comma-separated) and its\n"
+           "`[band.NAME]` sections (`low` and `high`, each a comma-separated list of overrides key=value):\n"
+           "[campaign.md](campaign.md).\n\n");
+    fs_optimize_print_keys(stdout);
     printf("### Limits\n\nWhat footsim refuses up front (exit 2, before anything is simulated or written), so that no\n"
            "count overflows and no buffer outgrows memory:\n\n| what | at most |\n|---|---|\n"
            "| an input file (design, scenario, terrain, campaign) | %d bytes, %d keys; regular files only |\n"

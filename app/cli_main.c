@@ -252,7 +252,8 @@ static const command commands[] = {
      "  samples in FILE's name with .hfield.bin), gravity, step, robot and load. --seed N (a trial\n"
      "  scenario): in the start pose trial N draws, on its terrain (tools/mujoco_trial.c runs it)."},
     {"keys", cli_keys, CMD_KEYS, NULL, 0, CLI_DATA_NONE,
-     "Prints every key of design and scenario files: unit, allowed range, default, meaning (Markdown)."},
+     "Prints every key of design, scenario, terrain, robot, campaign and design search files: unit,\n"
+     "  allowed range, default, meaning (Markdown)."},
     {"demo", cli_demo, CMD_DEMO, NULL, 0, CLI_DATA_NONE,
      "Runs the paper's first experiments (static load, 10 degree tilt) and the stiffness check,\n"
      "  and says where the results went."},

@@ -413,12 +413,10 @@ static fs_status collect_sections(const fs_config *cfg, binder *b, fs_campaign *
     return FS_OK;
 }
 
-/* Adds the keys of every [foot.NAME], [terrain.NAME], [robot.NAME] and [expect.NAME] section of cfg. */
-static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
+/* Adds the keys of the [foot.NAME], [terrain.NAME], [robot.NAME] and [expect.NAME] sections named in
+ * b->sections, c's counts of each. */
+static void add_section_keys(binder *b, fs_campaign *c)
 {
-    fs_status s = collect_sections(cfg, b, c, err);
-    if (s != FS_OK)
-        return s;
     for (int i = 0; i < c->nfeet; i++) {
         const char *sec = b->sections[group_first(GROUP_FOOT) + i];
         snprintf(c->foot[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
@@ -454,21 +452,68 @@ static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_
     for (int i = 0; i < c->nexpect; i++) {
         const char *sec = b->sections[group_first(GROUP_EXPECT) + i];
         snprintf(c->expect[i].name, FS_NAME_MAX, "%s", strchr(sec, '.') + 1);
-        add_key(b, sec, "foot", FS_KEY_CHOICE, C(expect[i].foot))->choices = b->foot_choices;
-        add_key(b, sec, "terrain", FS_KEY_CHOICE, C(expect[i].terrain))->choices = b->terrain_choices;
+        fs_key *k = add_key(b, sec, "foot", FS_KEY_CHOICE, C(expect[i].foot));
+        k->choices = b->foot_choices;
+        k->help = "the foot whose success rate is judged";
+        k = add_key(b, sec, "terrain", FS_KEY_CHOICE, C(expect[i].terrain));
+        k->choices = b->terrain_choices;
+        k->help = "... on this terrain";
         if (c->nrobots) { /* one robot: it is the default; several: check_expect_given wants it named */
-            fs_key *r = add_key(b, sec, "robot", FS_KEY_CHOICE, C(expect[i].robot));
-            r->choices = b->robot_choices;
-            r->fallback = c->robot[0].name;
+            k = add_key(b, sec, "robot", FS_KEY_CHOICE, C(expect[i].robot));
+            k->choices = b->robot_choices;
+            k->fallback = c->robot[0].name;
+            k->help = "... under this robot (needed when the file has several)";
         }
-        fs_key *k = add_key(b, sec, "min_success", FS_KEY_NUMBER, C(expect[i].min_success));
+        k = add_key(b, sec, "min_success", FS_KEY_NUMBER, C(expect[i].min_success));
         k->max = 1;
         k->fallback = "0";
+        k->help = "the least success rate (landed / trials) the expectation allows";
         k = add_key(b, sec, "max_success", FS_KEY_NUMBER, C(expect[i].max_success));
         k->max = 1;
         k->fallback = "1";
+        k->help = "the most success rate (landed / trials) the expectation allows";
     }
-    return FS_OK;
+}
+
+/* Adds the keys of every [foot.NAME], [terrain.NAME], [robot.NAME] and [expect.NAME] section of cfg. */
+static fs_status add_dynamic_keys(fs_config *cfg, binder *b, fs_campaign *c, fs_error *err)
+{
+    fs_status s = collect_sections(cfg, b, c, err);
+    if (s == FS_OK)
+        add_section_keys(b, c);
+    return s;
+}
+
+void fs_campaign_print_keys(void *out_file)
+{
+    binder *b = calloc(1, sizeof *b);
+    fs_campaign *c = calloc(1, sizeof *c);
+    if (!b || !c) {
+        free(b);
+        free(c);
+        return;
+    }
+    static const char *const named[NGROUPS] = {"foot.NAME", "terrain.NAME", "robot.NAME", "expect.NAME"};
+    for (int g = 0; g < NGROUPS; g++)
+        snprintf(b->sections[group_first(g)], FS_NAME_MAX, "%s", named[g]);
+    c->nfeet = c->nterrains = c->nrobots = c->nexpect = 1;
+    add_static_keys(b);
+    add_section_keys(b, c);
+    for (int i = 0; i < b->nkeys; i++) { /* the choices a file's own names make, said as such */
+        fs_key *k = &b->keys[i];
+        if (k->choices == b->sweep_choices)
+            k->choices = "none, or a number key of a design, terrain, robot or scenario file (section.key)";
+        else if (k->choices == b->band_choices)
+            k->choices = "none, or a [band.NAME] of the file";
+        else if (k->choices == b->foot_choices || k->choices == b->terrain_choices || k->choices == b->robot_choices)
+            k->choices = !strcmp(k->name, "foot") ? "a [foot.NAME] of the file"
+                         : !strcmp(k->name, "terrain") ? "a [terrain.NAME] of the file" : "a [robot.NAME] of the file";
+        if (!strcmp(k->name, "robot") && !strncmp(k->section, "expect.", 7))
+            k->fallback = "the one robot";
+    }
+    fs_config_print_keys(b->keys, b->nkeys, "Campaign files (scenarios/*.ini with [campaign])", out_file);
+    free(b);
+    free(c);
 }
 
 /* Parses the values of each swept key into b->values (one empty "value" for a key not swept);

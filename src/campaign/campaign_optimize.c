@@ -141,9 +141,12 @@ typedef struct target {
 
 #define T(member) offsetof(target, member)
 
-static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
+/* Adds the keys of [optimize] and of the [param.NAME] and [constraint.NAME] sections named in b
+ * (t->o's counts of each). */
+static fs_status add_file_keys(fs_config *cfg, binder *b, target *t, fs_error *err)
 {
     fs_optimize *o = &t->o;
+    fs_status s = FS_OK;
     add_key(b, "optimize", "campaign", FS_KEY_PATH, T(o.campaign_path), "",
             "the campaign whose trials every candidate runs and whose expectations are the targets");
     fs_key *k = add_key(b, "optimize", "max_evaluations", FS_KEY_INTEGER, T(o.max_evaluations), "40",
@@ -156,10 +159,6 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
                 "what the search minimises: least_stiff (the parameters' sum, each over its min times its weight) or lightest "
                 "(the foot's mass)");
     k->choices = "none|least_stiff|lightest";
-    take_relative_to(cfg, b);
-    fs_status s = collect_params(cfg, b, o, err);
-    if (s != FS_OK)
-        return s;
     for (int n = 0; n < o->nconstraints; n++) {
         k = add_key(b, b->csections[n], "of", FS_KEY_CHOICE, T(o.constraint[n].of), "none",
                     "what it bounds: foot_mass_kg (the foot's total mass) or ankle_drop_m (the arch's static "
@@ -214,7 +213,47 @@ static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
                     "e.g. a splay or a length searched beside the springs");
         k->min = 0, k->max = 1e6;
     }
-    return fs_config_bind(cfg, b->keys, b->nkeys, t, err);
+    return s;
+}
+
+static fs_status bind_file(fs_config *cfg, binder *b, target *t, fs_error *err)
+{
+    take_relative_to(cfg, b);
+    fs_status s = collect_params(cfg, b, &t->o, err);
+    if (s == FS_OK)
+        s = add_file_keys(cfg, b, t, err);
+    return s == FS_OK ? fs_config_bind(cfg, b->keys, b->nkeys, t, err) : s;
+}
+
+void fs_optimize_print_keys(void *out_file)
+{
+    binder *b = calloc(1, sizeof *b);
+    target *t = calloc(1, sizeof *t);
+    fs_config cfg = {0}; /* no entries: no [param.NAME] key names a list's element */
+    fs_error err;
+    if (!b || !t) {
+        free(b);
+        free(t);
+        return;
+    }
+    snprintf(b->sections[0], FS_NAME_MAX, "param.NAME");
+    snprintf(b->csections[0], FS_NAME_MAX, "constraint.NAME");
+    snprintf(t->o.constraint[0].name, FS_NAME_MAX, "NAME");
+    t->o.nparams = t->o.nconstraints = 1;
+    if (add_file_keys(&cfg, b, t, &err) == FS_OK) {
+        /* [optimize] relative_to is read by hand (a foot of the campaign): said here as a key */
+        fs_key *k = add_key(b, "optimize", "relative_to", FS_KEY_CHOICE, 0, "",
+                            "a foot of the campaign, run once: every other foot's cell must land at least as "
+                            "often as this foot's cell of the same terrain and robot, on the same seeds");
+        k->choices = "a [foot.NAME] of the campaign";
+        for (int i = 0; i < b->nkeys; i++)
+            if (b->keys[i].choices == b->key_choices)
+                b->keys[i].choices = "a number key of a design, terrain, robot or scenario file (section.key), "
+                                     "or one element of a list key (section.key[i])";
+        fs_config_print_keys(b->keys, b->nkeys, "Design search files (scenarios/optimize_*.ini)", out_file);
+    }
+    free(b);
+    free(t);
 }
 
 /* [optimize] sweep names a constraint's bound and sweep_values gives it distinct values, each on
