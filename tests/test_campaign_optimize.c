@@ -540,6 +540,45 @@ static void list_parameters(void)
     remove(path);
 }
 
-FS_TEST_MAIN(TEST(loads_and_applies), TEST(list_parameters), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary), TEST(a_target_met_ranks_by_stiffness),
+/* The most a file may have, 16 parameters (each with all six keys) and 8 constraints, all bound:
+ * the binder's keys fit them (a file of this size once wrote past its key table). */
+static void the_most_parameters_and_constraints(void)
+{
+    static fs_optimize o;
+    static char tail[8192];
+    fs_error err;
+    char path[] = "/tmp/fs_optimize_XXXXXX";
+    REQUIRE(temp_file(path));
+    static const char *const keys[15][4] = { /* key, min, max, start: with the file's k_d1, 16 */
+        {"springs.k_d2_N_per_m", "12000", "1.2e6", "1e5"}, {"springs.k_d3_N_per_m", "12000", "1.2e6", "1e5"},
+        {"springs.c_d1_Ns_per_m", "0.5", "50", "5"},       {"springs.c_d2_Ns_per_m", "0.5", "50", "5"},
+        {"springs.c_d3_Ns_per_m", "0.5", "50", "5"},       {"springs.d1_k2_N_per_m", "1", "1e6", "1000"},
+        {"springs.d2_k2_N_per_m", "1", "1e6", "1000"},     {"springs.d3_k2_N_per_m", "1", "1e6", "1000"},
+        {"springs.scale", "0.5", "2", "1"},                {"mass.heel_kg", "0.01", "0.2", "0.05"},
+        {"mass.talus_kg", "0.02", "0.3", "0.08"},          {"mass.metatarsal_kg", "0.005", "0.1", "0.02"},
+        {"mass.phalanx_kg", "0.002", "0.05", "0.008"},     {"chains.splay_factor", "0", "2", "1"},
+        {"chains.scale_factor", "0.8", "1.2", "1.1"}};
+    size_t n = 0;
+    for (int p = 0; p < 15; p++)
+        n += (size_t)snprintf(tail + n, sizeof tail - n, "[param.p%d]\nkey = %s\nmin = %s\nmax = %s\nstart = %s\n"
+                              "log = no\nweight = 0\n", p, keys[p][0], keys[p][1], keys[p][2], keys[p][3]);
+    for (int c = 0; c < FS_OPTIMIZE_MAX_CONSTRAINTS; c++)
+        n += (size_t)snprintf(tail + n, sizeof tail - n, "[constraint.c%d]\nof = %s\nmin = 0\nmax = %d\n", c,
+                              c % 2 ? "ankle_drop_m" : "foot_mass_kg", 10 + c);
+    REQUIRE(n < sizeof tail);
+    write_search(path, "search_single_tall.ini", "max_evaluations = 3\nvalidation_first_seed = 7\n", tail);
+    fs_status s = fs_optimize_load(path, small, 1, &o, &err);
+    if (s != FS_OK)
+        fprintf(stderr, "  %s\n", err.message);
+    REQUIRE(s == FS_OK);
+    CHECK(o.nparams == FS_OPTIMIZE_MAX_PARAMS && o.nconstraints == FS_OPTIMIZE_MAX_CONSTRAINTS);
+    CHECK(o.max_evaluations == 3 && o.validation_first_seed == 7);
+    CHECK(!strcmp(o.param[15].key, "chains.scale_factor") && o.param[15].start == 1.1 && o.param[15].weight == 0);
+    CHECK(o.constraint[7].max == 17 && o.constraint[6].max == 16);
+    fs_optimize_free(&o);
+    remove(path);
+}
+
+FS_TEST_MAIN(TEST(loads_and_applies), TEST(list_parameters), TEST(the_most_parameters_and_constraints), TEST(refuses_bad_parameters), TEST(search_finds_a_known_boundary), TEST(a_target_met_ranks_by_stiffness),
              TEST(relative_target_reads_the_reference), TEST(constraint_makes_infeasible), TEST(pareto_front), TEST(sweep_of_a_bound),
              TEST(refuses_bad_targets), TEST(candidates_run_once))

@@ -471,9 +471,22 @@ static void test_a_wrong_band_is_refused(void)
     snprintf(robot_file, sizeof robot_file, "robot.r.file=%s/scenarios/robots/drop_weight.ini", FS_SOURCE_DIR);
     const char *own[] = {robot_file, "robot.r.tolerance_m=1e-6"}; /* a robot's own tolerance, which a band would overwrite */
     refused("low = run.tolerance_m=3e-6\nhigh =", own, 2,
-            "robot.r.tolerance_m: band tall's low end sets run.tolerance_m, which robot r gives its own");
+            "--set robot.r.tolerance_m: band tall's low end sets run.tolerance_m, which robot r gives its own");
     own[1] = "robot.r.step_s=5e-4";
-    refused("low =\nhigh = run.step_s=2e-4", own, 2, "band tall's high end sets run.step_s, which robot r gives its own");
+    refused("low =\nhigh = run.step_s=2e-4", own, 2,
+            "--set robot.r.step_s: band tall's high end sets run.step_s, which robot r gives its own");
+    { /* a band's step where the robot gives only its tolerance: no clash, the band's step at that end */
+        fs_campaign c;
+        fs_error err = {FS_OK, ""};
+        char path[256];
+        make_band_campaign("steps.ini", "low =\nhigh = run.step_s=2e-4");
+        snprintf(path, sizeof path, "%s/steps.ini", tmp);
+        own[1] = "robot.r.tolerance_m=1e-6";
+        REQUIRE(fs_campaign_load(path, own, 2, &c, &err) == FS_OK);
+        CHECK(fs_campaign_pair_of(&c, 0, 1)->def.step_s == 2e-4 && fs_campaign_pair_of(&c, 0, 0)->def.step_s == 1e-4);
+        CHECK(fs_campaign_pair_of(&c, 0, 1)->def.tolerance_m == 1e-6);
+        fs_campaign_free(&c);
+    }
     static const char *const other[] = {"campaign.band=wide"};
     refused("low = robot.com_height_m=0.3\nhigh =", other, 1, "band = 'wide' is not one of the choices; allowed: none|tall");
 }

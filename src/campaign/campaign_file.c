@@ -76,6 +76,10 @@ static int is_campaign_section(const char *section)
 
 static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_type type, size_t offset)
 {
+    if (b->nkeys == MAX_KEYS) { /* MAX_KEYS counts every key a file can have: a key added without it */
+        fprintf(stderr, "footsim: internal error: a campaign file's keys outgrow MAX_KEYS (%d)\n", MAX_KEYS);
+        abort();
+    }
     fs_key *k = &b->keys[b->nkeys++];
     *k = (fs_key){section, name, type, offset, 0, 0, 0, 0, NULL, "", "", ""};
     return k;
@@ -437,13 +441,14 @@ static void add_section_keys(binder *b, fs_campaign *c)
         k->max = FS_STEP_MAX_S; /* run.step_s's range (check_relations), or 0 */
         k->unit = "s";
         k->fallback = "0";
-        k->help = "the step of this robot's trials (0: the trial's run.step_s); a --set run.step_s overrides it";
+        k->help = "the step of this robot's trials (0: the trial's run.step_s); a --set run.step_s overrides it, "
+                  "a band end may not set it";
         k = add_key(b, sec, "tolerance_m", FS_KEY_NUMBER, C(robot[i].tolerance_m));
         k->max = 1; /* run.tolerance_m's range */
         k->unit = "m";
         k->fallback = "0";
         k->help = "this robot's trials take the error-controlled step to this tolerance (0: the trial's "
-                  "run.tolerance_m); a --set run.tolerance_m overrides it";
+                  "run.tolerance_m); a --set run.tolerance_m overrides it, a band end may not set it";
         k = add_key(b, sec, "error_estimate", FS_KEY_CHOICE, C(robot[i].error_estimate));
         k->choices = ESTIMATE_CHOICES;
         k->fallback = "trial";

@@ -16,8 +16,12 @@
 
 #define O(member) offsetof(fs_optimize, member)
 
+/* [optimize]'s six keys (and relative_to's row in fs_optimize_print_keys), six a [param.NAME]
+   (key, min, max, start, log, weight), three a [constraint.NAME] (of, max, min) */
+enum { MAX_KEYS = 7 + 6 * FS_OPTIMIZE_MAX_PARAMS + 3 * FS_OPTIMIZE_MAX_CONSTRAINTS };
+
 typedef struct binder {
-    fs_key keys[6 + 5 * FS_OPTIMIZE_MAX_PARAMS + 3 * FS_OPTIMIZE_MAX_CONSTRAINTS];
+    fs_key keys[MAX_KEYS];
     int nkeys;
     char sections[FS_OPTIMIZE_MAX_PARAMS][FS_NAME_MAX];
     char csections[FS_OPTIMIZE_MAX_CONSTRAINTS][FS_NAME_MAX];
@@ -31,6 +35,10 @@ typedef struct binder {
 static fs_key *add_key(binder *b, const char *section, const char *name, fs_key_type type, size_t offset,
                        const char *fallback, const char *help)
 {
+    if (b->nkeys == MAX_KEYS) { /* MAX_KEYS counts every key a file can have: a key added without it */
+        fprintf(stderr, "footsim: internal error: a design search file's keys outgrow MAX_KEYS (%d)\n", MAX_KEYS);
+        abort();
+    }
     fs_key *k = &b->keys[b->nkeys++];
     *k = (fs_key){section, name, type, offset, 0, 0, 0, 0, NULL, "", fallback, help};
     return k;

@@ -122,12 +122,12 @@ typedef struct fs_campaign {
  * with its overrides, once, and keeps it for the trials (fs_trial_run_scenario places a copy per
  * seed): anything wrong is FS_BAD_INPUT, nothing run. fs_campaign_free releases what it holds. */
 fs_status fs_campaign_load(const char *path, const char *const *sets, int nsets, fs_campaign *c, fs_error *err);
+void fs_campaign_free(fs_campaign *c);
 
 /* Prints the keys of a campaign file (one section of each kind, NAME as written) as a Markdown table
  * (fs_config_print_keys) to out_file, a FILE *: `footsim keys`, docs/keys.md. Sweep values and
  * [band.NAME] ends are lists of values or overrides, said in docs/campaign.md, not in the table. */
 void fs_campaign_print_keys(void *out_file);
-void fs_campaign_free(fs_campaign *c);
 
 /* The n-th key (1-based) a sweep may vary: every number of a terrain, design, robot or scenario
  * file, in that order; NULL past the last. */

@@ -123,12 +123,12 @@ typedef struct fs_optimize {
  * footsim campaign takes them); every parameter's key, range and start are checked against every
  * cell's scenario before anything runs. fs_optimize_free releases it. */
 fs_status fs_optimize_load(const char *path, const char *const *sets, int nsets, fs_optimize *o, fs_error *err);
+void fs_optimize_free(fs_optimize *o);
 
 /* Prints the keys of a design search file (one [param.NAME] and one [constraint.NAME], NAME as
  * written) as a Markdown table (fs_config_print_keys) to out_file, a FILE *: `footsim keys`,
  * docs/keys.md. */
 void fs_optimize_print_keys(void *out_file);
-void fs_optimize_free(fs_optimize *o);
 
 /* Sets the swept bound (o->sweep_constraint's max or min) to o->sweep_values.v[i]. */
 void fs_optimize_sweep_to(fs_optimize *o, int i);
