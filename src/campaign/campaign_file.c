@@ -444,7 +444,8 @@ static void add_section_keys(binder *b, fs_campaign *c)
         k->help = "the step of this robot's trials (0: the trial's run.step_s); a --set run.step_s overrides it, "
                   "a band end may not set it";
         k = add_key(b, sec, "tolerance_m", FS_KEY_NUMBER, C(robot[i].tolerance_m));
-        k->max = 1; /* run.tolerance_m's range */
+        int element;
+        k->max = fs_scenario_key("run.tolerance_m", 0, &element)->max; /* run.tolerance_m's range */
         k->unit = "m";
         k->fallback = "0";
         k->help = "this robot's trials take the error-controlled step to this tolerance (0: the trial's "
@@ -782,14 +783,15 @@ static fs_status load_pairs(fs_campaign *c, fs_error *err)
         }
         for (int end = 0; end < nends && s == FS_OK; end++)
             s = fs_scenario_require(&sc[end], "trial", &e);
-        const fs_campaign_item *rb = &c->robot[r];
-        char gives[FS_NAME_MAX + 96] = ""; /* a --set the message names may be the robot section's */
-        if (rb->step_s > 0 || rb->tolerance_m > 0 || rb->error_estimate)
-            snprintf(gives, sizeof gives, "; [robot.%s] gives its trials its step_s, tolerance_m or error_estimate as "
-                     "--set run.*", rb->name);
-        if (s != FS_OK)
+        if (s != FS_OK) {
+            const fs_campaign_item *rb = &c->robot[r];
+            char gives[FS_NAME_MAX + 96] = ""; /* a --set the message names may be the robot section's */
+            if (rb->step_s > 0 || rb->tolerance_m > 0 || rb->error_estimate)
+                snprintf(gives, sizeof gives, "; [robot.%s] gives its trials its step_s, tolerance_m or "
+                         "error_estimate as --set run.*", rb->name);
             fs_fail(err, s, "%s (campaign %s: foot %s on terrain %s under robot %s%s%s%s)", e.message, c->path,
                     c->foot[f].name, c->terrain[t].name, rb->name, c->band[0] ? ", band " : "", c->band, gives);
+        }
     }
     if (s == FS_OK && !c->robot[0].path[0]) /* the trial's own robot: named after its file */
         fs_path_stem(c->pair[0].def.robot_path[0] ? c->pair[0].def.robot_path : "none", c->robot[0].name,
