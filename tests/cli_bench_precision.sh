@@ -10,7 +10,7 @@ check '[ "$status" -eq 0 ]'
 csv="$tmp/bench/precision.csv" eq_ref="$tmp/bench/precision_equivalence/reference"
 # the header first; what made it beside it (the scenarios' files with their hashes, relative to scenarios/)
 check 'tr -d " \t\n" <"$tmp/bench/precision.provenance.json" | grep -q "\"file\":\"precision.csv\",\"provenance\":{\"footsim\":\"[^\"]*\",\"overrides\":\[\],\"inputs\":\[{\"path\":\"static_load.ini\",\"hash\":\"[0-9a-f]\{16\}\"}.*\"landing_trial.ini\".*\"../terrains/rough.ini\""'
-check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps,sinkage_m,sinkage_err_m$"'
+check 'head -1 "$csv" | grep -q "^scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,.*,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps,sinkage_m,sinkage_err_m,error_estimate$"'
 # no scene of the quick sweep is on a soil: its sinkage columns are empty (missing, not 0)
 check '[ "$(awk -F, "NR > 1 && (\$21 != \"\" || \$22 != \"\")" "$csv" | wc -l)" -eq 0 ]'
 # read right: one header row, rows as wide, a blown-up run's error an empty field (issue 32)
@@ -18,14 +18,17 @@ check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" csv "$csv:max_err_m" "$eq
 check '/usr/bin/python3 "$(dirname "$0")/csv_check.py" sqlite "$csv:max_err_m" "$eq_ref/summary.csv:trials" >&2'
 # 3 steps x 2 steppers: x 2 spring implementations for the chain and the two biomimetic landings, x 1 for the flat
 # foot (42); each landing at 1e-3 and 1e-2 s with its touchdown in 8 substeps (6); each landing with an
-# error-controlled step at 1e-5 m (3)
-check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 51 ]'
+# error-controlled step at 1e-5 m under each error estimate, step doubling and the embedded pair (6)
+check '[ "$(tail -n +2 "$csv" | wc -l)" -eq 54 ]'
+# the estimate named on the tolerance rows alone, each estimate on each landing once
+check '[ "$(awk -F, "NR > 1 && (\$17 > 0) != (\$23 != \"\")" "$csv" | wc -l)" -eq 0 ]'
+check '[ "$(awk -F, "\$23 == \"doubling\"" "$csv" | wc -l)" -eq 3 ] && [ "$(awk -F, "\$23 == \"embedded\"" "$csv" | wc -l)" -eq 3 ]'
 check '[ "$(awk -F, "\$16 == 8" "$csv" | wc -l)" -eq 6 ]'
 check '[ "$(awk -F, "\$1 == \"chain\" && \$16 != 1" "$csv" | wc -l)" -eq 0 ]'
 check 'grep -q "^Provenance: footsim " "$tmp/bench/precision.md"'
 # progress without a terminal: plain lines with done/total, never a carriage return
 check '[ -z "$(tr -dc "\r" <"$tmp/err.txt")" ]'
-check 'grep -q "^footsim bench precision: 51/51 configurations done, [0-9]* failed, .* s elapsed" "$tmp/err.txt"'
+check 'grep -q "^footsim bench precision: 54/54 configurations done, [0-9]* failed, .* s elapsed" "$tmp/err.txt"'
 check '[ "$(grep -c "configurations done" "$tmp/err.txt")" -le 12 ]'
 for scene in chain landing_flat landing_biomimetic landing_biomimetic_rough; do
   check '[ "$(awk -F, -v s=$scene "\$1 == s && \$15 == 1" "$csv" | wc -l)" -eq 1 ]'
@@ -43,10 +46,15 @@ ratio=$(awk -F, '$1 == "landing_biomimetic" && $2 == "step" && $4 == "implicit" 
                  END { print b / a }' "$csv")
 check 'awk -v r="$ratio" "BEGIN { exit !(r < 0.5) }"'
 # the error-controlled step: each landing's row ran (its touchdown rejected a step at least) and took
-# fewer than half the ODE steps of the fixed default (the point of it: docs/bench.md)
+# fewer than half the ODE steps of the fixed default (the point of it: docs/bench.md); the embedded
+# pair takes fewer ODE steps than doubling (a step of doubling is three ODE steps, of the pair two)
 for scene in landing_flat landing_biomimetic landing_biomimetic_rough; do
-  check 'awk -F, -v s=$scene "\$1 == s && \$15 == 1 { d = \$20 } \$1 == s && \$17 == 1e-05 { n++; ok = \$13 == \"ok\" && \$19 >= 1; t = \$20 }
-         END { exit !(n == 1 && ok && t < d / 2) }" "$csv"'
+  for est in doubling embedded; do
+    check 'awk -F, -v s=$scene -v e=$est "\$1 == s && \$15 == 1 { d = \$20 } \$1 == s && \$17 == 1e-05 && \$23 == e { n++; ok = \$13 == \"ok\" && \$19 >= 1; t = \$20 }
+           END { exit !(n == 1 && ok && t < d / 2) }" "$csv"'
+  done
+  check 'awk -F, -v s=$scene "\$1 == s && \$23 == \"doubling\" { d = \$20 } \$1 == s && \$23 == \"embedded\" { e = \$20 }
+         END { exit !(e > 0 && e < d) }" "$csv"'
 done
 check 'grep -q "Goal" "$tmp/bench/precision.md"'
 # the campaign-equivalence stage (--quick: equivalence_flat.ini on 2 seeds against 5e-5 s at 1e-4 and

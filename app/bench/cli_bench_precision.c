@@ -91,9 +91,12 @@ static const double SUBSTEP_STEPS_QUICK[] = {1e-3, 1e-2};
 static const int SUBSTEPS_FULL[] = {2, 4, 8};
 static const int SUBSTEPS_QUICK[] = {8};
 /* The landings with an error-controlled step (run.tolerance_m, its step_max_s and step_min_s at
- * their defaults), each tolerance a row. */
+ * their defaults), each tolerance a row under each error estimate (run.error_estimate: step doubling,
+ * then the embedded pair, about half the ODE steps: docs/bench.md, The embedded estimate). */
 static const double TOLERANCES_FULL[] = {1e-4, 3e-5, 1e-5, 3e-6, 1e-6};
 static const double TOLERANCES_QUICK[] = {1e-5};
+static const int ESTIMATE[] = {FS_ESTIMATE_DOUBLING, FS_ESTIMATE_EMBEDDED};
+enum { ESTIMATES = sizeof ESTIMATE / sizeof *ESTIMATE };
 /* the campaign-equivalence stage: the flat campaign (40 trials) against 1e-5 s, where the landing
  * converges, at each step of the sweep; --quick on 2 seeds (8 trials) against 5e-5 s, two steps,
  * one on each side of the verdict (about 4 s) */
@@ -126,6 +129,7 @@ typedef struct row {
     double step_s;
     int substeps;               /* run.impact_substeps (1: off) */
     double tolerance_m;         /* run.tolerance_m (0: fixed steps) */
+    int estimate;               /* run.error_estimate (fs_error_estimate), with a tolerance */
     long steps, rejected, ode_steps; /* of the first run: steps accepted, rejected, ODE steps in all */
     int ok;                     /* 0: the run blew up */
     int drifting;               /* a loop opened or energy grew beyond the checks' bounds (fs_check.h) */
@@ -137,6 +141,11 @@ typedef struct row {
 static const char *stepper_name(int s) { return s == FS_STEPPER_QUICKSTEP ? "quickstep" : "step"; }
 static const char *spring_name(int s) { return s == FS_SPRING_EXPLICIT ? "explicit" : "implicit"; }
 static int substeps_of(const struct row *r) { return r->substeps > 1 ? r->substeps : 1; }
+/* the error estimate's name, as run.error_estimate takes it; "" for a fixed step */
+static const char *estimate_name(const struct row *r)
+{
+    return r->tolerance_m > 0 ? (r->estimate == FS_ESTIMATE_EMBEDDED ? "embedded" : "doubling") : "";
+}
 
 /* The scene's scenario with a row's run settings put into its definition (a shallow copy: the
  * terrain's samples stay the scene's, read only). */
@@ -149,6 +158,7 @@ static void with_settings(const scene *s, const row *r, fs_scenario *sc)
     sc->def.springs = r->springs;
     sc->def.impact_substeps = r->substeps > 1 ? r->substeps : 1;
     sc->def.tolerance_m = r->tolerance_m;
+    sc->def.error_estimate = r->estimate;
     sc->def.log_interval_s = fmax(r->step_s, 1e-3); /* no path is logged here */
 }
 
@@ -293,7 +303,8 @@ static int is_default(const row *r)
 {
     const fs_scenario_def *d = &r->sc->defaults;
     return r->step_s == d->step_s && r->springs == d->springs && r->stepper == d->stepper &&
-           (r->substeps > 1 ? r->substeps : 1) == d->impact_substeps && r->tolerance_m == d->tolerance_m && (r->stepper == FS_STEPPER_STEP || r->iterations == d->iterations);
+           (r->substeps > 1 ? r->substeps : 1) == d->impact_substeps && r->tolerance_m == d->tolerance_m &&
+           (r->tolerance_m == 0 || r->estimate == d->error_estimate) && (r->stepper == FS_STEPPER_STEP || r->iterations == d->iterations);
 }
 
 static double rtf(const row *r) { return r->ok && r->wall_s > 0 ? r->sc->duration_s / r->wall_s : 0; }
@@ -322,7 +333,7 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
     const double *tols = quick ? TOLERANCES_QUICK : TOLERANCES_FULL;
     int ntols = quick ? (int)(sizeof TOLERANCES_QUICK / sizeof *tols) : (int)(sizeof TOLERANCES_FULL / sizeof *tols);
     for (int c = 0; c < nscenes; c++)
-        total += nsteps * nits * (1 + scenes[c].has_springs) + (scenes[c].pinned_chain ? 0 : nsubs * nsub_steps + ntols);
+        total += nsteps * nits * (1 + scenes[c].has_springs) + (scenes[c].pinned_chain ? 0 : nsubs * nsub_steps + ESTIMATES * ntols);
     cli_progress progress;
     cli_progress_start(&progress, "footsim bench precision", "configurations");
     cli_progress_update(&progress, 0, total, 0);
@@ -353,17 +364,18 @@ static fs_status sweep(scene *scenes, int nscenes, int quick, row *rows, int *nr
                 blown += !r->ok;
                 cli_progress_update(&progress, n, total, blown);
             }
-    /* the landings with an error-controlled step, from the scene's own step */
+    /* the landings with an error-controlled step, from the scene's own step, under each estimate */
     for (int c = 0; c < nscenes && s == FS_OK; c++)
-        for (int k = 0; k < ntols && !scenes[c].pinned_chain && s == FS_OK; k++) {
-            row *r = &rows[n++];
-            *r = (row){.sc = &scenes[c], .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT,
-                       .step_s = scenes[c].defaults.step_s, .tolerance_m = tols[k]};
-            s = measure(r, repeats, err);
-            r->is_default = is_default(r);
-            blown += !r->ok;
-            cli_progress_update(&progress, n, total, blown);
-        }
+        for (int e = 0; e < ESTIMATES && !scenes[c].pinned_chain && s == FS_OK; e++)
+            for (int k = 0; k < ntols && s == FS_OK; k++) {
+                row *r = &rows[n++];
+                *r = (row){.sc = &scenes[c], .stepper = FS_STEPPER_STEP, .springs = FS_SPRING_IMPLICIT,
+                           .step_s = scenes[c].defaults.step_s, .tolerance_m = tols[k], .estimate = ESTIMATE[e]};
+                s = measure(r, repeats, err);
+                r->is_default = is_default(r);
+                blown += !r->ok;
+                cli_progress_update(&progress, n, total, blown);
+            }
     *nrows = n;
     mark_pareto(rows, n);
     return s;
@@ -391,12 +403,12 @@ static int fill_csv(FILE *f, const void *user)
     int n = x->n;
     fprintf(f, "scene,stepper,iterations,spring,step_s,max_err_m,rms_err_m,max_angle_err_rad,rms_angle_err_rad,"
             "wall_s,wall_per_sim_s,rtf,status,pareto,default,impact_substeps,tolerance_m,steps,rejected,ode_steps,sinkage_m,"
-            "sinkage_err_m\n");
+            "sinkage_err_m,error_estimate\n");
     for (int i = 0; i < n; i++) {
         const row *r = &rows[i];
         char b[9][32]; /* a figure a row does not have (not finite): an empty field */
         if (r->ok)
-            fprintf(f, "%s,%s,%d,%s,%g,%s,%s,%s,%s,%s,%s,%s,%s,%d,%d,%d,%g,%ld,%ld,%ld,%s,%s\n", r->sc->name,
+            fprintf(f, "%s,%s,%d,%s,%g,%s,%s,%s,%s,%s,%s,%s,%s,%d,%d,%d,%g,%ld,%ld,%ld,%s,%s,%s\n", r->sc->name,
                 stepper_name(r->stepper),
                 r->iterations, spring_name(r->springs), r->step_s, cli_csv_num(b[0], sizeof b[0], "%.4e", r->e.max_m),
                 cli_csv_num(b[1], sizeof b[1], "%.4e", r->e.rms_m), cli_csv_num(b[2], sizeof b[2], "%.4e", r->e.max_rad),
@@ -405,11 +417,12 @@ static int fill_csv(FILE *f, const void *user)
                 cli_csv_num(b[6], sizeof b[6], "%.4g", rtf(r)), r->drifting ? "drifting" : "ok", r->pareto,
                 r->is_default, substeps_of(r), r->tolerance_m, r->steps, r->rejected, r->ode_steps,
                 cli_csv_num(b[7], sizeof b[7], "%.4e", sinkage(r)),
-                cli_csv_num(b[8], sizeof b[8], "%.4e", sinkage_err(r)));
+                cli_csv_num(b[8], sizeof b[8], "%.4e", sinkage_err(r)), estimate_name(r));
         else
             /* a blown-up run has no error nor speed: missing, empty fields */
-            fprintf(f, "%s,%s,%d,%s,%g,,,,,,,,blown_up,0,%d,%d,%g,,,,,\n", r->sc->name, stepper_name(r->stepper),
-                r->iterations, spring_name(r->springs), r->step_s, r->is_default, substeps_of(r), r->tolerance_m);
+            fprintf(f, "%s,%s,%d,%s,%g,,,,,,,,blown_up,0,%d,%d,%g,,,,,,%s\n", r->sc->name, stepper_name(r->stepper),
+                r->iterations, spring_name(r->springs), r->step_s, r->is_default, substeps_of(r), r->tolerance_m,
+                estimate_name(r));
     }
     return 1;
 }
@@ -417,8 +430,8 @@ static int fill_csv(FILE *f, const void *user)
 static void describe(FILE *f, const row *r)
 {
     if (r->tolerance_m > 0)
-        fprintf(f, "| step, tolerance %g m (%ld steps, %ld rejected, %ld ODE steps) | %s | variable |", r->tolerance_m,
-                r->steps, r->rejected, r->ode_steps, spring_name(r->springs));
+        fprintf(f, "| step, tolerance %g m, %s (%ld steps, %ld rejected, %ld ODE steps) | %s | variable |",
+                r->tolerance_m, estimate_name(r), r->steps, r->rejected, r->ode_steps, spring_name(r->springs));
     else if (r->stepper == FS_STEPPER_QUICKSTEP)
         fprintf(f, "| quickstep %d | %s | %g |", r->iterations, spring_name(r->springs), r->step_s);
     else if (substeps_of(r) > 1)
@@ -478,11 +491,11 @@ static void target(FILE *f, const row *rows, int n, const scene *s, double err_m
             best = r;
     }
     fprintf(f, "At most %g mm of ankle error at %gx real time or more on one core: ", err_m * 1e3, want_rtf);
-    char subs[64] = "";
+    char subs[80] = "";
     if (best && substeps_of(best) > 1)
         snprintf(subs, sizeof subs, " (%d substeps at a touchdown)", best->substeps);
     if (best && best->tolerance_m > 0)
-        snprintf(subs, sizeof subs, " (error-controlled, tolerance %g m)", best->tolerance_m);
+        snprintf(subs, sizeof subs, " (error-controlled, tolerance %g m, %s)", best->tolerance_m, estimate_name(best));
     if (best)
         fprintf(f, "the fastest configuration within %g mm is %s, %s springs, h = %g s%s: %.3g mm at %.3gx, %s. ",
             err_m * 1e3, best->stepper == FS_STEPPER_QUICKSTEP ? "quickstep" : "dWorldStep",
