@@ -79,4 +79,15 @@ expect 2 "^footsim: --set run.tolerance_m: tolerance_m = 0.0001 cannot be used h
     scenarios/landing_trial.ini --set scenario.terrain=../terrains/soils/dry_sand.ini --set run.tolerance_m=1e-4 \
     --set run.impact_substeps=4 --out "$tmp/no9"
 for i in 1 2 3 4 5 6 7 8 9; do check "[ ! -e \"\$tmp/no$i\" ]"; done
+
+# a run on a soil stopped by the checks says what bounds its step there (docs/soil.md, Explicit forces):
+# the biomimetic foot on dry sand at 5e-3 s, whose toe hinges drift past the loop check at 0.185 s
+nice "$fs" trial scenarios/landing_trial.ini --set scenario.terrain=../terrains/soils/dry_sand.ini \
+    --set run.step_s=5e-3 --seed 1 --out "$tmp/big" >"$tmp/big.out" 2>&1
+check_that "a soil run past its step's bound exits 3" [ $? -eq 3 ]
+check_that "its message names the soil's bound" grep -q "failed_numerics.*on a soil, whose forces are explicit" "$tmp/big.out"
+# the same step on rigid ground runs, and its message would not be the soil's
+nice "$fs" trial scenarios/landing_trial.ini --set run.step_s=5e-3 --seed 1 --out "$tmp/big_rigid" >"$tmp/big_rigid.out" 2>&1
+check_that "the same step on rigid ground runs through" [ $? -eq 0 ]
+check_that "and says nothing of a soil" sh -c "! grep -q 'on a soil' \"$tmp/big_rigid.out\""
 finish

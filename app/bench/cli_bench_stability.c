@@ -27,7 +27,7 @@
 #include <time.h>
 #include <unistd.h>
 
-enum { NSLICES = 6, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, MAX_SET = 4, LAW_SLICE = 5 };
+enum { NSLICES = 7, NCOMBOS = 4, MAX_VALUES = 12, MAX_WORKERS = 64, MAX_SET = 4, LAW_SLICE = 5 };
 
 /* A swept quantity and its values (full sweep, then --quick). */
 typedef struct slice {
@@ -53,7 +53,16 @@ static const slice SLICES[NSLICES] = {
       "robot.design=robots/drop_weight.ini"}},
     {"law", "scenarios/landing_trial.ini", "spring law (0 linear, 1 progressive, 2 bilinear, 3 curve, 4 cable)", "", 0,
      {0, 1, 2, 3, 4}, {1, 4}, 5, 2, {NULL}},
+    /* the same soil under the biomimetic foot, whose light links (8-25 g) each meet the soil through
+     * their own capsule: the explicit bound of a link's elastic branch, sqrt(K_e A / m) h < 2, falls
+     * at steps the flat sole's (0.27 kg over 70 cm^2) passes; under the trial's own robot, single_tall,
+     * which tips the foot onto its toes */
+    {"soil_biomimetic", "scenarios/landing_trial.ini", "elastic slope K_e of dry sand (biomimetic foot, single_tall)",
+     "Pa/m", 1, {2e7, 2e8, 2e9}, {2e8}, 3, 1, {"scenario.terrain=../terrains/soils/dry_sand.ini"}},
 };
+
+/* a slice on a soil: its quantity is the soil's K_e */
+static int on_soil(const slice *s) { return !strncmp(s->name, "soil", 4); }
 
 /* The law slice's value v for every spring kind: progressive doubling its stiffness at 0.5 mm;
  * bilinear 4 k beyond a 0.3 mm stop; a curve of slope k to 0.2 mm and 4 k beyond (points at 0,
@@ -131,7 +140,7 @@ static fs_status configure(const config *c, const fs_design_def *base, double du
     }
     if (!strcmp(s->name, "drop"))
         d->drop_m = c->value;
-    if (!strcmp(s->name, "soil"))
+    if (on_soil(s))
         sc->terrain.def.soil.K_e_Pa_per_m = c->value;
     if (!strcmp(s->name, "law")) {
         d->drop_m = 0.02;
@@ -307,7 +316,7 @@ static int fill_csv(FILE *f, const void *user)
         double k = !strcmp(sl, "stiffness") ? c->value : 12000, load = !strcmp(sl, "load") ? c->value : 26;
         double scale = !strcmp(sl, "mass") ? c->value : 1, drop = !strcmp(sl, "drop") ? c->value : 0;
         char ke[32] = ""; /* the soil's K_e; empty for a rigid slice */
-        if (!strcmp(sl, "soil"))
+        if (on_soil(&SLICES[c->slice]))
             snprintf(ke, sizeof ke, "%g", c->value);
         double law = !strcmp(sl, "law") ? c->value : 0;
         if (!strcmp(sl, "law"))
@@ -328,8 +337,9 @@ static int fill_csv(FILE *f, const void *user)
     return 1;
 }
 
-/* The column of a slice's quantity in stability.csv (1-based, for gnuplot): the law's is the last. */
-static int value_column(int s) { return s == LAW_SLICE ? 24 : 6 + s; }
+/* The column of a slice's quantity in stability.csv (1-based, for gnuplot): the law's is the last, both
+ * soil slices' K_e's the tenth. */
+static int value_column(int s) { return s == LAW_SLICE ? 24 : on_soil(&SLICES[s]) ? 10 : 6 + s; }
 
 /* One chart per slice: step size against the quantity, a panel per spring x stepper, each run a
  * square coloured by its class, the explicit springs' predicted limit as crosses. */

@@ -203,7 +203,14 @@ static const char *advice(const fs_sim *sim, fs_check_kind kind, char *buf, size
                            ? ", run.springs = implicit, or a larger check.energy_margin_J if something footsim "
                              "does not count puts energy in"
                            : " or run.springs = implicit";
-    snprintf(buf, size, "try a smaller run.step_s (now %g s%s)%s", d->step_s, springs, more);
+    /* a soil's forces are explicit, and on buried links large: they bound the step lower than rigid
+     * ground does, whatever the check that caught it (docs/soil.md, Explicit forces) */
+    const char *soil = sim->soil && d->tolerance_m <= 0
+                           ? "; on a soil, whose forces are explicit and large on buried links, the step is "
+                             "bounded lower than on rigid ground (docs/soil.md, Explicit forces, gives the steps "
+                             "measured stable), or let run.tolerance_m choose it"
+                           : "";
+    snprintf(buf, size, "try a smaller run.step_s (now %g s%s)%s%s", d->step_s, springs, more, soil);
     return buf;
 }
 
@@ -218,7 +225,7 @@ static fs_status report(fs_sim *sim, const finding *f, fs_error *err)
     c->failure = f->kind;
     c->failure_time_s = sim->time_s;
     snprintf(c->failure_where, sizeof c->failure_where, "%s", f->where);
-    char value[160], tip[320];
+    char value[160], tip[448];
     snprintf(value, sizeof value, what[f->kind], f->value, f->bound);
     return fs_fail(err, FS_NUMERICAL, "%s: t = %.6f s: %s '%s' %s: %s; %s", sim->sc->path, sim->time_s,
                    f->kind == FS_CHECK_LOOP ? "hinge" : "body", f->where, value,
