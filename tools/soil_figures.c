@@ -10,7 +10,12 @@
  * last second: a creep (its mean height still falling) or a bounce (a swing about a steady mean).
  * Built with footsim (`cmake --build build` makes build/soil-figures); run from the source folder:
  * `build/soil-figures > results/soil/static_load.md` (`build/soil-figures FOOT`: only that foot's rows;
- * `build/soil-figures FOOT SOIL`: one row). A Markdown table on stdout. */
+ * `build/soil-figures FOOT SOIL`: one row). A Markdown table on stdout.
+ * `build/soil-figures --ramp [FOOT [SOIL]]`: the load set down slowly instead, so that the sinkage is
+ * the soil's bearing under a static load and not an impact's overshoot, which a plastic soil keeps:
+ * a 1 kg rig carrying a 25 kg [load] at the ankle that rises from 0 over RAMP_S, rest looked for only
+ * once it is whole; for the flat sole on a Bekker soil, beside Bekker's closed form for its plate
+ * under the whole weight (26 kg and the foot's own). */
 #include "footsim/sim/fs_sim.h"
 #include "footsim/sim/fs_sim_soil.h"
 
@@ -25,6 +30,8 @@
 #define LIMIT_S 5.0
 #define CREEP_S 0.5
 #define SAMPLE_S 0.001 /* NSAMPLES below holds LIMIT_S of them and one each end */
+#define RAMP_S 1.0     /* --ramp: the load's rise, s */
+static int ramped;     /* --ramp given */
 enum { NSAMPLES = 5002 };
 
 static const char *SOILS[] = {"dry_sand", "lete_sand", "sandy_loam", "lean_clay", "snow", "mud", "granular_loose",
@@ -38,10 +45,12 @@ static int run(const char *foot, const char *soil)
     snprintf(design, sizeof design, "scenario.design=feet/%s.ini", foot);
     snprintf(duration, sizeof duration, "run.duration_s=%g", LIMIT_S);
     snprintf(terrain, sizeof terrain, "scenario.terrain=../terrains/soils/%s.ini", soil);
+    char ramp[64];
+    snprintf(ramp, sizeof ramp, "load.ramp_s=%g", RAMP_S);
     const char *set[] = {design, terrain, "robot.design=robots/rig.ini", "start.drop_m=0", duration,
                          "landing.x_range_m=0", "landing.y_range_m=0", "landing.yaw_range_deg=0",
-                         "landing.tilt_range_deg=0"};
-    if (fs_scenario_load("scenarios/landing_trial.ini", set, 9, &sc, &err) != FS_OK) {
+                         "landing.tilt_range_deg=0", "robot.mass_kg=1", "load.mass_kg=25", ramp};
+    if (fs_scenario_load("scenarios/landing_trial.ini", set, ramped ? 12 : 9, &sc, &err) != FS_OK) {
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
@@ -68,7 +77,7 @@ static int run(const char *foot, const char *soil)
             fs_sim_ankle(sim, p);
             z_at[nz++] = p[2];
         }
-        int slow = fs_sim_max_speed(sim) < 1e-3;
+        int slow = fs_sim_max_speed(sim) < 1e-3 && (!ramped || fs_sim_time(sim) >= RAMP_S);
         if (slow && rest_since < 0)
             rest_since = fs_sim_time(sim);
         if (!slow)
@@ -96,14 +105,32 @@ static int run(const char *foot, const char *soil)
             m2 += z_at[k] / back;
             lo = fmin(lo, z_at[k]), hi = fmax(hi, z_at[k]);
         }
-        snprintf(creep, sizeof creep, "%.3f mm/s, swing %.2f mm", (m1 - m2) / CREEP_S * 1e3, (hi - lo) * 1e3);
+        double sinking = (m1 - m2) / CREEP_S * 1e3;
+        snprintf(creep, sizeof creep, "%.3f mm/s, swing %.2f mm", fabs(sinking) < 5e-4 ? 0 : sinking, (hi - lo) * 1e3);
     }
     double tilt = acos(fmin(1, fmax(-1, R[8]))) * 180 / M_PI;
     double area = fs_sim_soil_area(sim, -1);
-    printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %s | %.1f | %.0f %% | %.2f |\n", foot, soil,
-           (a0[2] - a[2]) * 1e3, deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ",
-           end[0] == 'r' ? rest_since : fs_sim_time(sim), creep, area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0,
-           steps ? 1e3 * wall / steps : 0);
+    if (ramped) {
+        /* the sole's plate under the whole weight: Bekker's sinkage for b = 2 A / P (docs/soil.md, The
+         * model); "-" for a foot of links, an RFT soil or a sinkage past the layer (on the bedrock) */
+        char closed[32] = "-";
+        const fs_soil_def *sd = &sc.terrain.def.soil;
+        if (sc.geom.nboxes && sd->model == FS_SOIL_BEKKER) {
+            double A = sc.geom.box_size.x * sc.geom.box_size.y, P = 2 * (sc.geom.box_size.x + sc.geom.box_size.y);
+            double W = (sc.def.load_kg + sc.def.robot.mass_kg + sc.geom.total_mass_kg) * sc.def.gravity_m_per_s2;
+            double z = fs_bekker_sinkage(sd, 2 * A / P, W / A);
+            if (z < sd->depth_m)
+                snprintf(closed, sizeof closed, "%.1f", z * 1e3);
+        }
+        printf("| %s | %s | %.1f | %.1f | %s | %s%.3f | %s | %.1f | %.0f %% | %.2f |\n", foot, soil, (a0[2] - a[2]) * 1e3,
+               deepest * 1e3, closed, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : fs_sim_time(sim), creep,
+               area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
+    } else {
+        printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %s | %.1f | %.0f %% | %.2f |\n", foot, soil,
+               (a0[2] - a[2]) * 1e3, deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ",
+               end[0] == 'r' ? rest_since : fs_sim_time(sim), creep, area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0,
+               steps ? 1e3 * wall / steps : 0);
+    }
     fflush(stdout);
     fs_sim_free(sim);
     fs_scenario_free(&sc);
@@ -113,10 +140,17 @@ static int run(const char *foot, const char *soil)
 int main(int argc, char **argv)
 {
     fs_ode_init();
-    const char *only = argc > 1 ? argv[1] : NULL;      /* a foot's name: only its rows */
-    const char *only_soil = argc > 2 ? argv[2] : NULL; /* and a soil's: only that row */
-    printf("| foot | soil | ankle drop (mm) | deepest print (mm) | tilt (deg) | at rest (s) | not at rest: mean sinking, swing "
-           "(last 0.5 s) | carried on (cm^2) | soil's share | ms a step |\n|---|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+    ramped = argc > 1 && !strcmp(argv[1], "--ramp");
+    const char *only = argc > 1 + ramped ? argv[1 + ramped] : NULL;      /* a foot's name: only its rows */
+    const char *only_soil = argc > 2 + ramped ? argv[2 + ramped] : NULL; /* and a soil's: only that row */
+    if (ramped)
+        printf("| foot | soil | ankle drop (mm) | deepest print (mm) | Bekker's closed form, the sole (mm) | at rest (s) "
+               "| not at rest: mean sinking, swing (last 0.5 s) | carried on (cm^2) | soil's share | ms a step "
+               "|\n|---|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+    else
+        printf("| foot | soil | ankle drop (mm) | deepest print (mm) | tilt (deg) | at rest (s) | not at rest: mean "
+               "sinking, swing (last 0.5 s) | carried on (cm^2) | soil's share | ms a step |\n"
+               "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
     int bad = 0;
     for (size_t s = 0; s < sizeof SOILS / sizeof SOILS[0]; s++)
         for (int f = 0; f < 2; f++)
