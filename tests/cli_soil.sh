@@ -1,7 +1,8 @@
 #!/bin/sh
 # Soil through the command (docs/soil.md): a small soil campaign (2 feet x dry sand x 2 seeds, a short
 # window, a 2 mm grid) writes the same bytes with -j 1 and -j 2; a trial's final surface is written and
-# loads back as a heightmap; bad soils are refused with file:line and exit 2 before anything runs. Usage: cli_soil.sh path/to/footsim (run from the source folder).
+# loads back as a heightmap; a walk over a soil section labels its steps on the rigid ground so and its
+# steps on the sand "on the soil"; bad soils are refused with file:line and exit 2 before anything runs. Usage: cli_soil.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
 
 . "$(dirname "$0")/small_campaign.sh"
@@ -49,6 +50,14 @@ check_that "footsim terrain draws the surface" [ -s "$tmp/surf_map.png" ]
 # footsim terrain names a soil on a line of its own (model, name, depth, grid); rigid ground has none
 check '"$fs" terrain terrains/soils/dry_sand.ini | grep -q "^  soil: bekker (dry_sand), 0.1 m deep .* grid 0.5 mm"'
 check '! "$fs" terrain terrains/flat.ini | grep -q "soil"'
+
+# the walking machine over a soil section (terrains/sand_section.ini, docs/soil.md, A soil section): its
+# first three steps are on the rigid ground before the sand and say so, the fifth is on the sand
+"$fs" walk scenarios/walking_sand.ini --set soil.grid_m=0.002 --set walk.steps=5 >"$tmp/walk.out" 2>&1
+check_that "a walk over a soil section exits 0" [ $? -eq 0 ]
+check 'grep -q "^  step 1 on rigid ground: sinkage" "$tmp/walk.out"'
+check '! grep -q "^  step [123] on the soil" "$tmp/walk.out"'
+check 'grep -q "^  step 5 on the soil: sinkage" "$tmp/walk.out"'
 
 # refusals, before anything is written
 # refused N NAME TEXT PATTERN: a terrain file NAME.ini of TEXT (a printf format), laid under the static

@@ -774,8 +774,9 @@ static fs_status look_at_section(void *user, const fs_sim *sim, fs_error *err)
  * x 0.22 to 0.40 m), 2 mm grid, 8 steps: no node beyond the section is ever touched and no tile is made
  * wholly beyond it (checked every 10 ms); the sand keeps prints; the steps whose stance and swing stay
  * off the section (the first two: the foot, about 0.1 m long, reaches 0.155 m; and the eighth, from
- * 0.41 m) take no energy from the soil and no press past press_m, as on rigid ground, while the steps
- * on the sand sink, press and give the soil energy. Broken, without the section's columns cut out of a
+ * 0.41 m) take no energy from the soil and no press past press_m, as on rigid ground, and their records
+ * say they were not on the soil, while the steps on the sand sink, press, give the soil energy and are
+ * recorded on it. Broken, without the section's columns cut out of a
  * shape's nodes, the foot on the bedrock beyond the pit's far wall claims the nodes there. */
 static void a_walk_over_a_section_touches_only_it(void)
 {
@@ -790,17 +791,20 @@ static void a_walk_over_a_section_touches_only_it(void)
     printf("  %d steps completed; nodes beyond the section touched %ld, tiles beyond it %ld, prints on it %ld\n",
            r.steps_completed, seen.outside_touched, seen.tiles_outside, seen.inside_prints);
     for (int k = 0; k < r.nsteps; k++)
-        printf("  step %d: sinkage %.2f mm, soil energy %.3f J, press %.2f mm, force %.0f N\n", k,
-               r.step[k].sinkage_m * 1e3, r.step[k].soil_work_J, r.step[k].extra_press_m * 1e3, r.step[k].load_N);
+        printf("  step %d%s: sinkage %.2f mm, soil energy %.3f J, press %.2f mm, force %.0f N\n", k,
+               r.step[k].on_soil ? " on the soil" : "", r.step[k].sinkage_m * 1e3, r.step[k].soil_work_J,
+               r.step[k].extra_press_m * 1e3, r.step[k].load_N);
     CHECK(r.steps_completed == 8 && r.nsteps == 8);
     CHECK(seen.outside_touched == 0 && seen.tiles_outside == 0);
     CHECK(seen.inside_prints > 0);
     for (int k = 0; k < 8; k++) {
         int off = k <= 1 || k == 7, on = k == 4 || k == 5;
-        if (off)
-            CHECK(r.step[k].soil_work_J == 0 && r.step[k].extra_press_m == 0 && r.step[k].sinkage_m == 0);
+        if (off) /* and its record says its stance was not on the soil (`footsim walk`: "on rigid ground") */
+            CHECK(r.step[k].soil_work_J == 0 && r.step[k].extra_press_m == 0 && r.step[k].sinkage_m == 0 &&
+                  !r.step[k].on_soil);
         if (on)
-            CHECK(r.step[k].soil_work_J > 0 && r.step[k].extra_press_m > 0 && r.step[k].sinkage_m > 0);
+            CHECK(r.step[k].soil_work_J > 0 && r.step[k].extra_press_m > 0 && r.step[k].sinkage_m > 0 &&
+                  r.step[k].on_soil);
     }
     fs_scenario_free(&sc);
 }
