@@ -82,6 +82,11 @@ refused 6 phi '[soil]\nmodel = bekker\n\n[bekker]\nfriction_deg = -1\n' "5: fric
 refused 7 nosoil '[terrain]\nkind = flat\n\n[bekker]\nn = 1.1\n' "4: \[bekker\] has no effect without a \[soil\] section"
 # a bekker soil without [bekker] would run on the keys' defaults, no soil: refused at [soil] model
 refused 8 nobekker '[soil]\nmodel = bekker\ndepth_m = 0.05\n' "2: a bekker soil needs a \[bekker\] section .*terrains/soils/"
+# a bekker soil with no bearing strength (k_c = k_phi = 0: the foot would fall through to the bedrock):
+# refused at k_phi's line with what would be right, nothing written
+refused 10 nobearing '[soil]\nmodel = bekker\ndepth_m = 0.1\n\n[bekker]\nn = 1\nk_phi_N_per_m_n2 = 0\nk_c_N_per_m_n1 = 0\n' \
+    "7: a bekker soil with k_c_N_per_m_n1 = 0 and k_phi_N_per_m_n2 = 0 bears no load.*give k_phi_N_per_m_n2 > 0 or k_c_N_per_m_n1 > 0"
+check '[ ! -e "$tmp/no10" ]'
 # a tolerance from --set on a soil names the --set (it read "(set in code)"): a soil takes a tolerance
 # (its rejected steps undone), so the refusal here is impact_substeps'
 expect 2 "^footsim: --set run.tolerance_m: tolerance_m = 0.0001 cannot be used here: impact_substeps" -- trial \

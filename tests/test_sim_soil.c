@@ -17,8 +17,9 @@
  * - the biomimetic foot's soil shapes are its design's [soil_shapes] radii;
  * - shapes stacked over the same nodes outgrow the step's claims, and the lowest one's force is the
  *   one it has alone, to the bit;
- * - validation: n <= 0, a negative modulus, phi of 90 degrees, depth 0, RFT without zeta or density,
- *   a grid over max_nodes are refused with file:line (or the key) before anything runs. */
+ * - validation: n <= 0, a negative modulus, Bekker moduli with no bearing strength (k_c = k_phi = 0),
+ *   phi of 90 degrees, depth 0, RFT without zeta or density, a grid over max_nodes are refused with
+ *   file:line (or the key) before anything runs. */
 #include "fs_test.h"
 
 #include "footsim/sim/fs_sim.h"
@@ -836,6 +837,19 @@ static void thin_layer_stops_on_the_bedrock(void)
     fs_scenario_free(&sc);
 }
 
+/* A terrain file at path of text is refused, at its line 'line', with words in the message. */
+static void file_refused(const char *path, const char *text, int line, const char *words)
+{
+    static fs_terrain t;
+    fs_error err;
+    FILE *f = fopen(path, "w");
+    REQUIRE(f != NULL);
+    fputs(text, f);
+    fclose(f);
+    CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
+    fs_check_refusal(err.message, path, line, words);
+}
+
 static void bad_soils_are_refused(void)
 {
     const struct { const char *set, *key; } bad[] = {
@@ -865,19 +879,28 @@ static void bad_soils_are_refused(void)
     REQUIRE(mkdtemp(dir) != NULL);
     char path[300];
     snprintf(path, sizeof path, "%s/t.ini", dir);
-    FILE *f = fopen(path, "w");
-    REQUIRE(f != NULL);
-    fprintf(f, "[soil]\nmodel = bekker\n\n[bekker]\nfriction_deg = 90\n");
-    fclose(f);
-    CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
-    fs_check_refusal(err.message, path, 5, "[0, 90)");
+    file_refused(path, "[soil]\nmodel = bekker\n\n[bekker]\nfriction_deg = 90\n", 5, "[0, 90)");
+    /* a bekker soil with no bearing strength (k_c = k_phi = 0: Bekker's pressure 0 at every sinkage, the
+     * foot through to the bedrock): k_phi's file:line; k_c alone, or k_phi alone, bears a load */
+    file_refused(path, "[soil]\nmodel = bekker\ndepth_m = 0.1\n\n[bekker]\nn = 1\nk_phi_N_per_m_n2 = 0\n"
+                 "k_c_N_per_m_n1 = 0\n", 7, "k_phi_N_per_m_n2 > 0 or k_c_N_per_m_n1 > 0");
+    const char *kc_only[] = {"bekker.k_c_N_per_m_n1=1000"}, *kphi_only[] = {"bekker.k_phi_N_per_m_n2=1e5",
+                                                                            "bekker.k_c_N_per_m_n1=0"};
+    CHECK(fs_terrain_load(path, kc_only, 1, &t, &err) == FS_OK);
+    fs_terrain_free(&t);
+    CHECK(fs_terrain_load(path, kphi_only, 2, &t, &err) == FS_OK);
+    fs_terrain_free(&t);
+    /* every shipped preset passes */
+    const char *presets[] = {"dry_sand", "lete_sand", "sandy_loam", "lean_clay", "snow", "mud"};
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++) {
+        char preset[200];
+        snprintf(preset, sizeof preset, "terrains/soils/%s.ini", presets[i]);
+        CHECK(fs_terrain_load(preset, NULL, 0, &t, &err) == FS_OK);
+        fs_terrain_free(&t);
+    }
     /* an empty soil section: x_max_m's file:line */
-    f = fopen(path, "w");
-    REQUIRE(f != NULL);
-    fprintf(f, "[soil]\nmodel = bekker\nx_min_m = 0.3\nx_max_m = 0.2\n\n[bekker]\nn = 1\n");
-    fclose(f);
-    CHECK(fs_terrain_load(path, NULL, 0, &t, &err) == FS_BAD_INPUT);
-    fs_check_refusal(err.message, path, 4, "section is empty");
+    file_refused(path, "[soil]\nmodel = bekker\nx_min_m = 0.3\nx_max_m = 0.2\n\n[bekker]\nn = 1\n", 4,
+                 "section is empty");
     remove(path);
     /* a section that misses the ground the run covers: where x_min_m came from */
     static fs_scenario far;
