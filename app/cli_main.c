@@ -220,8 +220,10 @@ static const command commands[] = {
      "  toe contact points on the rough section and off it, peak ground force. With --frames (or\n"
      "  --out DIR) it also writes DIR/walk.json and the frames of the walk (default DIR:\n"
      "  results/walks/<scenario>/), whole. On a soil (a terrain with [soil], docs/soil.md) each step's\n"
-     "  sinkage, slip and the energy the soil took are printed and in walk.json, and DIR also gets\n"
-     "  the soil's final surface: surface.png, .csv, .provenance.json and .ini, as trial writes it."},
+     "  sinkage, slip and the energy the soil took are printed and in walk.json, each printed step\n"
+     "  \"on the soil\", or \"on rigid ground\" where its stance was beyond a soil section, and DIR\n"
+     "  also gets the soil's final surface: surface.png, .csv, .provenance.json and .ini, as trial\n"
+     "  writes it."},
     {"bench", cli_bench, CMD_BENCH, "precision|stability|speed|equivalence [CAMPAIGN]", 2, CLI_DATA_NONE,
      "Benchmarks (docs/bench.md), written to DIR (default: build/bench/; the committed results are\n"
      "  refreshed only with --out results/bench):\n"

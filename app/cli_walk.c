@@ -85,11 +85,14 @@ int cli_walk(const cli_args *a)
                "section (%d steps), %.1f off it; peak ground force %.0f N; ankle tilt up to %.1f deg\n",
                a->input, foot, r.steps_completed, r.falls, r.rough_contacts_mean, r.rough_steps, r.flat_contacts_mean,
                r.peak_force_N, r.peak_tilt_deg);
+        /* each step's record, labelled by where its stance was: over the soil, or on the rigid ground
+           beyond a soil section (fs_walk_step.on_soil) */
         for (int i = 0; r.soil && i < r.nsteps; i++)
-            printf("  step %d on the soil: sinkage %.2f mm at the stance's end, slip %.2f mm (ankle), %.2f mm (soil "
+            printf("  step %d %s: sinkage %.2f mm at the stance's end, slip %.2f mm (ankle), %.2f mm (soil "
                    "under the foot), the soil took %.3f J; pressed %.2f mm past press_m, ground force %.0f N\n", i + 1,
-                   r.step[i].sinkage_m * 1e3, r.step[i].slip_m * 1e3, r.step[i].soil_slip_m * 1e3,
-                   r.step[i].soil_work_J, r.step[i].extra_press_m * 1e3, r.step[i].load_N);
+                   r.step[i].on_soil ? "on the soil" : "on rigid ground", r.step[i].sinkage_m * 1e3,
+                   r.step[i].slip_m * 1e3, r.step[i].soil_slip_m * 1e3, r.step[i].soil_work_J,
+                   r.step[i].extra_press_m * 1e3, r.step[i].load_N);
         if (shown[0])
             printf("  results: %s/walk.json%s%s\n", shown,
                    surface ? ", the soil's final surface in surface.png, .csv and .ini" : "", a->frames ? ", frames/" : "");

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Soil through the command (docs/soil.md): a small soil campaign (2 feet x dry sand x 2 seeds, a short
 # window, a 2 mm grid) writes the same bytes with -j 1 and -j 2; a trial's final surface is written and
-# loads back as a heightmap; bad soils are refused with file:line and exit 2 before anything runs. Usage: cli_soil.sh path/to/footsim (run from the source folder).
+# loads back as a heightmap; a walk over a soil section labels its steps on the rigid ground so and its
+# steps on the sand "on the soil"; bad soils are refused with file:line and exit 2 before anything runs. Usage: cli_soil.sh path/to/footsim (run from the source folder).
 . "$(dirname "$0")/cli_check.sh"
 
 . "$(dirname "$0")/small_campaign.sh"
@@ -50,6 +51,14 @@ check_that "footsim terrain draws the surface" [ -s "$tmp/surf_map.png" ]
 check '"$fs" terrain terrains/soils/dry_sand.ini | grep -q "^  soil: bekker (dry_sand), 0.1 m deep .* grid 0.5 mm"'
 check '! "$fs" terrain terrains/flat.ini | grep -q "soil"'
 
+# the walking machine over a soil section (terrains/sand_section.ini, docs/soil.md, A soil section): its
+# first three steps are on the rigid ground before the sand and say so, the fifth is on the sand
+"$fs" walk scenarios/walking_sand.ini --set soil.grid_m=0.002 --set walk.steps=5 >"$tmp/walk.out" 2>&1
+check_that "a walk over a soil section exits 0" [ $? -eq 0 ]
+check 'grep -q "^  step 1 on rigid ground: sinkage" "$tmp/walk.out"'
+check '! grep -q "^  step [123] on the soil" "$tmp/walk.out"'
+check 'grep -q "^  step 5 on the soil: sinkage" "$tmp/walk.out"'
+
 # refusals, before anything is written
 # refused N NAME TEXT PATTERN: a terrain file NAME.ini of TEXT (a printf format), laid under the static
 # load with `run`, is refused with exit 2 and "NAME.ini:PATTERN" on stderr (into $tmp/noN, never made)
@@ -73,6 +82,11 @@ refused 6 phi '[soil]\nmodel = bekker\n\n[bekker]\nfriction_deg = -1\n' "5: fric
 refused 7 nosoil '[terrain]\nkind = flat\n\n[bekker]\nn = 1.1\n' "4: \[bekker\] has no effect without a \[soil\] section"
 # a bekker soil without [bekker] would run on the keys' defaults, no soil: refused at [soil] model
 refused 8 nobekker '[soil]\nmodel = bekker\ndepth_m = 0.05\n' "2: a bekker soil needs a \[bekker\] section .*terrains/soils/"
+# a bekker soil with no bearing strength (k_c = k_phi = 0: the foot would fall through to the bedrock):
+# refused at k_phi's line with what would be right, nothing written
+refused 10 nobearing '[soil]\nmodel = bekker\ndepth_m = 0.1\n\n[bekker]\nn = 1\nk_phi_N_per_m_n2 = 0\nk_c_N_per_m_n1 = 0\n' \
+    "7: a bekker soil with k_c_N_per_m_n1 = 0 and k_phi_N_per_m_n2 = 0 bears no load.*give k_phi_N_per_m_n2 > 0 or k_c_N_per_m_n1 > 0"
+check '[ ! -e "$tmp/no10" ]'
 # a tolerance from --set on a soil names the --set (it read "(set in code)"): a soil takes a tolerance
 # (its rejected steps undone), so the refusal here is impact_substeps'
 expect 2 "^footsim: --set run.tolerance_m: tolerance_m = 0.0001 cannot be used here: impact_substeps" -- trial \

@@ -47,7 +47,7 @@ typedef struct walk_run {
        start (its soil work, its ankle at the stance's start) */
     const fs_soil_grid *soil;
     double weight_N, press_speed_m_per_s, extra_m, extra_end_m, work_at_start_J, stance_ankle[3];
-    int in_stance;
+    int in_stance, stance_on_soil;
     /* the sim step being taken: its start, and whether the press goes on down over it (the ground
        carried less than the load at its start); nothing a rejected ODE step changes (fs_carriage.h) */
     double step_start_s;
@@ -96,7 +96,11 @@ static void soil_stance(walk_run *w, fs_sim *sim)
     fs_sim_ankle(sim, a);
     if (stance && !w->in_stance) {
         memcpy(w->stance_ankle, a, sizeof a);
-    } else if (!stance && w->in_stance && w->step < FS_WALK_MAX_STEPS) {
+        w->stance_on_soil = 0;
+    }
+    if (stance) /* a query of the shapes' boxes: it changes nothing the sim computes */
+        w->stance_on_soil |= fs_sim_soil_over(sim, -1);
+    if (!stance && w->in_stance && w->step < FS_WALK_MAX_STEPS) {
         fs_walk_step *r = &w->out->step[w->step];
         double f[3];
         fs_sim_ground_force(sim, f);
@@ -105,6 +109,7 @@ static void soil_stance(walk_run *w, fs_sim *sim)
         r->soil_slip_m = fs_sim_soil_slip(sim, -1);
         r->extra_press_m = w->extra_m;
         r->load_N = f[2];
+        r->on_soil = w->stance_on_soil;
         w->out->nsteps = w->step + 1;
         w->extra_end_m = w->extra_m;
         w->extra_m = 0;

@@ -31,6 +31,21 @@ fs_status fs_soil_check(const fs_soil_def *d, const fs_config *cfg, const char *
                        "keys' defaults are no measured soil: start from a preset in terrains/soils/ (dry_sand, "
                        "lete_sand, sandy_loam, lean_clay, snow, mud)",
                        fs_config_where(cfg, "soil", "model", where, sizeof where));
+    /* Bekker's pressure (k_c/b + k_phi) z^n must rise with the sinkage for every patch width b the grid
+     * can give: b = 2 A / P, finite, and at least [soil] b_min_m (sim_soil_grid.c). k_c/b + k_phi is
+     * monotonic in b: with k_c >= 0 it falls towards k_phi but stays above it for every finite b, so it
+     * is positive for all of them when k_c/b_min + k_phi is (k_c > 0 or k_phi > 0); with k_c < 0 it is
+     * least at b_min. Either way k_c/b_min + k_phi > 0 is the condition. The keys' ranges keep both
+     * moduli >= 0, so what this refuses is both 0: a soil with no bearing strength, through which the
+     * foot falls to the bedrock, almost surely a slip. */
+    if (d->model == FS_SOIL_BEKKER && !(d->k_c_N_per_m_n1 / d->b_min_m + d->k_phi_N_per_m_n2 > 0))
+        return fs_fail(err, FS_BAD_INPUT, "%s: a bekker soil with k_c_N_per_m_n1 = %g and k_phi_N_per_m_n2 = %g "
+                       "bears no load: Bekker's pressure (k_c/b + k_phi) z^n is not above 0 for every patch width b "
+                       "from [soil] b_min_m = %g m up, and the foot would fall through to the bedrock; give "
+                       "k_phi_N_per_m_n2 > 0 or k_c_N_per_m_n1 > 0 (the soil's moduli from a plate test: "
+                       "terrains/soils/ has measured soils, dry_sand's are 990 and 1528430)",
+                       fs_config_where(cfg, "bekker", "k_phi_N_per_m_n2", where, sizeof where), d->k_c_N_per_m_n1,
+                       d->k_phi_N_per_m_n2, d->b_min_m);
     if (!(d->x_max_m > d->x_min_m))
         return fs_fail(err, FS_BAD_INPUT, "%s: the soil's section is empty: x_max_m = %g m is not above x_min_m = %g m; "
                        "make x_max_m the end of the soil along x, past x_min_m (leave both out for a soil everywhere)",

@@ -33,6 +33,8 @@ typedef struct fs_walk_step {
     double soil_work_J;   /* the energy the soil took over the step (fs_soil_grid.work_J's rise) */
     double extra_press_m; /* how far past press_m the drive pressed until the soil carried the load */
     double load_N;        /* the ground's vertical force at the stance's end */
+    int on_soil;          /* 1: one of the foot's soil shapes lay over the soil at some time in the stance
+                             (fs_sim_soil_over); 0: the stance was the rigid ground's (beyond a section) */
 } fs_walk_step;
 
 typedef struct fs_walk_result {

@@ -13,7 +13,8 @@
  *
  * The keys are rows of the terrain schema (fs_terrain_keys, docs/keys.md; phi in [0, 90) degrees);
  * fs_soil_check judges what one key cannot (RFT without zeta or density, a model's section without
- * [soil] or the other way round), before anything runs, with file:line. */
+ * [soil] or the other way round, Bekker moduli with k_c/b_min + k_phi <= 0: no bearing strength),
+ * before anything runs, with file:line. */
 #ifndef FS_SOIL_H
 #define FS_SOIL_H
 
