@@ -99,7 +99,14 @@ for i in 1 2 3 4 5 6 7 8 9; do check "[ ! -e \"\$tmp/no$i\" ]"; done
 nice "$fs" trial scenarios/landing_trial.ini --set scenario.terrain=../terrains/soils/dry_sand.ini \
     --set run.step_s=5e-3 --seed 1 --out "$tmp/big" >"$tmp/big.out" 2>&1
 check_that "a soil run past its step's bound exits 3" [ $? -eq 3 ]
-check_that "its message names the soil's bound" grep -q "failed_numerics.*on a soil, whose forces are explicit" "$tmp/big.out"
+check_that "its message names the soil's bound" grep -q "failed_numerics.*on a soil the step is bounded lower" "$tmp/big.out"
+# whole in the written trial too (its failure text is shorter than the command's message)
+check_that "trial.json keeps the hint whole" grep -q "on a soil the step is bounded lower (docs/soil.md, Explicit forces), or set run.tolerance_m" "$tmp/big/trial.json"
+# explicit springs past their own bound are the cause there, not the soil: no soil hint
+nice "$fs" trial scenarios/landing_trial.ini --set scenario.terrain=../terrains/soils/dry_sand.ini \
+    --set run.step_s=5e-3 --set run.springs=explicit --seed 1 --out "$tmp/big_expl" >"$tmp/big_expl.out" 2>&1
+check_that "explicit springs past their bound: exit 3" [ $? -eq 3 ]
+check_that "and the springs named, not the soil" sh -c "grep -q 'explicit springs are stable below' \"$tmp/big_expl.out\" && ! grep -q 'on a soil' \"$tmp/big_expl.out\""
 # the same step on rigid ground runs, and its message would not be the soil's
 nice "$fs" trial scenarios/landing_trial.ini --set run.step_s=5e-3 --seed 1 --out "$tmp/big_rigid" >"$tmp/big_rigid.out" 2>&1
 check_that "the same step on rigid ground runs through" [ $? -eq 0 ]

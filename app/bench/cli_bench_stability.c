@@ -54,9 +54,9 @@ static const slice SLICES[NSLICES] = {
     {"law", "scenarios/landing_trial.ini", "spring law (0 linear, 1 progressive, 2 bilinear, 3 curve, 4 cable)", "", 0,
      {0, 1, 2, 3, 4}, {1, 4}, 5, 2, {NULL}},
     /* the same soil under the biomimetic foot, whose light links (8-25 g) each meet the soil through
-     * their own capsule: the explicit bound of a link's elastic branch, sqrt(K_e A / m) h < 2, falls
-     * at steps the flat sole's (0.27 kg over 70 cm^2) passes; under the trial's own robot, single_tall,
-     * which tips the foot onto its toes */
+     * their own capsule, under the trial's own robot, single_tall: an audit found its toe hinges
+     * drifting at steps the flat sole's slice passes (the cause, as far as it was traced: docs/soil.md,
+     * Explicit forces) */
     {"soil_biomimetic", "scenarios/landing_trial.ini", "elastic slope K_e of dry sand (biomimetic foot, single_tall)",
      "Pa/m", 1, {2e7, 2e8, 2e9}, {2e8}, 3, 1, {"scenario.terrain=../terrains/soils/dry_sand.ini"}},
 };

@@ -196,19 +196,20 @@ static const char *advice(const fs_sim *sim, fs_check_kind kind, char *buf, size
     double limit = fs_check_explicit_step_limit(sim);
     if (d->springs == FS_SPRING_EXPLICIT && isfinite(limit))
         snprintf(springs, sizeof springs, "; explicit springs are stable below about %.1e s here", limit);
-    if (d->springs == FS_SPRING_EXPLICIT && d->step_s > limit) /* whatever gave first, that is the cause */
+    int springs_caused = d->springs == FS_SPRING_EXPLICIT && d->step_s > limit;
+    if (springs_caused) /* whatever gave first, that is the cause */
         kind = FS_CHECK_SPEED;
     const char *more = kind == FS_CHECK_LOOP ? ", run.stepper = step or more run.iterations"
                        : kind == FS_CHECK_ENERGY
                            ? ", run.springs = implicit, or a larger check.energy_margin_J if something footsim "
                              "does not count puts energy in"
                            : " or run.springs = implicit";
-    /* a soil's forces are explicit, and on buried links large: they bound the step lower than rigid
-     * ground does, whatever the check that caught it (docs/soil.md, Explicit forces) */
-    const char *soil = sim->soil && d->tolerance_m <= 0
-                           ? "; on a soil, whose forces are explicit and large on buried links, the step is "
-                             "bounded lower than on rigid ground (docs/soil.md, Explicit forces, gives the steps "
-                             "measured stable), or let run.tolerance_m choose it"
+    /* a soil's explicit forces, large on buried links, bound the step lower than rigid ground does,
+     * whatever the check that caught it (docs/soil.md, Explicit forces), unless the explicit springs
+     * were past their own bound; short, for a trial's failure text (fs_trial_result.failure) */
+    const char *soil = sim->soil && d->tolerance_m <= 0 && !springs_caused
+                           ? "; on a soil the step is bounded lower (docs/soil.md, Explicit forces), or set "
+                             "run.tolerance_m"
                            : "";
     snprintf(buf, size, "try a smaller run.step_s (now %g s%s)%s%s", d->step_s, springs, more, soil);
     return buf;
