@@ -107,6 +107,8 @@ check 'grep -q "^# Numerical stability (.footsim bench stability --quick --scene
 check 'grep -q "^### soil: " "$tmp/soil/stability.md"'
 check '! grep -q "^### stiffness" "$tmp/soil/stability.md"'
 check '[ "$(cd "$tmp/soil" && ls stability_*.gp)" = stability_soil.gp ]'
+# the script's first line names how to run it: itself, from its folder
+check 'head -1 "$tmp/soil/stability_soil.gp" | grep -q "gnuplot -e \"out=.x.png.\" stability_soil.gp)$"'
 "$fs" bench stability --scene soil,sand --out "$tmp/bad" >/dev/null 2>"$tmp/err.txt"
 status=$?
 check '[ "$status" -eq 2 ]'

@@ -348,13 +348,14 @@ static fs_status write_script(const char *dir, int s, fs_error *err)
     const slice *sl = &SLICES[s];
     char path[FS_OUT_PATH], text[6000];
     int n = snprintf(text, sizeof text,
-                     "# footsim bench stability: %s against step size (run from this folder: gnuplot -e \"out='x.png'\" %s)\n"
+                     "# footsim bench stability: %s against step size (run from this folder: gnuplot -e \"out='x.png'\" "
+                     "stability_%s.gp)\n"
                      "set terminal pngcairo size 1200,900 noenhanced font 'sans,10'\nset output out\n"
                      "set datafile separator ','\nset multiplot layout 2,2 title 'footsim bench stability: %s'\n"
                      "set logscale x\nset xrange [5e-6:2e-2]\nset format x '%%.0e'\nset xlabel 'step h, s'\nset ylabel '%s%s%s%s'\n%s"
                      "set offsets graph 0.05, graph 0.05, graph 0.08, graph 0.08\nset key outside bottom center horizontal\n"
                      "set linetype 11 lc rgb '#2ca02c'\nset linetype 12 lc rgb '#ff9f1c'\nset linetype 13 lc rgb '#d62728'\n",
-                     sl->name, "stability.csv", sl->name, sl->label, *sl->unit ? ", " : "", sl->unit, "",
+                     sl->name, sl->name, sl->name, sl->label, *sl->unit ? ", " : "", sl->unit, "",
                      sl->log_axis ? "set logscale y\n" : "");
     for (int combo = 0; combo < NCOMBOS && n < (int)sizeof text; combo++) {
         const char *st = STEPPERS[combo / 2], *sp = SPRINGS[combo % 2];

@@ -1,4 +1,4 @@
-# footsim bench stability: law against step size (run from this folder: gnuplot -e "out='x.png'" stability.csv)
+# footsim bench stability: law against step size (run from this folder: gnuplot -e "out='x.png'" stability_law.gp)
 set terminal pngcairo size 1200,900 noenhanced font 'sans,10'
 set output out
 set datafile separator ','
