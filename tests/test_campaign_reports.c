@@ -63,6 +63,19 @@ static void test_trial_json_holds_the_result(void)
     o = fs_walk_json(&w, NULL, &err);
     REQUIRE(o != NULL);
     CHECK(cJSON_GetObjectItem(o, "foot") == NULL);
+    CHECK(cJSON_GetObjectItem(o, "soil_steps") == NULL); /* rigid ground: no step records */
+    cJSON_Delete(o);
+    /* on a soil each step's record says whether its stance was on the soil (a section's edge) */
+    w.soil = 1, w.nsteps = 2;
+    w.step[0] = (fs_walk_step){.sinkage_m = 0, .on_soil = 0};
+    w.step[1] = (fs_walk_step){.sinkage_m = 0.015, .on_soil = 1};
+    o = fs_walk_json(&w, NULL, &err);
+    REQUIRE(o != NULL);
+    cJSON *steps = cJSON_GetObjectItem(o, "soil_steps");
+    CHECK(cJSON_GetArraySize(steps) == 2);
+    CHECK(cJSON_IsFalse(cJSON_GetObjectItem(cJSON_GetArrayItem(steps, 0), "on_soil")));
+    CHECK(cJSON_IsTrue(cJSON_GetObjectItem(cJSON_GetArrayItem(steps, 1), "on_soil")));
+    CHECK(cJSON_GetObjectItem(cJSON_GetArrayItem(steps, 1), "sinkage_m")->valuedouble == 0.015);
     cJSON_Delete(o);
 }
 

@@ -79,7 +79,7 @@ cJSON *fs_walk_json(const fs_walk_result *r, const char *foot, fs_error *err)
             cJSON *e = child(steps, NULL, cJSON_CreateObject());
             ok = e && num(e, "step", i + 1) && num(e, "sinkage_m", w->sinkage_m) && num(e, "slip_m", w->slip_m) &&
                  num(e, "soil_slip_m", w->soil_slip_m) && num(e, "soil_work_J", w->soil_work_J) && num(e, "extra_press_m", w->extra_press_m) &&
-                 num(e, "load_N", w->load_N);
+                 num(e, "load_N", w->load_N) && fs_json_put(e, "on_soil", cJSON_CreateBool(w->on_soil));
         }
     }
     ok = ok && (!foot || text(o, "foot", foot));
