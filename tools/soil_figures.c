@@ -108,29 +108,24 @@ static int run(const char *foot, const char *soil)
         double sinking = (m1 - m2) / CREEP_S * 1e3;
         snprintf(creep, sizeof creep, "%.3f mm/s, swing %.2f mm", fabs(sinking) < 5e-4 ? 0 : sinking, (hi - lo) * 1e3);
     }
-    double tilt = acos(fmin(1, fmax(-1, R[8]))) * 180 / M_PI;
     double area = fs_sim_soil_area(sim, -1);
-    if (ramped) {
-        /* the sole's plate under the whole weight: Bekker's sinkage for b = 2 A / P (docs/soil.md, The
-         * model); "-" for a foot of links, an RFT soil or a sinkage past the layer (on the bedrock) */
-        char closed[32] = "-";
-        const fs_soil_def *sd = &sc.terrain.def.soil;
-        if (sc.geom.nboxes && sd->model == FS_SOIL_BEKKER) {
-            double A = sc.geom.box_size.x * sc.geom.box_size.y, P = 2 * (sc.geom.box_size.x + sc.geom.box_size.y);
-            double W = (sc.def.load_kg + sc.def.robot.mass_kg + sc.geom.total_mass_kg) * sc.def.gravity_m_per_s2;
-            double z = fs_bekker_sinkage(sd, 2 * A / P, W / A);
-            if (z < sd->depth_m)
-                snprintf(closed, sizeof closed, "%.1f", z * 1e3);
-        }
-        printf("| %s | %s | %.1f | %.1f | %s | %s%.3f | %s | %.1f | %.0f %% | %.2f |\n", foot, soil, (a0[2] - a[2]) * 1e3,
-               deepest * 1e3, closed, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : fs_sim_time(sim), creep,
-               area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
-    } else {
-        printf("| %s | %s | %.1f | %.1f | %.1f | %s%.3f | %s | %.1f | %.0f %% | %.2f |\n", foot, soil,
-               (a0[2] - a[2]) * 1e3, deepest * 1e3, tilt, end[0] == 'r' ? "" : "> ",
-               end[0] == 'r' ? rest_since : fs_sim_time(sim), creep, area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0,
-               steps ? 1e3 * wall / steps : 0);
+    /* the fifth column: the foot's tilt, or (--ramp) the sole's plate under the whole weight, Bekker's
+     * sinkage for b = 2 A / P (docs/soil.md, The model), "-" for a foot of links, an RFT soil or a
+     * sinkage past the layer (on the bedrock) */
+    char fifth[32] = "-";
+    const fs_soil_def *sd = &sc.terrain.def.soil;
+    if (!ramped)
+        snprintf(fifth, sizeof fifth, "%.1f", acos(fmin(1, fmax(-1, R[8]))) * 180 / M_PI);
+    else if (sc.geom.nboxes && sd->model == FS_SOIL_BEKKER) {
+        double A = sc.geom.box_size.x * sc.geom.box_size.y, P = 2 * (sc.geom.box_size.x + sc.geom.box_size.y);
+        double W = (sc.def.load_kg + sc.def.robot.mass_kg + sc.geom.total_mass_kg) * sc.def.gravity_m_per_s2;
+        double z = fs_bekker_sinkage(sd, 2 * A / P, W / A);
+        if (z < sd->depth_m)
+            snprintf(fifth, sizeof fifth, "%.1f", z * 1e3);
     }
+    printf("| %s | %s | %.1f | %.1f | %s | %s%.3f | %s | %.1f | %.0f %% | %.2f |\n", foot, soil, (a0[2] - a[2]) * 1e3,
+           deepest * 1e3, fifth, end[0] == 'r' ? "" : "> ", end[0] == 'r' ? rest_since : fs_sim_time(sim), creep,
+           area * 1e4, f[2] != 0 ? 100 * held[2] / f[2] : 0, steps ? 1e3 * wall / steps : 0);
     fflush(stdout);
     fs_sim_free(sim);
     fs_scenario_free(&sc);
